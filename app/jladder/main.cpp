@@ -1,0 +1,45 @@
+// jladder: the command-line tool. Headless: validate, run, bench, export.
+#include "app/jladder/commands.h"
+
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace {
+
+void usage(std::FILE* out) {
+    std::fputs(
+        "usage: jladder <command> [options]\n"
+        "\n"
+        "commands:\n"
+        "  validate SCENE...   check scene files; messages as file:line:column: text\n"
+        "  run SCENE --until T simulate headless; JSON summary on stdout\n"
+        "  bench [--quick]     measure speed against error; write tables and plots\n"
+        "  export SCENE        write frames and events as CSV/JSON\n"
+        "\n"
+        "'jladder <command> --help' describes each command's options.\n",
+        out);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2) {
+        usage(stderr);
+        return 2;
+    }
+    const std::string command = argv[1];
+    const std::vector<std::string> args(argv + 2, argv + argc);
+    if (command == "--help" || command == "-h" || command == "help") {
+        usage(stdout);
+        return 0;
+    }
+    if (command == "validate") return jl::cli::validate(args);
+    if (command == "run") return jl::cli::run(args);
+    if (command == "bench") return jl::cli::bench(args);
+    if (command == "export") return jl::cli::exportFrames(args);
+    std::fprintf(stderr, "jladder: unknown command '%s'\n", command.c_str());
+    usage(stderr);
+    return 2;
+}

@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Shared set-up for run.sh and test.sh: install what is missing, configure and
+# build. Sourced, so it sets BUILD_DIR for the caller.
+set -euo pipefail
+
+JL_PACKAGES=(build-essential cmake ninja-build qt6-base-dev qt6-3d-dev
+  libqt6opengl6-dev qt6-charts-dev qt6-svg-dev libeigen3-dev libyaml-cpp-dev
+  libgl1-mesa-dev xvfb xauth)
+
+jl_missing_packages() {
+  local missing=()
+  for p in "${JL_PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  echo "${missing[@]:-}"
+}
+
+jl_install() {
+  local missing
+  missing=$(jl_missing_packages)
+  [ -z "$missing" ] && return 0
+  if [ "$(id -u)" -eq 0 ]; then
+    echo "Installing: $missing"
+    apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $missing
+  else
+    echo "These packages are missing. Install them, then run this again:" >&2
+    echo "  sudo apt-get install --no-install-recommends $missing" >&2
+    exit 1
+  fi
+}
+
+# jl_build DIR [cmake options...]: configure once, then build incrementally.
+jl_build() {
+  local dir=$1; shift
+  if [ ! -f "$dir/build.ninja" ]; then
+    cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@"
+  fi
+  # Two cores and heavy Qt headers: cap parallel jobs to what fits in memory.
+  cmake --build "$dir" -j "${JL_JOBS:-$(nproc)}"
+}
