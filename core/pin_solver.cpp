@@ -1,0 +1,220 @@
+#include "core/pin_solver.h"
+
+#include "core/world.h"
+
+#include <Eigen/LU>
+
+#include <cmath>
+
+namespace jl {
+
+namespace {
+
+// A tiny diagonal shift for singular pivots (redundant pins): it picks one
+// of the equal solutions instead of dividing by zero.
+constexpr double kRegularisation = 1e-12;
+
+Eigen::Matrix2d safeInverse(Eigen::Matrix2d m) {
+    const double scale = m.cwiseAbs().maxCoeff();
+    if (!(std::abs(m.determinant()) > 1e-13 * scale * scale)) m.diagonal().array() += kRegularisation * (scale > 0 ? scale : 1.0);
+    return m.inverse();
+}
+
+}  // namespace
+
+// W-weighted coupling of two points r1, r2 of one body: J1 W J2^T.
+Eigen::Matrix2d PinSolver::coupling(const World& w, int body, const Vec2& r1, const Vec2& r2) const {
+    const Body& b = w.body(body);
+    Eigen::Matrix2d m = b.invMass * Eigen::Matrix2d::Identity();
+    m.noalias() += b.invInertia * perp(r1) * perp(r2).transpose();
+    return m;
+}
+
+void PinSolver::order(const World& w) {
+    const std::vector<Pin>& pins = w.pins();
+    const int n = int(pins.size());
+    pins_.resize(size_t(n));
+    // Pins per dynamic body; more than two anywhere means a branch.
+    std::vector<std::vector<int>> byBody(size_t(w.bodyCount()));
+    for (int i = 0; i < n; ++i) {
+        for (int b : {pins[size_t(i)].bodyA, pins[size_t(i)].bodyB})
+            if (!w.body(b).kinematic) byBody[size_t(b)].push_back(i);
+    }
+    chain_ = true;
+    for (const auto& list : byBody)
+        if (list.size() > 2) chain_ = false;
+    sequence_.clear();
+    pathStart_.clear();
+    links_.clear();
+    if (chain_) {
+        auto neighbour = [&](int pin, int body) {
+            for (int other : byBody[size_t(body)])
+                if (other != pin) return other;
+            return -1;
+        };
+        std::vector<char> visited(size_t(n), 0);
+        auto degree = [&](int i) {
+            int d = 0;
+            for (int b : {pins[size_t(i)].bodyA, pins[size_t(i)].bodyB})
+                if (!w.body(b).kinematic && neighbour(i, b) >= 0) ++d;
+            return d;
+        };
+        for (int start = 0; start < n; ++start) {
+            if (visited[size_t(start)] || degree(start) > 1) continue;
+            pathStart_.push_back(int(sequence_.size()));
+            int pin = start, from = -1;
+            while (pin >= 0) {
+                visited[size_t(pin)] = 1;
+                sequence_.push_back(pin);
+                int next = -1;
+                for (int b : {pins[size_t(pin)].bodyA, pins[size_t(pin)].bodyB}) {
+                    if (w.body(b).kinematic) continue;
+                    const int o = neighbour(pin, b);
+                    if (o >= 0 && o != from && !visited[size_t(o)]) {
+                        next = o;
+                        links_.push_back({b, pins[size_t(pin)].bodyA == b ? 1.0 : -1.0,
+                                          pins[size_t(o)].bodyA == b ? 1.0 : -1.0});
+                        break;
+                    }
+                }
+                if (next < 0) links_.push_back({-1, 0, 0});
+                from = pin;
+                pin = next;
+            }
+        }
+        if (int(sequence_.size()) != n) chain_ = false;  // a loop of bodies
+        pathStart_.push_back(int(sequence_.size()));
+    }
+    analysed_ = false;
+    version_ = w.structureVersion();
+}
+
+void PinSolver::assemble(const World& w) {
+    if (version_ != w.structureVersion()) order(w);
+    const std::vector<Pin>& pins = w.pins();
+    for (size_t i = 0; i < pins.size(); ++i) {
+        const Pin& p = pins[i];
+        PinRow& row = pins_[i];
+        row.bodyA = p.bodyA;
+        row.bodyB = p.bodyB;
+        row.dynA = !w.body(p.bodyA).kinematic;
+        row.dynB = !w.body(p.bodyB).kinematic;
+        row.rA = rotate(w.q[3 * p.bodyA + 2], p.localA);
+        row.rB = rotate(w.q[3 * p.bodyB + 2], p.localB);
+    }
+    if (chain_)
+        factorChain(w);
+    else
+        factorSparse(w);
+}
+
+void PinSolver::factorChain(const World& w) {
+    const size_t n = sequence_.size();
+    invPivot_.resize(n);
+    lower_.resize(n);
+    upper_.resize(n);
+    for (size_t path = 0; path + 1 < pathStart_.size(); ++path) {
+        const size_t begin = size_t(pathStart_[path]), end = size_t(pathStart_[path + 1]);
+        for (size_t i = begin; i < end; ++i) {
+            const PinRow& p = pins_[size_t(sequence_[i])];
+            Eigen::Matrix2d d = Eigen::Matrix2d::Zero();
+            if (p.dynA) d += coupling(w, p.bodyA, p.rA, p.rA);
+            if (p.dynB) d += coupling(w, p.bodyB, p.rB, p.rB);
+            if (i > begin) {
+                // Eliminate the previous pin: S_i = D_i - B^T S_{i-1}^{-1} B.
+                lower_[i] = upper_[i - 1].transpose() * invPivot_[i - 1];
+                d -= lower_[i] * upper_[i - 1];
+            }
+            invPivot_[i] = safeInverse(d);
+            if (i + 1 < end) {
+                const Link& l = links_[i];
+                const PinRow& next = pins_[size_t(sequence_[i + 1])];
+                const Vec2& r1 = p.bodyA == l.body ? p.rA : p.rB;
+                const Vec2& r2 = next.bodyA == l.body ? next.rA : next.rB;
+                upper_[i] = l.signPrev * l.signNext * coupling(w, l.body, r1, r2);
+            }
+        }
+    }
+}
+
+void PinSolver::factorSparse(const World& w) {
+    const int n = int(pins_.size());
+    std::vector<Eigen::Triplet<double>> t;
+    t.reserve(size_t(n) * 12);
+    auto add = [&](int i, int j, const Eigen::Matrix2d& m) {
+        for (int r = 0; r < 2; ++r)
+            for (int c = 0; c < 2; ++c) t.emplace_back(2 * i + r, 2 * j + c, m(r, c));
+    };
+    std::vector<std::vector<std::pair<int, double>>> byBody(size_t(w.bodyCount()));
+    double scale = 0;
+    for (int i = 0; i < n; ++i) {
+        const PinRow& p = pins_[size_t(i)];
+        if (p.dynA) byBody[size_t(p.bodyA)].push_back({i, 1.0});
+        if (p.dynB) byBody[size_t(p.bodyB)].push_back({i, -1.0});
+    }
+    for (int b = 0; b < w.bodyCount(); ++b)
+        for (auto [i, si] : byBody[size_t(b)])
+            for (auto [j, sj] : byBody[size_t(b)]) {
+                const PinRow& pi = pins_[size_t(i)];
+                const PinRow& pj = pins_[size_t(j)];
+                const Eigen::Matrix2d m = si * sj * coupling(w, b, si > 0 ? pi.rA : pi.rB, sj > 0 ? pj.rA : pj.rB);
+                if (i == j) scale = std::max(scale, m.cwiseAbs().maxCoeff());
+                add(i, j, m);
+            }
+    for (int i = 0; i < 2 * n; ++i) t.emplace_back(i, i, kRegularisation * (scale > 0 ? scale : 1.0));
+    matrix_.resize(2 * n, 2 * n);
+    matrix_.setFromTriplets(t.begin(), t.end());
+    if (!analysed_) {
+        ldlt_.analyzePattern(matrix_);
+        analysed_ = true;
+    }
+    ldlt_.factorize(matrix_);
+}
+
+void PinSolver::solve(const Eigen::VectorXd& r, Eigen::VectorXd& x) const {
+    x.resize(r.size());
+    if (!chain_) {
+        x = ldlt_.solve(r);
+        return;
+    }
+    for (size_t path = 0; path + 1 < pathStart_.size(); ++path) {
+        const size_t begin = size_t(pathStart_[path]), end = size_t(pathStart_[path + 1]);
+        if (begin == end) continue;
+        // Forward: y_i = r_i - L_i y_{i-1}, kept in x.
+        for (size_t i = begin; i < end; ++i) {
+            Vec2 y = r.segment<2>(2 * sequence_[i]);
+            if (i > begin) y -= lower_[i] * x.segment<2>(2 * sequence_[i - 1]);
+            x.segment<2>(2 * sequence_[i]) = y;
+        }
+        // Back: x_i = S_i^{-1} (y_i - B_i x_{i+1}).
+        for (size_t i = end; i-- > begin;) {
+            Vec2 y = x.segment<2>(2 * sequence_[i]);
+            if (i + 1 < end) y -= upper_[i] * x.segment<2>(2 * sequence_[i + 1]);
+            x.segment<2>(2 * sequence_[i]) = invPivot_[i] * y;
+        }
+    }
+}
+
+void PinSolver::multiplyJ(const Eigen::VectorXd& u, Eigen::VectorXd& out) const {
+    out.resize(2 * Eigen::Index(pins_.size()));
+    for (size_t i = 0; i < pins_.size(); ++i) {
+        const PinRow& p = pins_[i];
+        const Vec2 ua = u.segment<2>(3 * p.bodyA) + u[3 * p.bodyA + 2] * perp(p.rA);
+        const Vec2 ub = u.segment<2>(3 * p.bodyB) + u[3 * p.bodyB + 2] * perp(p.rB);
+        out.segment<2>(2 * Eigen::Index(i)) = ua - ub;
+    }
+}
+
+void PinSolver::addJTranspose(const Eigen::VectorXd& x, Eigen::VectorXd& f) const {
+    for (size_t i = 0; i < pins_.size(); ++i) {
+        const PinRow& p = pins_[i];
+        const Vec2 l = x.segment<2>(2 * Eigen::Index(i));
+        f.segment<2>(3 * p.bodyA) += l;
+        f[3 * p.bodyA + 2] += cross(p.rA, l);
+        f.segment<2>(3 * p.bodyB) -= l;
+        f[3 * p.bodyB + 2] -= cross(p.rB, l);
+    }
+}
+
+}  // namespace jl
+

@@ -1,0 +1,64 @@
+// The pins' equations (J W J^T) x = r: O(N) block-tridiagonal elimination
+// along chains of bodies, Eigen's sparse LDLT for branched or looped graphs.
+#pragma once
+
+#include "core/geometry.h"
+
+#include <Eigen/Core>
+#include <Eigen/SparseCholesky>
+#include <vector>
+
+namespace jl {
+
+class World;
+
+class PinSolver {
+public:
+    // Arms and matrix at the world's current positions, then factorise.
+    // Re-derives the pin ordering only when the world's structure changed.
+    void assemble(const World& w);
+    // Solves (J W J^T) x = r; r and x hold 2 entries per pin, in w.pins() order.
+    void solve(const Eigen::VectorXd& r, Eigen::VectorXd& x) const;
+    // out = J u: the relative velocity (or acceleration part) of every pin
+    // for body vector u (3 per body, kinematic bodies included).
+    void multiplyJ(const Eigen::VectorXd& u, Eigen::VectorXd& out) const;
+    // f += J^T x: pin forces (or impulses) x applied to the bodies.
+    void addJTranspose(const Eigen::VectorXd& x, Eigen::VectorXd& f) const;
+
+    bool isChain() const { return chain_; }
+    int pinCount() const { return int(pins_.size()); }
+    // World-frame arm from body A's (B's) origin to pin i.
+    const Vec2& armA(int i) const { return pins_[size_t(i)].rA; }
+    const Vec2& armB(int i) const { return pins_[size_t(i)].rB; }
+
+private:
+    struct PinRow {
+        int bodyA, bodyB;
+        bool dynA, dynB;   // has finite mass
+        Vec2 rA, rB;       // world arms
+    };
+    // Consecutive pins of a chain share one dynamic body.
+    struct Link {
+        int body;
+        double signPrev, signNext;  // +1 if the body is the pin's A side
+    };
+    void order(const World& w);
+    Eigen::Matrix2d coupling(const World& w, int body, const Vec2& r1, const Vec2& r2) const;
+    void factorChain(const World& w);
+    void factorSparse(const World& w);
+
+    long long version_ = -1;
+    bool chain_ = true;
+    std::vector<PinRow> pins_;
+    // Chain mode: pins in path order, path starts, and links between neighbours.
+    std::vector<int> sequence_;
+    std::vector<int> pathStart_;   // index into sequence_, plus a final end marker
+    std::vector<Link> links_;      // links_[i] joins sequence_[i] and sequence_[i+1]
+    std::vector<Eigen::Matrix2d> invPivot_, lower_, upper_;
+    // Sparse mode.
+    Eigen::SparseMatrix<double> matrix_;
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
+    bool analysed_ = false;
+};
+
+}  // namespace jl

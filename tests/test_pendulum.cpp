@@ -1,0 +1,144 @@
+// labels: physics
+// A block swinging from a corner pin against the exact physical-pendulum
+// period (PHYSICS.md section 7), and each integrator's order of convergence.
+#include "core/elliptic.h"
+#include "core/motion.h"
+#include "core/world.h"
+
+#include <QtTest>
+#include <cmath>
+#include <numbers>
+
+using namespace jl;
+
+namespace {
+
+constexpr double L = 0.06, T = 0.012, W = 0.045, rho = 600, g = 9.81;
+
+struct Pendulum {
+    World world;
+    PartId block = -1;
+    double mass = rho * L * T * W;
+    double r = std::hypot(L / 2, T / 2);
+    double inertiaAboutPin = mass * (L * L + T * T) / 12 + mass * r * r;
+    double rest = 0;  // angle of the block when hanging at rest
+
+    explicit Pendulum(double theta0) {
+        const Vec2 corner(-L / 2, -T / 2);
+        rest = std::numbers::pi / 2 - std::atan2(corner.y(), corner.x());
+        const double angle = rest + theta0;
+        const Vec2 centre = -rotate(angle, corner);  // corner at the origin
+        block = world.addBox(mass, L, T, W, Pose{centre, angle});
+        world.combine(world.anchor(Vec2::Zero()), world.addParticle(block, corner));
+    }
+    double swing() const { return world.partPose(block).angle - rest; }
+    double period(double theta0) const { return pendulumPeriod(inertiaAboutPin, mass, g, r, theta0); }
+};
+
+// Runs one exact period in n equal steps; the error is how far the block is
+// from where it started (angle and scaled angular speed).
+double errorAfterOnePeriod(Integrator kind, double theta0, int n, double* residual = nullptr) {
+    Pendulum p(theta0);
+    const double period = p.period(theta0);
+    const double h = period / n;
+    Dynamics d;
+    Stepper s(kind);
+    Ledger ledger;
+    double worst = 0;
+    for (int i = 0; i < n; ++i) {
+        const MotionStep m = advanceAndProject(p.world, d, s, i * h, h, ledger, 1e-12);
+        if (!m.ok()) return INFINITY;
+        worst = std::max(worst, pinResidual(p.world));
+    }
+    if (residual) *residual = worst;
+    const double omegaScale = std::sqrt(p.mass * g * p.r / p.inertiaAboutPin);
+    return std::hypot(p.swing() - theta0, p.world.partVelocity(p.block).angular / omegaScale);
+}
+
+double observedOrder(Integrator kind, double theta0, int n) {
+    const double e1 = errorAfterOnePeriod(kind, theta0, n);
+    const double e2 = errorAfterOnePeriod(kind, theta0, 2 * n);
+    qInfo("error %.3e with %d steps, %.3e with %d: order %.3f", e1, n, e2, 2 * n, std::log2(e1 / e2));
+    return std::log2(e1 / e2);
+}
+
+}  // namespace
+
+class PendulumTest : public QObject {
+    Q_OBJECT
+private slots:
+    void smallAmplitudePeriodMatchesLinearFormula() {
+        const double theta0 = 1e-3;
+        Pendulum p(theta0);
+        const double linear = 2 * std::numbers::pi * std::sqrt(p.inertiaAboutPin / (p.mass * g * p.r));
+        // The exact period differs from the linear one by theta0^2/16 relative.
+        QVERIFY(std::abs(p.period(theta0) / linear - 1) < 1e-7);
+        // Measured: the time of the second upward zero crossing of the swing.
+        Dynamics d;
+        Stepper s(Integrator::RK4);
+        Ledger ledger;
+        const double h = linear / 4000;
+        double t = 0, prev = p.swing(), firstCrossing = -1, crossing = -1;
+        while (crossing < 0 && t < 3 * linear) {
+            QVERIFY(advanceAndProject(p.world, d, s, t, h, ledger, 1e-12).ok());
+            t += h;
+            const double now = p.swing();
+            if (prev < 0 && now >= 0) {
+                // Cubic Hermite root would be better; the step is tiny, and
+                // linear interpolation errs by O(h^2) ~ 1e-8 of the period.
+                const double tc = t - h * now / (now - prev);
+                if (firstCrossing < 0) firstCrossing = tc; else crossing = tc;
+            }
+            prev = now;
+        }
+        QVERIFY(crossing > 0);
+        QVERIFY2(std::abs((crossing - firstCrossing) / linear - 1) < 1e-6,
+                 qPrintable(QString("measured %1 s, formula %2 s").arg(crossing - firstCrossing, 0, 'g', 12).arg(linear, 0, 'g', 12)));
+    }
+
+    void largeAmplitudeReturnsAfterExactEllipticPeriod() {
+        // 150 degrees: the period is 1.76x the small-amplitude one.
+        const double theta0 = 150 * std::numbers::pi / 180;
+        double residual = 0;
+        QVERIFY(errorAfterOnePeriod(Integrator::RK4, theta0, 2000, &residual) < 1e-8);
+        QVERIFY(residual <= 1e-12);
+    }
+
+    void eulerConvergesAtFirstOrder() {
+        const double order = observedOrder(Integrator::ExplicitEuler, 0.5, 20000);
+        QVERIFY2(std::abs(order - 1) < 0.15, qPrintable(QString::number(order)));
+    }
+
+    void symplecticEulerConvergesAtFirstOrder() {
+        const double order = observedOrder(Integrator::SymplecticEuler, 0.5, 20000);
+        QVERIFY2(order > 0.85, qPrintable(QString::number(order)));
+    }
+
+    void rk4ConvergesAtFourthOrder() {
+        const double order = observedOrder(Integrator::RK4, 0.5, 100);
+        QVERIFY2(std::abs(order - 4) < 0.3, qPrintable(QString::number(order)));
+    }
+
+    void adaptiveReachesOneInABillion() {
+        const double theta0 = 2.0;
+        Pendulum p(theta0);
+        const double period = p.period(theta0);
+        Dynamics d;
+        Stepper s(Integrator::DormandPrince45, 1e-12);
+        Ledger ledger;
+        double t = 0;
+        int steps = 0;
+        while (t < period) {
+            const MotionStep m = advanceAndProject(p.world, d, s, t, period - t, ledger, 1e-13);
+            QVERIFY(m.ok());
+            t += m.step.taken;
+            ++steps;
+        }
+        const double relative = std::abs(p.swing() - theta0) / theta0;
+        qInfo("adaptive: relative error %.3e in %d steps", relative, steps);
+        QVERIFY2(relative < 1e-9, qPrintable(QString("relative error %1 in %2 steps").arg(relative).arg(steps)));
+    }
+};
+
+QTEST_GUILESS_MAIN(PendulumTest)
+#include "test_pendulum.moc"
