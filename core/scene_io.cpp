@@ -1,0 +1,176 @@
+// Loading and saving scene files: the file-system side (sizes, kinds of
+// file, atomic replacement) and the order of the checks. No exception leaves
+// this file: every failure becomes a diagnostic.
+#include "core/scene_io.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <yaml-cpp/exceptions.h>
+#include <yaml-cpp/node/parse.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <new>
+
+#include "core/problems.h"
+#include "core/scene_read.h"
+#include "core/yaml_prepass.h"
+
+namespace jl {
+
+namespace {
+
+SceneLoad failed(Problems& problems) { return {std::nullopt, problems.take()}; }
+
+std::string tooLarge(const LoadLimits& limits) {
+    const std::size_t mib = limits.maxFileBytes >> 20;
+    return "the file is larger than " + (mib ? std::to_string(mib) + " MiB" : std::to_string(limits.maxFileBytes) + " bytes") +
+           "; refusing to read it";
+}
+
+SceneLoad parseChecked(std::string_view text, const LoadLimits& limits, Problems& problems) {
+    if (text.empty() || text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
+        problems.add(1, 1, "the file is empty; a scene starts with 'format: jacobs-ladder/1'");
+        return failed(problems);
+    }
+    if (!checkText(text, problems)) return failed(problems);
+    const bool readable = checkStructure(text, limits.maxNodes, problems);
+    if (!readable) return failed(problems);
+    const YAML::Node root = YAML::Load(std::string(text));
+    std::optional<Scene> scene = readScene(root, limits, problems);
+    if (!problems.empty()) return failed(problems);  // duplicate keys found by the first pass
+    return {std::move(scene), {}};
+}
+
+}  // namespace
+
+SceneLoad parseScene(std::string_view text, const std::string& fileNameForMessages, const LoadLimits& limits) {
+    Problems problems(fileNameForMessages, limits.maxErrors);
+    try {
+        if (text.size() > limits.maxFileBytes) {
+            problems.add(0, 0, tooLarge(limits));
+            return failed(problems);
+        }
+        return parseChecked(text, limits, problems);
+    } catch (const YAML::Exception& e) {
+        problems.add(e.mark.line + 1, e.mark.column + 1, "malformed YAML: " + e.msg);
+    } catch (const std::bad_alloc&) {
+        problems.add(0, 0, "out of memory while reading the file");
+    } catch (const std::exception& e) {
+        problems.add(0, 0, std::string("cannot read the file: ") + e.what());
+    }
+    return failed(problems);
+}
+
+namespace {
+
+// The file's text, or a whole-file problem. Only regular files are read:
+// a FIFO or a device could block or never end.
+std::optional<std::string> readFile(const std::string& path, const LoadLimits& limits, Problems& problems) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::file_status status = fs::status(path, ec);
+    if (ec || !fs::exists(status)) {
+        problems.add(0, 0, "cannot open the file: " + (ec ? ec.message() : std::string("it does not exist")));
+        return std::nullopt;
+    }
+    if (fs::is_directory(status)) {
+        problems.add(0, 0, "this is a directory, not a scene file");
+        return std::nullopt;
+    }
+    if (!fs::is_regular_file(status)) {
+        problems.add(0, 0, "this is not a regular file");
+        return std::nullopt;
+    }
+    const auto size = fs::file_size(path, ec);
+    if (!ec && size > limits.maxFileBytes) {
+        problems.add(0, 0, tooLarge(limits));
+        return std::nullopt;
+    }
+    std::ifstream in(path, std::ios::binary);
+    std::string text;
+    if (in) text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    if (!in && !in.eof()) {
+        problems.add(0, 0, std::string("cannot read the file: ") + std::strerror(errno));
+        return std::nullopt;
+    }
+    return text;
+}
+
+}  // namespace
+
+SceneLoad loadScene(const std::string& path, const LoadLimits& limits) {
+    Problems problems(path, limits.maxErrors);
+    try {
+        const std::optional<std::string> text = readFile(path, limits, problems);
+        if (!text) return failed(problems);
+        return parseScene(*text, path, limits);
+    } catch (const std::exception& e) {
+        problems.add(0, 0, std::string("cannot read the file: ") + e.what());
+        return failed(problems);
+    }
+}
+
+namespace {
+
+bool writeAll(int fd, const std::string& text) {
+    std::size_t done = 0;
+    while (done < text.size()) {
+        const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return false;
+        done += static_cast<std::size_t>(n);
+    }
+    return true;
+}
+
+// The directory entry of the rename must reach the disk too, or a crash
+// could bring back the old file after we reported success.
+void syncDirectory(const std::string& dir) {
+    const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY);
+    if (fd < 0) return;
+    ::fsync(fd);
+    ::close(fd);
+}
+
+}  // namespace
+
+std::optional<Diagnostic> saveScene(const Scene& scene, const std::string& path) {
+    namespace fs = std::filesystem;
+    std::string text;
+    try {
+        text = sceneToYaml(scene);
+    } catch (const std::exception& e) {
+        return Diagnostic{path, 0, 0, std::string("cannot save: ") + e.what()};
+    }
+    if (text.empty()) return Diagnostic{path, 0, 0, "cannot save: the scene could not be written as YAML"};
+    const fs::path target(path);
+    const std::string dir = target.has_parent_path() ? target.parent_path().string() : std::string(".");
+    // A hidden name next to the target, so the rename stays in one file system.
+    std::string name = target.filename().string();
+    name.insert(0, 1, '.');
+    name.append(".saving-XXXXXX");
+    std::string temp = (fs::path(dir) / name).string();
+    const int fd = ::mkstemp(temp.data());
+    if (fd < 0)
+        return Diagnostic{path, 0, 0, "cannot save: cannot create a temporary file in " + dir + ": " + std::strerror(errno)};
+    // Keep the permissions of the file being replaced; new files get 0644.
+    struct stat old {};
+    ::fchmod(fd, ::stat(path.c_str(), &old) == 0 ? (old.st_mode & 07777) : 0644);
+    std::string failure;
+    int error = 0;
+    if (!writeAll(fd, text) || ::fsync(fd) != 0) failure = "cannot write the file", error = errno;
+    if (::close(fd) != 0 && failure.empty()) failure = "cannot write the file", error = errno;
+    if (failure.empty() && ::rename(temp.c_str(), path.c_str()) != 0) failure = "cannot replace the file", error = errno;
+    if (!failure.empty()) {
+        ::unlink(temp.c_str());
+        return Diagnostic{path, 0, 0, "cannot save: " + failure + ": " + std::strerror(error)};
+    }
+    syncDirectory(dir);
+    return std::nullopt;
+}
+
+}  // namespace jl
