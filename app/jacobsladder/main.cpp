@@ -1,0 +1,53 @@
+// The desktop program: jacobsladder [scene.yaml]
+#include "ui/main_window.h"
+#include "ui/sim_controller.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QScreen>
+#include <QTimer>
+
+namespace {
+
+// Hidden option for documentation: grab the screen after a while, save it, quit.
+void scheduleScreenshot(jlui::MainWindow& window, const QString& file, double afterSeconds) {
+    QTimer::singleShot(int(afterSeconds * 1000), &window, [&window, file] {
+        QScreen* screen = window.screen();
+        const QPixmap shot = screen->grabWindow(0, window.frameGeometry().x(), window.frameGeometry().y(),
+                                                window.frameGeometry().width(), window.frameGeometry().height());
+        shot.save(file);
+        window.close();
+    });
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    // Qt3D's RHI renderer crashes without a GPU; the OpenGL one works everywhere we run.
+    if (qEnvironmentVariableIsEmpty("QT3D_RENDERER")) qputenv("QT3D_RENDERER", "opengl");
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName("JacobsLadderStudio");
+    QApplication::setApplicationName("Jacob's Ladder Studio");
+    QApplication::setApplicationVersion("0.1.0");
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription("Build, simulate and teach with a virtual Jacob's ladder.");
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addPositionalArgument("scene", "A scene file to open (.yaml).", "[scene.yaml]");
+    QCommandLineOption screenshot("screenshot", "Save a picture of the window to FILE, then quit.", "FILE");
+    QCommandLineOption after("after", "Seconds to wait before --screenshot.", "SECONDS", "3");
+    QCommandLineOption play("play", "Start playing at once.");
+    screenshot.setFlags(QCommandLineOption::HiddenFromHelp);
+    after.setFlags(QCommandLineOption::HiddenFromHelp);
+    parser.addOptions({screenshot, after, play});
+    parser.process(app);
+
+    jlui::MainWindow window;
+    window.show();
+    if (!parser.positionalArguments().isEmpty()) window.openFile(parser.positionalArguments().first());
+    else window.offerRecovery();
+    if (parser.isSet(play)) window.controller()->play();
+    if (parser.isSet(screenshot)) scheduleScreenshot(window, parser.value(screenshot), parser.value(after).toDouble());
+    return app.exec();
+}

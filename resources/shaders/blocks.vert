@@ -1,0 +1,32 @@
+#version 330 core
+// One instance per block: the planar pose and the box's size arrive as
+// per-instance attributes, so every block of the ladder is one draw call.
+in vec3 vertexPosition;  // unit cube, -0.5 .. 0.5
+in vec3 vertexNormal;
+in vec4 blockPose;       // x, y (m), angle (rad), z of the centre (m)
+in vec4 blockSize;       // across, along, out of the plane (m); w: highlight 0..1
+in vec4 blockColor;      // linear-ish rgb, a unused
+
+uniform mat4 viewProjectionMatrix;
+
+out vec3 worldPosition;
+out vec3 worldNormal;
+out vec3 localPosition;  // in metres, from the block's centre
+out vec3 halfSize;
+out vec3 localNormal;
+out vec3 baseColor;
+out float highlight;
+
+void main() {
+    vec3 p = vertexPosition * blockSize.xyz;
+    float c = cos(blockPose.z), s = sin(blockPose.z);
+    vec3 w = vec3(c * p.x - s * p.y + blockPose.x, s * p.x + c * p.y + blockPose.y, p.z + blockPose.w);
+    worldPosition = w;
+    worldNormal = vec3(c * vertexNormal.x - s * vertexNormal.y, s * vertexNormal.x + c * vertexNormal.y, vertexNormal.z);
+    localPosition = p;
+    localNormal = vertexNormal;
+    halfSize = 0.5 * blockSize.xyz;
+    baseColor = blockColor.rgb;
+    highlight = blockSize.w;
+    gl_Position = viewProjectionMatrix * vec4(w, 1.0);
+}

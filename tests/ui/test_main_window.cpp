@@ -1,0 +1,149 @@
+// labels: ui
+// The desktop window: it opens a scene and draws it, edits undo exactly,
+// saves and opens, and refuses a bad file without touching the open scene.
+#include "ui_test_support.h"
+
+#include "core/scene_io.h"
+#include "ui/file_errors_dialog.h"
+#include "ui/ladder_view.h"
+
+#include <QDoubleSpinBox>
+#include <QRegularExpression>
+#include <QSpinBox>
+#include <QTemporaryDir>
+#include <Qt3DRender/QRenderCapture>
+#include <QtTest>
+
+using namespace jlui;
+
+namespace {
+const QString kClassic = QStringLiteral(JL_SOURCE_DIR "/examples/classic.yaml");
+
+// Hue in degrees and saturation of a colour, to recognise the wood under any shading.
+bool woodColoured(QColor c, QColor wood) {
+    const float h = c.hsvHueF() * 360, s = c.hsvSaturationF();
+    return std::abs(h - wood.hsvHueF() * 360) < 5 && s > 0.2f && c.valueF() > 0.3f;
+}
+
+QImage captureView(LadderView* view) {
+    std::unique_ptr<Qt3DRender::QRenderCaptureReply> reply(view->capture()->requestCapture());
+    if (!QTest::qWaitFor([&] { return reply->isComplete(); }, 15000)) return {};
+    return reply->image();
+}
+}  // namespace
+
+class MainWindowTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { jltest::isolateSettings(); }
+
+    void opensClassicAndTheCaptureShowsTheBlocks() {
+        MainWindow w(jltest::quietWindow());
+        w.resize(1400, 900);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        const auto before = jltest::loadsSoFar(w.controller());
+        QVERIFY(w.openFile(kClassic));
+        QCOMPARE(w.document()->scene().title, std::string("The classic cascade"));
+        QVERIFY(jltest::loadedAfter(w.controller(), before));
+        const auto status = w.controller()->status();
+        QCOMPARE(int(status->frame->blocks.size()), 6);
+        QTest::qWait(300);  // a few rendered frames with the poses in place
+
+        const QImage image = captureView(w.ladderView());
+        QVERIFY2(!image.isNull(), "no capture from the 3-D view");
+        const double scale = double(image.width()) / w.ladderView()->width();
+        const QColor wood(200, 162, 107);  // #c8a26b, the file's block colour
+        for (int i = 0; i < 6; ++i) {
+            const jl::Vec2 c = status->frame->blocks[size_t(i)].position;
+            const QPointF p = w.ladderView()->pixelOf(c) * scale;
+            const QColor got = image.pixelColor(p.toPoint());
+            QVERIFY2(woodColoured(got, wood), qPrintable(QString("block %1 at %2,%3 is %4").arg(i).arg(p.x()).arg(p.y()).arg(got.name())));
+            // 15 cm beside the ladder there is no wood, so the test can fail.
+            const QPointF beside = w.ladderView()->pixelOf(c + jl::Vec2(0.15, 0)) * scale;
+            QVERIFY2(!woodColoured(image.pixelColor(beside.toPoint()), wood), "wood colour where no block is");
+        }
+    }
+
+    void blockCountEditsMergeAndUndoRestoresTheSceneExactly() {
+        MainWindow w(jltest::quietWindow());
+        w.show();
+        QVERIFY(w.openFile(kClassic));
+        const jl::Scene original = w.document()->scene();
+        auto* blocks = w.findChild<QSpinBox*>("blocks");
+        QVERIFY(blocks);
+        QCOMPARE(blocks->value(), 6);
+        // Arrow clicks on the spin box: three changes, one undo step.
+        blocks->stepUp();
+        blocks->stepUp();
+        blocks->stepUp();
+        QCOMPARE(w.document()->scene().ladder->blocks, 9);
+        QCOMPARE(w.document()->undoStack()->count(), 1);
+        QVERIFY(w.document()->isModified());
+        const jl::Scene nine = w.document()->scene();
+        QVERIFY(jltest::waitForStatus(w.controller(), [](const SimStatus& s) { return s.frame && s.frame->blocks.size() == 9; }));
+
+        w.document()->undoStack()->undo();
+        QVERIFY(w.document()->scene() == original);
+        QVERIFY(!w.document()->isModified());
+        QCOMPARE(blocks->value(), 6);
+        QVERIFY(jltest::waitForStatus(w.controller(), [](const SimStatus& s) { return s.frame && s.frame->blocks.size() == 6; }));
+        w.document()->undoStack()->redo();
+        QVERIFY(w.document()->scene() == nine);
+
+        // Going back to where it started is no change at all: the command drops itself.
+        w.document()->undoStack()->undo();
+        auto* thickness = w.findChild<QDoubleSpinBox*>("thickness");
+        QVERIFY(thickness);
+        const double t0 = thickness->value();
+        thickness->setValue(t0 + 1);
+        thickness->setValue(t0);
+        QCOMPARE(w.document()->undoStack()->count(), 0);
+        QVERIFY(w.document()->scene() == original);
+    }
+
+    void saveThenOpenGivesAnEqualScene() {
+        QTemporaryDir dir;
+        MainWindow w(jltest::quietWindow());
+        w.show();
+        QVERIFY(w.openFile(kClassic));
+        w.findChild<QSpinBox*>("blocks")->setValue(8);
+        w.findChild<QDoubleSpinBox*>("thickness")->setValue(7.5);
+        const jl::Scene edited = w.document()->scene();
+        QVERIFY(edited != jl::loadScene(kClassic.toStdString()).scene.value());
+        const QString path = dir.filePath("edited.yaml");
+        QVERIFY(w.saveTo(path));
+        QVERIFY(!w.document()->isModified());
+
+        QVERIFY(w.openFile(QStringLiteral(JL_SOURCE_DIR "/examples/pendulum.yaml")));
+        QVERIFY(w.document()->scene() != edited);
+        QVERIFY(w.openFile(path));
+        QVERIFY(w.document()->scene() == edited);
+        QCOMPARE(w.document()->path(), QFileInfo(path).absoluteFilePath());
+    }
+
+    void aBadFileShowsEveryErrorAndLeavesTheOpenSceneUntouched() {
+        MainWindow w(jltest::quietWindow());
+        w.show();
+        QVERIFY(w.openFile(kClassic));
+        w.findChild<QSpinBox*>("blocks")->setValue(7);  // unsaved work that must survive
+        const jl::Scene before = w.document()->scene();
+        const QString bad = QStringLiteral(JL_SOURCE_DIR "/tests/fixtures/bad/negative-length.yaml");
+        const auto expected = jl::loadScene(bad.toStdString()).errors;
+        QVERIFY(!expected.empty());
+
+        QVERIFY(!w.openFile(bad));
+        QVERIFY(w.document()->scene() == before);
+        QCOMPARE(w.document()->path(), QFileInfo(kClassic).absoluteFilePath());
+        QVERIFY(w.document()->isModified());
+        auto* dialog = w.findChild<FileErrorsDialog*>();
+        QVERIFY(dialog);
+        QVERIFY(dialog->isVisible());
+        QCOMPARE(dialog->errorCount(), int(expected.size()));
+        const QRegularExpression located("negative-length\\.yaml:\\d+:\\d+: \\S");
+        for (const QString& line : dialog->lines()) QVERIFY2(located.match(line).hasMatch(), qPrintable(line));
+    }
+};
+
+QTEST_MAIN(MainWindowTest)
+#include "test_main_window.moc"

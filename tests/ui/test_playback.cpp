@@ -1,0 +1,190 @@
+// labels: ui
+// The simulation behind the window: play, pause, step, scrub, a mouse drag
+// that is recorded and replays bit for bit, and a window that stays
+// responsive while a long ladder simulates flat out.
+#include "ui_test_support.h"
+
+#include "core/simulation.h"
+#include "ui/ladder_view.h"
+
+#include <QTimer>
+#include <QtTest>
+
+using namespace jlui;
+
+namespace {
+
+// The same run the window makes, done directly on the engine: frame i is the
+// state after advancing to i * interval.
+std::unique_ptr<jl::Simulation> engineAt(const jl::Scene& scene, int index) {
+    auto built = jl::Simulation::build(scene);
+    if (!built.simulation) qFatal("the scene does not build");
+    built.simulation->advanceTo(index * scene.solver.frameInterval);
+    return std::move(built.simulation);
+}
+jl::Frame engineFrameAt(const jl::Scene& scene, int index) { return engineAt(scene, index)->frame(); }
+std::uint64_t engineHashAt(const jl::Scene& scene, int index) { return engineAt(scene, index)->stateHash(); }
+
+bool samePoses(const jl::Frame& a, const jl::Frame& b) {
+    if (a.blocks.size() != b.blocks.size()) return false;
+    for (size_t i = 0; i < a.blocks.size(); ++i)
+        if (a.blocks[i].position != b.blocks[i].position || a.blocks[i].angle != b.blocks[i].angle) return false;
+    return true;
+}
+
+struct Fixture {
+    MainWindow window{jltest::quietWindow()};
+    SimController* sim = window.controller();
+    explicit Fixture(const jl::Scene& scene) {
+        window.resize(1300, 850);
+        window.show();
+        const auto before = jltest::loadsSoFar(sim);
+        window.document()->reset(scene, QString());
+        if (!jltest::loadedAfter(sim, before)) qFatal("the scene was not loaded");
+    }
+    // Simulates (paused) up to frame `index` and waits until it is on screen.
+    bool goTo(int index) {
+        const double dt = sim->status()->interval;
+        sim->seek(index * dt + dt / 4);
+        return jltest::waitForStatus(sim, [index](const SimStatus& s) { return s.frameIndex == index && !s.playing; });
+    }
+};
+
+}  // namespace
+
+class PlaybackTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { jltest::isolateSettings(); }
+
+    void playingForASecondAdvancesTimeAndMovesTheBlocks() {
+        Fixture f(jltest::swingingLadder());
+        const auto first = f.sim->status()->frame;
+        QCOMPARE(first->time, 0.0);
+        f.window.setSpeed(1.0);
+        f.sim->play();
+        QTest::qWait(1000);
+        f.sim->pause();
+        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return !s.playing; }));
+        const auto s = f.sim->status();
+        // Paced to real time: about a second, allowing for a slow, shared machine.
+        QVERIFY2(s->frame->time > 0.25 && s->frame->time < 1.3, qPrintable(QString::number(s->frame->time)));
+        const double moved = (s->frame->blocks[3].position - first->blocks[3].position).norm();
+        QVERIFY2(moved > 0.002, qPrintable(QString("block 3 moved %1 m").arg(moved)));
+        // What is shown is what the engine computes for that frame.
+        QVERIFY(samePoses(*s->frame, engineFrameAt(jltest::swingingLadder(), s->frameIndex)));
+    }
+
+    void stepForwardAndBackChangeTheFrameByOne() {
+        Fixture f(jltest::swingingLadder());
+        QVERIFY(f.goTo(10));
+        const auto at10 = f.sim->status()->frame;
+        f.sim->stepForward();
+        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return s.frameIndex == 11; }));
+        const auto at11 = f.sim->status()->frame;
+        QVERIFY(!samePoses(*at10, *at11));
+        QVERIFY(samePoses(*at11, engineFrameAt(jltest::swingingLadder(), 11)));
+        f.sim->stepBack();
+        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return s.frameIndex == 10; }));
+        QVERIFY(samePoses(*f.sim->status()->frame, *at10));
+        f.sim->stepBack();
+        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return s.frameIndex == 9; }));
+        QCOMPARE(f.sim->status()->frameCount, 12);  // stepping back records nothing
+    }
+
+    void scrubbingBackShowsThePosesRecordedThen() {
+        const jl::Scene scene = jltest::swingingLadder();
+        Fixture f(scene);
+        QVERIFY(f.goTo(60));
+        const jl::Frame expected = engineFrameAt(scene, 27);
+        QVERIFY(f.goTo(27));
+        QVERIFY(samePoses(*f.sim->status()->frame, expected));
+        // With a memory budget too small for any frame, the frame is re-simulated
+        // from the keyframe before it and must still be the same.
+        f.sim->setMemoryBudget(1);
+        QVERIFY(f.goTo(59));
+        QVERIFY(f.goTo(44));
+        QVERIFY(samePoses(*f.sim->status()->frame, engineFrameAt(scene, 44)));
+    }
+
+    void aMouseDragChangesTheMotionAndReplaysBitIdentically() {
+        const jl::Scene scene = jltest::swingingLadder();
+        Fixture f(scene);
+        LadderView* view = f.window.ladderView();
+        QVERIFY(QTest::qWaitForWindowExposed(view));
+        QVERIFY(f.goTo(12));
+        const jl::Vec2 centre = f.sim->status()->frame->blocks[3].position;
+        const QPoint at = view->pixelOf(centre).toPoint();
+        QVERIFY(view->planePoint(at).has_value());
+        QVERIFY(((*view->planePoint(at)) - centre).norm() < 0.003);  // picking ray hits where the block is
+
+        QTest::mousePress(view, Qt::LeftButton, {}, at);
+        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return s.dragging && s.frame->dragging; }));
+        QVERIFY(f.goTo(20));
+        QTest::mouseMove(view, at + QPoint(80, -40));
+        QVERIFY(f.goTo(30));
+        QTest::mouseRelease(view, Qt::LeftButton, {}, at + QPoint(80, -40));
+        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return !s.dragging; }));
+        QVERIFY(f.goTo(60));
+        const auto s = f.sim->status();
+        QCOMPARE(int(s->recorded->drags.size()), 1);
+        QCOMPARE(s->recorded->drags[0].block, 3);
+        QVERIFY(s->recorded->drags[0].samples.size() >= 2);
+
+        // The push changed the motion...
+        const jl::Frame without = engineFrameAt(scene, 60);
+        const double diff = (without.blocks[3].position - s->frame->blocks[3].position).norm();
+        QVERIFY2(diff > 0.001, qPrintable(QString("block 3 differs by %1 m").arg(diff)));
+        // ...and the recorded scene replays it exactly.
+        QCOMPARE(engineHashAt(*s->recorded, 60), s->headHash);
+        QVERIFY(engineHashAt(scene, 60) != s->headHash);
+        // The drag is part of the document now (saved with it, undoable).
+        QVERIFY(jltest::waitForStatus(f.sim, [&](const SimStatus&) { return f.window.document()->scene().drags == s->recorded->drags; }));
+        QVERIFY(f.window.document()->isModified());
+    }
+
+    void theWindowStaysResponsiveWhileALongLadderSimulatesFlatOut() {
+        jl::Scene scene;
+        scene.title = "a thousand blocks";
+        scene.ladder = jl::LadderSpec{};
+        scene.ladder->blocks = 1000;
+        Fixture f(scene);
+        f.window.setSpeed(4.0);
+        f.sim->play();
+        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return s.frameIndex > 0; }));
+        // Not counted: the first frames of a new scene upload its buffers and shaders once.
+        QTest::qWait(500);
+
+        // A 5 ms timer on the UI thread: any gap much longer is a stall.
+        QElapsedTimer clock;
+        qint64 last = 0, worst = 0;
+        int ticks = 0;
+        std::vector<qint64> gaps;
+        QTimer probe;
+        probe.setInterval(5);
+        QObject::connect(&probe, &QTimer::timeout, [&] {
+            const qint64 now = clock.elapsed();
+            worst = std::max(worst, now - last);
+            if (now - last > 25) gaps.push_back(now), gaps.push_back(now - last);
+            last = now;
+            ++ticks;
+        });
+        const auto startSerial = f.sim->status()->serial;
+        const double startTime = f.sim->status()->frame->time;
+        clock.start();
+        probe.start();
+        QTest::qWait(3000);
+        probe.stop();
+        f.sim->pause();
+        const auto s = f.sim->status();
+        qInfo("longest stall %lld ms over %d ticks; simulated %.3f s at %.2fx real time, %0.f steps/s", worst, ticks,
+              s->frame->time - startTime, s->realTimeFactor, s->stepsPerSecond);
+        for (size_t i = 0; i + 1 < gaps.size(); i += 2) qInfo("gap of %lld ms ending at %lld ms", gaps[i + 1], gaps[i]);
+        QVERIFY2(s->serial > startSerial + 10, "the view was not fed new frames");
+        QVERIFY(s->frame->time > startTime);
+        QVERIFY2(worst < 50, qPrintable(QString("the event loop stalled for %1 ms").arg(worst)));
+    }
+};
+
+QTEST_MAIN(PlaybackTest)
+#include "test_playback.moc"

@@ -1,0 +1,57 @@
+// Shared by the desktop program's tests: known scenes and waiting on the
+// simulation thread's published status without blocking the event loop.
+#pragma once
+
+#include "core/scene_io.h"
+#include "ui/main_window.h"
+#include "ui/sim_controller.h"
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QStandardPaths>
+#include <QTest>
+
+namespace jltest {
+
+// A 4-block ladder let go from bent fold angles: it swings, locks and
+// unlocks within the first second, quickly enough for any machine.
+inline jl::Scene swingingLadder(int blocks = 4) {
+    std::string angles = "[0.6";
+    for (int j = 2; j < blocks; ++j) angles += ", 0.5";
+    angles += "]";
+    const std::string text = "format: jacobs-ladder/1\ntitle: swing\nladder:\n  blocks: " + std::to_string(blocks) +
+                             "\n  held: [0]\n  initial: {fold_angles: " + angles + "}\nduration: 2\n";
+    jl::SceneLoad load = jl::parseScene(text, "swing.yaml");
+    if (!load.scene) qFatal("the test scene does not load: %s", load.errors.front().format().c_str());
+    return *load.scene;
+}
+
+// The program's settings and recovery file go to a test location.
+inline void isolateSettings() {
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName("JacobsLadderStudioTests");
+    QCoreApplication::setApplicationName("jacobsladder-tests");
+}
+
+inline jlui::MainWindow::Options quietWindow() { return {false, false}; }
+
+// Waits (running the event loop) until the newest status satisfies `pred`.
+template <typename Pred>
+bool waitForStatus(jlui::SimController* c, Pred pred, int timeoutMs = 20000) {
+    QElapsedTimer clock;
+    clock.start();
+    while (clock.elapsed() < timeoutMs) {
+        if (const auto s = c->status(); s && pred(*s)) return true;
+        QTest::qWait(5);
+    }
+    return false;
+}
+
+inline std::uint64_t loadsSoFar(jlui::SimController* c) { return c->status()->loadSerial; }
+
+// The simulation has built a scene posted after `before` loads and shows its first frame.
+inline bool loadedAfter(jlui::SimController* c, std::uint64_t before) {
+    return waitForStatus(c, [before](const jlui::SimStatus& s) { return s.loadSerial > before && s.frame && s.failure.empty(); });
+}
+
+}  // namespace jltest

@@ -1,0 +1,91 @@
+#include "ui/block_instances.h"
+
+#include "ui/shader_material.h"
+
+#include <Qt3DCore/QAttribute>
+#include <Qt3DCore/QBuffer>
+#include <Qt3DCore/QGeometry>
+#include <Qt3DRender/QGeometryRenderer>
+#include <Qt3DRender/QMaterial>
+#include <array>
+
+namespace jlui {
+
+namespace {
+// Per instance: pose (x, y, angle, z), size (across, along, out, highlight), colour (rgba).
+constexpr int kInstanceFloats = 12;
+
+// 36 vertices of a unit cube, position and outward normal interleaved.
+QByteArray unitCube() {
+    const std::array<std::array<float, 3>, 6> normals = {{{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}}};
+    QByteArray data;
+    data.reserve(36 * 6 * sizeof(float));
+    auto push = [&data](float x) { data.append(reinterpret_cast<const char*>(&x), sizeof x); };
+    for (const auto& n : normals) {
+        // Two axes spanning the face (faces are drawn from both sides: no culling state is set).
+        std::array<float, 3> u{n[2], n[0], n[1]}, v{n[1], n[2], n[0]};
+        const float corners[6][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, -1}, {1, 1}, {-1, 1}};
+        for (const auto& c : corners) {
+            for (int k = 0; k < 3; ++k) push(0.5f * (n[size_t(k)] + c[0] * u[size_t(k)] + c[1] * v[size_t(k)]));
+            for (int k = 0; k < 3; ++k) push(n[size_t(k)]);
+        }
+    }
+    return data;
+}
+}  // namespace
+
+BlockInstances::BlockInstances(Qt3DCore::QNode* parent) : Qt3DCore::QEntity(parent) {
+    auto* geometry = new Qt3DCore::QGeometry(this);
+    auto* vertices = new Qt3DCore::QBuffer(geometry);
+    vertices->setData(unitCube());
+    const uint stride = 6 * sizeof(float);
+    geometry->addAttribute(new Qt3DCore::QAttribute(vertices, Qt3DCore::QAttribute::defaultPositionAttributeName(),
+                                                    Qt3DCore::QAttribute::Float, 3, 36, 0, stride));
+    geometry->addAttribute(new Qt3DCore::QAttribute(vertices, Qt3DCore::QAttribute::defaultNormalAttributeName(),
+                                                    Qt3DCore::QAttribute::Float, 3, 36, 3 * sizeof(float), stride));
+
+    instances_ = new Qt3DCore::QBuffer(geometry);
+    instances_->setUsage(Qt3DCore::QBuffer::StreamDraw);
+    const char* names[] = {"blockPose", "blockSize", "blockColor"};
+    for (int i = 0; i < 3; ++i) {
+        auto* a = new Qt3DCore::QAttribute(instances_, names[i], Qt3DCore::QAttribute::Float, 4, 0,
+                                           uint(4 * i * sizeof(float)), kInstanceFloats * sizeof(float));
+        a->setDivisor(1);
+        geometry->addAttribute(a);
+        instanceAttributes_.push_back(a);
+    }
+
+    renderer_ = new Qt3DRender::QGeometryRenderer(this);
+    renderer_->setGeometry(geometry);
+    renderer_->setPrimitiveType(Qt3DRender::QGeometryRenderer::Triangles);
+    renderer_->setVertexCount(36);
+    renderer_->setInstanceCount(0);
+    addComponent(renderer_);
+    addComponent(shaderMaterial("blocks", this));
+}
+
+void BlockInstances::setShapes(std::vector<BlockShape> shapes) { shapes_ = std::move(shapes); }
+
+void BlockInstances::showFrame(const jl::Frame& frame, int grabbed) {
+    const size_t n = std::min(frame.blocks.size(), shapes_.size());
+    QByteArray data(int(n * kInstanceFloats * sizeof(float)), Qt::Uninitialized);
+    auto* f = reinterpret_cast<float*>(data.data());
+    for (size_t i = 0; i < n; ++i, f += kInstanceFloats) {
+        const jl::Pose& p = frame.blocks[i];
+        const BlockShape& s = shapes_[i];
+        const bool held = i < frame.held.size() && frame.held[i];
+        // Held blocks are a shade darker: the hand has them.
+        const float shade = held ? 0.8f : 1.0f;
+        const float hi = int(i) == grabbed ? 1.0f : 0.0f;
+        const float values[kInstanceFloats] = {float(p.position.x()), float(p.position.y()), float(p.angle), 0.0f,
+                                               s.across, s.along, s.out, hi,
+                                               float(s.color.redF()) * shade, float(s.color.greenF()) * shade,
+                                               float(s.color.blueF()) * shade, 1.0f};
+        std::copy(std::begin(values), std::end(values), f);
+    }
+    instances_->setData(data);
+    for (auto* a : instanceAttributes_) a->setCount(uint(n));
+    renderer_->setInstanceCount(int(n));
+}
+
+}  // namespace jlui

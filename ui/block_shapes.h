@@ -1,0 +1,25 @@
+// How each drawn thing of a frame looks: box size and colour per entry of
+// Frame::blocks, read once from the scene (frames carry only poses).
+#pragma once
+
+#include "core/scene.h"
+
+#include <QColor>
+#include <vector>
+
+namespace jlui {
+
+struct BlockShape {
+    float across = 0, along = 0, out = 0;  // m: local x, local y, z
+    QColor color;
+};
+
+// Ladder blocks, then general bodies, then particles: the order of
+// Frame::blocks. Boxes of both kinds have local x across (thickness) and
+// local y along (length), as the engine builds them.
+std::vector<BlockShape> blockShapes(const jl::Scene& scene);
+
+// The height the ladder hangs over when built, for framing the camera and the room (m).
+double ladderExtent(const jl::Scene& scene);
+
+}  // namespace jlui

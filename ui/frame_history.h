@@ -1,0 +1,60 @@
+// The recorded run: frames for scrubbing within a memory budget, plus
+// keyframes (full simulation snapshots) from which evicted frames are re-simulated.
+#pragma once
+
+#include "core/frame.h"
+#include "core/simulation.h"
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace jlui {
+
+// Frame i is the state after advancing to time i * interval (frame 0 is the
+// built scene). Frames may be evicted to stay within the budget; keyframes
+// are kept, so any evicted frame can be re-simulated from the one before it.
+class FrameHistory {
+public:
+    using FramePtr = std::shared_ptr<const jl::Frame>;
+    using SnapshotPtr = std::shared_ptr<const jl::Snapshot>;
+
+    void reset(double interval, std::size_t budgetBytes);
+    void setBudget(std::size_t bytes);
+
+    double interval() const { return interval_; }
+    // Keyframes every ~0.5 s of simulated time: seeks re-simulate at most that much.
+    int keyframeEvery() const { return keyEvery_; }
+    int count() const { return int(frames_.size()); }  // recorded frames, head = count() - 1
+    int head() const { return count() - 1; }
+
+    // Appends the frame after the head; `key` is kept when the index is a keyframe index.
+    void append(FramePtr frame, SnapshotPtr key, int protectIndex);
+    // Puts a re-simulated frame back into an evicted slot.
+    void restoreFrame(int index, FramePtr frame, int protectIndex);
+    // Drops everything after `index` (the future is discarded by an edit in the past).
+    void truncateAfter(int index);
+
+    FramePtr frame(int index) const;  // null when evicted
+    // The last keyframe at or before `index` and its index.
+    std::pair<int, SnapshotPtr> keyframeAtOrBefore(int index) const;
+    bool isKeyframeIndex(int index) const { return index % keyEvery_ == 0; }
+    // The last frame whose time is <= t (by index, frames are evenly spaced).
+    int indexAt(double t) const;
+    std::size_t bytes() const { return bytes_; }
+
+private:
+    static std::size_t frameBytes(const jl::Frame& f);
+    void evict(int protectIndex);
+
+    double interval_ = 1.0 / 60.0;
+    int keyEvery_ = 30;
+    std::size_t budget_ = 256u << 20;
+    std::size_t bytes_ = 0;
+    int oldestKept_ = 0;  // frames before it have been evicted (except restored ones)
+    std::vector<FramePtr> frames_;
+    std::vector<SnapshotPtr> keys_;  // keys_[i] belongs to frame i * keyEvery_
+    std::size_t snapshotBytes_ = 0;  // an estimate: Snapshot is opaque to us
+};
+
+}  // namespace jlui

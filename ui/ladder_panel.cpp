@@ -1,0 +1,115 @@
+#include "ui/ladder_panel.h"
+
+#include "ui/scene_fields.h"
+#include "ui/value_form.h"
+
+#include <QCheckBox>
+#include <QColorDialog>
+#include <QFormLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QRegularExpressionValidator>
+#include <QSignalBlocker>
+#include <QVBoxLayout>
+
+namespace jlui {
+
+namespace {
+QColor toQColor(const jl::Color& c) { return QColor(c.r, c.g, c.b); }
+jl::Color toColor(const QColor& c) { return {std::uint8_t(c.red()), std::uint8_t(c.green()), std::uint8_t(c.blue())}; }
+
+void paintSwatch(QPushButton* b, const jl::Color& c) {
+    QPixmap pm(28, 14);
+    pm.fill(toQColor(c));
+    b->setIcon(QIcon(pm));
+    b->setText(toQColor(c).name());
+}
+
+QString heldText(const std::vector<int>& held) {
+    QStringList parts;
+    for (int h : held) parts << QString::number(h);
+    return parts.join(", ");
+}
+}  // namespace
+
+LadderPanel::LadderPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
+    auto* box = new QVBoxLayout(this);
+    form_ = new ValueForm(doc, ladderNumberFields(), this);
+    box->addWidget(form_);
+    QFormLayout* form = form_->layout();
+
+    blockColor_ = colorButton("blockColor", tr("Colour of every block (a block override may change one)."));
+    form->insertRow(6, new QLabel(tr("Block colour")), blockColor_);
+    ribbonColor_ = colorButton("ribbonColor", tr("Colour of the ribbons."));
+    form->insertRow(8, new QLabel(tr("Ribbon colour")), ribbonColor_);
+    ribbonsVisible_ = new QCheckBox(tr("Show ribbons"), this);
+    ribbonsVisible_->setObjectName("ribbonsVisible");
+    ribbonsVisible_->setToolTip(tr("Ribbons are drawn only; hiding them shows the hinges."));
+    form->insertRow(9, QString(), ribbonsVisible_);
+    connect(ribbonsVisible_, &QCheckBox::toggled, this, [this](bool on) {
+        editLadder("ribbonsVisible", on ? tr("Show ribbons") : tr("Hide ribbons"),
+                   [on](jl::LadderSpec& l) { l.ribbons.visible = on; });
+    });
+
+    held_ = new QLineEdit(this);
+    held_->setObjectName("held");
+    held_->setPlaceholderText(tr("none"));
+    held_->setValidator(new QRegularExpressionValidator(QRegularExpression(R"(^[\d,\s]*$)"), held_));
+    const QString heldTip = tr("Blocks held by the hand (0 is the top), separated by commas; they follow the script.");
+    held_->setToolTip(heldTip);
+    auto* heldLabel = new QLabel(tr("Held blocks"));
+    heldLabel->setToolTip(heldTip);
+    form->addRow(heldLabel, held_);
+    connect(held_, &QLineEdit::editingFinished, this, [this] {
+        std::vector<int> held;
+        for (const QString& p : held_->text().split(',', Qt::SkipEmptyParts)) {
+            bool ok = false;
+            const int b = p.trimmed().toInt(&ok);
+            const int n = doc_->scene().ladder ? doc_->scene().ladder->blocks : 0;
+            if (ok && b >= 0 && b < n && std::find(held.begin(), held.end(), b) == held.end()) held.push_back(b);
+        }
+        editLadder("held", tr("Change held blocks"), [held](jl::LadderSpec& l) { l.held = held; });
+        held_->setText(heldText(doc_->scene().ladder ? doc_->scene().ladder->held : std::vector<int>{}));
+    });
+    box->addStretch(1);
+    refresh();
+}
+
+QPushButton* LadderPanel::colorButton(const QString& key, const QString& tip) {
+    auto* b = new QPushButton(this);
+    b->setObjectName(key);
+    b->setToolTip(tip);
+    connect(b, &QPushButton::clicked, this, [this, key] {
+        if (!doc_->scene().ladder) return;
+        const jl::LadderSpec& l = *doc_->scene().ladder;
+        const bool block = key == "blockColor";
+        const QColor c = QColorDialog::getColor(toQColor(block ? l.block.color : l.ribbons.color), this);
+        if (!c.isValid()) return;
+        editLadder(key, block ? tr("Change block colour") : tr("Change ribbon colour"), [block, c](jl::LadderSpec& l) {
+            (block ? l.block.color : l.ribbons.color) = toColor(c);
+        });
+    });
+    return b;
+}
+
+void LadderPanel::editLadder(const QString& key, const QString& text, const std::function<void(jl::LadderSpec&)>& edit) {
+    if (!doc_->scene().ladder) return;
+    jl::LadderSpec l = *doc_->scene().ladder;
+    edit(l);
+    changeScene(doc_, ladderField(key), l, text);
+}
+
+void LadderPanel::refresh() {
+    setEnabled(doc_->scene().ladder.has_value());
+    form_->refresh();
+    if (!doc_->scene().ladder) return;
+    const jl::LadderSpec& l = *doc_->scene().ladder;
+    paintSwatch(blockColor_, l.block.color);
+    paintSwatch(ribbonColor_, l.ribbons.color);
+    const QSignalBlocker b1(ribbonsVisible_), b2(held_);
+    ribbonsVisible_->setChecked(l.ribbons.visible);
+    held_->setText(heldText(l.held));
+}
+
+}  // namespace jlui

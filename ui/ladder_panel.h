@@ -1,0 +1,34 @@
+// The Ladder dock: blocks, ribbons and hinges of the open scene, every edit undoable.
+#pragma once
+
+#include "ui/document.h"
+
+#include <QWidget>
+
+class QCheckBox;
+class QLineEdit;
+class QPushButton;
+
+namespace jlui {
+
+class ValueForm;
+
+class LadderPanel : public QWidget {
+    Q_OBJECT
+public:
+    LadderPanel(Document* doc, QWidget* parent = nullptr);
+    void refresh();
+
+private:
+    QPushButton* colorButton(const QString& key, const QString& tip);
+    void editLadder(const QString& key, const QString& text, const std::function<void(jl::LadderSpec&)>& edit);
+
+    Document* doc_;
+    ValueForm* form_;
+    QPushButton* blockColor_;
+    QPushButton* ribbonColor_;
+    QCheckBox* ribbonsVisible_;
+    QLineEdit* held_;
+};
+
+}  // namespace jlui

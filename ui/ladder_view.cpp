@@ -1,0 +1,210 @@
+#include "ui/ladder_view.h"
+
+#include "ui/block_instances.h"
+#include "ui/block_shapes.h"
+#include "ui/room.h"
+#include "ui/strip_entity.h"
+
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QWheelEvent>
+#include <Qt3DExtras/QForwardRenderer>
+#include <Qt3DRender/QCamera>
+#include <Qt3DRender/QRenderCapture>
+#include <Qt3DRender/QRenderSettings>
+
+namespace jlui {
+
+namespace {
+constexpr float kOrbitDegreesPerPixel = 0.3f;
+constexpr float kLookDegreesPerPixel = 0.15f;
+constexpr double kRibbonDistanceInBlocks = 40;  // ribbons drawn while the eye is closer than this
+}  // namespace
+
+LadderView::LadderView() : Qt3DExtras::Qt3DWindow(nullptr, Qt3DRender::API::OpenGL) {
+    auto* forward = defaultFrameGraph();
+    forward->setClearColor(QColor(201, 207, 216));
+    // Blocks are instanced far from their unit cube: the cube's bounds say nothing about where they are.
+    forward->setFrustumCullingEnabled(false);
+    // The capture node sits above the forward renderer so it sees what is drawn.
+    capture_ = new Qt3DRender::QRenderCapture;
+    forward->setParent(capture_);
+    setActiveFrameGraph(capture_);
+    // Redraw only when something changed: an idle view costs nothing.
+    renderSettings()->setRenderPolicy(Qt3DRender::QRenderSettings::OnDemand);
+
+    root_ = new Qt3DCore::QEntity;
+    room_ = new Room(root_);
+    blocks_ = new BlockInstances(root_);
+    ribbons_ = new StripEntity(root_, false);
+    dragLine_ = new StripEntity(root_, true);
+    dragLine_->setColor(QColor(225, 40, 40));
+    setRootEntity(root_);
+    camera()->lens()->setPerspectiveProjection(40, 1.6f, 0.01f, 100);
+    updateCamera();
+
+    walkTimer_.setInterval(16);
+    connect(&walkTimer_, &QTimer::timeout, this, &LadderView::walkTick);
+}
+
+void LadderView::setScene(const jl::Scene& scene, bool resetCamera) {
+    blocks_->setShapes(blockShapes(scene));
+    extent_ = ladderExtent(scene);
+    room_->fitTo(extent_);
+    if (scene.ladder) {
+        blockWidth_ = scene.ladder->block.width;
+        blockLength_ = scene.ladder->block.length;
+        ribbonWidth_ = scene.ladder->ribbons.width;
+        ribbonInset_ = scene.ladder->ribbons.inset;
+        ribbonsVisible_ = scene.ladder->ribbons.visible;
+        const jl::Color c = scene.ladder->ribbons.color;
+        ribbons_->setColor(QColor(c.r, c.g, c.b));
+    }
+    view_ = scene.view;
+    if (resetCamera) resetView();
+}
+
+void LadderView::showFrame(const jl::Frame& frame) {
+    if (!frame.dragging) grabbed_ = -1;
+    blocks_->showFrame(frame, frame.dragging ? grabbed_ : -1);
+    // Ribbons are a few pixels wide at best when the whole of a long ladder is
+    // in view, yet they cost more to draw than all the blocks: show them close up.
+    const bool ribbonsShow = ribbonsVisible_ && camera_.distance() < kRibbonDistanceInBlocks * blockLength_;
+    if (ribbonsShow || ribbonsShown_) buildRibbons(*ribbons_, ribbonsShow ? frame : jl::Frame{}, blockWidth_, ribbonWidth_, ribbonInset_);
+    ribbonsShown_ = ribbonsShow;
+    // The spring is drawn in front of the blocks, on the face toward the viewer.
+    buildDragLine(*dragLine_, frame, float(blockWidth_ / 2 + 0.002), float(std::max(0.0015, camera_.distance() * 0.003)));
+    if (frame.dragging && grabbed_ < 0) {
+        // Which block: the one whose centre is nearest the grabbed point.
+        double best = 1e300;
+        for (size_t i = 0; i < frame.blocks.size(); ++i) {
+            const double d = (frame.blocks[i].position - frame.dragFrom).squaredNorm();
+            if (d < best) best = d, grabbed_ = int(i);
+        }
+    }
+}
+
+void LadderView::resetView() {
+    camera_.reset(view_, extent_);
+    updateCamera();
+}
+
+void LadderView::setWalkMode(bool on) {
+    if (walk_ == on) return;
+    walk_ = on;
+    keysDown_.clear();
+    emit walkModeChanged(on);
+}
+
+void LadderView::updateCamera() { camera_.apply(camera()); }
+
+std::optional<jl::Vec2> LadderView::planePoint(const QPointF& pixel) const {
+    const QRect viewport(0, 0, width(), height());
+    const QMatrix4x4 view = camera()->viewMatrix();
+    const QMatrix4x4 proj = camera()->projectionMatrix();
+    const float y = float(height() - pixel.y());
+    const QVector3D nearP = QVector3D(float(pixel.x()), y, 0).unproject(view, proj, viewport);
+    const QVector3D farP = QVector3D(float(pixel.x()), y, 1).unproject(view, proj, viewport);
+    const QVector3D d = farP - nearP;
+    if (std::abs(d.z()) < 1e-9f) return std::nullopt;
+    const float s = -nearP.z() / d.z();
+    if (s < 0) return std::nullopt;
+    const QVector3D hit = nearP + s * d;
+    return jl::Vec2(hit.x(), hit.y());
+}
+
+QPointF LadderView::pixelOf(const jl::Vec2& point) const {
+    const QRect viewport(0, 0, width(), height());
+    const QVector3D p = QVector3D(float(point.x()), float(point.y()), 0)
+                            .project(camera()->viewMatrix(), camera()->projectionMatrix(), viewport);
+    return {p.x(), height() - p.y()};
+}
+
+void LadderView::mousePressEvent(QMouseEvent* e) {
+    lastMouse_ = e->position();
+    if (e->button() == Qt::LeftButton && !walk_) {
+        if (const auto p = planePoint(e->position())) {
+            dragging_ = true;
+            grabbed_ = -1;
+            emit dragBegun(*p);
+        }
+    }
+}
+
+void LadderView::mouseMoveEvent(QMouseEvent* e) {
+    const QPointF delta = e->position() - lastMouse_;
+    lastMouse_ = e->position();
+    if (dragging_) {  // until the release, whatever else the buttons do
+        if (const auto p = planePoint(e->position())) emit dragMoved(*p);
+    } else if (e->buttons() & Qt::RightButton) {
+        if (walk_) camera_.lookAround(-float(delta.x()) * kLookDegreesPerPixel, float(delta.y()) * kLookDegreesPerPixel);
+        else camera_.orbit(-float(delta.x()) * kOrbitDegreesPerPixel, float(delta.y()) * kOrbitDegreesPerPixel);
+        updateCamera();
+    } else if (e->buttons() & Qt::MiddleButton) {
+        camera_.pan(float(delta.x()) / float(height()), float(delta.y()) / float(height()));
+        updateCamera();
+    } else if (walk_ && (e->buttons() & Qt::LeftButton)) {
+        camera_.lookAround(-float(delta.x()) * kLookDegreesPerPixel, float(delta.y()) * kLookDegreesPerPixel);
+        updateCamera();
+    }
+}
+
+void LadderView::mouseReleaseEvent(QMouseEvent* e) {
+    if (e->button() == Qt::LeftButton && dragging_) {
+        dragging_ = false;
+        emit dragEnded();
+    }
+}
+
+void LadderView::wheelEvent(QWheelEvent* e) {
+    camera_.zoom(float(e->angleDelta().y()) / 120.0f);
+    updateCamera();
+}
+
+void LadderView::keyPressEvent(QKeyEvent* e) {
+    const int k = e->key();
+    if (k == Qt::Key_Home) {
+        resetView();
+        return;
+    }
+    if (k == Qt::Key_Escape && walk_) {
+        setWalkMode(false);
+        return;
+    }
+    const bool walkKey = k == Qt::Key_W || k == Qt::Key_A || k == Qt::Key_S || k == Qt::Key_D || k == Qt::Key_Q || k == Qt::Key_E;
+    if (walk_ && walkKey && !(e->modifiers() & Qt::ControlModifier)) {
+        if (!e->isAutoRepeat()) keysDown_.insert(k);
+        if (!walkTimer_.isActive()) {
+            walkClock_.start();
+            walkTimer_.start();
+        }
+        return;
+    }
+    if (!e->isAutoRepeat() || k == Qt::Key_Left || k == Qt::Key_Right || k == Qt::Key_Comma || k == Qt::Key_Period)
+        emit unhandledKey(QKeySequence(e->keyCombination()));
+}
+
+void LadderView::keyReleaseEvent(QKeyEvent* e) {
+    if (!e->isAutoRepeat()) keysDown_.remove(e->key());
+}
+
+void LadderView::resizeEvent(QResizeEvent* e) {
+    Qt3DExtras::Qt3DWindow::resizeEvent(e);
+    updateCamera();
+}
+
+// Walking speed follows the room's size: a person's pace in a normal room.
+void LadderView::walkTick() {
+    const float dt = std::min(0.1f, float(walkClock_.restart()) / 1000.0f);
+    if (keysDown_.isEmpty()) {
+        walkTimer_.stop();
+        return;
+    }
+    const float speed = 1.2f * std::max(1.0f, float(extent_) / 1.2f) * dt;
+    auto down = [this](int k) { return keysDown_.contains(k) ? 1.0f : 0.0f; };
+    camera_.walk((down(Qt::Key_W) - down(Qt::Key_S)) * speed, (down(Qt::Key_D) - down(Qt::Key_A)) * speed,
+                 (down(Qt::Key_E) - down(Qt::Key_Q)) * speed);
+    updateCamera();
+}
+
+}  // namespace jlui

@@ -1,0 +1,88 @@
+// The 3-D view: the ladder (instanced blocks, ribbons, the mouse spring) in a
+// room; orbit and walk camera; a press on a block starts a drag.
+#pragma once
+
+#include "core/frame.h"
+#include "core/scene.h"
+#include "ui/view_camera.h"
+
+#include <QElapsedTimer>
+#include <QKeySequence>
+#include <QSet>
+#include <QTimer>
+#include <Qt3DExtras/Qt3DWindow>
+#include <optional>
+
+namespace Qt3DRender {
+class QRenderCapture;
+}
+
+namespace jlui {
+
+class BlockInstances;
+class StripEntity;
+class Room;
+
+class LadderView : public Qt3DExtras::Qt3DWindow {
+    Q_OBJECT
+public:
+    LadderView();
+
+    // A new or edited scene: shapes, colours and the room; the camera too when asked.
+    void setScene(const jl::Scene& scene, bool resetCamera);
+    void showFrame(const jl::Frame& frame);
+    void resetView();
+    void setWalkMode(bool on);
+    bool walkMode() const { return walk_; }
+
+    Qt3DRender::QRenderCapture* capture() const { return capture_; }
+    // The point of the ladder's plane (z = 0) under a window pixel.
+    std::optional<jl::Vec2> planePoint(const QPointF& pixel) const;
+    // Where a point of the ladder's plane appears in the window (for tests and hints).
+    QPointF pixelOf(const jl::Vec2& point) const;
+
+signals:
+    void dragBegun(const jl::Vec2& point);
+    void dragMoved(const jl::Vec2& target);
+    void dragEnded();
+    // Keys the view does not use, for the main window's shortcuts (this
+    // window, embedded, has the keyboard focus when the ladder is clicked).
+    void unhandledKey(const QKeySequence& key);
+    void walkModeChanged(bool on);
+
+protected:
+    void mousePressEvent(QMouseEvent* e) override;
+    void mouseMoveEvent(QMouseEvent* e) override;
+    void mouseReleaseEvent(QMouseEvent* e) override;
+    void wheelEvent(QWheelEvent* e) override;
+    void keyPressEvent(QKeyEvent* e) override;
+    void keyReleaseEvent(QKeyEvent* e) override;
+    void resizeEvent(QResizeEvent* e) override;
+
+private:
+    void updateCamera();
+    void walkTick();
+
+    Qt3DCore::QEntity* root_;
+    BlockInstances* blocks_;
+    StripEntity* ribbons_;
+    StripEntity* dragLine_;
+    Room* room_;
+    Qt3DRender::QRenderCapture* capture_;
+    ViewCamera camera_;
+    jl::ViewSpec view_;
+    double extent_ = 0.36;
+    double blockWidth_ = 0.045, ribbonWidth_ = 0.008, ribbonInset_ = 0.006;
+    double blockLength_ = 0.06;
+    bool ribbonsVisible_ = true;
+    bool ribbonsShown_ = false;
+    bool walk_ = false;
+    bool dragging_ = false;
+    int grabbed_ = -1;
+    QPointF lastMouse_;
+    QSet<int> keysDown_;
+    QTimer walkTimer_;
+    QElapsedTimer walkClock_;
+};
+
+}  // namespace jlui

@@ -1,0 +1,315 @@
+#include "ui/main_window.h"
+
+#include "ui/change_value.h"
+#include "ui/events_panel.h"
+#include "ui/ladder_panel.h"
+#include "ui/ladder_view.h"
+#include "ui/script_panel.h"
+#include "ui/shader_material.h"
+#include "ui/sim_controller.h"
+#include "ui/simulation_panel.h"
+#include "ui/timeline.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QDockWidget>
+#include <QLabel>
+#include <QMenu>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSignalBlocker>
+#include <QSettings>
+#include <QSlider>
+#include <QStatusBar>
+#include <QStyle>
+#include <QToolBar>
+#include <QVBoxLayout>
+#include <cmath>
+
+namespace jlui {
+
+namespace {
+// The speed slider is logarithmic: 0.01x at the left, 4x at the right.
+constexpr double kMinSpeed = 0.01, kMaxSpeed = 4.0;
+constexpr int kSpeedTicks = 200;
+int speedToTick(double s) { return int(std::lround(kSpeedTicks * std::log(s / kMinSpeed) / std::log(kMaxSpeed / kMinSpeed))); }
+double tickToSpeed(int t) { return kMinSpeed * std::pow(kMaxSpeed / kMinSpeed, double(t) / kSpeedTicks); }
+
+QString energyText(double joules) {
+    if (std::abs(joules) < 1) return QString("%1 mJ").arg(joules * 1000, 0, 'f', 3);
+    return QString("%1 J").arg(joules, 0, 'f', 4);
+}
+}  // namespace
+
+MainWindow::MainWindow(Options options) : options_(options) {
+    ensureResources();
+    setObjectName("mainWindow");
+    setWindowIcon(QIcon(":/icons/jacobsladder.svg"));
+    setAcceptDrops(true);
+    setDockOptions(AnimatedDocks | AllowTabbedDocks);
+    doc_ = new Document(this);
+    sim_ = new SimController(this);
+
+    view_ = new LadderView;
+    viewContainer_ = QWidget::createWindowContainer(view_, this);
+    viewContainer_->setObjectName("ladderView");
+    viewContainer_->setFocusPolicy(Qt::StrongFocus);
+    viewContainer_->setMinimumSize(320, 240);
+    viewContainer_->setToolTip(tr("Left-drag a block to push it; right-drag to orbit; wheel to zoom; middle-drag to pan; Home resets the view."));
+    timeline_ = new Timeline(this);
+    auto* centre = new QWidget(this);
+    auto* box = new QVBoxLayout(centre);
+    box->setContentsMargins(0, 0, 0, 0);
+    box->setSpacing(2);
+    box->addWidget(viewContainer_, 1);
+    box->addWidget(timeline_);
+    setCentralWidget(centre);
+
+    createActions();
+    createDocks();
+    createMenus();
+    createToolBar();
+    createStatusBar();
+    connectView();
+
+    connect(doc_, &Document::changed, this, &MainWindow::onSceneChanged);
+    connect(doc_, &Document::modifiedChanged, this, &MainWindow::updateTitle);
+    connect(doc_, &Document::pathChanged, this, &MainWindow::updateTitle);
+    connect(sim_, &SimController::statusChanged, this, &MainWindow::onStatus);
+    connect(timeline_, &Timeline::seekRequested, sim_, &SimController::seek);
+    connect(eventsPanel_, &EventsPanel::seekRequested, sim_, &SimController::seek);
+
+    readSettings();
+    onSceneChanged(SceneChange::Whole);
+    updateTitle();
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::createActions() {
+    auto make = [this](const QString& text, const QList<QKeySequence>& keys, QStyle::StandardPixmap icon, const QString& tip) {
+        auto* a = new QAction(text, this);
+        a->setShortcuts(keys);
+        if (icon != QStyle::SP_CustomBase) a->setIcon(style()->standardIcon(icon));
+        a->setToolTip(tip + (keys.isEmpty() ? QString() : QString(" (%1)").arg(keys.first().toString(QKeySequence::NativeText))));
+        a->setStatusTip(tip);
+        return a;
+    };
+    newAct_ = make(tr("&New"), QKeySequence::keyBindings(QKeySequence::New), QStyle::SP_FileIcon, tr("A new ladder of six blocks"));
+    openAct_ = make(tr("&Open..."), QKeySequence::keyBindings(QKeySequence::Open), QStyle::SP_DialogOpenButton, tr("Open a scene file"));
+    saveAct_ = make(tr("&Save"), QKeySequence::keyBindings(QKeySequence::Save), QStyle::SP_DialogSaveButton, tr("Save the scene"));
+    saveAsAct_ = make(tr("Save &As..."), QKeySequence::keyBindings(QKeySequence::SaveAs), QStyle::SP_CustomBase, tr("Save the scene under a new name"));
+    revertAct_ = make(tr("&Revert"), {}, QStyle::SP_BrowserReload, tr("Throw away unsaved changes and read the file again"));
+    quitAct_ = make(tr("&Quit"), QKeySequence::keyBindings(QKeySequence::Quit), QStyle::SP_CustomBase, tr("Quit the program"));
+    undoAct_ = doc_->undoStack()->createUndoAction(this, tr("&Undo"));
+    undoAct_->setShortcuts(QKeySequence::Undo);
+    redoAct_ = doc_->undoStack()->createRedoAction(this, tr("&Redo"));
+    redoAct_->setShortcuts(QKeySequence::Redo);
+    playAct_ = make(tr("&Play"), {Qt::Key_Space}, QStyle::SP_MediaPlay, tr("Play or pause the simulation"));
+    stepAct_ = make(tr("Step &forward"), {Qt::Key_Right, Qt::Key_Period}, QStyle::SP_MediaSeekForward, tr("One frame forward"));
+    backAct_ = make(tr("Step &back"), {Qt::Key_Left, Qt::Key_Comma}, QStyle::SP_MediaSeekBackward, tr("One frame back"));
+    restartAct_ = make(tr("&Restart"), {QKeySequence(Qt::CTRL | Qt::Key_R)}, QStyle::SP_MediaSkipBackward, tr("Back to the start"));
+    resetViewAct_ = make(tr("Reset &view"), {Qt::Key_Home}, QStyle::SP_CustomBase, tr("Look at the whole ladder again"));
+    walkAct_ = make(tr("&Walk mode"), {Qt::Key_V}, QStyle::SP_CustomBase, tr("Walk around the room: W A S D to move, Q E down and up, drag to look, Esc to stop"));
+    walkAct_->setCheckable(true);
+
+    connect(newAct_, &QAction::triggered, this, &MainWindow::newFile);
+    connect(openAct_, &QAction::triggered, this, &MainWindow::openDialog);
+    connect(saveAct_, &QAction::triggered, this, &MainWindow::save);
+    connect(saveAsAct_, &QAction::triggered, this, &MainWindow::saveAsDialog);
+    connect(revertAct_, &QAction::triggered, this, &MainWindow::revert);
+    connect(quitAct_, &QAction::triggered, this, &QWidget::close);
+    connect(playAct_, &QAction::triggered, sim_, &SimController::togglePlay);
+    connect(stepAct_, &QAction::triggered, sim_, &SimController::stepForward);
+    connect(backAct_, &QAction::triggered, sim_, &SimController::stepBack);
+    connect(restartAct_, &QAction::triggered, sim_, &SimController::restart);
+    connect(resetViewAct_, &QAction::triggered, this, [this] { view_->resetView(); });
+    connect(walkAct_, &QAction::toggled, this, [this](bool on) { view_->setWalkMode(on); });
+    connect(view_, &LadderView::walkModeChanged, walkAct_, &QAction::setChecked);
+}
+
+void MainWindow::createMenus() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addActions({newAct_, openAct_});
+    recentMenu_ = file->addMenu(tr("Open &Recent"));
+    file->addSeparator();
+    file->addActions({saveAct_, saveAsAct_, revertAct_});
+    file->addSeparator();
+    file->addAction(quitAct_);
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    edit->addActions({undoAct_, redoAct_});
+    QMenu* sim = menuBar()->addMenu(tr("&Simulation"));
+    sim->addActions({playAct_, stepAct_, backAct_, restartAct_});
+    viewMenu_ = menuBar()->addMenu(tr("&View"));
+    viewMenu_->addActions({resetViewAct_, walkAct_});
+    viewMenu_->addSeparator();
+    for (QDockWidget* d : findChildren<QDockWidget*>()) viewMenu_->addAction(d->toggleViewAction());
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&About"), this, [this] {
+        QMessageBox::about(this, tr("About Jacob's Ladder Studio"),
+                           tr("<b>Jacob's Ladder Studio</b> %1<p>Build, simulate and teach with a virtual Jacob's ladder.</p>")
+                               .arg(QApplication::applicationVersion()));
+    });
+    updateRecentMenu();
+}
+
+void MainWindow::createToolBar() {
+    QToolBar* bar = addToolBar(tr("Main"));
+    bar->setObjectName("mainToolBar");
+    bar->setMovable(false);
+    bar->addActions({newAct_, openAct_, saveAct_});
+    bar->addSeparator();
+    bar->addActions({undoAct_, redoAct_});
+    bar->addSeparator();
+    bar->addActions({restartAct_, backAct_, playAct_, stepAct_});
+    bar->addSeparator();
+    auto* speedTitle = new QLabel(tr(" Speed "), bar);
+    speedSlider_ = new QSlider(Qt::Horizontal, bar);
+    speedSlider_->setObjectName("speed");
+    speedSlider_->setRange(0, kSpeedTicks);
+    speedSlider_->setFixedWidth(160);
+    speedSlider_->setToolTip(tr("Simulated seconds per real second, from 0.01x (slow motion) to 4x."));
+    speedLabel_ = new QLabel(bar);
+    speedLabel_->setMinimumWidth(52);
+    bar->addWidget(speedTitle);
+    bar->addWidget(speedSlider_);
+    bar->addWidget(speedLabel_);
+    connect(speedSlider_, &QSlider::valueChanged, this, [this](int t) { setSpeed(tickToSpeed(t)); });
+    bar->addSeparator();
+    bar->addActions({resetViewAct_, walkAct_});
+}
+
+void MainWindow::setSpeed(double factor) {
+    speed_ = std::clamp(factor, kMinSpeed, kMaxSpeed);
+    sim_->setSpeed(speed_);
+    speedLabel_->setText(QString("%1×").arg(speed_, 0, 'f', speed_ < 0.1 ? 2 : (speed_ < 1 ? 2 : 1)));
+    const QSignalBlocker block(speedSlider_);
+    speedSlider_->setValue(speedToTick(speed_));
+}
+
+void MainWindow::createDocks() {
+    auto dock = [this](const QString& title, const QString& name, QWidget* w, Qt::DockWidgetArea area) {
+        auto* d = new QDockWidget(title, this);
+        d->setObjectName(name);
+        d->setWidget(w);
+        addDockWidget(area, d);
+        return d;
+    };
+    ladderPanel_ = new LadderPanel(doc_, this);
+    simulationPanel_ = new SimulationPanel(doc_, this);
+    scriptPanel_ = new ScriptPanel(doc_, this);
+    eventsPanel_ = new EventsPanel(this);
+    dock(tr("Ladder"), "ladderDock", ladderPanel_, Qt::LeftDockWidgetArea);
+    QDockWidget* simDock = dock(tr("Simulation"), "simulationDock", simulationPanel_, Qt::LeftDockWidgetArea);
+    QDockWidget* scriptDock = dock(tr("Script"), "scriptDock", scriptPanel_, Qt::RightDockWidgetArea);
+    QDockWidget* eventsDock = dock(tr("Events"), "eventsDock", eventsPanel_, Qt::RightDockWidgetArea);
+    tabifyDockWidget(findChild<QDockWidget*>("ladderDock"), simDock);
+    findChild<QDockWidget*>("ladderDock")->raise();
+    splitDockWidget(scriptDock, eventsDock, Qt::Vertical);
+}
+
+void MainWindow::createStatusBar() {
+    auto label = [this](const QString& name, const QString& tip, int width) {
+        auto* l = new QLabel(this);
+        l->setObjectName(name);
+        l->setToolTip(tip);
+        l->setMinimumWidth(width);
+        statusBar()->addPermanentWidget(l);
+        return l;
+    };
+    warningLabel_ = new QLabel(this);
+    warningLabel_->setObjectName("warning");
+    statusBar()->addWidget(warningLabel_, 1);
+    timeLabel_ = label("time", tr("Simulated time of the frame on screen, and how far the run has been recorded."), 150);
+    rateLabel_ = label("rate", tr("Real-time factor (simulated seconds per second) and solver steps per second."), 190);
+    energyLabel_ = label("energy", tr("Kinetic plus potential energy; in brackets, what the energy books fail to explain."), 190);
+    residualLabel_ = label("residual", tr("Largest gap left in a hinge pin after the last step."), 130);
+}
+
+void MainWindow::connectView() {
+    connect(view_, &LadderView::dragBegun, sim_, &SimController::beginDrag);
+    connect(view_, &LadderView::dragMoved, sim_, &SimController::moveDrag);
+    connect(view_, &LadderView::dragEnded, sim_, &SimController::endDrag);
+    // The embedded 3-D window keeps the keyboard: its keys still reach our shortcuts.
+    connect(view_, &LadderView::unhandledKey, this, [this](const QKeySequence& key) {
+        for (QAction* a : findChildren<QAction*>())
+            if (a->isEnabled() && a->shortcuts().contains(key)) return a->trigger();
+    });
+}
+
+void MainWindow::loadIntoSimulation() {
+    ++loadsPosted_;
+    sim_->load(doc_->scene());
+}
+
+void MainWindow::onSceneChanged(SceneChange change) {
+    const jl::Scene& scene = doc_->scene();
+    if (change == SceneChange::Drags) {
+        // Drags the running simulation recorded itself need no rebuild.
+        const auto s = sim_->shown();
+        if (s && s->recorded && s->recorded->drags == scene.drags) return;
+    }
+    view_->setScene(scene, change == SceneChange::Whole);
+    timeline_->setDuration(scene.duration);
+    ladderPanel_->refresh();
+    simulationPanel_->refresh();
+    scriptPanel_->refresh();
+    loadIntoSimulation();
+}
+
+void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {
+    if (s->frame) view_->showFrame(*s->frame);
+    timeline_->setState(s->frameIndex * s->interval, s->headTime, s->events);
+    eventsPanel_->setEvents(s->events);
+    if (s->playing != playing_) {
+        playing_ = s->playing;
+        playAct_->setIcon(style()->standardIcon(playing_ ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+        playAct_->setText(playing_ ? tr("&Pause") : tr("&Play"));
+    }
+    const double t = s->frame ? s->frame->time : 0;
+    timeLabel_->setText(tr("t = %1 s  (of %2 s)").arg(t, 0, 'f', 3).arg(s->headTime, 0, 'f', 2));
+    rateLabel_->setText(tr("%1× real time · %2 steps/s").arg(s->realTimeFactor, 0, 'f', 2).arg(s->stepsPerSecond, 0, 'f', 0));
+    if (s->frame) {
+        const jl::EnergyFrame& e = s->frame->energy;
+        energyLabel_->setText(tr("E = %1  (books %2)").arg(energyText(e.total()), energyText(e.balance())));
+        residualLabel_->setText(tr("gap %1 m").arg(s->frame->solver.residual, 0, 'e', 1));
+    }
+    if (!s->failure.empty()) {
+        warningLabel_->setStyleSheet("color: #b00020; font-weight: bold;");
+        warningLabel_->setText(tr("Stopped: %1").arg(QString::fromStdString(s->failure)));
+    } else {
+        warningLabel_->setStyleSheet({});
+        warningLabel_->setText(s->dragging ? tr("Pushing a block: release the button to let go.") : QString());
+    }
+    syncRecordedDrags(*s);
+}
+
+// A finished mouse drag becomes part of the scene (saved, undoable), so a
+// replay of the file reproduces it.
+void MainWindow::syncRecordedDrags(const SimStatus& s) {
+    if (s.loadSerial != loadsPosted_ || s.dragging || !s.recorded) return;
+    if (s.recorded->drags == doc_->scene().drags) return;
+    changeScene(doc_,
+                SceneField<std::vector<jl::DragRecord>>{UndoId::RecordDrag, "drags", SceneChange::Drags,
+                                                        [](const jl::Scene& sc) { return sc.drags; },
+                                                        [](jl::Scene& sc, const std::vector<jl::DragRecord>& v) { sc.drags = v; }},
+                s.recorded->drags, tr("Push a block"));
+}
+
+void MainWindow::readSettings() {
+    QSettings settings;
+    if (!restoreGeometry(settings.value("window/geometry").toByteArray())) resize(1440, 900);
+    restoreState(settings.value("window/state").toByteArray());
+    setSpeed(settings.value("simulation/speed", 1.0).toDouble());
+    const qulonglong budgetMb = settings.value("simulation/historyMegabytes", 512).toULongLong();
+    sim_->setMemoryBudget(std::size_t(budgetMb) << 20);
+}
+
+void MainWindow::writeSettings() const {
+    QSettings settings;
+    settings.setValue("window/geometry", saveGeometry());
+    settings.setValue("window/state", saveState());
+    settings.setValue("simulation/speed", speed_);
+}
+
+}  // namespace jlui

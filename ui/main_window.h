@@ -1,0 +1,118 @@
+// The desktop program's window: the 3-D view and timeline in the middle, the
+// Ladder, Simulation, Script and Events docks, transport controls, files.
+#pragma once
+
+#include "ui/document.h"
+#include "ui/sim_status.h"
+
+#include <QMainWindow>
+#include <memory>
+
+class QAction;
+class QLabel;
+class QMenu;
+class QSlider;
+
+namespace jlui {
+
+class EventsPanel;
+class LadderPanel;
+class LadderView;
+class ScriptPanel;
+class SimController;
+class SimulationPanel;
+class Timeline;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    struct Options {
+        bool askToRecover = true;  // offer a recovery file left by a crash
+        bool askToSave = true;     // prompt on closing with unsaved changes
+    };
+    explicit MainWindow(Options options);
+    explicit MainWindow() : MainWindow(Options{}) {}
+    ~MainWindow() override;
+
+    // Opens a scene file; on errors shows them all and keeps the open scene.
+    bool openFile(const QString& path);
+    bool saveTo(const QString& path);
+    void offerRecovery();
+
+    Document* document() const { return doc_; }
+    SimController* controller() const { return sim_; }
+    LadderView* ladderView() const { return view_; }
+    QWidget* viewContainer() const { return viewContainer_; }
+    void setSpeed(double factor);
+
+protected:
+    void closeEvent(QCloseEvent* e) override;
+    void dragEnterEvent(QDragEnterEvent* e) override;
+    void dropEvent(QDropEvent* e) override;
+
+private:
+    void createActions();
+    void createMenus();
+    void createToolBar();
+    void createDocks();
+    void createStatusBar();
+    void connectView();
+    void readSettings();
+    void writeSettings() const;
+
+    void newFile();
+    void openDialog();
+    bool save();
+    bool saveAsDialog();
+    void revert();
+    bool maybeSave();
+    void addRecent(const QString& path);
+    void updateRecentMenu();
+    void updateTitle();
+
+    void onSceneChanged(SceneChange change);
+    void onStatus(std::shared_ptr<const SimStatus> s);
+    void syncRecordedDrags(const SimStatus& s);
+    void loadIntoSimulation();
+
+    Options options_;
+    Document* doc_;
+    SimController* sim_;
+    LadderView* view_;
+    QWidget* viewContainer_;
+    Timeline* timeline_;
+    LadderPanel* ladderPanel_;
+    SimulationPanel* simulationPanel_;
+    ScriptPanel* scriptPanel_;
+    EventsPanel* eventsPanel_;
+    QMenu* recentMenu_ = nullptr;
+    QMenu* viewMenu_ = nullptr;
+    QSlider* speedSlider_ = nullptr;
+    QLabel* speedLabel_ = nullptr;
+    QLabel* timeLabel_;
+    QLabel* rateLabel_;
+    QLabel* energyLabel_;
+    QLabel* residualLabel_;
+    QLabel* warningLabel_;
+    std::uint64_t loadsPosted_ = 0;
+    std::uint64_t shownLoad_ = 0;
+    bool playing_ = false;
+    double speed_ = 1.0;
+
+    QAction* newAct_;
+    QAction* openAct_;
+    QAction* saveAct_;
+    QAction* saveAsAct_;
+    QAction* revertAct_;
+    QAction* quitAct_;
+    QAction* undoAct_;
+    QAction* redoAct_;
+    QAction* playAct_;
+    QAction* stepAct_;
+    QAction* backAct_;
+    QAction* restartAct_;
+    QAction* resetViewAct_;
+    QAction* walkAct_;
+};
+
+}  // namespace jlui

@@ -1,0 +1,76 @@
+#include "ui/room.h"
+
+#include <QColor>
+#include <QVector3D>
+#include <Qt3DCore/QTransform>
+#include <Qt3DExtras/QCuboidMesh>
+#include <Qt3DExtras/QDiffuseSpecularMaterial>
+#include <Qt3DRender/QDirectionalLight>
+#include <Qt3DRender/QPointLight>
+
+namespace jlui {
+
+namespace {
+// Dimensions for a ladder reaching 0.5 m below the hand; larger ladders scale the room.
+constexpr float kTableTopBelowLadder = 0.12f;  // m between the bottom block and the table
+constexpr float kTableHeight = 0.74f, kTableWidth = 1.4f, kTableDepth = 0.7f, kTop = 0.035f;
+constexpr float kRoomWidth = 6.0f, kRoomDepth = 5.0f, kRoomHeight = 3.0f;
+
+void box(Qt3DCore::QNode* parent, QVector3D centre, QVector3D size, QColor color, float shininess = 8) {
+    auto* e = new Qt3DCore::QEntity(parent);
+    auto* mesh = new Qt3DExtras::QCuboidMesh(e);
+    mesh->setXExtent(size.x());
+    mesh->setYExtent(size.y());
+    mesh->setZExtent(size.z());
+    auto* t = new Qt3DCore::QTransform(e);
+    t->setTranslation(centre);
+    auto* m = new Qt3DExtras::QDiffuseSpecularMaterial(e);
+    m->setDiffuse(color);
+    m->setAmbient(color.darker(300));
+    m->setSpecular(QColor(30, 30, 30));
+    m->setShininess(shininess);
+    e->addComponent(mesh);
+    e->addComponent(t);
+    e->addComponent(m);
+}
+}  // namespace
+
+Room::Room(Qt3DCore::QNode* parent) : Qt3DCore::QEntity(parent) {
+    transform_ = new Qt3DCore::QTransform(this);
+    addComponent(transform_);
+    // Built for a unit room whose table top is at y = 0, centred under the ladder.
+    const float floorY = -kTableHeight;
+    box(this, {0, -kTop / 2, 0}, {kTableWidth, kTop, kTableDepth}, QColor(112, 84, 62), 20);
+    for (float sx : {-1.f, 1.f})
+        for (float sz : {-1.f, 1.f})
+            box(this, {sx * (kTableWidth / 2 - 0.06f), floorY / 2 - kTop / 2, sz * (kTableDepth / 2 - 0.06f)},
+                {0.05f, kTableHeight - kTop, 0.05f}, QColor(80, 60, 45));
+    box(this, {0, floorY - 0.02f, 0}, {kRoomWidth, 0.04f, kRoomDepth}, QColor(178, 172, 160));
+    box(this, {0, floorY + kRoomHeight / 2, -kRoomDepth / 2}, {kRoomWidth, kRoomHeight, 0.05f}, QColor(196, 200, 208));
+    box(this, {-kRoomWidth / 2, floorY + kRoomHeight / 2, 0}, {0.05f, kRoomHeight, kRoomDepth}, QColor(186, 190, 199));
+    box(this, {kRoomWidth / 2, floorY + kRoomHeight / 2, 0}, {0.05f, kRoomHeight, kRoomDepth}, QColor(186, 190, 199));
+    // A skirting board where wall meets floor, so the room reads as a room.
+    box(this, {0, floorY + 0.05f, -kRoomDepth / 2 + 0.03f}, {kRoomWidth, 0.1f, 0.02f}, QColor(245, 245, 245));
+
+    auto* sun = new Qt3DCore::QEntity(this);
+    auto* light = new Qt3DRender::QDirectionalLight(sun);
+    light->setWorldDirection(QVector3D(-0.35f, -0.8f, -0.6f));
+    light->setIntensity(0.6f);
+    sun->addComponent(light);
+    auto* lamp = new Qt3DCore::QEntity(this);
+    auto* point = new Qt3DRender::QPointLight(lamp);
+    point->setIntensity(0.35f);
+    auto* lampAt = new Qt3DCore::QTransform(lamp);
+    lampAt->setTranslation({1.0f, 2.0f, 2.0f});
+    lamp->addComponent(point);
+    lamp->addComponent(lampAt);
+    fitTo(0.36);
+}
+
+void Room::fitTo(double extent) {
+    const float scale = std::max(1.0f, float(extent) / 1.2f);
+    transform_->setScale(scale);
+    transform_->setTranslation({0, -float(extent) - kTableTopBelowLadder * scale, 0});
+}
+
+}  // namespace jlui

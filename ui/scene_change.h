@@ -1,0 +1,12 @@
+// Which part of the scene an edit touched: one typed change signal for every
+// edit, and the merge ids of undo commands, kept in one enum each.
+#pragma once
+
+namespace jlui {
+
+enum class SceneChange { Whole, Ladder, Solver, Script, Drags, Text };
+
+// Commands with the same id and the same field key merge (a spin-box drag is one undo step).
+enum class UndoId { LadderValue = 1, SolverValue, ScriptTable, RecordDrag, Description };
+
+}  // namespace jlui

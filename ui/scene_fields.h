@@ -1,0 +1,42 @@
+// The editable numbers of a scene with their units and one-line descriptions:
+// the metadata that drives the generic value forms of the Ladder and Simulation docks.
+#pragma once
+
+#include "core/scene.h"
+#include "ui/change_value.h"
+
+#include <QString>
+#include <functional>
+#include <vector>
+
+namespace jlui {
+
+struct NumberField {
+    QString key;       // stable name, also the undo merge key
+    QString label;
+    QString unit;      // as shown, after the scale is applied
+    QString tip;       // one line: what it means and its effect
+    double min = 0, max = 1;    // in shown units
+    double scale = 1;  // shown = SI * scale (mm for lengths)
+    int decimals = 3;  // 0: an integer field
+    bool scientific = false;  // tolerances: typed as 1e-8
+    SceneChange change = SceneChange::Ladder;
+    std::function<double(const jl::Scene&)> get;       // SI
+    std::function<void(jl::Scene&, double)> set;       // SI
+};
+
+std::vector<NumberField> ladderNumberFields();
+std::vector<NumberField> solverNumberFields();
+
+// The whole sub-spec is what an edit stores, so side effects (dropping
+// overrides past a new block count) undo exactly.
+SceneField<jl::LadderSpec> ladderField(const QString& key);
+SceneField<jl::SolverSpec> solverField(const QString& key);
+
+// Applies a number to a copy of the scene and pushes it as one undo step.
+void changeNumber(Document* doc, const NumberField& f, double si);
+
+// A ladder of n blocks: per-block data past the end dropped, explicit start poses reset.
+void setBlockCount(jl::LadderSpec& ladder, int n);
+
+}  // namespace jlui

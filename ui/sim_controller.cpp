@@ -1,0 +1,62 @@
+#include "ui/sim_controller.h"
+
+#include "ui/sim_worker.h"
+
+#include <QThread>
+
+namespace jlui {
+
+namespace {
+constexpr std::size_t kDefaultBudget = std::size_t(512) << 20;
+}
+
+SimController::SimController(QObject* parent) : QObject(parent), worker_(std::make_unique<SimWorker>(kDefaultBudget)) {
+    thread_ = QThread::create([w = worker_.get()] { w->run(); });
+    thread_->setObjectName("simulation");
+    thread_->start();
+    poll_.setInterval(16);
+    connect(&poll_, &QTimer::timeout, this, &SimController::poll);
+    poll_.start();
+}
+
+SimController::~SimController() {
+    worker_->abort();
+    worker_->post(cmd::Quit{});
+    // A single engine step cannot be interrupted; if one never ends, leave
+    // the thread to the process's exit rather than hang the window's close.
+    if (!thread_->wait(QDeadlineTimer(3000))) {
+        qWarning("the simulation thread did not stop; leaving it to the exit");
+        (void)worker_.release();
+        return;
+    }
+    delete thread_;
+}
+
+void SimController::load(const jl::Scene& scene) { worker_->post(cmd::Load{scene}); }
+void SimController::play() { worker_->post(cmd::Play{}); }
+void SimController::pause() { worker_->post(cmd::Pause{}); }
+void SimController::togglePlay() {
+    const auto s = status();
+    if (s && s->playing) pause();
+    else play();
+}
+void SimController::stepForward() { worker_->post(cmd::StepForward{}); }
+void SimController::stepBack() { worker_->post(cmd::StepBack{}); }
+void SimController::restart() { worker_->post(cmd::Restart{}); }
+void SimController::seek(double time) { worker_->post(cmd::Seek{time}); }
+void SimController::setSpeed(double factor) { worker_->post(cmd::Speed{factor}); }
+void SimController::setMemoryBudget(std::size_t bytes) { worker_->post(cmd::Budget{bytes}); }
+void SimController::beginDrag(const jl::Vec2& point) { worker_->post(cmd::DragBegin{point}); }
+void SimController::moveDrag(const jl::Vec2& target) { worker_->post(cmd::DragMove{target}); }
+void SimController::endDrag() { worker_->post(cmd::DragEnd{}); }
+
+std::shared_ptr<const SimStatus> SimController::status() const { return worker_->status(); }
+
+void SimController::poll() {
+    auto s = worker_->status();
+    if (shown_ && s->serial == shown_->serial) return;
+    shown_ = std::move(s);
+    emit statusChanged(shown_);
+}
+
+}  // namespace jlui

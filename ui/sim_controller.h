@@ -1,0 +1,57 @@
+// The UI's handle on the running simulation: posts commands to the worker
+// thread and, on a ~60 Hz timer, picks up the newest published status.
+#pragma once
+
+#include "core/geometry.h"
+#include "core/scene.h"
+#include "ui/sim_status.h"
+
+#include <QObject>
+#include <QTimer>
+#include <memory>
+
+class QThread;
+
+namespace jlui {
+
+class SimWorker;
+
+class SimController : public QObject {
+    Q_OBJECT
+public:
+    explicit SimController(QObject* parent = nullptr);
+    ~SimController() override;
+
+    void load(const jl::Scene& scene);
+    void play();
+    void pause();
+    void togglePlay();
+    void stepForward();
+    void stepBack();
+    void restart();
+    void seek(double time);  // s; beyond the head it simulates up to there
+    void setSpeed(double factor);  // 0.01 .. 4
+    void setMemoryBudget(std::size_t bytes);
+    // The mouse spring: `point` and `target` lie in the ladder's plane (m).
+    void beginDrag(const jl::Vec2& point);
+    void moveDrag(const jl::Vec2& target);
+    void endDrag();
+
+    // The newest status the worker published; never waits on the worker.
+    std::shared_ptr<const SimStatus> status() const;
+    // The status the views last drew (updated by the timer).
+    std::shared_ptr<const SimStatus> shown() const { return shown_; }
+
+signals:
+    void statusChanged(std::shared_ptr<const jlui::SimStatus> status);
+
+private:
+    void poll();
+
+    std::unique_ptr<SimWorker> worker_;
+    QThread* thread_ = nullptr;
+    QTimer poll_;
+    std::shared_ptr<const SimStatus> shown_;
+};
+
+}  // namespace jlui

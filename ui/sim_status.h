@@ -1,0 +1,34 @@
+// What the simulation thread publishes for the UI: an immutable snapshot of
+// the run, swapped whole, so the UI reads it without ever waiting on a step.
+#pragma once
+
+#include "core/frame.h"
+#include "core/scene.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace jlui {
+
+struct SimStatus {
+    std::shared_ptr<const jl::Frame> frame;                // on screen (the cursor's frame)
+    std::shared_ptr<const std::vector<jl::Event>> events;  // every event up to the head, in time order
+    std::shared_ptr<const jl::Scene> recorded;             // the running scene with the drags recorded so far
+    int frameIndex = 0;      // the cursor
+    int frameCount = 0;      // recorded frames; the head is frameCount - 1
+    double interval = 1.0 / 60.0;  // s between frames
+    double headTime = 0;     // s, simulated so far
+    bool playing = false;
+    bool dragging = false;
+    double speed = 1.0;
+    double realTimeFactor = 0;  // simulated seconds per wall second, lately
+    double stepsPerSecond = 0;  // solver steps per wall second, lately
+    std::uint64_t headHash = 0; // Simulation::stateHash() at the head
+    std::string failure;        // non-empty: the run stopped and says why
+    std::uint64_t serial = 0;   // grows with every publication
+    std::uint64_t loadSerial = 0; // grows with every scene load
+};
+
+}  // namespace jlui

@@ -1,0 +1,106 @@
+// The simulation thread's loop: drains the UI's commands between steps,
+// paces the run to real time, records frames and publishes the newest status.
+#pragma once
+
+#include "core/scene.h"
+#include "core/simulation.h"
+#include "ui/frame_history.h"
+#include "ui/sim_status.h"
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <variant>
+
+namespace jlui {
+
+namespace cmd {
+struct Load { jl::Scene scene; };
+struct Play {};
+struct Pause {};
+struct StepForward {};
+struct StepBack {};
+struct Restart {};
+struct Seek { double time; };
+struct Speed { double factor; };
+struct Budget { std::size_t bytes; };
+struct DragBegin { jl::Vec2 point; };
+struct DragMove { jl::Vec2 target; };
+struct DragEnd {};
+struct Quit {};
+}  // namespace cmd
+
+using SimCommand = std::variant<cmd::Load, cmd::Play, cmd::Pause, cmd::StepForward, cmd::StepBack,
+                                cmd::Restart, cmd::Seek, cmd::Speed, cmd::Budget, cmd::DragBegin,
+                                cmd::DragMove, cmd::DragEnd, cmd::Quit>;
+
+class SimWorker {
+public:
+    explicit SimWorker(std::size_t budgetBytes) : budget_(budgetBytes) {}
+    // Called from the UI thread; never blocks on the simulation.
+    void post(SimCommand c);
+    // Asks a long advance to stop between two steps (the program is closing).
+    void abort() { abort_ = true; }
+    std::shared_ptr<const SimStatus> status() const;
+    // The thread body; returns after a Quit command.
+    void run();
+
+private:
+    using Clock = std::chrono::steady_clock;
+    void apply(const SimCommand& c);
+    void apply(const cmd::Load& c);
+    void apply(const cmd::Seek& c);
+    void apply(const cmd::DragBegin& c);
+    void play();
+    void advancePaced();
+    bool advance(jl::Simulation& sim, double t);
+    bool simulateNextFrame();
+    bool simulateTo(int index);
+    void showFrame(int index);
+    std::shared_ptr<const jl::Frame> regenerate(int index);
+    void discardFuture();
+    void fail(const std::string& why);
+    void rebasePace();
+    void measure();
+    void publish();
+    double nextFrameWaitSeconds() const;
+
+    // Shared with the UI thread.
+    mutable std::mutex queueMutex_;
+    std::condition_variable wake_;
+    std::deque<SimCommand> queue_;
+    mutable std::mutex statusMutex_;
+    std::shared_ptr<const SimStatus> status_ = std::make_shared<SimStatus>();
+    std::atomic<bool> abort_{false};
+
+    // The worker's own; touched only on its thread.
+    std::size_t budget_;
+    std::unique_ptr<jl::Simulation> sim_;  // always at the head of the history
+    FrameHistory history_;
+    int cursor_ = 0;
+    bool playing_ = false;
+    bool quit_ = false;
+    bool dirty_ = true;
+    double speed_ = 1.0;
+    std::string failure_;
+    std::shared_ptr<const jl::Frame> shown_;
+    std::shared_ptr<std::vector<jl::Event>> events_ = std::make_shared<std::vector<jl::Event>>();
+    std::shared_ptr<const std::vector<jl::Event>> publishedEvents_;
+    std::shared_ptr<const jl::Scene> recorded_;
+    bool eventsChanged_ = true;
+    std::uint64_t headHash_ = 0;
+    std::uint64_t serial_ = 0, loadSerial_ = 0;
+    // Pacing: simulated time paceSim_ was on screen at wall time paceWall_.
+    double paceSim_ = 0;
+    Clock::time_point paceWall_;
+    // Rates over the last second.
+    Clock::time_point rateWall_;
+    double rateSim_ = 0;
+    long long rateSteps_ = 0;
+    double realTimeFactor_ = 0, stepsPerSecond_ = 0;
+};
+
+}  // namespace jlui

@@ -1,0 +1,48 @@
+// Thin flat strips of one colour, rebuilt every frame: the ribbons over the
+// block faces, and the line of the mouse spring.
+#pragma once
+
+#include "core/frame.h"
+
+#include <QColor>
+#include <QVector3D>
+#include <Qt3DCore/QEntity>
+#include <vector>
+
+namespace Qt3DCore {
+class QBuffer;
+class QAttribute;
+}
+namespace Qt3DRender {
+class QGeometryRenderer;
+class QParameter;
+}
+
+namespace jlui {
+
+class StripEntity : public Qt3DCore::QEntity {
+public:
+    // `unlit`: a flat colour that reads well against anything (the drag line).
+    StripEntity(Qt3DCore::QNode* parent, bool unlit);
+    void setColor(const QColor& c);
+
+    // Starts a new set of strips; then add quads and call commit().
+    void clear() { data_.clear(); }
+    // A quad from four corners (in order round it) with one normal.
+    void addQuad(const QVector3D& a, const QVector3D& b, const QVector3D& c, const QVector3D& d, const QVector3D& n);
+    void commit();
+
+private:
+    std::vector<float> data_;
+    Qt3DCore::QBuffer* buffer_;
+    std::vector<Qt3DCore::QAttribute*> attributes_;
+    Qt3DRender::QGeometryRenderer* renderer_;
+    Qt3DRender::QParameter* color_;
+};
+
+// Ribbons as strips across the ladder's faces (z is the blocks' width direction).
+void buildRibbons(StripEntity& strips, const jl::Frame& frame, double blockWidth, double ribbonWidth, double inset);
+// The mouse spring from the grabbed point to the hand, as a bar facing the viewer.
+void buildDragLine(StripEntity& strip, const jl::Frame& frame, float z, float width);
+
+}  // namespace jlui

@@ -1,0 +1,31 @@
+// A form of labelled number editors built from NumberField metadata: units
+// shown, a tooltip on every row, each edit pushed as one (merging) undo step.
+#pragma once
+
+#include "ui/scene_fields.h"
+
+#include <QWidget>
+#include <vector>
+
+class QFormLayout;
+
+namespace jlui {
+
+class ValueForm : public QWidget {
+    Q_OBJECT
+public:
+    ValueForm(Document* doc, std::vector<NumberField> fields, QWidget* parent = nullptr);
+    QFormLayout* layout() const { return form_; }
+    // Reads every value from the document's scene again.
+    void refresh();
+
+private:
+    QWidget* makeEditor(const NumberField& f);
+
+    Document* doc_;
+    std::vector<NumberField> fields_;
+    std::vector<QWidget*> editors_;
+    QFormLayout* form_;
+};
+
+}  // namespace jlui

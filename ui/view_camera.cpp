@@ -1,0 +1,74 @@
+#include "ui/view_camera.h"
+
+#include <Qt3DRender/QCamera>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace jlui {
+
+namespace {
+constexpr float kFieldOfView = 40.0f;  // degrees, vertical
+float radians(float deg) { return deg * std::numbers::pi_v<float> / 180.0f; }
+}  // namespace
+
+void ViewCamera::reset(const jl::ViewSpec& view, double extent) {
+    target_ = QVector3D(float(view.target[0]), float(view.target[1]), 0);
+    distance_ = float(view.distance);
+    yaw_ = float(view.yaw);
+    pitch_ = float(view.pitch);
+    // A default view on a ladder longer than it shows: frame the whole ladder.
+    const float visible = 2 * distance_ * std::tan(radians(kFieldOfView / 2));
+    if (extent > visible * 0.9) {
+        distance_ = float(extent) * 1.15f / (2 * std::tan(radians(kFieldOfView / 2)));
+        target_.setY(-float(extent) / 2);
+    }
+}
+
+QVector3D ViewCamera::direction() const {
+    const float y = radians(yaw_), p = radians(pitch_);
+    return {std::sin(y) * std::cos(p), std::sin(p), std::cos(y) * std::cos(p)};
+}
+
+QVector3D ViewCamera::eye() const { return target_ + direction() * distance_; }
+
+void ViewCamera::orbit(float dyawDeg, float dpitchDeg) {
+    yaw_ += dyawDeg;
+    pitch_ = std::clamp(pitch_ + dpitchDeg, -85.0f, 85.0f);
+}
+
+void ViewCamera::lookAround(float dyawDeg, float dpitchDeg) {
+    const QVector3D e = eye();
+    orbit(dyawDeg, dpitchDeg);
+    target_ = e - direction() * distance_;
+}
+
+void ViewCamera::zoom(float steps) { distance_ = std::clamp(distance_ * std::pow(0.88f, steps), 0.02f, 5000.0f); }
+
+void ViewCamera::pan(float dx, float dy) {
+    const QVector3D forward = -direction();
+    const QVector3D right = QVector3D::crossProduct(forward, {0, 1, 0}).normalized();
+    const QVector3D up = QVector3D::crossProduct(right, forward).normalized();
+    const float h = 2 * distance_ * std::tan(radians(kFieldOfView / 2));
+    target_ += (-dx * right + dy * up) * h;
+}
+
+void ViewCamera::walk(float forward, float right, float up) {
+    QVector3D f = -direction();
+    f.setY(0);  // walking stays level, like a person in the room
+    if (f.lengthSquared() > 0) f.normalize();
+    const QVector3D r = QVector3D::crossProduct(f, {0, 1, 0}).normalized();
+    target_ += f * forward + r * right + QVector3D(0, up, 0);
+}
+
+void ViewCamera::apply(Qt3DRender::QCamera* camera) const {
+    camera->setFieldOfView(kFieldOfView);
+    // Near and far follow the distance so depth precision stays where we look.
+    camera->setNearPlane(std::max(0.002f, distance_ * 0.02f));
+    camera->setFarPlane(std::max(60.0f, distance_ * 60.0f));
+    camera->setUpVector({0, 1, 0});
+    camera->setPosition(eye());
+    camera->setViewCenter(target_);
+}
+
+}  // namespace jlui

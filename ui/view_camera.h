@@ -1,0 +1,35 @@
+// Where the viewer stands: an orbit about a target (yaw, pitch, distance)
+// that also walks (the target and the eye move together) and looks around
+// from the eye.
+#pragma once
+
+#include "core/scene.h"
+
+#include <QVector3D>
+
+namespace Qt3DRender {
+class QCamera;
+}
+
+namespace jlui {
+
+class ViewCamera {
+public:
+    // From the scene's view, widened to show a ladder reaching `extent` below the hand.
+    void reset(const jl::ViewSpec& view, double extent);
+    void orbit(float dyawDeg, float dpitchDeg);
+    void lookAround(float dyawDeg, float dpitchDeg);  // turns about the eye (walk mode)
+    void zoom(float steps);                           // wheel notches; > 0 closer
+    void pan(float dx, float dy);                     // in fractions of the view's height
+    void walk(float forward, float right, float up);  // m
+    void apply(Qt3DRender::QCamera* camera) const;
+    QVector3D eye() const;
+    float distance() const { return distance_; }
+
+private:
+    QVector3D direction() const;  // from the target toward the eye
+    QVector3D target_{0, -0.15f, 0};
+    float distance_ = 0.8f, yaw_ = 0, pitch_ = 10;
+};
+
+}  // namespace jlui
