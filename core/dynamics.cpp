@@ -45,6 +45,21 @@ Powers Dynamics::evaluate(World& w, double t) {
             powers.held += l.dot(vp);
         }
     }
+    // Blocks locked to a held block move with it: the hand supplies the rate
+    // of change of their kinetic and potential energy.
+    for (int b = 1; b < w.bodyCount(); ++b) {
+        const Body& body = w.body(b);
+        if (!body.alive || !body.kinematic) continue;
+        const double omega = w.v[3 * b + 2], alpha = w.a[3 * b + 2];
+        for (PartId id : body.parts) {
+            const Part& part = w.part(id);
+            if (part.drive) continue;
+            const Vec2 r = rotate(w.q[3 * b + 2], part.inBody.position);
+            const Vec2 vel = w.v.segment<2>(3 * b) + omega * perp(r);
+            const Vec2 acc = w.a.segment<2>(3 * b) + alpha * perp(r) - omega * omega * r;
+            powers.held += part.mass * (acc - w.gravity).dot(vel) + part.inertia * alpha * omega;
+        }
+    }
     return powers;
 }
 

@@ -4,14 +4,16 @@
 
 namespace jl {
 
+// Summed over parts, so a block locked to a held block keeps its energy in
+// the books (the hand's work on it is counted in the held power).
 Energy energy(const World& w) {
     Energy e;
-    for (int b = 0; b < w.bodyCount(); ++b) {
-        const Body& body = w.body(b);
-        if (!body.alive || body.kinematic) continue;
-        e.kinetic += 0.5 * body.mass * w.v.segment<2>(3 * b).squaredNorm() +
-                     0.5 * body.inertia * w.v[3 * b + 2] * w.v[3 * b + 2];
-        e.potential -= body.mass * w.gravity.dot(w.q.segment<2>(3 * b));
+    for (PartId p = 1; p < w.partCount(); ++p) {
+        const Part& part = w.part(p);
+        if (part.drive || part.body == 0) continue;
+        const Twist vel = w.partVelocity(p);
+        e.kinetic += 0.5 * part.mass * vel.linear.squaredNorm() + 0.5 * part.inertia * vel.angular * vel.angular;
+        e.potential -= part.mass * w.gravity.dot(w.partPose(p).position);
     }
     for (const Spring& s : w.springs()) {
         if (!w.isLive(s.a) || !w.isLive(s.b)) continue;

@@ -1,4 +1,4 @@
-// Mechanical energy of the free (non-held) part of a world.
+// Mechanical energy of everything but the held blocks and the ground.
 #pragma once
 
 namespace jl {
@@ -7,7 +7,7 @@ class World;
 
 struct Energy {
     double kinetic = 0;    // J
-    double potential = 0;  // J, gravity (zero at y = 0 for g along -y) and springs
+    double potential = 0;  // J, gravity (zero at the origin's height) and springs
     double total() const { return kinetic + potential; }
 };
 

@@ -5,11 +5,11 @@
 namespace jl {
 
 MotionStep advanceAndProject(World& w, Dynamics& d, Stepper& s, double t, double h, Ledger& ledger,
-                             double tolerance) {
+                             double tolerance, bool exact) {
     MotionStep m;
     const Eigen::VectorXd q0 = w.q, v0 = w.v;
     const Ledger l0 = ledger;
-    m.step = s.advance(w, d, t, h, ledger);
+    m.step = s.advance(w, d, t, h, ledger, exact);
     if (!m.step.finite) return m;
     m.projection = projectPositions(w, d.solver(), tolerance);
     if (m.projection.converged) {

@@ -15,6 +15,6 @@ struct MotionStep {
 // On failure (NaN, or a projection that does not converge) the world is left
 // exactly as it was before the step.
 MotionStep advanceAndProject(World& w, Dynamics& d, Stepper& s, double t, double h, Ledger& ledger,
-                             double tolerance);
+                             double tolerance, bool exact = false);
 
 }  // namespace jl

@@ -25,6 +25,11 @@ public:
     // f += J^T x: pin forces (or impulses) x applied to the bodies.
     void addJTranspose(const Eigen::VectorXd& x, Eigen::VectorXd& f) const;
 
+    // Forget the cached ordering (the world was replaced, e.g. by a snapshot).
+    void reset() {
+        version_ = -1;
+        analysed_ = false;
+    }
     bool isChain() const { return chain_; }
     int pinCount() const { return int(pins_.size()); }
     // World-frame arm from body A's (B's) origin to pin i.

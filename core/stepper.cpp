@@ -122,7 +122,7 @@ void Stepper::symplecticEuler(World& w, Dynamics& d, double t, double h, Ledger&
     ledger.damping += h * r[2];
 }
 
-StepOutcome Stepper::advance(World& w, Dynamics& d, double t, double h, Ledger& ledger) {
+StepOutcome Stepper::advance(World& w, Dynamics& d, double t, double h, Ledger& ledger, bool exact) {
     StepOutcome out;
     q0_ = w.q;
     v0_ = w.v;
@@ -130,7 +130,7 @@ StepOutcome Stepper::advance(World& w, Dynamics& d, double t, double h, Ledger& 
     if (kind_ == Integrator::SymplecticEuler) {
         symplecticEuler(w, d, t, h, ledger);
         out.taken = h;
-    } else if (kind_ != Integrator::DormandPrince45) {
+    } else if (kind_ != Integrator::DormandPrince45 || exact) {
         attempt(w, d, t, h, ledger);
         out.taken = h;
     } else {

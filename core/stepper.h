@@ -30,7 +30,9 @@ public:
 
     // Advances w from time t. Fixed-step methods take exactly h; the adaptive
     // method takes at most h, choosing its own step to meet the tolerance.
-    StepOutcome advance(World& w, Dynamics& d, double t, double h, Ledger& ledger);
+    // `exact`: the adaptive method takes exactly h too (to re-run part of an
+    // accepted step when locating an event).
+    StepOutcome advance(World& w, Dynamics& d, double t, double h, Ledger& ledger, bool exact = false);
 
     Integrator kind() const { return kind_; }
     int order() const;

@@ -23,18 +23,18 @@ World::World() {
     q = v = a = invMassDiag = Eigen::VectorXd::Zero(3);
 }
 
-PartId World::addBox(double mass, double length, double thickness, double width, const Pose& pose,
-                     const Twist& velocity, std::optional<double> inertia) {
+PartId World::addBox(double mass, const Vec2& size, double width, const Pose& pose, const Twist& velocity,
+                     std::optional<double> inertia) {
     Part p;
     p.mass = mass;
-    p.inertia = inertia ? *inertia : mass * (length * length + thickness * thickness) / 12.0;
-    p.halfSize = {length / 2, thickness / 2};
+    p.inertia = inertia ? *inertia : mass * size.squaredNorm() / 12.0;
+    p.halfSize = size / 2;
     p.width = width;
     parts_.push_back(p);
     particlesOfPart_.emplace_back();
     const PartId id = PartId(parts_.size()) - 1;
     makeBody({id}, {pose}, {velocity});
-    rebuildPins();
+    pinsStale_ = true;
     return id;
 }
 
@@ -81,7 +81,7 @@ std::optional<WorldError> World::checkParticle(ParticleId p) const {
     return std::nullopt;
 }
 
-std::optional<WorldError> World::combine(ParticleId p, ParticleId q) {
+std::optional<WorldError> World::combine(ParticleId p, ParticleId q, bool consistent) {
     if (auto e = checkParticle(p)) return e;
     if (auto e = checkParticle(q)) return e;
     if (p == q) return WorldError{"cannot combine a particle with itself"};
@@ -103,11 +103,11 @@ std::optional<WorldError> World::combine(ParticleId p, ParticleId q) {
     pp.absorbed.push_back(q);
     particles_[q].mergedInto = p;
     regroup(touched);
-    makeConsistent(*this);
+    if (consistent) makeConsistent(*this);
     return std::nullopt;
 }
 
-std::optional<WorldError> World::separate(ParticleId p) {
+std::optional<WorldError> World::separate(ParticleId p, bool consistent) {
     if (auto e = checkParticle(p)) return e;
     Particle& pp = particles_[p];
     if (pp.absorbed.empty())
@@ -120,7 +120,7 @@ std::optional<WorldError> World::separate(ParticleId p) {
     pp.at.resize(pp.at.size() - particles_[q].at.size());  // combine appended q's last
     particles_[q].mergedInto = -1;
     regroup(touched);
-    makeConsistent(*this);
+    if (consistent) makeConsistent(*this);
     return std::nullopt;
 }
 
@@ -191,6 +191,30 @@ void World::setPartState(PartId p, const Pose& pose, const Twist& velocity) {
     q[3 * b + 2] = bp.angle;
     v.segment<2>(3 * b) = velocity.linear + velocity.angular * perp(r);
     v[3 * b + 2] = velocity.angular;
+}
+
+std::vector<Twist> World::partVelocities() const {
+    std::vector<Twist> out(parts_.size());
+    for (PartId p = 0; p < partCount(); ++p) out[size_t(p)] = partVelocity(p);
+    return out;
+}
+
+void World::setPartVelocities(const std::vector<Twist>& velocities) {
+    for (int b = 1; b < bodyCount(); ++b) {
+        const Body& body = bodies_[b];
+        if (!body.alive || body.kinematic) continue;
+        Vec2 momentum = Vec2::Zero();
+        for (PartId p : body.parts) momentum += parts_[p].mass * velocities[size_t(p)].linear;
+        const Vec2 vel = body.mass > 0 ? Vec2(momentum / body.mass) : Vec2::Zero();
+        double spin = 0;
+        for (PartId p : body.parts) {
+            const Vec2 r = partPose(p).position - q.segment<2>(3 * b);
+            spin += parts_[p].inertia * velocities[size_t(p)].angular +
+                    parts_[p].mass * cross(r, velocities[size_t(p)].linear - vel);
+        }
+        v.segment<2>(3 * b) = vel;
+        v[3 * b + 2] = body.inertia > 0 ? spin / body.inertia : 0.0;
+    }
 }
 
 // ---- grouping parts into bodies ----
@@ -266,7 +290,7 @@ void World::regroup(const std::vector<int>& touchedBodies) {
         }
         makeBody(g, gp, gv);
     }
-    rebuildPins();
+    pinsStale_ = true;
 }
 
 int World::allocateBody() {
@@ -278,9 +302,12 @@ int World::allocateBody() {
     }
     bodies_.emplace_back();
     const Eigen::Index n = 3 * Eigen::Index(bodies_.size());
-    for (Eigen::VectorXd* x : {&q, &v, &a, &invMassDiag}) {
-        x->conservativeResize(n);
-        x->tail<3>().setZero();
+    if (q.size() < n) {  // grow geometrically: building N bodies stays O(N)
+        const Eigen::Index old = q.size(), grown = std::max(n, 2 * old);
+        for (Eigen::VectorXd* x : {&q, &v, &a, &invMassDiag}) {
+            x->conservativeResize(grown);
+            x->tail(grown - old).setZero();
+        }
     }
     return int(bodies_.size()) - 1;
 }
@@ -348,7 +375,19 @@ int World::makeBody(const std::vector<PartId>& g, const std::vector<Pose>& poses
     return b;
 }
 
-void World::rebuildPins() {
+void World::shrinkToFit() {
+    const Eigen::Index n = 3 * Eigen::Index(bodies_.size());
+    for (Eigen::VectorXd* x : {&q, &v, &a, &invMassDiag}) x->conservativeResize(n);
+}
+
+const std::vector<Pin>& World::pins() const {
+    if (pinsStale_) rebuildPins();
+    return pins_;
+}
+
+// Pins are derived lazily: a builder making many combines pays once.
+void World::rebuildPins() const {
+    pinsStale_ = false;
     pins_.clear();
     for (ParticleId id = 0; id < particleCount(); ++id) {
         const Particle& p = particles_[id];
@@ -361,11 +400,10 @@ void World::rebuildPins() {
             if (std::find(done.begin(), done.end(), bb) != done.end()) continue;
             done.push_back(bb);
             if (bodies_[ba].kinematic && bodies_[bb].kinematic) continue;
-            pins_.push_back({ba, bb, parts_[first.part].inBody.apply(first.local),
+            pins_.push_back({ba, bb, first.part, p.at[i].part, parts_[first.part].inBody.apply(first.local),
                              parts_[p.at[i].part].inBody.apply(p.at[i].local), id});
         }
     }
-    ++structureVersion_;
 }
 
 }  // namespace jl

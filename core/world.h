@@ -59,6 +59,7 @@ struct Particle {
 // A pin: the same point on two bodies (derived from shared particles).
 struct Pin {
     int bodyA = 0, bodyB = 0;
+    PartId partA = 0, partB = 0;  // the parts the shared point is on
     Vec2 localA = Vec2::Zero(), localB = Vec2::Zero(); // in the body frames
     ParticleId particle = -1;
 };
@@ -96,7 +97,9 @@ public:
     World();
 
     // ---- building ----
-    PartId addBox(double mass, double length, double thickness, double width, const Pose& pose,
+    // A box of in-plane size `size` (extent along its local x and y) and
+    // out-of-plane `width`; inertia from the box unless given.
+    PartId addBox(double mass, const Vec2& size, double width, const Pose& pose,
                   const Twist& velocity = {}, std::optional<double> inertia = {});
     PartId addPoint(double mass, const Vec2& position, const Vec2& velocity = Vec2::Zero());
     ParticleId addParticle(PartId part, const Vec2& local);  // a point on a part
@@ -111,12 +114,19 @@ public:
     // makes them one rigid body (at their current relative pose); a point
     // part joins whatever it is combined with. Velocities are made
     // consistent by a momentum-conserving impulse.
-    std::optional<WorldError> combine(ParticleId p, ParticleId q);
+    // `consistent = false` defers that (a builder joining many points calls
+    // makeConsistent once at the end instead of once per combine).
+    std::optional<WorldError> combine(ParticleId p, ParticleId q, bool consistent = true);
     // separate(p): undoes the last combine into p.
-    std::optional<WorldError> separate(ParticleId p);
+    std::optional<WorldError> separate(ParticleId p, bool consistent = true);
     bool isLive(ParticleId p) const;
     bool validParticle(ParticleId p) const { return p >= 0 && p < int(particles_.size()); }
     bool validPart(PartId p) const { return p >= 0 && p < int(parts_.size()); }
+
+    void setDamping(PartId p, double linear, double angular) {
+        parts_[p].linearDamping = linear;
+        parts_[p].angularDamping = angular;
+    }
 
     // ---- holding ----
     void hold(PartId part, const Drive& drive);  // the part follows the path
@@ -133,7 +143,7 @@ public:
     const Body& body(int b) const { return bodies_[b]; }
     const Part& part(PartId p) const { return parts_[p]; }
     const Particle& particle(ParticleId p) const { return particles_[p]; }
-    const std::vector<Pin>& pins() const { return pins_; }
+    const std::vector<Pin>& pins() const;  // re-derived after a change of structure
     const std::vector<Spring>& springs() const { return springs_; }
     const std::vector<RotaryDamper>& rotaryDampers() const { return dampers_; }
     std::vector<UserDrag>& drags() { return drags_; }
@@ -148,12 +158,20 @@ public:
     Vec2 particlePosition(ParticleId p) const;
     Vec2 particleVelocity(ParticleId p) const;
     void setPartState(PartId p, const Pose& pose, const Twist& velocity); // moves its body
+    // Gives every dynamic body the momentum of its parts at these velocities
+    // (one per part; the ground's ignored): a plastic merge of each body.
+    void setPartVelocities(const std::vector<Twist>& velocities);
+    std::vector<Twist> partVelocities() const;
 
     // Generalised coordinates and velocities (x, y, angle per body) and the
     // accelerations of the last evaluation; the integrators work on these.
+    // They may be longer than 3 * bodyCount() (zero padding, grown
+    // geometrically while building); shrinkToFit() trims them.
     Eigen::VectorXd q, v, a;
     Eigen::VectorXd invMassDiag;  // 3 per body; 0 for kinematic and dead bodies
     Vec2 gravity{0, -9.81};
+
+    void shrinkToFit();
 
     // Bumped by every change of structure (bodies or pins).
     long long structureVersion() const { return structureVersion_; }
@@ -165,13 +183,14 @@ private:
     int makeBody(const std::vector<PartId>& parts, const std::vector<Pose>& partPoses,
                  const std::vector<Twist>& partVelocities);
     int allocateBody();
-    void rebuildPins();
+    void rebuildPins() const;
 
     std::vector<Part> parts_;
     std::vector<Body> bodies_;
     std::vector<Particle> particles_;
     std::vector<std::vector<ParticleId>> particlesOfPart_;  // every particle ever on the part
-    std::vector<Pin> pins_;
+    mutable std::vector<Pin> pins_;
+    mutable bool pinsStale_ = false;
     std::vector<Spring> springs_;
     std::vector<RotaryDamper> dampers_;
     std::vector<UserDrag> drags_;

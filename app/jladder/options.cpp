@@ -1,0 +1,96 @@
+#include "app/jladder/options.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace jl::cli {
+
+bool Options::has(const std::string& flag) const {
+    return std::find(flags.begin(), flags.end(), flag) != flags.end();
+}
+
+std::optional<std::string> Options::get(const std::string& name) const {
+    auto it = named.find(name);
+    if (it == named.end()) return std::nullopt;
+    return it->second;
+}
+
+std::optional<double> Options::number(const std::string& name) {
+    const auto text = get(name);
+    if (!text) return std::nullopt;
+    try {
+        size_t used = 0;
+        const double x = std::stod(*text, &used);
+        if (used == text->size() && std::isfinite(x) && x > 0) return x;
+    } catch (...) {
+    }
+    error = name + " needs a positive number, not '" + *text + "'";
+    return std::nullopt;
+}
+
+Options parse(const std::vector<std::string>& args, const std::vector<std::string>& valued,
+              const std::vector<std::string>& flags) {
+    Options o;
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        if (a.rfind("--", 0) != 0) {
+            o.positional.push_back(a);
+        } else if (std::find(valued.begin(), valued.end(), a) != valued.end()) {
+            if (i + 1 >= args.size()) {
+                o.error = a + " needs a value";
+                return o;
+            }
+            o.named[a] = args[++i];
+        } else if (std::find(flags.begin(), flags.end(), a) != flags.end()) {
+            o.flags.push_back(a);
+        } else {
+            o.error = "unknown option " + a;
+            return o;
+        }
+    }
+    return o;
+}
+
+bool applySolverOptions(Options& o, SolverSpec& solver) {
+    if (auto name = o.get("--integrator")) {
+        if (*name == "explicit_euler" || *name == "euler") solver.integrator = Integrator::ExplicitEuler;
+        else if (*name == "symplectic_euler") solver.integrator = Integrator::SymplecticEuler;
+        else if (*name == "rk4") solver.integrator = Integrator::RK4;
+        else if (*name == "dormand_prince45" || *name == "dopri") solver.integrator = Integrator::DormandPrince45;
+        else {
+            o.error = "unknown integrator '" + *name + "' (explicit_euler, symplectic_euler, rk4, dormand_prince45)";
+            return false;
+        }
+    }
+    if (auto policy = o.get("--event-policy")) {
+        if (*policy == "located") solver.events = EventPolicy::Located;
+        else if (*policy == "end-of-step" || *policy == "end_of_step") solver.events = EventPolicy::EndOfStep;
+        else {
+            o.error = "unknown event policy '" + *policy + "' (located, end-of-step)";
+            return false;
+        }
+    }
+    if (auto h = o.number("--step")) solver.step = *h;
+    if (auto tol = o.number("--tolerance")) solver.tolerance = *tol;
+    return o.error.empty();
+}
+
+std::string jsonString(const std::string& s) {
+    std::string out = "\"";
+    for (char c : s) {
+        if (c == '"' || c == '\\') {
+            out += '\\';
+            out += c;
+        } else if (static_cast<unsigned char>(c) < 0x20) {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\u%04x", c);
+            out += buf;
+        } else {
+            out += c;
+        }
+    }
+    return out + "\"";
+}
+
+}  // namespace jl::cli

@@ -1,0 +1,36 @@
+// Command-line options of the form --name value, and the solver overrides
+// that run, export and bench share.
+#pragma once
+
+#include "core/scene.h"
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace jl::cli {
+
+struct Options {
+    std::vector<std::string> positional;
+    std::map<std::string, std::string> named;  // "--until" -> "3"
+    std::vector<std::string> flags;            // "--quick"
+    std::string error;                         // non-empty: the arguments are wrong
+
+    bool has(const std::string& flag) const;
+    std::optional<std::string> get(const std::string& name) const;
+    // A positive finite number, or an error message set and nullopt.
+    std::optional<double> number(const std::string& name);
+};
+
+// `valued` lists the options that take a value; anything else starting
+// with -- is a flag if listed in `flags`, else an error.
+Options parse(const std::vector<std::string>& args, const std::vector<std::string>& valued,
+              const std::vector<std::string>& flags);
+
+// Applies --integrator, --step, --tolerance, --event-policy to the scene.
+bool applySolverOptions(Options& o, SolverSpec& solver);
+
+std::string jsonString(const std::string& s);
+
+}  // namespace jl::cli

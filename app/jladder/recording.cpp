@@ -1,0 +1,111 @@
+#include "app/jladder/recording.h"
+
+#include "app/jladder/options.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace jl::cli {
+
+namespace {
+
+void keep(Recording& r, Frame f, bool store) {
+    for (Event& e : f.events) r.events.push_back(std::move(e));
+    f.events.clear();
+    r.worstBalance = std::max(r.worstBalance, std::abs(f.energy.balance()));
+    r.worstResidual = std::max(r.worstResidual, f.solver.residual);
+    r.energyEnd = f.energy.total();
+    if (store) r.frames.push_back(std::move(f));
+}
+
+std::string number(double x) {
+    std::ostringstream s;
+    s.precision(17);
+    s << x;
+    return s.str();
+}
+
+}  // namespace
+
+Recording record(Simulation& sim, double until, double every) {
+    Recording r;
+    Frame first = sim.frame();
+    r.energyStart = first.energy.total();
+    keep(r, std::move(first), every > 0);
+    double nextFrame = every;
+    while (sim.time() < until && sim.failure().empty()) {
+        if (!sim.stepOnce()) break;
+        const bool due = every > 0 && sim.time() >= nextFrame - 1e-12;
+        keep(r, sim.frame(), due);
+        while (every > 0 && nextFrame <= sim.time() + 1e-12) nextFrame += every;
+    }
+    const Frame last = sim.frame();
+    r.failure = last.failure;
+    r.time = sim.time();
+    r.steps = last.solver.steps;
+    r.evaluations = last.solver.evaluations;
+    r.wallSeconds = last.solver.wallSeconds;
+    return r;
+}
+
+bool writePosesCsv(const Recording& r, const std::string& path, std::string& error) {
+    std::ofstream out(path);
+    if (!out) {
+        error = path + ": cannot write";
+        return false;
+    }
+    out.precision(17);
+    out << "t,block,x,y,theta\n";
+    for (const Frame& f : r.frames)
+        for (size_t i = 0; i < f.blocks.size(); ++i)
+            out << f.time << ',' << i << ',' << f.blocks[i].position.x() << ',' << f.blocks[i].position.y() << ','
+                << f.blocks[i].angle << '\n';
+    return bool(out);
+}
+
+bool writeEnergyCsv(const Recording& r, const std::string& path, std::string& error) {
+    std::ofstream out(path);
+    if (!out) {
+        error = path + ": cannot write";
+        return false;
+    }
+    out.precision(17);
+    out << "t,kinetic,potential,total,held_work,user_work,impact_loss,damping_loss,balance\n";
+    for (const Frame& f : r.frames) {
+        const EnergyFrame& e = f.energy;
+        out << f.time << ',' << e.kinetic << ',' << e.potential << ',' << e.total() << ',' << e.heldWork << ','
+            << e.userWork << ',' << e.impactLoss << ',' << e.dampingLoss << ',' << e.balance() << '\n';
+    }
+    return bool(out);
+}
+
+bool writeEventsJson(const Recording& r, const std::string& path, std::string& error) {
+    std::ofstream out(path);
+    if (!out) {
+        error = path + ": cannot write";
+        return false;
+    }
+    out << "[";
+    for (size_t i = 0; i < r.events.size(); ++i) {
+        const Event& e = r.events[i];
+        out << (i ? ",\n " : "\n ") << "{\"t\":" << number(e.time) << ",\"hinge\":" << e.hinge << ",\"event\":\""
+            << toString(e.kind) << "\",\"corner\":" << e.corner << ",\"text\":" << jsonString(e.text) << "}";
+    }
+    out << "\n]\n";
+    return bool(out);
+}
+
+std::string summaryJson(const Recording& r, const std::string& scenePath) {
+    std::ostringstream s;
+    s << "{\"scene\":" << jsonString(scenePath) << ",\"time\":" << number(r.time) << ",\"steps\":" << r.steps
+      << ",\"evaluations\":" << r.evaluations << ",\"events\":" << r.events.size()
+      << ",\"energy_start\":" << number(r.energyStart) << ",\"energy_end\":" << number(r.energyEnd)
+      << ",\"worst_energy_balance\":" << number(r.worstBalance) << ",\"max_residual\":" << number(r.worstResidual)
+      << ",\"wall_seconds\":" << number(r.wallSeconds)
+      << ",\"failure\":" << (r.failure.empty() ? std::string("null") : jsonString(r.failure)) << "}";
+    return s.str();
+}
+
+}  // namespace jl::cli

@@ -1,0 +1,73 @@
+// A frame: everything the views, plots and recordings need at one instant.
+#pragma once
+
+#include "core/geometry.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace jl {
+
+enum class HingeMode { Free, OpenLocked, Folded, Cut };
+enum class EventKind { Lock, Unlock, Fold, Unfold, FlipFlop, Bounce, Cut, Join, Script };
+
+const char* toString(HingeMode m);
+const char* toString(EventKind k);  // "lock", "unlock", "fold", "unfold", "flip", ...
+
+// Something that happened, at its located time.
+struct Event {
+    double time = 0;       // s
+    EventKind kind = EventKind::Lock;
+    int hinge = -1;        // ladder hinge j (between blocks j-1 and j), or -1
+    int corner = -1;       // the hinge corner after the event
+    std::string text;      // in words, for the event log
+};
+
+struct HingeFrame {
+    HingeMode mode = HingeMode::Free;
+    int corner = 0;         // k, the same number on both blocks
+    double foldAngle = 0;   // rad, phi of PHYSICS.md section 3
+    Vec2 position = Vec2::Zero();  // m, the hinge point in the plane
+};
+
+// A ribbon drawn over the block faces: a polyline in the ladder's plane.
+struct RibbonFrame {
+    std::vector<Vec2> points;
+    bool visible = true;
+};
+
+struct EnergyFrame {
+    double kinetic = 0, potential = 0;          // J
+    double heldWork = 0, userWork = 0;          // J, done on the ladder since t = 0
+    double impactLoss = 0, dampingLoss = 0;     // J, dissipated since t = 0 (>= 0)
+    double total() const { return kinetic + potential; }
+    // E(0) + W_held + W_user - D_impacts - D_damping: equals total() when the books balance.
+    double initial = 0;
+    double balance() const { return total() - (initial + heldWork + userWork - impactLoss - dampingLoss); }
+};
+
+struct SolverFrame {
+    long long steps = 0, evaluations = 0, rejected = 0;
+    long long spuriousEvents = 0;  // located crossings that resolved to nothing
+    double lastStep = 0;           // s
+    double residual = 0;           // m, largest pin gap after the last step
+    int bodies = 0, pins = 0;      // unknowns in use (locked pairs are one body)
+    double wallSeconds = 0;        // spent simulating so far
+};
+
+struct Frame {
+    double time = 0;                  // s
+    std::vector<Pose> blocks;         // every block (ladder) or box/particle (general scene), in scene order
+    std::vector<bool> held;           // per block
+    std::vector<HingeFrame> hinges;   // ladder: hinges[j-1] is hinge j
+    std::vector<RibbonFrame> ribbons;
+    EnergyFrame energy;
+    SolverFrame solver;
+    std::vector<Event> events;        // since the previous frame
+    bool dragging = false;            // the mouse spring, for drawing
+    Vec2 dragFrom = Vec2::Zero(), dragTo = Vec2::Zero();
+    std::string failure;              // non-empty: the run stopped; this is the last good state
+};
+
+}  // namespace jl

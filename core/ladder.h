@@ -1,0 +1,121 @@
+// The Jacob's ladder on the engine: blocks with xor-numbered corners, the
+// hinge state machine of PHYSICS.md section 4 (free, open-locked, folded) and
+// its events, written on World::combine/separate; which ribbons show.
+#pragma once
+
+#include "core/dynamics.h"
+#include "core/frame.h"
+#include "core/scene.h"
+#include "core/world.h"
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace jl {
+
+struct Hinge {
+    HingeMode mode = HingeMode::Free;
+    int corner = 0;        // k: the same corner number on both blocks
+    double foldAngle = 0;  // phi, tracked continuously
+};
+
+// Contact forces of a locked or folded hinge (PHYSICS.md section 4), N,
+// positive = pushing block j away from block j-1.
+struct HingeContact {
+    double normal = 0;  // OPEN-LOCKED: N at corner k^2
+    double nearEnd = 0; // FOLDED: N_near at corner k (with the pin at k^1)
+    double farEnd = 0;  // FOLDED: N_far at corner k^1 (with the pin at k)
+};
+
+class Ladder {
+public:
+    // Adds the blocks to the world, pins hinge j at corner 0 (j odd) or 3
+    // (j even), places them (hanging equilibrium, explicit poses or fold
+    // angles) and holds the held blocks. Errors in words; world untouched then.
+    static std::optional<std::string> validate(const LadderSpec& spec);
+    Ladder(World& w, const LadderSpec& spec);
+
+    int blockCount() const { return int(blocks_.size()); }
+    int hingeCount() const { return int(hinges_.size()); }  // N-1
+    PartId block(int i) const { return blocks_[size_t(i)]; }
+    const Hinge& hinge(int j) const { return hinges_[size_t(j - 1)]; }
+
+    // Where corner k of block i is, in the block's frame. The one place that
+    // says where a hinge attaches to a block (a ribbon model would change it).
+    Vec2 cornerLocal(int i, int k) const;
+    Vec2 cornerWorld(const World& w, int i, int k) const;
+    // The particle at corner k of block i (for scripted joins).
+    ParticleId particle(int i, int k) const { return corners_[size_t(i)][size_t(k)]; }
+    // phi of hinge j at its current corner, continuous near the last value.
+    double foldAngle(const World& w, int j) const;
+    double foldRate(const World& w, int j) const;  // d phi / dt
+
+    // Event functions: each is >= 0 while its hinge may stay in its mode; a
+    // negative value is an event (located inside the step by the simulation).
+    // Tolerances: fold angles past a limit by more than kAngleTolerance,
+    // contact forces pulling by more than kForceTolerance. The angle one is
+    // half the band within which resolve() treats a hinge as touching, so a
+    // located crossing always lands where resolve() acts on it, while the
+    // rounding of a hinge resting at its limit (~1e-9 rad) never looks like one.
+    static constexpr double kAngleTolerance = 5e-8;   // rad
+    static constexpr double kForceTolerance = 1e-9;   // N (N s for impulses)
+    // Needs the accelerations of the state (Dynamics::evaluate done).
+    void eventFunctions(const World& w, const Dynamics& d, std::vector<double>& out) const;
+
+    // Applies whatever events the state calls for (limits crossed, contacts
+    // pulling), impacts included, until none remains. Returns what happened.
+    std::vector<Event> resolve(World& w, Dynamics& d, double t, double* impactLoss, double* heldWork);
+
+    // Contact forces of hinge j in the state last evaluated by d.
+    HingeContact contact(const World& w, const Dynamics& d, int j) const;
+
+    // Scripted structural changes.
+    std::optional<std::string> cut(World& w, int j);
+    void updateAngles(const World& w);  // track phi continuously after a step
+
+    std::vector<HingeFrame> hingeFrames(const World& w) const;
+    std::vector<RibbonFrame> ribbons(const World& w) const;
+    const RibbonSpec& ribbonSpec() const { return spec_.ribbons; }
+
+private:
+    struct Wrench {
+        Vec2 force = Vec2::Zero();
+        double moment = 0;  // about the hinge point
+    };
+    void place(World& w);
+    void placeHanging(World& w);
+    bool up(int i) const { return i % 2 == 0; }
+    // An impact's velocity jump: part velocities before it and pin impulses.
+    struct Impact {
+        const std::vector<Twist>* before = nullptr;
+        const Eigen::VectorXd* pinImpulses = nullptr;
+    };
+    Wrench internalWrench(const World& w, const Dynamics& d, int j, const Impact* impact) const;
+    double foldAcceleration(const World& w, int j) const;
+    bool touchingLimit(const World& w, int j, bool folded, bool resting) const;
+    std::vector<Event> impact(World& w, Dynamics& d, double t, const std::vector<int>& hits, double* loss,
+                              double* heldWork);
+    std::optional<std::pair<int, EventKind>> pullingContact(const World& w, const Dynamics& d,
+                                                            const Impact* impact) const;
+    void release(World& w, int j, EventKind kind);
+    HingeContact split(const World& w, int j, const Wrench& on) const;
+    void snap(World& w, int j, double target);
+    void lock(World& w, int j);
+    void fold(World& w, int j);
+    void unlock(World& w, int j);
+    void flipFlop(World& w, int j);
+    void unfold(World& w, int j);
+    std::string words(EventKind kind, int j) const;
+
+    LadderSpec spec_;
+    std::vector<PartId> blocks_;
+    std::vector<double> thickness_;
+    std::vector<std::array<ParticleId, 4>> corners_;
+    std::vector<Hinge> hinges_;
+    std::vector<int> dampers_;
+    double length_ = 0;
+};
+
+}  // namespace jl

@@ -1,0 +1,234 @@
+// The ladder's events: impacts at the limits of the fold angle and releases
+// of contacts that would pull (PHYSICS.md section 4), as a deterministic
+// active set.
+#include "core/energy.h"
+#include "core/ladder.h"
+#include "core/projection.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace jl {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kTouch = 2 * Ladder::kAngleTolerance;  // rad: this close to a limit touches it
+constexpr double kResting = 1e-9;   // rad/s: slower than this is at rest
+
+// Kinetic energy relative to the one moving held body, if there is exactly
+// one: in its frame an impact never creates energy (PHYSICS.md section 7).
+double relativeKinetic(const World& w) {
+    int moving = -1, count = 0;
+    for (int b = 1; b < w.bodyCount(); ++b)
+        if (w.body(b).alive && w.body(b).kinematic) {
+            moving = b;
+            ++count;
+        }
+    if (count != 1) return energy(w).kinetic;
+    const Vec2 origin = w.q.segment<2>(3 * moving);
+    const Vec2 vel = w.v.segment<2>(3 * moving);
+    const double omega = w.v[3 * moving + 2];
+    double ke = 0;
+    for (PartId p = 1; p < w.partCount(); ++p) {
+        const Part& part = w.part(p);
+        if (part.drive || part.body == 0) continue;
+        const Vec2 c = w.partPose(p).position;
+        const Twist v = w.partVelocity(p);
+        const Vec2 rel = v.linear - vel - omega * perp(c - origin);
+        ke += 0.5 * part.mass * rel.squaredNorm() + 0.5 * part.inertia * (v.angular - omega) * (v.angular - omega);
+    }
+    return ke;
+}
+
+}  // namespace
+
+// A free hinge at a limit (within kTouch, either side: the located time
+// leaves it a hair past) that it is moving into, or resting on with its
+// acceleration pushing into it. A hinge deeper past the limit (end-of-step
+// events) is hit whatever its motion. One just released sits at the limit
+// moving away: not hit, whatever the sign of the rounding in phi.
+bool Ladder::touchingLimit(const World& w, int j, bool folded, bool resting) const {
+    const double phi = hinge(j).foldAngle;
+    const double gap = folded ? kPi - phi : phi;           // >= 0 admissible
+    const double rate = folded ? -foldRate(w, j) : foldRate(w, j);  // < 0 closing
+    if (gap < -kTouch) return true;
+    if (gap > kTouch) return false;
+    if (rate < -kResting) return true;
+    return resting && rate <= kResting && (folded ? -foldAcceleration(w, j) : foldAcceleration(w, j)) < 0;
+}
+
+void Ladder::release(World& w, int j, EventKind kind) {
+    if (kind == EventKind::Unlock) unlock(w, j);
+    if (kind == EventKind::FlipFlop) flipFlop(w, j);
+    if (kind == EventKind::Unfold) unfold(w, j);
+}
+
+// The most negative contact force (or impulse) among locked and folded
+// hinges, and what releasing it means: unlock, flip-flop or unfold.
+std::optional<std::pair<int, EventKind>> Ladder::pullingContact(const World& w, const Dynamics& d,
+                                                                const Impact* impact) const {
+    std::optional<std::pair<int, EventKind>> worst;
+    double most = -kForceTolerance;
+    for (int j = 1; j < blockCount(); ++j) {
+        const HingeMode mode = hinge(j).mode;
+        if (mode != HingeMode::OpenLocked && mode != HingeMode::Folded) continue;
+        const HingeContact c = split(w, j, internalWrench(w, d, j, impact));
+        if (mode == HingeMode::OpenLocked && c.normal < most) {
+            most = c.normal;
+            worst = {j, EventKind::Unlock};
+        }
+        if (mode == HingeMode::Folded) {
+            // A pair that can tip over both ends carries on over the far one.
+            if (c.nearEnd < most) {
+                most = c.nearEnd;
+                worst = {j, EventKind::FlipFlop};
+            } else if (c.farEnd < most && c.nearEnd >= -kForceTolerance) {
+                most = c.farEnd;
+                worst = {j, EventKind::Unfold};
+            }
+        }
+    }
+    return worst;
+}
+
+// A perfectly plastic impact at the hinges `hits` with every other
+// constraint active: combine at the limit, then repeat the same impact while
+// a contact impulse would pull (release it) or a free hinge would be driven
+// through a limit (lock it too). Restitution turns the plastic result into
+// a bounce while the rebound is faster than v_min.
+std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::vector<int>& hits, double* loss,
+                                  double* heldWork) {
+    std::vector<Event> events;
+    const std::vector<Twist> before = w.partVelocities();
+    const double keBefore = energy(w).kinetic, relBefore = relativeKinetic(w);
+    std::vector<double> approach(hits.size());
+    for (size_t i = 0; i < hits.size(); ++i) {
+        const int j = hits[i];
+        const bool folding = hinge(j).foldAngle > kPi / 2;
+        approach[i] = std::abs(foldRate(w, j));
+        if (folding) fold(w, j); else lock(w, j);
+        events.push_back({t, folding ? EventKind::Fold : EventKind::Lock, j, hinge(j).corner, {}});
+    }
+    Eigen::VectorXd impulses;
+    const Impact im{&before, &impulses};
+    for (int guard = 0; guard < 4 * blockCount(); ++guard) {
+        w.setPartVelocities(before);
+        projectVelocities(w, d.solver(), &impulses);
+        updateAngles(w);
+        if (auto pull = pullingContact(w, d, &im)) {
+            release(w, pull->first, pull->second);
+            events.push_back({t, pull->second, pull->first, hinge(pull->first).corner, {}});
+            continue;
+        }
+        bool driven = false;
+        for (int j = 1; j < blockCount() && !driven; ++j) {
+            if (hinge(j).mode != HingeMode::Free) continue;
+            for (bool folded : {false, true})
+                if (!driven && touchingLimit(w, j, folded, false)) {
+                    if (folded) fold(w, j); else lock(w, j);
+                    events.push_back({t, folded ? EventKind::Fold : EventKind::Lock, j, hinge(j).corner, {}});
+                    driven = true;
+                }
+        }
+        if (!driven) break;
+    }
+    // Restitution: phi_dot+ = -e phi_dot- for the hinges that were hit.
+    const double e = spec_.hinges.restitution;
+    if (e > 0) {
+        const std::vector<Twist> plastic = w.partVelocities();
+        bool bounced = false;
+        for (size_t i = 0; i < hits.size(); ++i) {
+            const int j = hits[i];
+            const HingeMode mode = hinge(j).mode;
+            if ((mode != HingeMode::OpenLocked && mode != HingeMode::Folded) || e * approach[i] <= spec_.hinges.minReboundSpeed)
+                continue;
+            if (mode == HingeMode::OpenLocked) unlock(w, j); else unfold(w, j);
+            events.push_back({t, EventKind::Bounce, j, hinge(j).corner, {}});
+            bounced = true;
+        }
+        if (bounced) {
+            std::vector<Twist> bounce(before.size());
+            for (size_t p = 0; p < before.size(); ++p)
+                bounce[p] = {before[p].linear + (1 + e) * (plastic[p].linear - before[p].linear),
+                             before[p].angular + (1 + e) * (plastic[p].angular - before[p].angular)};
+            w.setPartVelocities(bounce);
+            projectVelocities(w, d.solver());
+        }
+    }
+    const double dissipated = relBefore - relativeKinetic(w);
+    *loss += dissipated;
+    *heldWork += energy(w).kinetic - keBefore + dissipated;
+    return events;
+}
+
+std::vector<Event> Ladder::resolve(World& w, Dynamics& d, double t, double* loss, double* heldWork) {
+    std::vector<Event> events;
+    for (int guard = 0; guard < 8 * blockCount() + 8; ++guard) {
+        d.evaluate(w, t);
+        updateAngles(w);
+        std::vector<int> hits;
+        for (int j = 1; j < blockCount(); ++j)
+            if (hinge(j).mode == HingeMode::Free && (touchingLimit(w, j, false, true) || touchingLimit(w, j, true, true)))
+                hits.push_back(j);
+        if (!hits.empty()) {
+
+            for (Event& e : impact(w, d, t, hits, loss, heldWork)) events.push_back(std::move(e));
+            continue;
+        }
+        if (auto pull = pullingContact(w, d, nullptr)) {
+            release(w, pull->first, pull->second);
+
+            events.push_back({t, pull->second, pull->first, hinge(pull->first).corner, {}});
+            continue;
+        }
+        break;
+    }
+    d.evaluate(w, t);
+    updateAngles(w);
+    for (Event& e : events) e.text = words(e.kind, e.hinge);
+    return events;
+}
+
+// ---- what the views draw ----
+
+std::vector<HingeFrame> Ladder::hingeFrames(const World& w) const {
+    std::vector<HingeFrame> out(hinges_.size());
+    for (int j = 1; j < blockCount(); ++j) {
+        const Hinge& h = hinge(j);
+        out[size_t(j - 1)] = {h.mode, h.corner, h.foldAngle, cornerWorld(w, j - 1, h.corner)};
+    }
+    return out;
+}
+
+// Two ribbons per hinge, one at each end where the hinge can sit (corner k
+// and k^1); the one at the current hinge corner shows. Each runs along the
+// hinge-side face of the upper block to the hinge and back along the lower
+// block's face, just outside the faces.
+std::vector<RibbonFrame> Ladder::ribbons(const World& w) const {
+    std::vector<RibbonFrame> out;
+    out.reserve(2 * hinges_.size());
+    const double lift = spec_.ribbons.thickness / 2;
+    for (int j = 1; j < blockCount(); ++j) {
+        const Hinge& h = hinge(j);
+        for (int k : {h.corner, h.corner ^ 1}) {
+            RibbonFrame r;
+            r.visible = spec_.ribbons.visible && h.mode != HingeMode::Cut && k == h.corner;
+            for (int i : {j - 1, j}) {
+                const Vec2 out_a = (cornerWorld(w, i, k) - cornerWorld(w, i, k ^ 2)).normalized() * lift;
+                const Vec2 far = cornerWorld(w, i, k ^ 1) + out_a, near = cornerWorld(w, i, k) + out_a;
+                if (i == j - 1) {
+                    r.points.push_back(far);
+                    r.points.push_back(near);
+                } else {
+                    r.points.push_back(near);
+                    r.points.push_back(far);
+                }
+            }
+            out.push_back(std::move(r));
+        }
+    }
+    return out;
+}
+
+}  // namespace jl

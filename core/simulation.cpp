@@ -1,0 +1,474 @@
+#include "core/simulation.h"
+
+#include "core/energy.h"
+#include "core/motion.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <map>
+
+namespace jl {
+
+namespace {
+
+constexpr double kDragTimeConstant = 0.05;  // s, the mouse spring's response
+constexpr double kDragMaxAcceleration = 20; // in g: the spring's force cap per kg
+constexpr double kOpenEnd = std::numeric_limits<double>::max();
+
+Vec2 vec(const Point2& p) { return {p[0], p[1]}; }
+
+}  // namespace
+
+struct Snapshot {
+    World world;
+    std::optional<Ladder> ladder;
+    Stepper stepper;
+    Ledger ledger;
+    double t = 0, impactLoss = 0, impactHeldWork = 0;
+    size_t nextAction = 0;
+    std::vector<size_t> nextDragSample;
+    SolverFrame stats;
+};
+
+Simulation::Simulation(const Scene& scene)
+    : scene_(scene), stepper_(scene.solver.integrator, scene.solver.tolerance) {}
+
+Simulation::Built Simulation::build(const Scene& scene) {
+    Built b;
+    std::unique_ptr<Simulation> s(new Simulation(scene));
+    if (auto error = s->buildWorld()) {
+        b.errors.push_back(*error);
+        return b;
+    }
+    b.simulation = std::move(s);
+    return b;
+}
+
+// ---- building the world of a scene ----
+
+std::optional<std::string> Simulation::buildWorld() {
+    world_.gravity = vec(scene_.gravity);
+    std::map<std::string, PartId> named;
+    if (scene_.ladder) {
+        if (auto e = Ladder::validate(*scene_.ladder)) return e;
+        ladder_.emplace(world_, *scene_.ladder);
+        for (int i = 0; i < ladder_->blockCount(); ++i) {
+            blocks_.push_back(ladder_->block(i));
+            named["block:" + std::to_string(i)] = ladder_->block(i);
+        }
+    }
+    for (const BodySpec& b : scene_.bodies) {
+        const double mass = b.mass.value_or(b.density * b.length * b.thickness * b.width);
+        const PartId p = world_.addBox(mass, Vec2(b.thickness, b.length), b.width, Pose{vec(b.position), b.angle},
+                                       Twist{vec(b.velocity), b.angularVelocity}, b.inertia);
+        named[b.name] = p;
+        blocks_.push_back(p);
+    }
+    for (const ParticleSpec& s : scene_.particles) {
+        const PartId p = world_.addPoint(s.mass, vec(s.position), vec(s.velocity));
+        named[s.name] = p;
+        blocks_.push_back(p);
+    }
+    // A point reference becomes a particle: on the ground, on a part, or a
+    // free particle's own.
+    auto particleAt = [&](const PointRef& r) -> std::optional<ParticleId> {
+        if (r.on == "world") return world_.anchor(vec(r.local));
+        auto it = named.find(r.on);
+        if (it == named.end()) return std::nullopt;
+        if (world_.part(it->second).isPoint) {
+            for (ParticleId id = 0; id < world_.particleCount(); ++id)
+                if (world_.particle(id).at.front().part == it->second) return id;
+        }
+        return world_.addParticle(it->second, vec(r.local));
+    };
+    for (const PinSpec& pin : scene_.pins) {
+        const auto a = particleAt(pin.a), b = particleAt(pin.b);
+        if (!a || !b) return "a pin refers to '" + (a ? pin.b.on : pin.a.on) + "', which does not exist";
+        if (auto e = world_.combine(*a, *b)) return "pin between '" + pin.a.on + "' and '" + pin.b.on + "': " + e->message;
+    }
+    for (const SpringSpec& s : scene_.springs) {
+        const auto a = particleAt(s.a), b = particleAt(s.b);
+        if (!a || !b) return "a spring refers to '" + (a ? s.b.on : s.a.on) + "', which does not exist";
+        const double rest = s.restLength.value_or((world_.particlePosition(*b) - world_.particlePosition(*a)).norm());
+        world_.addSpring({*a, *b, s.stiffness, rest, s.damping});
+    }
+    for (size_t i = 0; i < scene_.bodies.size(); ++i)
+        if (scene_.bodies[i].held) world_.hold(named[scene_.bodies[i].name], Drive(world_.partPose(named[scene_.bodies[i].name])));
+    for (PartId p : blocks_) world_.setDamping(p, scene_.linearDamping, scene_.angularDamping);
+
+    std::stable_sort(scene_.script.begin(), scene_.script.end(),
+                     [](const ScriptAction& a, const ScriptAction& b) { return a.at < b.at; });
+    nextDragSample_.assign(scene_.drags.size(), 0);
+    world_.shrinkToFit();
+    makeConsistent(world_, scene_.solver.projectionTolerance);
+    dynamics_.evaluate(world_, 0);
+    // Force tests at t = 0 (PHYSICS.md section 4, rule 7), then the books open.
+    applyDueInputs();
+    if (ladder_)
+        for (Event& e : ladder_->resolve(world_, dynamics_, 0, &impactLoss_, &impactHeldWork_)) record(e);
+    initialEnergy_ = energy(world_).total() + impactLoss_ - impactHeldWork_;
+    lastResidual_ = pinResidual(world_);
+    return std::nullopt;
+}
+
+// ---- the script and the user's drags ----
+
+// The next instant the step must land on: a scripted action, or the start or
+// end of a held block's scripted move (its acceleration jumps there).
+double Simulation::nextScheduledTime() const {
+    double next = kOpenEnd;
+    for (const ScriptAction& a : scene_.script) {
+        if (a.at > t_) next = std::min(next, a.at);
+        const bool moves = a.kind == ScriptAction::Kind::Turn || a.kind == ScriptAction::Kind::Move;
+        if (moves && a.at + a.duration > t_) next = std::min(next, a.at + a.duration);
+    }
+    return next;
+}
+
+void Simulation::applyScriptAction(const ScriptAction& a) {
+    using K = ScriptAction::Kind;
+    const bool blockOk = a.block >= 0 && a.block < blockCount();
+    if (!blockOk && a.kind != K::Cut) return;
+    const PartId part = blockOk ? blockPart(a.block) : 0;
+    Event e{t_, EventKind::Script, -1, -1, {}};
+    switch (a.kind) {
+    case K::Turn:
+    case K::Move: {
+        if (!world_.isHeld(part)) world_.hold(part, Drive(world_.partPose(part)));
+        const double turn = a.kind == K::Turn ? a.angle : 0.0;
+        const Vec2 offset = a.kind == K::Move ? vec(a.offset) : Vec2::Zero();
+        world_.drive(part)->add({a.at, a.duration, offset, turn});
+        e.text = "the hand " + std::string(a.kind == K::Turn ? "turns" : "moves") + " block " + std::to_string(a.block);
+        break;
+    }
+    case K::Hold:
+        world_.hold(part, Drive(world_.partPose(part)));
+        e.text = "the hand holds block " + std::to_string(a.block);
+        break;
+    case K::Release:
+        world_.release(part);
+        e.text = "the hand lets go of block " + std::to_string(a.block);
+        break;
+    case K::Push: {
+        const double before = energy(world_).kinetic;
+        const int b = world_.part(part).body;
+        const Vec2 x = world_.pointPosition(part, vec(a.point));
+        const Vec2 impulse = vec(a.impulse);
+        world_.v.segment<2>(3 * b) += world_.body(b).invMass * impulse;
+        world_.v[3 * b + 2] += world_.body(b).invInertia * cross(x - world_.q.segment<2>(3 * b), impulse);
+        projectVelocities(world_, dynamics_.solver());
+        ledger_.user += energy(world_).kinetic - before;
+        e.text = "block " + std::to_string(a.block) + " is pushed";
+        break;
+    }
+    case K::Cut:
+        if (ladder_ && !ladder_->cut(world_, a.hinge)) {
+            e = {t_, EventKind::Cut, a.hinge, -1, "the ribbons of hinge " + std::to_string(a.hinge) + " are cut"};
+        }
+        break;
+    case K::Join:
+        if (ladder_ && a.otherBlock >= 0 && a.otherBlock < blockCount() &&
+            !world_.combine(ladder_->particle(a.block, a.corner), ladder_->particle(a.otherBlock, a.otherCorner))) {
+            e = {t_, EventKind::Join, -1, -1,
+                 "corner " + std::to_string(a.corner) + " of block " + std::to_string(a.block) + " is joined to corner " +
+                     std::to_string(a.otherCorner) + " of block " + std::to_string(a.otherBlock)};
+        }
+        break;
+    }
+    if (!e.text.empty()) record(e);
+}
+
+// The user's drag: the mouse spring on a free block; a held block's hand
+// follows the mouse instead (PHYSICS.md section 5).
+void Simulation::applyDragSample(const DragRecord& d, const DragRecord::Sample& s) {
+    if (d.block < 0 || d.block >= blockCount()) return;
+    const PartId part = blockPart(d.block);
+    if (Drive* drive = world_.drive(part)) {
+        const Pose final = drive->at(kOpenEnd).pose;
+        drive->add({t_, 4 * kDragTimeConstant, vec(s.target) - final.apply(vec(d.point)), 0.0});
+        return;
+    }
+    const double m = world_.part(part).mass;
+    const double omega = 1.0 / kDragTimeConstant;
+    UserDrag g{part, vec(d.point), vec(s.target), m * omega * omega, 2 * m * omega,
+               kDragMaxAcceleration * m * std::max(world_.gravity.norm(), 9.81)};
+    for (UserDrag& live : world_.drags())
+        if (live.part == part && live.local == g.local) {
+            live = g;
+            return;
+        }
+    world_.drags().push_back(g);
+}
+
+// Script actions and drag samples due now; the step always lands on them.
+void Simulation::applyDueInputs() {
+    constexpr double eps = 1e-12;
+    bool changed = false;
+    while (nextAction_ < scene_.script.size() && scene_.script[nextAction_].at <= t_ + eps) {
+        applyScriptAction(scene_.script[nextAction_++]);
+        changed = true;
+    }
+    for (size_t i = 0; i < scene_.drags.size(); ++i) {
+        const DragRecord& d = scene_.drags[i];
+        while (nextDragSample_[i] < d.samples.size() && d.samples[nextDragSample_[i]].t <= t_ + eps)
+            applyDragSample(d, d.samples[nextDragSample_[i]++]);
+        if (d.end <= t_ + eps && d.block >= 0 && d.block < blockCount()) {
+            auto& drags = world_.drags();
+            const PartId part = blockPart(d.block);
+            drags.erase(std::remove_if(drags.begin(), drags.end(),
+                                       [&](const UserDrag& g) { return g.part == part && g.local == vec(d.point); }),
+                        drags.end());
+        }
+    }
+    if (changed) {
+        // Held blocks' accelerations may jump here: test the contacts.
+        dynamics_.evaluate(world_, t_);
+        if (ladder_)
+            for (Event& e : ladder_->resolve(world_, dynamics_, t_, &impactLoss_, &impactHeldWork_)) record(e);
+    }
+}
+
+void Simulation::beginDrag(int block, const Vec2& local, const Vec2& target) {
+    if (block < 0 || block >= blockCount()) return;
+    endDrag();
+    DragRecord d;
+    d.block = block;
+    d.point = {local.x(), local.y()};
+    d.samples.push_back({t_, {target.x(), target.y()}});
+    d.end = kOpenEnd;
+    scene_.drags.push_back(d);
+    nextDragSample_.push_back(1);
+    liveDrag_ = int(scene_.drags.size()) - 1;
+    applyDragSample(d, d.samples.back());
+}
+
+void Simulation::moveDrag(const Vec2& target) {
+    if (liveDrag_ < 0) return;
+    DragRecord& d = scene_.drags[size_t(liveDrag_)];
+    // Several moves between two steps: the last one wins, as in a replay.
+    if (d.samples.back().t == t_) d.samples.back().target = {target.x(), target.y()};
+    else d.samples.push_back({t_, {target.x(), target.y()}});
+    nextDragSample_[size_t(liveDrag_)] = d.samples.size();
+    applyDragSample(d, d.samples.back());
+}
+
+void Simulation::endDrag() {
+    if (liveDrag_ < 0) return;
+    scene_.drags[size_t(liveDrag_)].end = t_;
+    liveDrag_ = -1;
+    applyDueInputs();
+}
+
+// ---- stepping ----
+
+void Simulation::record(const Event& e) { pending_.push_back(e); }
+
+void Simulation::fail(const std::string& why) {
+    failure_ = "at t = " + std::to_string(t_) + " s: " + why;
+}
+
+bool Simulation::takeStep(double limit) {
+    if (!failure_.empty()) return false;
+    const SolverSpec& solver = scene_.solver;
+    const bool adaptive = solver.integrator == Integrator::DormandPrince45;
+    double h = adaptive && stepper_.nextStep() > 0 ? stepper_.nextStep() : solver.step;
+    const double scheduled = std::min(nextScheduledTime(), limit);
+    const bool lands = t_ + h >= scheduled - 1e-12;
+    if (lands) h = scheduled - t_;
+    if (h <= 0) return true;
+
+    const Eigen::VectorXd q0 = world_.q, v0 = world_.v;
+    const Ledger l0 = ledger_;
+    const double next0 = stepper_.nextStep();
+    MotionStep m = advanceAndProject(world_, dynamics_, stepper_, t_, h, ledger_, solver.projectionTolerance);
+    if (!m.ok()) {
+        fail(m.step.finite ? "the projection onto the pins did not converge (residual " +
+                                 std::to_string(m.projection.residual) + " m after " +
+                                 std::to_string(m.projection.iterations) + " iterations)"
+                           : "the step produced a non-finite state (the integrator is unstable at this step size)");
+        return false;
+    }
+    double taken = m.step.taken;
+    stats_.rejected += m.step.rejected;
+    if (ladder_) {
+        std::vector<double> g;
+        auto violated = [&] {
+            dynamics_.evaluate(world_, t_ + taken);
+            ladder_->eventFunctions(world_, dynamics_, g);
+            return std::any_of(g.begin(), g.end(), [](double x) { return x < 0; });
+        };
+        if (violated()) {
+            if (solver.events == EventPolicy::Located && taken > solver.eventTolerance) {
+                // Bisect the step for the first instant an event function is
+                // negative, re-running the step from its start each time.
+                double lo = 0, hi = taken;
+                auto rerun = [&](double hh) {
+                    world_.q = q0;
+                    world_.v = v0;
+                    ledger_ = l0;
+                    return advanceAndProject(world_, dynamics_, stepper_, t_, hh, ledger_, solver.projectionTolerance,
+                                             true).ok();
+                };
+                while (hi - lo > solver.eventTolerance) {
+                    const double mid = 0.5 * (lo + hi);
+                    if (!rerun(mid) || violated()) hi = mid; else lo = mid;
+                }
+                if (!rerun(hi)) {
+                    fail("an event could not be located: a step to it failed");
+                    return false;
+                }
+                stepper_.setNextStep(next0 > 0 ? next0 : solver.step);
+                taken = hi;
+            }
+            std::vector<Event> happened = ladder_->resolve(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
+            if (happened.empty() && taken < m.step.taken) {
+                // The located instant asked for nothing after all (a function
+                // within rounding of its threshold): take the whole step, so
+                // time can never stall on it.
+                world_.q = q0;
+                world_.v = v0;
+                ledger_ = l0;
+                m = advanceAndProject(world_, dynamics_, stepper_, t_, m.step.taken, ledger_, solver.projectionTolerance, true);
+                taken = m.step.taken;
+                ++stats_.spuriousEvents;
+                happened = ladder_->resolve(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
+            }
+            for (Event& e : happened) record(e);
+            if (!world_.q.allFinite() || !world_.v.allFinite()) {
+                world_.q = q0;
+                world_.v = v0;
+                ledger_ = l0;
+                fail("an impact produced a non-finite state");
+                return false;
+            }
+        }
+        ladder_->updateAngles(world_);
+    }
+    t_ = (lands && taken == h) ? scheduled : t_ + taken;
+    ++stats_.steps;
+    stats_.lastStep = taken;
+    lastResidual_ = m.projection.residual;
+    applyDueInputs();
+    return true;
+}
+
+bool Simulation::stepOnce() { return takeStep(kOpenEnd); }
+
+bool Simulation::advanceTo(double t) {
+    const auto start = std::chrono::steady_clock::now();
+    while (t_ < t && failure_.empty())
+        if (!takeStep(kOpenEnd)) break;
+    stats_.wallSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return failure_.empty();
+}
+
+bool Simulation::advanceToNextEvent(double limit) {
+    const size_t before = pending_.size();
+    while (t_ < limit && failure_.empty() && pending_.size() == before)
+        if (!takeStep(kOpenEnd)) break;
+    return pending_.size() > before;
+}
+
+// ---- frames, picking, snapshots ----
+
+Frame Simulation::frame() {
+    Frame f;
+    f.time = t_;
+    f.blocks.reserve(blocks_.size());
+    f.held.reserve(blocks_.size());
+    for (PartId p : blocks_) {
+        f.blocks.push_back(world_.partPose(p));
+        f.held.push_back(world_.isHeld(p));
+    }
+    if (ladder_) {
+        f.hinges = ladder_->hingeFrames(world_);
+        f.ribbons = ladder_->ribbons(world_);
+    }
+    const Energy e = energy(world_);
+    f.energy.kinetic = e.kinetic;
+    f.energy.potential = e.potential;
+    f.energy.heldWork = ledger_.held + impactHeldWork_;
+    f.energy.userWork = ledger_.user;
+    f.energy.dampingLoss = ledger_.damping;
+    f.energy.impactLoss = impactLoss_;
+    f.energy.initial = initialEnergy_;
+    f.solver = stats_;
+    f.solver.evaluations = dynamics_.evaluations();
+    f.solver.residual = lastResidual_;
+    f.solver.pins = int(world_.pins().size());
+    for (int b = 0; b < world_.bodyCount(); ++b)
+        if (world_.body(b).alive && !world_.body(b).kinematic) ++f.solver.bodies;
+    f.events = std::move(pending_);
+    pending_.clear();
+    if (!world_.drags().empty()) {
+        const UserDrag& g = world_.drags().front();
+        f.dragging = true;
+        f.dragFrom = world_.pointPosition(g.part, g.local);
+        f.dragTo = g.target;
+    }
+    f.failure = failure_;
+    return f;
+}
+
+std::optional<std::pair<int, Vec2>> Simulation::pick(const Vec2& point) const {
+    constexpr double margin = 0.002;  // m: thin blocks stay pickable
+    for (int i = blockCount() - 1; i >= 0; --i) {
+        const Part& part = world_.part(blockPart(i));
+        const Pose pose = world_.partPose(blockPart(i));
+        const Vec2 local = rotate(-pose.angle, point - pose.position);
+        if (std::abs(local.x()) <= part.halfSize.x() + margin && std::abs(local.y()) <= part.halfSize.y() + margin)
+            return std::make_pair(i, local);
+    }
+    return std::nullopt;
+}
+
+std::shared_ptr<const Snapshot> Simulation::snapshot() const {
+    return std::make_shared<const Snapshot>(Snapshot{world_, ladder_, stepper_, ledger_, t_, impactLoss_,
+                                                     impactHeldWork_, nextAction_, nextDragSample_, stats_});
+}
+
+// Restores the state; recorded drags stay, so carrying on replays them.
+void Simulation::restore(const Snapshot& s) {
+    world_ = s.world;
+    ladder_ = s.ladder;
+    stepper_ = s.stepper;
+    ledger_ = s.ledger;
+    t_ = s.t;
+    impactLoss_ = s.impactLoss;
+    impactHeldWork_ = s.impactHeldWork;
+    nextAction_ = s.nextAction;
+    nextDragSample_ = s.nextDragSample;
+    nextDragSample_.resize(scene_.drags.size(), 0);
+    stats_ = s.stats;
+    dynamics_.solver().reset();  // its caches belong to the structure it last saw
+    dynamics_.evaluate(world_, t_);
+    liveDrag_ = -1;
+    pending_.clear();
+    failure_.clear();
+}
+
+std::uint64_t Simulation::stateHash() const {
+    std::uint64_t h = 1469598103934665603ull;
+    auto mix = [&](const void* data, size_t n) {
+        const auto* p = static_cast<const unsigned char*>(data);
+        for (size_t i = 0; i < n; ++i) h = (h ^ p[i]) * 1099511628211ull;
+    };
+    mix(&t_, sizeof t_);
+    for (PartId p : blocks_) {
+        const Pose pose = world_.partPose(p);
+        const Twist vel = world_.partVelocity(p);
+        const double x[6] = {pose.position.x(), pose.position.y(), pose.angle, vel.linear.x(), vel.linear.y(), vel.angular};
+        mix(x, sizeof x);
+    }
+    if (ladder_)
+        for (int j = 1; j < ladder_->blockCount(); ++j) {
+            const int state[2] = {int(ladder_->hinge(j).mode), ladder_->hinge(j).corner};
+            mix(state, sizeof state);
+        }
+    return h;
+}
+
+}  // namespace jl

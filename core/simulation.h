@@ -1,0 +1,100 @@
+// A running scene: advances a world step by step, applies the script and the
+// user's drags at their times, handles the ladder's events, produces frames.
+// Deterministic: the same scene and drags give bit-identical states whatever
+// the caller's frame rate (steps are never cut to suit the caller).
+#pragma once
+
+#include "core/dynamics.h"
+#include "core/frame.h"
+#include "core/ladder.h"
+#include "core/scene.h"
+#include "core/stepper.h"
+#include "core/world.h"
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace jl {
+
+// The full state at one instant, enough to carry on bit-identically.
+struct Snapshot;
+
+class Simulation {
+public:
+    struct Built {
+        std::unique_ptr<Simulation> simulation;
+        std::vector<std::string> errors;  // empty when built
+    };
+    // Builds the world of a scene (already validated by the loader).
+    static Built build(const Scene& scene);
+
+    double time() const { return t_; }
+    const Scene& scene() const { return scene_; }  // the recorded drags included
+    const World& world() const { return world_; }
+    const Ladder* ladder() const { return ladder_ ? &*ladder_ : nullptr; }
+    int blockCount() const { return int(blocks_.size()); }
+    PartId blockPart(int block) const { return blocks_[size_t(block)]; }
+
+    // The current state as a frame; events since the previous call move into it.
+    Frame frame();
+
+    // Steps until time() >= t (possibly a little past it: the last step is not
+    // shortened). Returns false, keeping the last good state, on failure.
+    bool advanceTo(double t);
+    // One internal step (or up to the next scripted instant).
+    bool stepOnce();
+    // Runs until an event happens or `limit` is reached; true if one happened.
+    bool advanceToNextEvent(double limit);
+    const std::string& failure() const { return failure_; }
+
+    // The mouse spring of PHYSICS.md section 5 on block `block`, grabbed at
+    // `local` (block frame), pulled toward `target` (plane). Recorded into
+    // scene().drags with the time each sample takes effect, so a replay of
+    // the scene reproduces it exactly.
+    void beginDrag(int block, const Vec2& local, const Vec2& target);
+    void moveDrag(const Vec2& target);
+    void endDrag();
+    bool dragging() const { return liveDrag_ >= 0; }
+
+    // Which block is under a point of the plane, and where on it (block frame).
+    std::optional<std::pair<int, Vec2>> pick(const Vec2& point) const;
+
+    std::shared_ptr<const Snapshot> snapshot() const;
+    void restore(const Snapshot& s);
+    // FNV-1a over the bits of every block pose and velocity and the hinge modes.
+    std::uint64_t stateHash() const;
+
+private:
+    explicit Simulation(const Scene& scene);
+    std::optional<std::string> buildWorld();
+    double nextScheduledTime() const;
+    void applyDueInputs();
+    void applyScriptAction(const ScriptAction& a);
+    void applyDragSample(const DragRecord& d, const DragRecord::Sample& s);
+    bool takeStep(double limit);
+    void record(const Event& e);
+    void fail(const std::string& why);
+
+    Scene scene_;
+    World world_;
+    Dynamics dynamics_;
+    Stepper stepper_;
+    Ledger ledger_;
+    std::optional<Ladder> ladder_;
+    std::vector<PartId> blocks_;
+    double t_ = 0;
+    double initialEnergy_ = 0;
+    double impactLoss_ = 0, impactHeldWork_ = 0;
+    size_t nextAction_ = 0;
+    std::vector<size_t> nextDragSample_;
+    int liveDrag_ = -1;
+    std::vector<Event> pending_;
+    std::string failure_;
+    SolverFrame stats_;
+    double lastResidual_ = 0;
+};
+
+}  // namespace jl
