@@ -22,8 +22,11 @@ QByteArray unitCube() {
     data.reserve(36 * 6 * sizeof(float));
     auto push = [&data](float x) { data.append(reinterpret_cast<const char*>(&x), sizeof x); };
     for (const auto& n : normals) {
-        // Two axes spanning the face (faces are drawn from both sides: no culling state is set).
+        // Two axes spanning the face, ordered so the triangles wind counter-clockwise
+        // seen from outside (Qt3D culls back faces by default).
         std::array<float, 3> u{n[2], n[0], n[1]}, v{n[1], n[2], n[0]};
+        const std::array<float, 3> uxv{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+        if (uxv[0] * n[0] + uxv[1] * n[1] + uxv[2] * n[2] < 0) std::swap(u, v);
         const float corners[6][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, -1}, {1, 1}, {-1, 1}};
         for (const auto& c : corners) {
             for (int k = 0; k < 3; ++k) push(0.5f * (n[size_t(k)] + c[0] * u[size_t(k)] + c[1] * v[size_t(k)]));

@@ -89,6 +89,11 @@ void LadderView::resetView() {
     updateCamera();
 }
 
+void LadderView::orbit(float yawDegrees, float pitchDegrees) {
+    camera_.orbit(yawDegrees, pitchDegrees);
+    updateCamera();
+}
+
 void LadderView::setWalkMode(bool on) {
     if (walk_ == on) return;
     walk_ = on;

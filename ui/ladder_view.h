@@ -32,6 +32,8 @@ public:
     void setScene(const jl::Scene& scene, bool resetCamera);
     void showFrame(const jl::Frame& frame);
     void resetView();
+    // Turns the viewer about the target, as a right-button drag does.
+    void orbit(float yawDegrees, float pitchDegrees);
     void setWalkMode(bool on);
     bool walkMode() const { return walk_; }
 

@@ -268,7 +268,8 @@ void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {
     }
     const double t = s->frame ? s->frame->time : 0;
     timeLabel_->setText(tr("t = %1 s  (of %2 s)").arg(t, 0, 'f', 3).arg(s->headTime, 0, 'f', 2));
-    rateLabel_->setText(tr("%1× real time · %2 steps/s").arg(s->realTimeFactor, 0, 'f', 2).arg(s->stepsPerSecond, 0, 'f', 0));
+    rateLabel_->setText(s->playing ? tr("%1× real time · %2 steps/s").arg(s->realTimeFactor, 0, 'f', 2).arg(s->stepsPerSecond, 0, 'f', 0)
+                                   : tr("paused at frame %1 of %2").arg(s->frameIndex).arg(s->frameCount - 1));
     if (s->frame) {
         const jl::EnergyFrame& e = s->frame->energy;
         energyLabel_->setText(tr("E = %1  (books %2)").arg(energyText(e.total()), energyText(e.balance())));

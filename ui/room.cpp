@@ -40,11 +40,11 @@ Room::Room(Qt3DCore::QNode* parent) : Qt3DCore::QEntity(parent) {
     addComponent(transform_);
     // Built for a unit room whose table top is at y = 0, centred under the ladder.
     const float floorY = -kTableHeight;
-    box(this, {0, -kTop / 2, 0}, {kTableWidth, kTop, kTableDepth}, QColor(112, 84, 62), 20);
+    box(this, {0, -kTop / 2, 0}, {kTableWidth, kTop, kTableDepth}, QColor(92, 100, 114), 20);  // a slate bench top: the wood stands out
     for (float sx : {-1.f, 1.f})
         for (float sz : {-1.f, 1.f})
             box(this, {sx * (kTableWidth / 2 - 0.06f), floorY / 2 - kTop / 2, sz * (kTableDepth / 2 - 0.06f)},
-                {0.05f, kTableHeight - kTop, 0.05f}, QColor(80, 60, 45));
+                {0.05f, kTableHeight - kTop, 0.05f}, QColor(60, 64, 72));
     box(this, {0, floorY - 0.02f, 0}, {kRoomWidth, 0.04f, kRoomDepth}, QColor(178, 172, 160));
     box(this, {0, floorY + kRoomHeight / 2, -kRoomDepth / 2}, {kRoomWidth, kRoomHeight, 0.05f}, QColor(196, 200, 208));
     box(this, {-kRoomWidth / 2, floorY + kRoomHeight / 2, 0}, {0.05f, kRoomHeight, kRoomDepth}, QColor(186, 190, 199));

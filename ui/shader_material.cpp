@@ -1,5 +1,6 @@
 #include "ui/shader_material.h"
 
+#include <Qt3DRender/QCullFace>
 #include <Qt3DRender/QEffect>
 #include <Qt3DRender/QFilterKey>
 #include <Qt3DRender/QGraphicsApiFilter>
@@ -19,7 +20,7 @@ void ensureResources() {
     (void)once;
 }
 
-Qt3DRender::QMaterial* shaderMaterial(const QString& name, Qt3DCore::QNode* parent, bool pullForward) {
+Qt3DRender::QMaterial* shaderMaterial(const QString& name, Qt3DCore::QNode* parent, ShaderOptions options) {
     ensureResources();
     auto* material = new Qt3DRender::QMaterial(parent);
     auto* effect = new Qt3DRender::QEffect(material);
@@ -40,7 +41,12 @@ Qt3DRender::QMaterial* shaderMaterial(const QString& name, Qt3DCore::QNode* pare
     program->setVertexShaderCode(Qt3DRender::QShaderProgram::loadSource(QUrl("qrc:/shaders/" + name + ".vert")));
     program->setFragmentShaderCode(Qt3DRender::QShaderProgram::loadSource(QUrl("qrc:/shaders/" + name + ".frag")));
     pass->setShaderProgram(program);
-    if (pullForward) {
+    if (options != ShaderOptions::Solid) {
+        auto* cull = new Qt3DRender::QCullFace(pass);
+        cull->setMode(Qt3DRender::QCullFace::NoCulling);
+        pass->addRenderState(cull);
+    }
+    if (options == ShaderOptions::TwoSidedOnAFace) {
         auto* offset = new Qt3DRender::QPolygonOffset(pass);
         offset->setScaleFactor(-1.0f);
         offset->setDepthSteps(-4.0f);

@@ -13,12 +13,17 @@ class QMaterial;
 
 namespace jlui {
 
-// Loads qrc:/shaders/<name>.vert and .frag. `pullForward`: drawn with a depth
-// offset toward the eye, for strips lying on a face (no z-fighting).
 // Registers resources/resources.qrc (compiled into this static library, so
 // nothing registers it before first use); safe to call more than once.
 void ensureResources();
 
-Qt3DRender::QMaterial* shaderMaterial(const QString& name, Qt3DCore::QNode* parent, bool pullForward = false);
+enum class ShaderOptions {
+    Solid,            // closed surfaces: back faces culled
+    TwoSided,         // flat strips, seen from either side
+    TwoSidedOnAFace,  // and drawn with a depth offset toward the eye, lying on a face without z-fighting
+};
+
+// Loads qrc:/shaders/<name>.vert and .frag.
+Qt3DRender::QMaterial* shaderMaterial(const QString& name, Qt3DCore::QNode* parent, ShaderOptions options = ShaderOptions::Solid);
 
 }  // namespace jlui

@@ -27,7 +27,7 @@ StripEntity::StripEntity(Qt3DCore::QNode* parent, bool unlit) : Qt3DCore::QEntit
     renderer_->setPrimitiveType(Qt3DRender::QGeometryRenderer::Triangles);
     renderer_->setVertexCount(0);
     addComponent(renderer_);
-    auto* material = shaderMaterial("strip", this, !unlit);
+    auto* material = shaderMaterial("strip", this, unlit ? ShaderOptions::TwoSided : ShaderOptions::TwoSidedOnAFace);
     color_ = new Qt3DRender::QParameter("stripColor", QColor(Qt::white), material);
     material->addParameter(color_);
     material->addParameter(new Qt3DRender::QParameter("unlit", unlit ? 1.0f : 0.0f, material));

@@ -1,4 +1,5 @@
 // The desktop program: jacobsladder [scene.yaml]
+#include "ui/ladder_view.h"
 #include "ui/main_window.h"
 #include "ui/sim_controller.h"
 
@@ -38,15 +39,18 @@ int main(int argc, char** argv) {
     QCommandLineOption screenshot("screenshot", "Save a picture of the window to FILE, then quit.", "FILE");
     QCommandLineOption after("after", "Seconds to wait before --screenshot.", "SECONDS", "3");
     QCommandLineOption play("play", "Start playing at once.");
-    screenshot.setFlags(QCommandLineOption::HiddenFromHelp);
-    after.setFlags(QCommandLineOption::HiddenFromHelp);
-    parser.addOptions({screenshot, after, play});
+    QCommandLineOption seek("seek", "Simulate up to SECONDS and show that moment.", "SECONDS");
+    QCommandLineOption orbit("orbit", "Turn the view by DEGREES about the ladder.", "DEGREES");
+    for (QCommandLineOption* o : {&screenshot, &after, &seek, &orbit}) o->setFlags(QCommandLineOption::HiddenFromHelp);
+    parser.addOptions({screenshot, after, play, seek, orbit});
     parser.process(app);
 
     jlui::MainWindow window;
     window.show();
     if (!parser.positionalArguments().isEmpty()) window.openFile(parser.positionalArguments().first());
     else window.offerRecovery();
+    if (parser.isSet(orbit)) window.ladderView()->orbit(parser.value(orbit).toFloat(), 0);
+    if (parser.isSet(seek)) window.controller()->seek(parser.value(seek).toDouble());
     if (parser.isSet(play)) window.controller()->play();
     if (parser.isSet(screenshot)) scheduleScreenshot(window, parser.value(screenshot), parser.value(after).toDouble());
     return app.exec();

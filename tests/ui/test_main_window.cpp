@@ -7,6 +7,7 @@
 #include "ui/file_errors_dialog.h"
 #include "ui/ladder_view.h"
 
+#include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QRegularExpression>
 #include <QSpinBox>
@@ -63,6 +64,40 @@ private slots:
             const QPointF beside = w.ladderView()->pixelOf(c + jl::Vec2(0.15, 0)) * scale;
             QVERIFY2(!woodColoured(image.pixelColor(beside.toPoint()), wood), "wood colour where no block is");
         }
+    }
+
+    void ribbonsAreDrawnOverTheFacesAndHideWhenAsked() {
+        MainWindow w(jltest::quietWindow());
+        w.resize(1400, 900);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        const auto before = jltest::loadsSoFar(w.controller());
+        QVERIFY(w.openFile(kClassic));
+        QVERIFY(jltest::loadedAfter(w.controller(), before));
+        w.ladderView()->orbit(35, 0);  // from the front the ribbons are edge on
+        QTest::qWait(300);
+        const QColor ribbon(40, 60, 140);  // the default ribbon colour
+        auto ribbonPixels = [&] {
+            const QImage image = captureView(w.ladderView());
+            int n = 0;
+            for (int y = 0; y < image.height(); y += 2)
+                for (int x = 0; x < image.width(); x += 2) {
+                    const QColor c = image.pixelColor(x, y);
+                    n += std::abs(c.hsvHueF() * 360 - ribbon.hsvHueF() * 360) < 12 && c.hsvSaturationF() > 0.45f;
+                }
+            return n;
+        };
+        const int shown = ribbonPixels();
+        QVERIFY2(shown > 100, qPrintable(QString("%1 ribbon pixels").arg(shown)));
+        auto* visible = w.findChild<QCheckBox*>("ribbonsVisible");
+        QVERIFY(visible && visible->isChecked());
+        visible->setChecked(false);
+        QVERIFY(!w.document()->scene().ladder->ribbons.visible);
+        QVERIFY(jltest::waitForStatus(w.controller(), [](const SimStatus& s) {
+            return s.recorded && !s.recorded->ladder->ribbons.visible && s.frame;
+        }));
+        QTest::qWait(300);
+        QCOMPARE(ribbonPixels(), 0);
     }
 
     void blockCountEditsMergeAndUndoRestoresTheSceneExactly() {
