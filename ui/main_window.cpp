@@ -206,6 +206,9 @@ void MainWindow::createDocks() {
     tabifyDockWidget(findChild<QDockWidget*>("ladderDock"), simDock);
     findChild<QDockWidget*>("ladderDock")->raise();
     splitDockWidget(scriptDock, eventsDock, Qt::Vertical);
+    // The event log grows while the script stays short: give the log the room.
+    resizeDocks({scriptDock, eventsDock}, {200, 520}, Qt::Vertical);
+    resizeDocks({scriptDock}, {380}, Qt::Horizontal);
 }
 
 void MainWindow::createStatusBar() {
