@@ -7,7 +7,6 @@ namespace jl {
 MotionStep advanceAndProject(World& w, Dynamics& d, Stepper& s, double t, double h, Ledger& ledger,
                              double tolerance, bool exact) {
     MotionStep m;
-    const Eigen::VectorXd q0 = w.q, v0 = w.v;
     const Ledger l0 = ledger;
     m.step = s.advance(w, d, t, h, ledger, exact);
     if (!m.step.finite) return m;
@@ -17,8 +16,9 @@ MotionStep advanceAndProject(World& w, Dynamics& d, Stepper& s, double t, double
         if (w.q.allFinite() && w.v.allFinite()) return m;
         m.step.finite = false;
     }
-    w.q = q0;
-    w.v = v0;
+    // The stepper still holds the state it started from (no copy per step).
+    w.q = s.startPositions();
+    w.v = s.startVelocities();
     ledger = l0;
     w.updateKinematics(t);
     return m;

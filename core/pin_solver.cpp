@@ -16,8 +16,22 @@ constexpr double kRegularisation = 1e-12;
 
 Eigen::Matrix2d safeInverse(Eigen::Matrix2d m) {
     const double scale = m.cwiseAbs().maxCoeff();
-    if (!(std::abs(m.determinant()) > 1e-13 * scale * scale)) m.diagonal().array() += kRegularisation * (scale > 0 ? scale : 1.0);
-    return m.inverse();
+    double det = m(0, 0) * m(1, 1) - m(0, 1) * m(1, 0);
+    if (!(std::abs(det) > 1e-13 * scale * scale)) {
+        m.diagonal().array() += kRegularisation * (scale > 0 ? scale : 1.0);
+        det = m(0, 0) * m(1, 1) - m(0, 1) * m(1, 0);
+    }
+    Eigen::Matrix2d inv;
+    inv << m(1, 1), -m(0, 1), -m(1, 0), m(0, 0);
+    return inv / det;
+}
+
+// W-weighted coupling of two points r1, r2 of a body with inverse mass and
+// inertia (im, ii): im * 1 + ii * perp(r1) perp(r2)^T, written out.
+inline Eigen::Matrix2d couplingOf(double im, double ii, const Vec2& r1, const Vec2& r2) {
+    Eigen::Matrix2d m;
+    m << im + ii * r1.y() * r2.y(), -ii * r1.y() * r2.x(), -ii * r1.x() * r2.y(), im + ii * r1.x() * r2.x();
+    return m;
 }
 
 }  // namespace
@@ -25,9 +39,7 @@ Eigen::Matrix2d safeInverse(Eigen::Matrix2d m) {
 // W-weighted coupling of two points r1, r2 of one body: J1 W J2^T.
 Eigen::Matrix2d PinSolver::coupling(const World& w, int body, const Vec2& r1, const Vec2& r2) const {
     const Body& b = w.body(body);
-    Eigen::Matrix2d m = b.invMass * Eigen::Matrix2d::Identity();
-    m.noalias() += b.invInertia * perp(r1) * perp(r2).transpose();
-    return m;
+    return couplingOf(b.invMass, b.invInertia, r1, r2);
 }
 
 void PinSolver::order(const World& w) {
@@ -89,8 +101,21 @@ void PinSolver::order(const World& w) {
     version_ = w.structureVersion();
 }
 
+void PinSolver::updateRotations(const World& w) {
+    rotation_.resize(size_t(w.bodyCount()));
+    for (int b = 0; b < w.bodyCount(); ++b) {
+        const double angle = w.q[3 * b + 2];
+        rotation_[size_t(b)] = {std::cos(angle), std::sin(angle)};
+    }
+}
+
 void PinSolver::assemble(const World& w) {
     if (version_ != w.structureVersion()) order(w);
+    updateRotations(w);
+    auto turn = [&](int body, const Vec2& r) {
+        const Eigen::Vector2d& cs = rotation_[size_t(body)];
+        return Vec2(cs[0] * r.x() - cs[1] * r.y(), cs[1] * r.x() + cs[0] * r.y());
+    };
     const std::vector<Pin>& pins = w.pins();
     for (size_t i = 0; i < pins.size(); ++i) {
         const Pin& p = pins[i];
@@ -99,8 +124,8 @@ void PinSolver::assemble(const World& w) {
         row.bodyB = p.bodyB;
         row.dynA = !w.body(p.bodyA).kinematic;
         row.dynB = !w.body(p.bodyB).kinematic;
-        row.rA = rotate(w.q[3 * p.bodyA + 2], p.localA);
-        row.rB = rotate(w.q[3 * p.bodyB + 2], p.localB);
+        row.rA = turn(p.bodyA, p.localA);
+        row.rB = turn(p.bodyB, p.localB);
     }
     if (chain_)
         factorChain(w);

@@ -36,6 +36,14 @@ public:
     const Vec2& armA(int i) const { return pins_[size_t(i)].rA; }
     const Vec2& armB(int i) const { return pins_[size_t(i)].rB; }
 
+    // Work vectors of the projection (projection.cpp), kept here so that a
+    // step allocates nothing once the sizes have settled.
+    struct Scratch {
+        Eigen::VectorXd gap, x, dq, q0, jv;
+        std::vector<Eigen::Vector2d> rotation;  // (cos, sin) of each body's angle
+    };
+    Scratch scratch;
+
 private:
     struct PinRow {
         int bodyA, bodyB;
@@ -48,6 +56,7 @@ private:
         double signPrev, signNext;  // +1 if the body is the pin's A side
     };
     void order(const World& w);
+    void updateRotations(const World& w);
     Eigen::Matrix2d coupling(const World& w, int body, const Vec2& r1, const Vec2& r2) const;
     void factorChain(const World& w);
     void factorSparse(const World& w);
@@ -55,6 +64,7 @@ private:
     long long version_ = -1;
     bool chain_ = true;
     std::vector<PinRow> pins_;
+    std::vector<Eigen::Vector2d> rotation_;  // (cos, sin) per body: one sincos per body, not per pin end
     // Chain mode: pins in path order, path starts, and links between neighbours.
     std::vector<int> sequence_;
     std::vector<int> pathStart_;   // index into sequence_, plus a final end marker

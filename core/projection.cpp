@@ -9,15 +9,20 @@ namespace jl {
 
 namespace {
 
-// Gap of every pin (2 per pin): point on A minus point on B.
-void pinGaps(const World& w, Eigen::VectorXd& gap) {
+// Gap of every pin (2 per pin): point on A minus point on B. One sincos
+// per body (kept in `rotation`) rather than two per pin.
+void pinGaps(const World& w, Eigen::VectorXd& gap, std::vector<Eigen::Vector2d>& rotation) {
+    rotation.resize(size_t(w.bodyCount()));
+    for (int b = 0; b < w.bodyCount(); ++b) rotation[size_t(b)] = {std::cos(w.q[3 * b + 2]), std::sin(w.q[3 * b + 2])};
+    auto point = [&](int body, const Vec2& r) {
+        const Eigen::Vector2d& cs = rotation[size_t(body)];
+        return Vec2(w.q[3 * body] + cs[0] * r.x() - cs[1] * r.y(), w.q[3 * body + 1] + cs[1] * r.x() + cs[0] * r.y());
+    };
     const std::vector<Pin>& pins = w.pins();
     gap.resize(2 * Eigen::Index(pins.size()));
     for (size_t i = 0; i < pins.size(); ++i) {
         const Pin& p = pins[i];
-        const Vec2 xa = w.bodyPose(p.bodyA).apply(p.localA);
-        const Vec2 xb = w.bodyPose(p.bodyB).apply(p.localB);
-        gap.segment<2>(2 * Eigen::Index(i)) = xa - xb;
+        gap.segment<2>(2 * Eigen::Index(i)) = point(p.bodyA, p.localA) - point(p.bodyB, p.localB);
     }
 }
 
@@ -31,7 +36,8 @@ double largestPair(const Eigen::VectorXd& x) {
 
 double pinResidual(const World& w) {
     Eigen::VectorXd gap;
-    pinGaps(w, gap);
+    std::vector<Eigen::Vector2d> rotation;
+    pinGaps(w, gap, rotation);
     return largestPair(gap);
 }
 
@@ -44,8 +50,9 @@ double pinVelocityResidual(const World& w, PinSolver& solver) {
 
 ProjectionResult projectPositions(World& w, PinSolver& solver, double tolerance, int maxIterations) {
     ProjectionResult r;
-    Eigen::VectorXd gap, x, dq, q0;
-    pinGaps(w, gap);
+    PinSolver::Scratch& s = solver.scratch;
+    Eigen::VectorXd &gap = s.gap, &x = s.x, &dq = s.dq, &q0 = s.q0;
+    pinGaps(w, gap, s.rotation);
     double size = gap.norm();
     r.residual = largestPair(gap);
     while (r.residual > tolerance) {
@@ -56,7 +63,8 @@ ProjectionResult projectPositions(World& w, PinSolver& solver, double tolerance,
         ++r.iterations;
         // Newton step: J dq = -C with dq = W J^T x.
         solver.assemble(w);
-        solver.solve(-gap, x);
+        gap = -gap;
+        solver.solve(gap, x);
         dq.setZero(w.q.size());
         solver.addJTranspose(x, dq);
         dq.array() *= w.invMassDiag.array();
@@ -65,7 +73,7 @@ ProjectionResult projectPositions(World& w, PinSolver& solver, double tolerance,
         double step = 1.0;
         for (int halving = 0;; ++halving) {
             w.q = q0 + step * dq;
-            pinGaps(w, gap);
+            pinGaps(w, gap, s.rotation);
             const double trial = gap.norm();
             if (trial < size || halving == 30) {
                 if (!(trial < size)) {
@@ -84,10 +92,12 @@ ProjectionResult projectPositions(World& w, PinSolver& solver, double tolerance,
 }
 
 void projectVelocities(World& w, PinSolver& solver, Eigen::VectorXd* impulses) {
-    Eigen::VectorXd jv, x, dv;
+    PinSolver::Scratch& s = solver.scratch;
+    Eigen::VectorXd &jv = s.jv, &x = s.x, &dv = s.dq;
     solver.assemble(w);
     solver.multiplyJ(w.v, jv);
-    solver.solve(-jv, x);
+    jv = -jv;
+    solver.solve(jv, x);
     dv.setZero(w.v.size());
     solver.addJTranspose(x, dv);
     w.v.array() += dv.array() * w.invMassDiag.array();

@@ -37,6 +37,9 @@ public:
     Integrator kind() const { return kind_; }
     int order() const;
     double nextStep() const { return next_; }  // adaptive: its next trial step
+    // The state at the start of the last advance, to undo a step without a copy.
+    const Eigen::VectorXd& startPositions() const { return q0_; }
+    const Eigen::VectorXd& startVelocities() const { return v0_; }
     void setNextStep(double h) { next_ = h; }
 
 private:
