@@ -68,8 +68,12 @@ Ladder::Ladder(World& w, const LadderSpec& spec) : spec_(spec), length_(spec.blo
     for (int j = 1; j < n; ++j) hinges_[size_t(j - 1)].corner = (j % 2 == 1) ? 0 : 3;
     place(w);
     for (int j = 1; j < n; ++j) {
-        const int k = hinge(j).corner;
-        w.combine(particle(j - 1, k), particle(j, k), false);
+        Hinge& h = hinges_[size_t(j - 1)];
+        for (int k = 0; k < 4; ++k) {
+            h.own[size_t(k)] = w.addParticle(blocks_[size_t(j - 1)], cornerLocal(j - 1, k));
+            h.own[size_t(4 + k)] = w.addParticle(blocks_[size_t(j)], cornerLocal(j, k));
+        }
+        w.combine(h.own[size_t(h.corner)], h.own[size_t(4 + h.corner)], false);
         if (spec.hinges.damping > 0)
             dampers_.push_back(w.addRotaryDamper({blocks_[size_t(j - 1)], blocks_[size_t(j)], spec.hinges.damping}));
     }
@@ -167,9 +171,15 @@ double Ladder::foldRate(const World& w, int j) const {
     return sense * (w.partVelocity(block(j)).angular - w.partVelocity(block(j - 1)).angular);
 }
 
+// Locked and folded pairs are rigid at exactly 0 and pi (snapped when they
+// formed); free hinges are tracked continuously.
 void Ladder::updateAngles(const World& w) {
-    for (int j = 1; j < blockCount(); ++j)
-        if (hinge(j).mode != HingeMode::Cut) hinges_[size_t(j - 1)].foldAngle = foldAngle(w, j);
+    for (int j = 1; j < blockCount(); ++j) {
+        Hinge& h = hinges_[size_t(j - 1)];
+        if (h.mode == HingeMode::Free) h.foldAngle = foldAngle(w, j);
+        if (h.mode == HingeMode::OpenLocked) h.foldAngle = 0;
+        if (h.mode == HingeMode::Folded) h.foldAngle = kPi;
+    }
 }
 
 // ---- contact forces ----
@@ -332,39 +342,50 @@ void Ladder::snap(World& w, int j, double target) {
     hinges_[size_t(j - 1)].foldAngle = target;
 }
 
-void Ladder::lock(World& w, int j) {
-    const int k = hinge(j).corner;
-    snap(w, j, 0.0);
-    hinges_[size_t(j - 1)].mode = HingeMode::OpenLocked;
-    w.combine(particle(j - 1, k ^ 2), particle(j, k ^ 2));
+void Ladder::join(World& w, int j, int k) {
+    const Hinge& h = hinge(j);
+    if (auto e = w.combine(h.own[size_t(k)], h.own[size_t(4 + k)]))
+        error_ = "hinge " + std::to_string(j) + " could not join corner " + std::to_string(k) + ": " + e->message;
 }
 
+void Ladder::part(World& w, int j, int k) {
+    if (auto e = w.separate(hinge(j).own[size_t(k)]))
+        error_ = "hinge " + std::to_string(j) + " could not part corner " + std::to_string(k) + ": " + e->message;
+}
+
+// A lock is a further combine (the pair becomes one body), at phi = 0.
+void Ladder::lock(World& w, int j) {
+    snap(w, j, 0.0);
+    hinges_[size_t(j - 1)].mode = HingeMode::OpenLocked;
+    join(w, j, hinge(j).corner ^ 2);
+}
+
+// Face to face, the far corners k^1 meet too: combine them.
 void Ladder::fold(World& w, int j) {
-    const int k = hinge(j).corner;
     snap(w, j, kPi);
     hinges_[size_t(j - 1)].mode = HingeMode::Folded;
-    w.combine(particle(j - 1, k ^ 1), particle(j, k ^ 1));
+    join(w, j, hinge(j).corner ^ 1);
 }
 
 void Ladder::unlock(World& w, int j) {
-    w.separate(particle(j - 1, hinge(j).corner ^ 2));
+    part(w, j, hinge(j).corner ^ 2);
     hinges_[size_t(j - 1)].mode = HingeMode::Free;
     hinges_[size_t(j - 1)].foldAngle = 0;
 }
 
-// The face-to-face pair tips over the far end: the hinge moves to k^1 on
-// both blocks and phi, measured there, falls from pi.
+// The face-to-face pair tips over the far end: a separate at k leaves the
+// pair hinged at k^1 on both blocks, and phi, measured there, falls from pi.
 void Ladder::flipFlop(World& w, int j) {
+    part(w, j, hinge(j).corner);
     Hinge& h = hinges_[size_t(j - 1)];
-    w.separate(particle(j - 1, h.corner));
     h.corner ^= 1;
     h.mode = HingeMode::Free;
     h.foldAngle = kPi;
 }
 
 void Ladder::unfold(World& w, int j) {
+    part(w, j, hinge(j).corner ^ 1);
     Hinge& h = hinges_[size_t(j - 1)];
-    w.separate(particle(j - 1, h.corner ^ 1));
     h.mode = HingeMode::Free;
     h.foldAngle = kPi;
 }
@@ -375,7 +396,7 @@ std::optional<std::string> Ladder::cut(World& w, int j) {
     if (h.mode == HingeMode::Cut) return "hinge " + std::to_string(j) + " is already cut";
     if (h.mode == HingeMode::OpenLocked) unlock(w, j);
     if (h.mode == HingeMode::Folded) unfold(w, j);
-    w.separate(particle(j - 1, h.corner));
+    part(w, j, h.corner);
     h.mode = HingeMode::Cut;
     return std::nullopt;
 }

@@ -19,6 +19,11 @@ struct Hinge {
     HingeMode mode = HingeMode::Free;
     int corner = 0;        // k: the same corner number on both blocks
     double foldAngle = 0;  // phi, tracked continuously
+    // The hinge's own particles at each corner k of the upper (side 0) and
+    // lower (side 1) block: a block's corner can be a hinge point of both
+    // its hinges at once (after a flip both sit at one end), so no two
+    // hinges may restructure through the same particle.
+    std::array<ParticleId, 8> own{-1, -1, -1, -1, -1, -1, -1, -1};
 };
 
 // Contact forces of a locked or folded hinge (PHYSICS.md section 4), N,
@@ -46,7 +51,7 @@ public:
     // says where a hinge attaches to a block (a ribbon model would change it).
     Vec2 cornerLocal(int i, int k) const;
     Vec2 cornerWorld(const World& w, int i, int k) const;
-    // The particle at corner k of block i (for scripted joins).
+    // The particle at corner k of block i (for scripted joins; hinges use their own).
     ParticleId particle(int i, int k) const { return corners_[size_t(i)][size_t(k)]; }
     // phi of hinge j at its current corner, continuous near the last value.
     double foldAngle(const World& w, int j) const;
@@ -73,6 +78,8 @@ public:
 
     // Scripted structural changes.
     std::optional<std::string> cut(World& w, int j);
+    // A restructuring the world refused (a bug, reported rather than ignored).
+    const std::string& error() const { return error_; }
     void updateAngles(const World& w);  // track phi continuously after a step
 
     std::vector<HingeFrame> hingeFrames(const World& w) const;
@@ -96,12 +103,14 @@ private:
     double foldAcceleration(const World& w, int j) const;
     bool touchingLimit(const World& w, int j, bool folded, bool resting) const;
     std::vector<Event> impact(World& w, Dynamics& d, double t, const std::vector<int>& hits, double* loss,
-                              double* heldWork);
+                              double* heldWork, std::vector<int>* releasedNow);
     std::optional<std::pair<int, EventKind>> pullingContact(const World& w, const Dynamics& d,
                                                             const Impact* impact) const;
     void release(World& w, int j, EventKind kind);
     HingeContact split(const World& w, int j, const Wrench& on) const;
     void snap(World& w, int j, double target);
+    void join(World& w, int j, int k);     // combine the hinge's points at corner k
+    void part(World& w, int j, int k);     // separate them
     void lock(World& w, int j);
     void fold(World& w, int j);
     void unlock(World& w, int j);
@@ -116,6 +125,7 @@ private:
     std::vector<Hinge> hinges_;
     std::vector<int> dampers_;
     double length_ = 0;
+    std::string error_;
 };
 
 }  // namespace jl

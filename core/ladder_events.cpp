@@ -5,6 +5,7 @@
 #include "core/ladder.h"
 #include "core/projection.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -98,7 +99,7 @@ std::optional<std::pair<int, EventKind>> Ladder::pullingContact(const World& w, 
 // through a limit (lock it too). Restitution turns the plastic result into
 // a bounce while the rebound is faster than v_min.
 std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::vector<int>& hits, double* loss,
-                                  double* heldWork) {
+                                  double* heldWork, std::vector<int>* releasedNow) {
     std::vector<Event> events;
     const std::vector<Twist> before = w.partVelocities();
     const double keBefore = energy(w).kinetic, relBefore = relativeKinetic(w);
@@ -112,18 +113,23 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
     }
     Eigen::VectorXd impulses;
     const Impact im{&before, &impulses};
+    // A hinge released in this impact stays free in it, even at its limit
+    // (PHYSICS.md section 4): the next step decides whether it closes again.
+    std::vector<int>& released = *releasedNow;
     for (int guard = 0; guard < 4 * blockCount(); ++guard) {
         w.setPartVelocities(before);
         projectVelocities(w, d.solver(), &impulses);
         updateAngles(w);
         if (auto pull = pullingContact(w, d, &im)) {
             release(w, pull->first, pull->second);
+            released.push_back(pull->first);
             events.push_back({t, pull->second, pull->first, hinge(pull->first).corner, {}});
             continue;
         }
         bool driven = false;
         for (int j = 1; j < blockCount() && !driven; ++j) {
-            if (hinge(j).mode != HingeMode::Free) continue;
+            if (hinge(j).mode != HingeMode::Free || std::find(released.begin(), released.end(), j) != released.end())
+                continue;
             for (bool folded : {false, true})
                 if (!driven && touchingLimit(w, j, folded, false)) {
                     if (folded) fold(w, j); else lock(w, j);
@@ -164,21 +170,22 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
 
 std::vector<Event> Ladder::resolve(World& w, Dynamics& d, double t, double* loss, double* heldWork) {
     std::vector<Event> events;
+    std::vector<int> released;  // in this pass: free even at a limit
     for (int guard = 0; guard < 8 * blockCount() + 8; ++guard) {
         d.evaluate(w, t);
         updateAngles(w);
         std::vector<int> hits;
         for (int j = 1; j < blockCount(); ++j)
-            if (hinge(j).mode == HingeMode::Free && (touchingLimit(w, j, false, true) || touchingLimit(w, j, true, true)))
+            if (hinge(j).mode == HingeMode::Free && std::find(released.begin(), released.end(), j) == released.end() &&
+                (touchingLimit(w, j, false, true) || touchingLimit(w, j, true, true)))
                 hits.push_back(j);
         if (!hits.empty()) {
-
-            for (Event& e : impact(w, d, t, hits, loss, heldWork)) events.push_back(std::move(e));
+            for (Event& e : impact(w, d, t, hits, loss, heldWork, &released)) events.push_back(std::move(e));
             continue;
         }
         if (auto pull = pullingContact(w, d, nullptr)) {
+            released.push_back(pull->first);
             release(w, pull->first, pull->second);
-
             events.push_back({t, pull->second, pull->first, hinge(pull->first).corner, {}});
             continue;
         }

@@ -295,12 +295,13 @@ bool Simulation::takeStep(double limit) {
     stats_.rejected += m.step.rejected;
     if (ladder_) {
         std::vector<double> g;
-        auto violated = [&] {
-            dynamics_.evaluate(world_, t_ + taken);
+        // Is an event function negative in the state the world holds, at time t?
+        auto violated = [&](double t) {
+            dynamics_.evaluate(world_, t);
             ladder_->eventFunctions(world_, dynamics_, g);
             return std::any_of(g.begin(), g.end(), [](double x) { return x < 0; });
         };
-        if (violated()) {
+        if (violated(t_ + taken)) {
             if (solver.events == EventPolicy::Located && taken > solver.eventTolerance) {
                 // Bisect the step for the first instant an event function is
                 // negative, re-running the step from its start each time.
@@ -314,7 +315,7 @@ bool Simulation::takeStep(double limit) {
                 };
                 while (hi - lo > solver.eventTolerance) {
                     const double mid = 0.5 * (lo + hi);
-                    if (!rerun(mid) || violated()) hi = mid; else lo = mid;
+                    if (!rerun(mid) || violated(t_ + mid)) hi = mid; else lo = mid;
                 }
                 if (!rerun(hi)) {
                     fail("an event could not be located: a step to it failed");
@@ -337,6 +338,10 @@ bool Simulation::takeStep(double limit) {
                 happened = ladder_->resolve(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
             }
             for (Event& e : happened) record(e);
+            if (!ladder_->error().empty()) {
+                fail(ladder_->error());
+                return false;
+            }
             if (!world_.q.allFinite() || !world_.v.allFinite()) {
                 world_.q = q0;
                 world_.v = v0;
