@@ -28,6 +28,10 @@ Document::Document(QObject* parent) : QObject(parent) {
     autosave_.start();
 }
 
+// The undo stack, cleared as it is destroyed, reports itself clean: that is
+// not a save, so the recovery copy must not go with it.
+Document::~Document() { disconnect(&undo_, nullptr, this, nullptr); }
+
 jl::Scene Document::newScene() {
     jl::Scene s;
     s.title = "New ladder";

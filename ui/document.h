@@ -19,6 +19,7 @@ class Document : public QObject {
     Q_OBJECT
 public:
     explicit Document(QObject* parent = nullptr);
+    ~Document() override;
 
     const jl::Scene& scene() const { return scene_; }
     QString path() const { return path_; }

@@ -7,6 +7,7 @@
 #include "core/simulation.h"
 #include "ui/ladder_view.h"
 
+#include <QLabel>
 #include <QTimer>
 #include <QtTest>
 
@@ -141,6 +142,34 @@ private slots:
         // The drag is part of the document now (saved with it, undoable).
         QVERIFY(jltest::waitForStatus(f.sim, [&](const SimStatus&) { return f.window.document()->scene().drags == s->recorded->drags; }));
         QVERIFY(f.window.document()->isModified());
+    }
+
+    void aFailedSolvePausesAndSaysWhyWithTheLastGoodFrame() {
+        // Explicit Euler with 50 ms steps: the solver gives up within half a second.
+        jl::Scene scene = jltest::swingingLadder();
+        scene.solver.integrator = jl::Integrator::ExplicitEuler;
+        scene.solver.step = 0.05;
+        Fixture f(scene);
+        f.window.setSpeed(4.0);
+        f.sim->play();
+        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return !s.failure.empty(); }));
+        const auto s = f.sim->status();
+        QVERIFY(!s->playing);
+        // The same failure, in the same words, as the engine run on its own.
+        auto alone = jl::Simulation::build(scene).simulation;
+        QVERIFY(!alone->advanceTo(2.0));
+        QCOMPARE(s->failure, alone->failure());
+        // On screen: the last frame recorded before the failure, nothing past it.
+        QCOMPARE(s->frameIndex, s->frameCount - 1);
+        QVERIFY(s->frame->failure.empty());
+        QVERIFY(s->frame->time > 0.2 && s->frame->time < 1.0);
+        auto* warning = f.window.findChild<QLabel*>("warning");
+        QVERIFY(jltest::waitForStatus(f.sim, [&](const SimStatus&) { return warning->text().contains(QString::fromStdString(s->failure)); }));
+        // Play does nothing more until the scene changes.
+        f.sim->play();
+        QTest::qWait(200);
+        QVERIFY(!f.sim->status()->playing);
+        QCOMPARE(f.sim->status()->frameCount, s->frameCount);
     }
 
     void theWindowStaysResponsiveWhileALongLadderSimulatesFlatOut() {
