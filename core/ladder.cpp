@@ -106,7 +106,11 @@ void Ladder::place(World& w) {
         return;
     }
     if (init.kind == InitialState::Kind::FoldAngles) {
-        w.setPartState(block(0), Pose{}, {});
+        // Block 0 at the origin, upright, unless a pose places it.
+        Pose first;
+        for (const BlockState& s : init.poses)
+            if (s.block == 0) first = Pose{Vec2(s.position[0], s.position[1]), s.angle};
+        w.setPartState(block(0), first, {});
         for (int j = 1; j < blockCount(); ++j) {
             const int k = hinge(j).corner;
             const Vec2 pin = cornerWorld(w, j - 1, k);

@@ -1,0 +1,66 @@
+// Test support: build a scene from YAML text, run it, collect events and contacts.
+#pragma once
+
+#include "core/scene_io.h"
+#include "core/simulation.h"
+
+#include <QtTest>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace jl::test {
+
+inline std::unique_ptr<Simulation> simulate(const std::string& yaml) {
+    SceneLoad load = parseScene(yaml, "test.yaml");
+    for (const Diagnostic& d : load.errors) qWarning("%s", d.format().c_str());
+    if (!load.scene) return nullptr;
+    Simulation::Built built = Simulation::build(*load.scene);
+    for (const std::string& e : built.errors) qWarning("%s", e.c_str());
+    return std::move(built.simulation);
+}
+
+inline std::unique_ptr<Simulation> simulateFile(const std::string& relativePath) {
+    SceneLoad load = loadScene(std::string(JL_SOURCE_DIR) + "/" + relativePath);
+    for (const Diagnostic& d : load.errors) qWarning("%s", d.format().c_str());
+    if (!load.scene) return nullptr;
+    return std::move(Simulation::build(*load.scene).simulation);
+}
+
+struct Run {
+    std::vector<Event> events;        // hinge events only (script actions left out)
+    double worstBalance = 0;          // J, |E - (E0 + W - D)|
+    double worstResidual = 0;         // m
+    double lastImpactLoss = 0;
+    bool impactLossNeverFell = true;
+    std::string failure;
+};
+
+// Steps to `until`, calling `each` after every step (for contacts and angles).
+inline Run runUntil(Simulation& sim, double until, const std::function<void(const Frame&)>& each = {}) {
+    Run r;
+    while (sim.time() < until) {
+        if (!sim.stepOnce()) break;
+        Frame f = sim.frame();
+        for (const Event& e : f.events)
+            if (e.hinge > 0) r.events.push_back(e);
+        r.worstBalance = std::max(r.worstBalance, std::abs(f.energy.balance()));
+        r.worstResidual = std::max(r.worstResidual, f.solver.residual);
+        if (f.energy.impactLoss < r.lastImpactLoss - 1e-15) r.impactLossNeverFell = false;
+        r.lastImpactLoss = f.energy.impactLoss;
+        if (each) each(f);
+    }
+    r.failure = sim.failure();
+    return r;
+}
+
+inline std::vector<int> firstFlipOrder(const std::vector<Event>& events) {
+    std::vector<int> order;
+    for (const Event& e : events)
+        if (e.kind == EventKind::FlipFlop && std::find(order.begin(), order.end(), e.hinge) == order.end())
+            order.push_back(e.hinge);
+    return order;
+}
+
+}  // namespace jl::test

@@ -1,0 +1,209 @@
+// labels: physics;ladder
+// Two- and three-block cases worked by hand for each event type (PHYSICS.md
+// section 7): the mode sequence, the hinge corner and the sign and size of
+// the reactions. Blocks are 60 x 12 x 45 mm, density 600 (m = 19.44 g).
+#include "core/dynamics.h"
+#include "core/energy.h"
+#include "tests/scene_run.h"
+
+#include <QtTest>
+#include <cmath>
+#include <numbers>
+
+using namespace jl;
+using namespace jl::test;
+
+namespace {
+
+constexpr double L = 0.06, T = 0.012, g = 9.81;
+constexpr double m = 600 * L * T * 0.045;
+
+// Block 0 held lying flat (-90 degrees): its hinge face (corner 0's side) is
+// on top, hinge 1 at its left end. Block 1 starts at fold angle `phi`; past
+// pi/2 + atan(T/L) it topples onto block 0, below that it falls off the end.
+// At t = 1 s the hand turns block 0 by `turn` over 0.5 s.
+std::string flatHeldBlock(double phi, const char* turn) {
+    return std::string("format: jacobs-ladder/1\n"
+                       "ladder:\n"
+                       "  blocks: 2\n"
+                       "  held: [0]\n"
+                       "  initial: {fold_angles: [") +
+           std::to_string(phi) +
+           "], poses: [{block: 0, position: [0, 0], angle: -90deg}]}\n"
+           "script:\n"
+           "  - {at: 1.0, turn: {block: 0, by: " +
+           turn + ", duration: 0.5}}\n";
+}
+
+HingeContact contactNow(const Simulation& sim, int j) {
+    World w = sim.world();
+    Dynamics d;
+    d.evaluate(w, sim.time());
+    return sim.ladder()->contact(w, d, j);
+}
+
+}  // namespace
+
+class LadderEventsTest : public QObject {
+    Q_OBJECT
+private slots:
+    // Block 1 falls off the end of the flat block, hits phi = 0 and locks as a
+    // cantilever. Moments about the pin: m g L/2 = N T, so N = m g L / (2 T).
+    void lockHoldsCantileverWithHandWorkedForce() {
+        auto sim = simulate(flatHeldBlock(1.4, "90deg"));
+        QVERIFY(sim);
+        const Run r = runUntil(*sim, 0.9);
+        QCOMPARE(int(r.events.size()), 1);
+        QCOMPARE(r.events[0].kind, EventKind::Lock);
+        QCOMPARE(r.events[0].corner, 0);
+        QCOMPARE(sim->ladder()->hinge(1).mode, HingeMode::OpenLocked);
+        const double expected = m * g * L / (2 * T);
+        const double n = contactNow(*sim, 1).normal;
+        QVERIFY2(std::abs(n / expected - 1) < 1e-6, qPrintable(QString("N = %1, m g L / 2T = %2").arg(n).arg(expected)));
+        QVERIFY(r.lastImpactLoss > 0);  // the plastic impact dissipated energy
+        QVERIFY2(r.worstBalance < 1e-8, qPrintable(QString::number(r.worstBalance)));
+    }
+
+    // Turned upright, the locked pair's contact unloads; when the hand stops
+    // (its acceleration jumps to zero) the hanging block would need N = -m g/2:
+    // it unlocks, then swings as a pendulum about the corner from phi = 0 at
+    // rest, up to twice its hanging angle atan(T/L).
+    void unlockWhenTheHandStopsThenSwingsToTwiceTheHangingAngle() {
+        auto sim = simulate(flatHeldBlock(1.4, "90deg"));
+        QVERIFY(sim);
+        double lastLockedN = 1, maxPhi = 0;
+        const Run r = runUntil(*sim, 1.9, [&](const Frame& f) {
+            if (f.hinges[0].mode == HingeMode::OpenLocked) lastLockedN = contactNow(*sim, 1).normal;
+            if (f.time > 1.5) maxPhi = std::max(maxPhi, f.hinges[0].foldAngle);
+        });
+        QVERIFY(r.failure.empty());
+        QVERIFY(r.events.size() >= 2);
+        QCOMPARE(r.events[1].kind, EventKind::Unlock);
+        QVERIFY2(std::abs(r.events[1].time - 1.5) < 1e-9, qPrintable(QString::number(r.events[1].time, 'g', 12)));
+        QVERIFY(lastLockedN > 0);  // pushing up to the end of the turn
+        QVERIFY2(std::abs(maxPhi - 2 * std::atan(T / L)) < 2e-4,
+                 qPrintable(QString("max phi %1, 2 atan(T/L) = %2").arg(maxPhi).arg(2 * std::atan(T / L))));
+    }
+
+    // Block 1 topples onto the flat block and rests face to face: each end
+    // carries half its weight, N_near = N_far = m g / 2.
+    void foldRestsWithHalfTheWeightAtEachEnd() {
+        auto sim = simulate(flatHeldBlock(2.0, "-90deg"));
+        QVERIFY(sim);
+        const Run r = runUntil(*sim, 0.9);
+        QCOMPARE(int(r.events.size()), 1);
+        QCOMPARE(r.events[0].kind, EventKind::Fold);
+        const HingeContact c = contactNow(*sim, 1);
+        QVERIFY2(std::abs(c.nearEnd / (m * g / 2) - 1) < 1e-6, qPrintable(QString::number(c.nearEnd)));
+        QVERIFY2(std::abs(c.farEnd / (m * g / 2) - 1) < 1e-6, qPrintable(QString::number(c.farEnd)));
+    }
+
+    // Turning the far end down, block 1 tips outward about its lower end: the
+    // near contact unloads first and the hinge jumps to the far corner k^1.
+    void flipFlopMovesHingeToFarCorner() {
+        auto sim = simulate(flatHeldBlock(2.0, "-90deg"));
+        QVERIFY(sim);
+        HingeContact before;
+        const Run r = runUntil(*sim, 1.45, [&](const Frame& f) {
+            if (f.hinges[0].mode == HingeMode::Folded) before = contactNow(*sim, 1);
+        });
+        QCOMPARE(int(r.events.size()), 2);
+        QCOMPARE(r.events[1].kind, EventKind::FlipFlop);
+        QCOMPARE(r.events[1].corner, 1);  // k = 0 -> k ^ 1
+        QCOMPARE(sim->ladder()->hinge(1).corner, 1);
+        QVERIFY(before.nearEnd < before.farEnd);
+        QVERIFY(before.nearEnd > -1e-6 && before.nearEnd < 0.01);  // it reached zero
+        // Both blocks now share corner 1: the hinge point is the same on both.
+        const World& w = sim->world();
+        QVERIFY((sim->ladder()->cornerWorld(w, 0, 1) - sim->ladder()->cornerWorld(w, 1, 1)).norm() < 1e-9);
+    }
+
+    // The mirror turn unloads the far contact: the pair unfolds about k.
+    void unfoldKeepsTheHingeCorner() {
+        auto sim = simulate(flatHeldBlock(2.0, "90deg"));
+        QVERIFY(sim);
+        HingeContact before;
+        const Run r = runUntil(*sim, 1.45, [&](const Frame& f) {
+            if (f.hinges[0].mode == HingeMode::Folded) before = contactNow(*sim, 1);
+        });
+        QCOMPARE(int(r.events.size()), 2);
+        QCOMPARE(r.events[1].kind, EventKind::Unfold);
+        QCOMPARE(sim->ladder()->hinge(1).corner, 0);
+        QVERIFY(before.farEnd < before.nearEnd);
+    }
+
+    void flipAndUnfoldAreMirrorImages() {
+        auto flip = simulate(flatHeldBlock(2.0, "-90deg"));
+        auto unfold = simulate(flatHeldBlock(2.0, "90deg"));
+        const Run a = runUntil(*flip, 1.45), b = runUntil(*unfold, 1.45);
+        QCOMPARE(int(a.events.size()), 2);
+        QCOMPARE(int(b.events.size()), 2);
+        QVERIFY(std::abs(a.events[1].time - b.events[1].time) < 1e-9);
+    }
+
+    // No held block, no gravity: a push at t = 0 closes the hinge; the plastic
+    // LOCK impact keeps the pair's linear momentum (= the push) and its angular
+    // momentum about the origin, and loses kinetic energy.
+    void lockConservesMomentumWithoutHeldBlocks() {
+        auto sim = simulate("format: jacobs-ladder/1\n"
+                            "gravity: [0, 0]\n"
+                            "ladder: {blocks: 2, held: [], initial: {fold_angles: [0.6]}}\n"
+                            "script:\n"
+                            "  - {at: 0, push: {block: 1, impulse: [0.004, 0.001], point: [0, -0.02]}}\n");
+        QVERIFY(sim);
+        auto momentum = [&](Vec2& p, double& spin) {
+            const World& w = sim->world();
+            p.setZero();
+            spin = 0;
+            for (int i = 0; i < 2; ++i) {
+                const PartId id = sim->blockPart(i);
+                const Twist v = w.partVelocity(id);
+                const Vec2 c = w.partPose(id).position;
+                p += w.part(id).mass * v.linear;
+                spin += w.part(id).inertia * v.angular + w.part(id).mass * cross(c, v.linear);
+            }
+        };
+        Vec2 p0;
+        double l0 = 0;
+        momentum(p0, l0);
+        QVERIFY((p0 - Vec2(0.004, 0.001)).norm() < 1e-12);
+        const double ke0 = energy(sim->world()).kinetic;
+        const Run r = runUntil(*sim, 0.5);
+        QVERIFY(!r.events.empty());
+        QCOMPARE(r.events[0].kind, EventKind::Lock);
+        Vec2 p1;
+        double l1 = 0;
+        momentum(p1, l1);
+        QVERIFY2((p1 - p0).norm() < 1e-12, qPrintable(QString::number((p1 - p0).norm())));
+        QVERIFY2(std::abs(l1 - l0) < 1e-12, qPrintable(QString::number(l1 - l0)));
+        QVERIFY(energy(sim->world()).kinetic < ke0);
+        QVERIFY(r.lastImpactLoss > 0);
+    }
+
+    // Three blocks, the top turned half a turn counter-clockwise: hinge 1
+    // folds and flips (corner 0 -> 1), then hinge 2 (corner 3 -> 2).
+    void threeBlockCascadeFoldsAndFlipsInOrder() {
+        auto sim = simulate("format: jacobs-ladder/1\n"
+                            "ladder: {blocks: 3, held: [0]}\n"
+                            "script: [{at: 0.2, turn: {block: 0, by: 180deg, duration: 0.3}}]\n");
+        QVERIFY(sim);
+        const Run r = runUntil(*sim, 1.0);
+        QVERIFY(r.failure.empty());
+        std::vector<const Event*> folds, flips;
+        for (const Event& e : r.events) {
+            if (e.kind == EventKind::Fold) folds.push_back(&e);
+            if (e.kind == EventKind::FlipFlop) flips.push_back(&e);
+        }
+        QCOMPARE(int(flips.size()), 2);
+        QCOMPARE(flips[0]->hinge, 1);
+        QCOMPARE(flips[0]->corner, 1);
+        QCOMPARE(flips[1]->hinge, 2);
+        QCOMPARE(flips[1]->corner, 2);
+        QVERIFY(flips[0]->time < flips[1]->time);
+        QVERIFY(r.worstBalance < 1e-6);
+        QVERIFY(r.impactLossNeverFell);
+    }
+};
+
+QTEST_GUILESS_MAIN(LadderEventsTest)
+#include "test_ladder_events.moc"
