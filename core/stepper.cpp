@@ -136,6 +136,10 @@ StepOutcome Stepper::advance(World& w, Dynamics& d, double t, double h, Ledger& 
     } else {
         double trial = next_ > 0 ? std::min(next_, h) : h;
         for (;;) {
+            // A rejected trial left its end state in w; the first stage of
+            // the next trial must be evaluated at the start of the step.
+            w.q = q0_;
+            w.v = v0_;
             ledger = start;
             const double err = attempt(w, d, t, trial, ledger);
             if (!std::isfinite(err) && trial > 1e-12) {  // diverged inside the step: much smaller
