@@ -1,5 +1,6 @@
 #include "ui/ladder_panel.h"
 
+#include "ui/block_overrides.h"
 #include "ui/scene_fields.h"
 #include "ui/value_form.h"
 
@@ -72,7 +73,9 @@ LadderPanel::LadderPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_
         editLadder("held", tr("Change held blocks"), [held](jl::LadderSpec& l) { l.held = held; });
         held_->setText(heldText(doc_->scene().ladder ? doc_->scene().ladder->held : std::vector<int>{}));
     });
-    box->addStretch(1);
+    overrides_ = new BlockOverrides(doc, this);
+    box->addWidget(new QLabel(tr("<b>Blocks that differ</b>"), this));
+    box->addWidget(overrides_, 1);
     refresh();
 }
 
@@ -110,6 +113,7 @@ void LadderPanel::refresh() {
     const QSignalBlocker b1(ribbonsVisible_), b2(held_);
     ribbonsVisible_->setChecked(l.ribbons.visible);
     held_->setText(heldText(l.held));
+    overrides_->refresh();
 }
 
 }  // namespace jlui

@@ -11,6 +11,7 @@ class QPushButton;
 
 namespace jlui {
 
+class BlockOverrides;
 class ValueForm;
 
 class LadderPanel : public QWidget {
@@ -29,6 +30,7 @@ private:
     QPushButton* ribbonColor_;
     QCheckBox* ribbonsVisible_;
     QLineEdit* held_;
+    BlockOverrides* overrides_;
 };
 
 }  // namespace jlui

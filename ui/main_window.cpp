@@ -78,6 +78,10 @@ MainWindow::MainWindow(Options options) : options_(options) {
     connect(sim_, &SimController::statusChanged, this, &MainWindow::onStatus);
     connect(timeline_, &Timeline::seekRequested, sim_, &SimController::seek);
     connect(eventsPanel_, &EventsPanel::seekRequested, sim_, &SimController::seek);
+    connect(simulationPanel_, &SimulationPanel::historyMegabytesChanged, this, [this](int mb) {
+        sim_->setMemoryBudget(std::size_t(mb) << 20);
+        QSettings().setValue("simulation/historyMegabytes", mb);
+    });
 
     readSettings();
     onSceneChanged(SceneChange::Whole);
@@ -305,8 +309,9 @@ void MainWindow::readSettings() {
     if (!restoreGeometry(settings.value("window/geometry").toByteArray())) resize(1440, 900);
     restoreState(settings.value("window/state").toByteArray());
     setSpeed(settings.value("simulation/speed", 1.0).toDouble());
-    const qulonglong budgetMb = settings.value("simulation/historyMegabytes", 512).toULongLong();
+    const int budgetMb = settings.value("simulation/historyMegabytes", 512).toInt();
     sim_->setMemoryBudget(std::size_t(budgetMb) << 20);
+    simulationPanel_->setHistoryMegabytes(budgetMb);
 }
 
 void MainWindow::writeSettings() const {

@@ -1,6 +1,7 @@
 #include "ui/script_panel.h"
 
 #include "ui/change_value.h"
+#include "ui/table_cells.h"
 
 #include <QComboBox>
 #include <QHBoxLayout>
@@ -76,15 +77,7 @@ ScriptPanel::ScriptPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_
     box->addWidget(table_);
     connect(table_, &QTableWidget::cellChanged, this, [this](int row, int) { commitRow(row); });
 
-    auto* buttons = new QHBoxLayout;
-    auto* add = new QPushButton(tr("Add turn"), this);
-    add->setToolTip(tr("Adds a half turn of the top block after the last action."));
-    auto* remove = new QPushButton(tr("Remove"), this);
-    remove->setToolTip(tr("Removes the selected action."));
-    buttons->addWidget(add);
-    buttons->addWidget(remove);
-    buttons->addStretch(1);
-    box->addLayout(buttons);
+    auto [add, remove] = addRowButtons(this, box, tr("Add turn"), tr("Adds a half turn of the top block after the last action."), tr("Removes the selected action."));
     connect(add, &QPushButton::clicked, this, [this] {
         auto script = doc_->scene().script;
         jl::ScriptAction a;
@@ -126,15 +119,19 @@ void ScriptPanel::refresh() {
     table_->setRowCount(int(script.size()));
     for (int r = 0; r < int(script.size()); ++r) {
         const jl::ScriptAction& a = script[size_t(r)];
-        table_->setItem(r, At, new QTableWidgetItem(QString::number(a.at, 'g', 6)));
-        auto* combo = new QComboBox;
-        combo->addItems(kKinds);
+        setCellText(table_, r, At, QString::number(a.at, 'g', 6));
+        auto* combo = qobject_cast<QComboBox*>(table_->cellWidget(r, Action));
+        if (!combo) {
+            combo = new QComboBox;
+            combo->addItems(kKinds);
+            connect(combo, &QComboBox::activated, this, [this, r] { commitRow(r); });
+            table_->setCellWidget(r, Action, combo);
+        }
+        const QSignalBlocker blockCombo(combo);
         combo->setCurrentIndex(int(a.kind));
-        connect(combo, &QComboBox::activated, this, [this, r] { commitRow(r); });
-        table_->setCellWidget(r, Action, combo);
-        table_->setItem(r, Block, new QTableWidgetItem(QString::number(a.block)));
-        table_->setItem(r, Amount, new QTableWidgetItem(amountText(a)));
-        table_->setItem(r, Duration, new QTableWidgetItem(QString::number(a.duration, 'g', 6)));
+        setCellText(table_, r, Block, QString::number(a.block));
+        setCellText(table_, r, Amount, amountText(a));
+        setCellText(table_, r, Duration, QString::number(a.duration, 'g', 6));
     }
     table_->resizeColumnsToContents();
 }

@@ -7,6 +7,7 @@
 #include <QFormLayout>
 #include <QLabel>
 #include <QSignalBlocker>
+#include <QSpinBox>
 #include <QVBoxLayout>
 
 namespace jlui {
@@ -45,8 +46,27 @@ SimulationPanel::SimulationPanel(Document* doc, QWidget* parent) : QWidget(paren
         s.events = jl::EventPolicy(i);
         changeScene(doc_, solverField("events"), s, tr("Change event policy"));
     });
+    // Not part of the scene: how much of this computer's memory the timeline may use.
+    history_ = new QSpinBox(this);
+    history_->setObjectName("historyMegabytes");
+    history_->setRange(16, 65536);
+    history_->setSingleStep(64);
+    history_->setSuffix(" MB");
+    history_->setKeyboardTracking(false);
+    const QString historyTip = tr("Memory for recorded frames (a setting of this computer, not of the scene); "
+                                  "older frames beyond it are re-simulated when you scrub back.");
+    history_->setToolTip(historyTip);
+    auto* hl = new QLabel(tr("History memory"));
+    hl->setToolTip(historyTip);
+    form_->layout()->addRow(hl, history_);
+    connect(history_, &QSpinBox::valueChanged, this, &SimulationPanel::historyMegabytesChanged);
     box->addStretch(1);
     refresh();
+}
+
+void SimulationPanel::setHistoryMegabytes(int mb) {
+    const QSignalBlocker block(history_);
+    history_->setValue(mb);
 }
 
 void SimulationPanel::refresh() {

@@ -6,6 +6,7 @@
 #include <QWidget>
 
 class QComboBox;
+class QSpinBox;
 
 namespace jlui {
 
@@ -16,12 +17,18 @@ class SimulationPanel : public QWidget {
 public:
     SimulationPanel(Document* doc, QWidget* parent = nullptr);
     void refresh();
+    // The program's own setting (not the scene's): memory for the recorded frames.
+    void setHistoryMegabytes(int mb);
+
+signals:
+    void historyMegabytesChanged(int mb);
 
 private:
     Document* doc_;
     ValueForm* form_;
     QComboBox* integrator_;
     QComboBox* events_;
+    QSpinBox* history_;
 };
 
 }  // namespace jlui

@@ -9,6 +9,8 @@
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>
+#include <QPushButton>
+#include <QTableWidget>
 #include <QRegularExpression>
 #include <QSpinBox>
 #include <QTemporaryDir>
@@ -140,6 +142,45 @@ private slots:
         thickness->setValue(t0);
         QCOMPARE(w.document()->undoStack()->count(), 0);
         QVERIFY(w.document()->scene() == original);
+    }
+
+    void aBlockOverrideChangesThatBlockAloneAndUndoes() {
+        MainWindow w(jltest::quietWindow());
+        QVERIFY(showClassic(w));
+        const jl::Scene original = w.document()->scene();
+        auto* table = w.findChild<QTableWidget*>("blockOverrides");
+        QVERIFY(table);
+        QPushButton* add = nullptr;
+        for (auto* b : w.findChildren<QPushButton*>())
+            if (b->text() == "Override a block") add = b;
+        QVERIFY(add);
+        add->click();
+        QCOMPARE(table->rowCount(), 1);
+        table->item(0, 0)->setText("2");  // which block
+        table->item(0, 1)->setText("6");  // thickness, mm
+        const auto& o = w.document()->scene().ladder->overrides;
+        QCOMPARE(int(o.size()), 1);
+        QCOMPARE(o[0].index, 2);
+        QCOMPARE(*o[0].thickness, 0.006);
+        QVERIFY(o[0].color.has_value());
+
+        // Drawn: block 2 in its own colour, block 3 still in the ladder's.
+        QVERIFY(jltest::waitForStatus(w.controller(), [](const SimStatus& s) {
+            return s.recorded && s.recorded->ladder->overrides.size() == 1 && s.recorded->ladder->overrides[0].thickness && s.frame;
+        }));
+        QTest::qWait(300);
+        const QImage image = captureView(w.ladderView());
+        const double scale = double(image.width()) / w.ladderView()->width();
+        const auto frame = w.controller()->status()->frame;
+        auto colourAt = [&](int block) { return image.pixelColor((w.ladderView()->pixelOf(frame->blocks[size_t(block)].position) * scale).toPoint()); };
+        const jl::Color oc = *o[0].color;
+        QVERIFY(woodColoured(colourAt(2), QColor(oc.r, oc.g, oc.b)));
+        QVERIFY(!woodColoured(colourAt(2), QColor(200, 162, 107)));
+        QVERIFY(woodColoured(colourAt(3), QColor(200, 162, 107)));
+
+        while (w.document()->undoStack()->canUndo()) w.document()->undoStack()->undo();
+        QVERIFY(w.document()->scene() == original);
+        QCOMPARE(table->rowCount(), 0);
     }
 
     void saveThenOpenGivesAnEqualScene() {

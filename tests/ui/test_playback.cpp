@@ -93,6 +93,24 @@ private slots:
         QCOMPARE(f.sim->status()->frameCount, 12);  // stepping back records nothing
     }
 
+    void keysInTheViewDriveTheTransport() {
+        Fixture f(jltest::swingingLadder());
+        LadderView* view = f.window.ladderView();
+        QVERIFY(QTest::qWaitForWindowExposed(view));
+        QTest::keyClick(view, Qt::Key_Period);
+        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return s.frameIndex == 1; }));
+        QTest::keyClick(view, Qt::Key_Right);
+        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return s.frameIndex == 2; }));
+        QTest::keyClick(view, Qt::Key_Left);
+        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return s.frameIndex == 1; }));
+        QTest::keyClick(view, Qt::Key_Space);
+        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return s.playing && s.frameIndex > 3; }));
+        QTest::keyClick(view, Qt::Key_Space);
+        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return !s.playing; }));
+        QTest::keyClick(view, Qt::Key_R, Qt::ControlModifier);
+        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return s.frameIndex == 0; }));
+    }
+
     void scrubbingBackShowsThePosesRecordedThen() {
         const jl::Scene scene = jltest::swingingLadder();
         Fixture f(scene);
