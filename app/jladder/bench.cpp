@@ -1,134 +1,132 @@
-// jladder bench: measures cost per block-step against chain length and
-// integrator on the falling chain, and writes the table into docs/.
+// jladder bench: speed against error, measured and published. Runs every
+// study of bench_cases.h (and the peers if built in), writes CSV tables,
+// SVG and PNG charts and the report docs/performance.md.
+#include "app/jladder/bench_cases.h"
+#include "app/jladder/bench_chart.h"
+#include "app/jladder/bench_peers.h"
+#include "app/jladder/bench_report.h"
 #include "app/jladder/commands.h"
 #include "app/jladder/options.h"
-#include "core/dynamics.h"
-#include "core/energy.h"
-#include "core/falling_chain.h"
-#include "core/motion.h"
 
-#include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
-#include <string>
-#include <vector>
+#include <map>
 
 namespace jl::cli {
 
 namespace {
 
-struct Integ {
-    Integrator kind;
-    const char* name;
-};
-constexpr Integ kIntegrators[] = {{Integrator::ExplicitEuler, "explicit_euler"},
-                                  {Integrator::SymplecticEuler, "symplectic_euler"},
-                                  {Integrator::RK4, "rk4"},
-                                  {Integrator::DormandPrince45, "dormand_prince45"}};
+const char* kHelp =
+    "usage: jladder bench [--quick] [--out DIR] [--report FILE]\n"
+    "Measures cost (CPU seconds per simulated second) against error for every\n"
+    "integrator and event policy on the physical pendulum, the falling chain\n"
+    "(N = 10, 100, 1,000; against an independent reduced-coordinate reference)\n"
+    "and the ladder cascade; cost per block-step for N = 10 .. 100,000; a long\n"
+    "ladder with RK4; and, if built with -DJL_BENCH_PEERS=ON, MuJoCo, Box2D and\n"
+    "Bullet on the same chains. Writes DIR/*.csv, DIR/*.svg, DIR/*.png\n"
+    "(default DIR: docs/bench) and FILE (default docs/performance.md).\n"
+    "--quick: fewer sizes and steps; fits in CI (under two minutes).\n";
 
-struct ScalingRow {
-    std::string integrator;
-    int blocks = 0;
-    long long steps = 0;
-    double simulated = 0, wall = 0;
-    double nsPerBlockStep() const { return 1e9 * wall / (double(blocks) * double(steps)); }
-    double realTimeFactor() const { return simulated / wall; }
-};
-
-// Falling chain of n blocks, dt = 1 ms (the adaptive method: tolerance 1e-6,
-// counting its accepted steps); as many steps as fit a work budget so that
-// 100,000 blocks stay affordable, at least 20.
-ScalingRow scaling(const Integ& in, int n, double blockSteps) {
-    World w;
-    buildFallingChain(w, n);
-    Dynamics d;
-    Stepper s(in.kind, 1e-6);
-    Ledger ledger;
-    const double h = 1e-3;
-    const long long steps = std::clamp<long long>((long long)(blockSteps / n), 20, 500);
-    ScalingRow r{in.name, n, 0, 0, 0};
-    double t = 0;
-    const auto start = std::chrono::steady_clock::now();
-    for (long long i = 0; i < steps; ++i) {
-        const MotionStep m = advanceAndProject(w, d, s, t, h, ledger, 1e-10);
-        if (!m.ok()) break;
-        t += m.step.taken;
-        ++r.steps;
-    }
-    r.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    r.simulated = t;
-    return r;
+bool writeCsv(const std::vector<BenchRow>& rows, const std::filesystem::path& path) {
+    std::ofstream f(path);
+    f << "study,method,blocks,parameter,cost_cpu_s_per_sim_s,error,finished,note\n";
+    f.precision(6);
+    for (const BenchRow& r : rows)
+        f << r.study << ',' << r.method << ',' << r.blocks << ',' << r.parameter << ',' << r.cost << ',' << r.error << ','
+          << (r.finished ? 1 : 0) << ",\"" << r.note << "\"\n";
+    return bool(f);
 }
 
-std::string fixed(double x, int digits) {
-    std::ostringstream s;
-    s.setf(std::ios::fixed);
-    s.precision(digits);
-    s << x;
-    return s.str();
+// One series per method: cost against error.
+Chart workPrecision(const std::string& title, const std::string& errorLabel, const std::vector<BenchRow>& rows) {
+    Chart c{title, "CPU seconds per simulated second", errorLabel, {}};
+    std::map<std::string, size_t> index;
+    for (const BenchRow& r : rows) {
+        if (!r.finished) continue;
+        if (!index.count(r.method)) {
+            index[r.method] = c.series.size();
+            c.series.push_back({r.method, {}, r.method.find("end-of-step") != std::string::npos});
+        }
+        c.series[index[r.method]].points.push_back({r.cost, r.error});
+    }
+    return c;
 }
 
 }  // namespace
 
 int bench(const std::vector<std::string>& args) {
-    Options o = parse(args, {"--out"}, {"--quick", "--help"});
+    Options o = parse(args, {"--out", "--report"}, {"--quick", "--help"});
     if (o.has("--help")) {
-        std::fputs("usage: jladder bench [--quick] [--out DIR]\n"
-                   "Measures the engine on the falling chain (N boxes pinned end to end) for\n"
-                   "N = 10 .. 100,000 and every integrator, at dt = 1 ms, and writes\n"
-                   "DIR/scaling.csv and DIR/scaling.md (default DIR: docs/bench).\n"
-                   "--quick: N up to 1,000 and fewer steps, for CI.\n",
-                   stdout);
+        std::fputs(kHelp, stdout);
         return 0;
     }
     if (!o.error.empty()) {
         std::fprintf(stderr, "jladder bench: %s\n", o.error.c_str());
         return 2;
     }
-    const bool quick = o.has("--quick");
+    BenchPlan plan;
+    plan.quick = o.has("--quick");
+    plan.minSeconds = plan.quick ? 0.005 : 0.05;
     const std::filesystem::path out = o.get("--out").value_or("docs/bench");
+    const std::filesystem::path report = o.get("--report").value_or("docs/performance.md");
     std::error_code ec;
     std::filesystem::create_directories(out, ec);
+    if (!ec && report.has_parent_path()) std::filesystem::create_directories(report.parent_path(), ec);
     if (ec) {
         std::fprintf(stderr, "jladder bench: cannot create %s: %s\n", out.c_str(), ec.message().c_str());
         return 1;
     }
-    const std::vector<int> sizes = quick ? std::vector<int>{10, 100, 1000} : std::vector<int>{10, 100, 1000, 10000, 100000};
-    const double budget = quick ? 2e5 : 5e6;
-    std::vector<ScalingRow> rows;
-    for (const Integ& in : kIntegrators)
-        for (int n : sizes) {
-            rows.push_back(scaling(in, n, budget));
-            const ScalingRow& r = rows.back();
-            std::fprintf(stderr, "%-17s N=%-7d %5lld steps  %8.1f ns/block-step  %7.2fx real time\n", r.integrator.c_str(),
-                         r.blocks, r.steps, r.nsPerBlockStep(), r.realTimeFactor());
-        }
-    std::ofstream csv(out / "scaling.csv");
-    csv << "integrator,blocks,steps,simulated_s,wall_s,ns_per_block_step,real_time_factor\n";
-    for (const ScalingRow& r : rows)
-        csv << r.integrator << ',' << r.blocks << ',' << r.steps << ',' << r.simulated << ',' << r.wall << ','
-            << r.nsPerBlockStep() << ',' << r.realTimeFactor() << '\n';
-    std::ofstream md(out / "scaling.md");
-    md << "| integrator | blocks | steps | ns per block-step | real-time factor | flatness (max/min ns) |\n"
-          "|---|---:|---:|---:|---:|---:|\n";
-    for (const Integ& in : kIntegrators) {
-        double lo = 1e300, hi = 0;
-        for (const ScalingRow& r : rows)
-            if (r.integrator == in.name) {
-                lo = std::min(lo, r.nsPerBlockStep());
-                hi = std::max(hi, r.nsPerBlockStep());
-            }
-        for (const ScalingRow& r : rows)
-            if (r.integrator == in.name)
-                md << "| " << r.integrator << " | " << r.blocks << " | " << r.steps << " | " << fixed(r.nsPerBlockStep(), 1)
-                   << " | " << fixed(r.realTimeFactor(), 2) << " | " << (r.blocks == sizes.back() ? fixed(hi / lo, 2) : "")
-                   << " |\n";
+
+    BenchResults results;
+    results.quick = plan.quick;
+    std::fprintf(stderr, "pendulum\n");
+    results.pendulum = pendulumStudy(plan);
+    const std::vector<int> chainSizes = plan.quick ? std::vector<int>{10, 100} : std::vector<int>{10, 100, 1000};
+    const std::vector<double> peerSteps = plan.quick ? std::vector<double>{1e-3, 1e-4} : std::vector<double>{1e-3, 5e-4, 2.5e-4, 1e-4};
+    for (int n : chainSizes) {
+        std::fprintf(stderr, "falling chain N=%d\n", n);
+        std::vector<Vec2> reference;
+        std::vector<BenchRow> rows = chainStudy(plan, n, n <= 100, reference);
+        for (const PeerRun& p : measurePeers(n, peerSteps, 0.5, reference, plan.minSeconds))
+            rows.push_back({"chain" + std::to_string(n), p.engine, n, p.step, p.cost, p.error, p.finished, ""});
+        results.chains[n] = rows;
     }
-    std::printf("{\"out\":%s,\"rows\":%zu}\n", jsonString(out.string()).c_str(), rows.size());
-    return csv && md ? 0 : 1;
+    std::fprintf(stderr, "ladder cascade\n");
+    results.ladder = ladderStudy(plan);
+    std::fprintf(stderr, "scaling\n");
+    results.scaling = scalingStudy(plan);
+    std::fprintf(stderr, "long ladder\n");
+    results.longLadder = longLadderStudy(plan);
+    results.peers = peerVersions();
+
+    bool ok = writeCsv(results.pendulum, out / "pendulum.csv") && writeCsv(results.ladder, out / "ladder.csv") &&
+              writeCsv(results.scaling, out / "scaling.csv") && writeCsv(results.longLadder, out / "long_ladder.csv");
+    ok = writeChart(workPrecision("Physical pendulum, one exact period (theta0 = 2 rad)", "error (rad)", results.pendulum),
+                    out, "pendulum") && ok;
+    for (const auto& [n, rows] : results.chains) {
+        const std::string name = "chain" + std::to_string(n);
+        ok = writeCsv(rows, out / (name + ".csv")) && ok;
+        ok = writeChart(workPrecision("Falling chain, N = " + std::to_string(n) + ", t = 0.5 s",
+                                      "largest block-centre error (m)", rows),
+                        out, name) && ok;
+    }
+    ok = writeChart(workPrecision("Ladder cascade, 6 blocks, t = 1.2 s", "largest block-centre error (m)", results.ladder),
+                    out, "ladder") && ok;
+    Chart scaling{"Cost per block-step, falling chain, dt = 1 ms", "blocks N", "ns per block-step (CPU)", {}};
+    std::map<std::string, size_t> index;
+    for (const BenchRow& r : results.scaling) {
+        if (!index.count(r.method)) {
+            index[r.method] = scaling.series.size();
+            scaling.series.push_back({r.method, {}, false});
+        }
+        scaling.series[index[r.method]].points.push_back({double(r.blocks), r.error});
+    }
+    ok = writeChart(scaling, out, "scaling") && ok;
+    ok = writeReport(results, out, report) && ok;
+    std::printf("{\"out\":%s,\"report\":%s,\"ok\":%s}\n", jsonString(out.string()).c_str(),
+                jsonString(report.string()).c_str(), ok ? "true" : "false");
+    return ok ? 0 : 1;
 }
 
 }  // namespace jl::cli

@@ -1,0 +1,338 @@
+#include "app/jladder/bench_cases.h"
+
+#include "app/jladder/bench_clock.h"
+#include "core/elliptic.h"
+#include "core/falling_chain.h"
+#include "core/motion.h"
+#include "core/reference_chain.h"
+#include "core/simulation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <numbers>
+
+namespace jl::cli {
+
+namespace {
+
+struct Method {
+    Integrator kind;
+    const char* name;
+};
+constexpr Method kMethods[] = {{Integrator::ExplicitEuler, "explicit_euler"},
+                               {Integrator::SymplecticEuler, "symplectic_euler"},
+                               {Integrator::RK4, "rk4"},
+                               {Integrator::DormandPrince45, "dormand_prince45"}};
+
+bool adaptive(Integrator k) { return k == Integrator::DormandPrince45; }
+
+// Runs `once` until at least `minSeconds` of CPU time have passed; returns the
+// CPU seconds of one run. `once` returns false on failure (then one run only).
+double timed(double minSeconds, const std::function<bool()>& once, bool& ok) {
+    int runs = 0;
+    const double start = threadSeconds();
+    do {
+        ok = once();
+        ++runs;
+    } while (ok && threadSeconds() - start < minSeconds);
+    return (threadSeconds() - start) / runs;
+}
+
+// Steps (or, for the adaptive method, tolerances) for a study.
+std::vector<double> parameters(Integrator k, const std::vector<double>& steps, const std::vector<double>& tolerances) {
+    return adaptive(k) ? tolerances : steps;
+}
+
+void log(const BenchRow& r) {
+    std::fprintf(stderr, "  %-10s %-30s N=%-6d %s=%.1e  cost %.3e s/s  error %.3e%s\n", r.study.c_str(), r.method.c_str(),
+                 r.blocks, r.parameter < 1e-3 && r.method.find("dormand") != std::string::npos ? "tol" : "h", r.parameter,
+                 r.cost, r.error, r.finished ? "" : "  (failed)");
+}
+
+}  // namespace
+
+// ---- the physical pendulum: one exact period ----
+
+std::vector<BenchRow> pendulumStudy(const BenchPlan& plan) {
+    constexpr double L = 0.06, T = 0.012, W = 0.045, rho = 600, g = 9.81, theta0 = 2.0;
+    const double mass = rho * L * T * W, r = std::hypot(L / 2, T / 2);
+    const double ip = mass * (L * L + T * T) / 12 + mass * r * r;
+    const double period = pendulumPeriod(ip, mass, g, r, theta0);
+    const Vec2 corner(-L / 2, -T / 2);
+    const double rest = std::numbers::pi / 2 - std::atan2(corner.y(), corner.x());
+    const std::vector<double> perPeriod = plan.quick ? std::vector<double>{100, 1000, 10000}
+                                                     : std::vector<double>{50, 100, 300, 1000, 3000, 10000, 30000, 100000};
+    const std::vector<double> tolerances = plan.quick ? std::vector<double>{1e-4, 1e-8, 1e-12}
+                                                      : std::vector<double>{1e-3, 1e-5, 1e-7, 1e-9, 1e-11, 1e-12};
+    std::vector<BenchRow> rows;
+    for (const Method& m : kMethods) {
+        std::vector<double> steps;
+        for (double n : perPeriod) steps.push_back(period / n);
+        for (double p : parameters(m.kind, steps, tolerances)) {
+            BenchRow row{"pendulum", m.name, 1, p, 0, 0, true, ""};
+            auto once = [&] {
+                World w;
+                const PartId block = w.addBox(mass, Vec2(L, T), W, Pose{-rotate(rest + theta0, corner), rest + theta0});
+                w.combine(w.anchor(Vec2::Zero()), w.addParticle(block, corner));
+                Dynamics d;
+                Stepper s(m.kind, adaptive(m.kind) ? p : 1e-8);
+                Ledger ledger;
+                double t = 0;
+                const double h = adaptive(m.kind) ? period : p;
+                while (t < period * (1 - 1e-12)) {
+                    const MotionStep ms = advanceAndProject(w, d, s, t, std::min(h, period - t), ledger, 1e-12);
+                    if (!ms.ok()) return false;
+                    t += ms.step.taken;
+                }
+                const double omegaScale = std::sqrt(mass * g * r / ip);
+                row.error = std::hypot(w.partPose(block).angle - rest - theta0, w.partVelocity(block).angular / omegaScale);
+                return true;
+            };
+            row.cost = timed(plan.minSeconds, once, row.finished) / period;
+            if (!row.finished) row.error = NAN;
+            log(row);
+            rows.push_back(row);
+        }
+    }
+    return rows;
+}
+
+// ---- the falling chain against the reduced-coordinate reference ----
+
+std::vector<BenchRow> chainStudy(const BenchPlan& plan, int n, bool independent, std::vector<Vec2>& referenceOut) {
+    constexpr double duration = 0.5;
+    referenceOut.clear();
+    if (independent) {
+        ReferenceChainSpec spec;
+        spec.links = n;
+        ReferenceChain reference(spec);
+        reference.advanceTo(duration, 1e-12);
+        for (int i = 0; i < n; ++i) referenceOut.push_back(reference.centre(i));
+    } else {
+        World w;
+        const std::vector<PartId> parts = buildFallingChain(w, n);
+        Dynamics d;
+        Stepper s(Integrator::RK4);
+        Ledger ledger;
+        constexpr double h = 2e-5;
+        for (int i = 0; i < int(std::lround(duration / h)); ++i) advanceAndProject(w, d, s, i * h, h, ledger, 1e-12);
+        for (PartId p : parts) referenceOut.push_back(w.partPose(p).position);
+    }
+
+    const std::vector<double> steps = plan.quick ? std::vector<double>{1e-3, 1e-4}
+                                                 : std::vector<double>{2e-3, 1e-3, 5e-4, 2.5e-4, 1e-4, 5e-5, 2e-5};
+    const std::vector<double> tolerances = plan.quick ? std::vector<double>{1e-5, 1e-9}
+                                                      : std::vector<double>{1e-3, 1e-5, 1e-7, 1e-9, 1e-11};
+    std::vector<BenchRow> rows;
+    for (const Method& m : kMethods)
+        for (double p : parameters(m.kind, steps, tolerances)) {
+            BenchRow row{"chain" + std::to_string(n), m.name, n, p, 0, 0, true, ""};
+            auto once = [&] {
+                World w;
+                const std::vector<PartId> parts = buildFallingChain(w, n);
+                Dynamics d;
+                Stepper s(m.kind, adaptive(m.kind) ? p : 1e-8);
+                Ledger ledger;
+                double t = 0;
+                const double h = adaptive(m.kind) ? duration : p;
+                while (t < duration * (1 - 1e-12)) {
+                    const MotionStep ms = advanceAndProject(w, d, s, t, std::min(h, duration - t), ledger, 1e-10);
+                    if (!ms.ok()) return false;
+                    t += ms.step.taken;
+                }
+                row.error = 0;
+                for (int i = 0; i < n; ++i)
+                    row.error = std::max(row.error, (w.partPose(parts[size_t(i)]).position - referenceOut[size_t(i)]).norm());
+                return true;
+            };
+            row.cost = timed(plan.minSeconds, once, row.finished) / duration;
+            if (!row.finished) row.error = NAN;
+            log(row);
+            rows.push_back(row);
+        }
+    return rows;
+}
+
+// ---- the ladder cascade: events and final poses against a tight run ----
+
+namespace {
+
+Scene cascade(int blocks, double duration) {
+    Scene s;
+    s.ladder = LadderSpec{};
+    s.ladder->blocks = blocks;
+    ScriptAction turn;
+    turn.at = 0.2;
+    turn.angle = std::numbers::pi;
+    turn.duration = 0.3;
+    s.script.push_back(turn);
+    s.duration = duration;
+    return s;
+}
+
+struct CascadeResult {
+    std::vector<Event> events;
+    std::vector<Pose> poses;
+    std::string failure;
+};
+
+CascadeResult runCascade(const Scene& scene) {
+    CascadeResult r;
+    Simulation::Built built = Simulation::build(scene);
+    if (!built.simulation) {
+        r.failure = built.errors.empty() ? "not built" : built.errors.front();
+        return r;
+    }
+    built.simulation->advanceTo(scene.duration);
+    Frame f = built.simulation->frame();
+    r.events = f.events;
+    r.poses = f.blocks;
+    r.failure = f.failure;
+    return r;
+}
+
+}  // namespace
+
+std::vector<BenchRow> ladderStudy(const BenchPlan& plan) {
+    constexpr int blocks = 6;
+    constexpr double duration = 1.2;
+    Scene tight = cascade(blocks, duration);
+    tight.solver.integrator = Integrator::DormandPrince45;
+    tight.solver.tolerance = 1e-12;
+    tight.solver.eventTolerance = 1e-12;
+    const CascadeResult reference = runCascade(tight);
+    std::fprintf(stderr, "  ladder reference: %zu events%s\n", reference.events.size(),
+                 reference.failure.empty() ? "" : (" failed: " + reference.failure).c_str());
+
+    struct Config {
+        Integrator kind;
+        const char* name;
+        std::vector<double> params;
+    };
+    const std::vector<Config> configs =
+        plan.quick ? std::vector<Config>{{Integrator::ExplicitEuler, "explicit_euler", {1e-4}},
+                                         {Integrator::RK4, "rk4", {1e-3}},
+                                         {Integrator::DormandPrince45, "dormand_prince45", {1e-7}}}
+                   : std::vector<Config>{{Integrator::ExplicitEuler, "explicit_euler", {1e-4, 3e-5, 1e-5}},
+                                         {Integrator::SymplecticEuler, "symplectic_euler", {1e-3, 3e-4, 1e-4, 3e-5}},
+                                         {Integrator::RK4, "rk4", {2e-3, 1e-3, 5e-4, 2e-4}},
+                                         {Integrator::DormandPrince45, "dormand_prince45", {1e-5, 1e-7, 1e-9, 1e-11}}};
+    std::vector<BenchRow> rows;
+    for (const Config& c : configs)
+        for (EventPolicy policy : {EventPolicy::Located, EventPolicy::EndOfStep})
+            for (double p : c.params) {
+                Scene s = cascade(blocks, duration);
+                s.solver.integrator = c.kind;
+                if (adaptive(c.kind)) s.solver.tolerance = p; else s.solver.step = p;
+                s.solver.events = policy;
+                const std::string method = std::string(c.name) + (policy == EventPolicy::Located ? " located" : " end-of-step");
+                BenchRow row{"ladder", method, blocks, p, 0, 0, true, ""};
+                CascadeResult result;
+                row.cost = timed(plan.minSeconds, [&] {
+                    result = runCascade(s);
+                    return result.failure.empty();
+                }, row.finished) / duration;
+                // Error: the worst block-centre distance at the end (m); the
+                // note: event sequence match and worst event-time error.
+                if (row.finished && result.poses.size() == reference.poses.size()) {
+                    for (size_t i = 0; i < result.poses.size(); ++i)
+                        row.error = std::max(row.error, (result.poses[i].position - reference.poses[i].position).norm());
+                    size_t same = 0;
+                    double worstTime = 0;
+                    while (same < result.events.size() && same < reference.events.size() &&
+                           result.events[same].kind == reference.events[same].kind &&
+                           result.events[same].hinge == reference.events[same].hinge) {
+                        worstTime = std::max(worstTime, std::abs(result.events[same].time - reference.events[same].time));
+                        ++same;
+                    }
+                    char note[160];
+                    std::snprintf(note, sizeof note, "%zu of %zu events in the reference order; worst time error %.2e s",
+                                  same, reference.events.size(), worstTime);
+                    row.note = note;
+                } else {
+                    row.error = NAN;
+                    row.note = result.failure;
+                }
+                log(row);
+                rows.push_back(row);
+            }
+    return rows;
+}
+
+// ---- scaling: cost per block-step against N ----
+
+std::vector<BenchRow> scalingStudy(const BenchPlan& plan) {
+    const std::vector<int> sizes = plan.quick ? std::vector<int>{10, 100, 1000}
+                                              : std::vector<int>{10, 100, 1000, 10000, 100000};
+    const double blockSteps = plan.quick ? 2e5 : 2e6;
+    std::vector<BenchRow> rows;
+    for (const Method& m : kMethods)
+        for (int n : sizes) {
+            World w;
+            buildFallingChain(w, n);
+            Dynamics d;
+            Stepper s(m.kind, 1e-6);
+            Ledger ledger;
+            const double h = 1e-3;
+            const long long steps = std::clamp<long long>((long long)(blockSteps / n), 20, 2000);
+            BenchRow row{"scaling", m.name, n, h, 0, 0, true, ""};
+            double t = 0;
+            long long taken = 0;
+            // One step to warm the caches and size the work vectors.
+            advanceAndProject(w, d, s, t, h, ledger, 1e-10);
+            t += h;
+            const double start = threadSeconds();
+            for (; taken < steps; ++taken) {
+                const MotionStep ms = advanceAndProject(w, d, s, t, h, ledger, 1e-10);
+                if (!ms.ok()) {
+                    row.finished = false;
+                    break;
+                }
+                t += ms.step.taken;
+            }
+            const double cpu = threadSeconds() - start;
+            // error column: ns per block-step; cost: CPU s per simulated s.
+            row.cost = cpu / std::max(t - h, 1e-300);
+            row.error = 1e9 * cpu / (double(n) * double(std::max<long long>(taken, 1)));
+            char note[96];
+            std::snprintf(note, sizeof note, "%lld steps%s", taken, row.finished ? "" : ", stopped: a step failed");
+            row.note = note;
+            std::fprintf(stderr, "  scaling %-18s N=%-7d %5lld steps  %8.1f ns/block-step\n", m.name, n, taken, row.error);
+            rows.push_back(row);
+        }
+    return rows;
+}
+
+// ---- a long ladder turned over, with RK4 ----
+
+std::vector<BenchRow> longLadderStudy(const BenchPlan& plan) {
+    const int blocks = plan.quick ? 1000 : 10000;
+    const double duration = plan.quick ? 0.03 : 0.1;
+    std::vector<BenchRow> rows;
+    for (double h : {1e-3, 5e-4}) {
+        Scene s = cascade(blocks, duration);
+        s.script.front().at = 0.0;
+        s.solver.integrator = Integrator::RK4;
+        s.solver.step = h;
+        Simulation::Built built = Simulation::build(s);
+        BenchRow row{"long_ladder", "rk4 located", blocks, h, 0, NAN, true, ""};
+        const double start = threadSeconds();
+        built.simulation->advanceTo(duration);
+        const double cpu = threadSeconds() - start;
+        const Frame f = built.simulation->frame();
+        row.finished = f.failure.empty();
+        row.cost = cpu / std::max(f.time, 1e-300);
+        char note[400];
+        std::snprintf(note, sizeof note, "simulated %.4f s in %.3f CPU s (%.3fx real time), %.0f ns per block-step%s%s",
+                      f.time, cpu, f.time / cpu, 1e9 * cpu / (double(blocks) * double(std::max<long long>(f.solver.steps, 1))),
+                      row.finished ? "" : "; stopped: ", f.failure.c_str());
+        row.note = note;
+        std::fprintf(stderr, "  long ladder N=%d h=%.1e: %s\n", blocks, h, note);
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+}  // namespace jl::cli

@@ -1,0 +1,23 @@
+// docs/performance.md from the benchmark's measurements: tables, charts,
+// the machine, and each target of issue 7 checked against the numbers.
+#pragma once
+
+#include "app/jladder/bench_cases.h"
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace jl::cli {
+
+struct BenchResults {
+    bool quick = false;
+    std::vector<BenchRow> pendulum, ladder, scaling, longLadder;
+    std::map<int, std::vector<BenchRow>> chains;  // by N; peers' rows included
+    std::string peers;                            // versions, or why not measured
+};
+
+bool writeReport(const BenchResults& r, const std::filesystem::path& plots, const std::filesystem::path& report);
+
+}  // namespace jl::cli
