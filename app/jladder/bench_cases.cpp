@@ -45,6 +45,22 @@ std::vector<double> parameters(Integrator k, const std::vector<double>& steps, c
     return adaptive(k) ? tolerances : steps;
 }
 
+// Advances w to `duration` with method `kind`: fixed steps of p, or (the
+// adaptive method) tolerance p with steps of its choosing. False on failure.
+bool advanceFor(World& w, Integrator kind, double p, double duration, double projection) {
+    Dynamics d;
+    Stepper s(kind, adaptive(kind) ? p : 1e-8);
+    Ledger ledger;
+    double t = 0;
+    const double h = adaptive(kind) ? duration : p;
+    while (t < duration * (1 - 1e-12)) {
+        const MotionStep ms = advanceAndProject(w, d, s, t, std::min(h, duration - t), ledger, projection);
+        if (!ms.ok()) return false;
+        t += ms.step.taken;
+    }
+    return true;
+}
+
 void log(const BenchRow& r) {
     std::fprintf(stderr, "  %-10s %-30s N=%-6d %s=%.1e  cost %.3e s/s  error %.3e%s\n", r.study.c_str(), r.method.c_str(),
                  r.blocks, r.parameter < 1e-3 && r.method.find("dormand") != std::string::npos ? "tol" : "h", r.parameter,
@@ -76,16 +92,7 @@ std::vector<BenchRow> pendulumStudy(const BenchPlan& plan) {
                 World w;
                 const PartId block = w.addBox(mass, Vec2(L, T), W, Pose{-rotate(rest + theta0, corner), rest + theta0});
                 w.combine(w.anchor(Vec2::Zero()), w.addParticle(block, corner));
-                Dynamics d;
-                Stepper s(m.kind, adaptive(m.kind) ? p : 1e-8);
-                Ledger ledger;
-                double t = 0;
-                const double h = adaptive(m.kind) ? period : p;
-                while (t < period * (1 - 1e-12)) {
-                    const MotionStep ms = advanceAndProject(w, d, s, t, std::min(h, period - t), ledger, 1e-12);
-                    if (!ms.ok()) return false;
-                    t += ms.step.taken;
-                }
+                if (!advanceFor(w, m.kind, p, period, 1e-12)) return false;
                 const double omegaScale = std::sqrt(mass * g * r / ip);
                 row.error = std::hypot(w.partPose(block).angle - rest - theta0, w.partVelocity(block).angular / omegaScale);
                 return true;
@@ -132,16 +139,7 @@ std::vector<BenchRow> chainStudy(const BenchPlan& plan, int n, bool independent,
             auto once = [&] {
                 World w;
                 const std::vector<PartId> parts = buildFallingChain(w, n);
-                Dynamics d;
-                Stepper s(m.kind, adaptive(m.kind) ? p : 1e-8);
-                Ledger ledger;
-                double t = 0;
-                const double h = adaptive(m.kind) ? duration : p;
-                while (t < duration * (1 - 1e-12)) {
-                    const MotionStep ms = advanceAndProject(w, d, s, t, std::min(h, duration - t), ledger, 1e-10);
-                    if (!ms.ok()) return false;
-                    t += ms.step.taken;
-                }
+                if (!advanceFor(w, m.kind, p, duration, 1e-10)) return false;
                 row.error = 0;
                 for (int i = 0; i < n; ++i)
                     row.error = std::max(row.error, (w.partPose(parts[size_t(i)]).position - referenceOut[size_t(i)]).norm());
