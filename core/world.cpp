@@ -341,7 +341,9 @@ int World::makeBody(const std::vector<PartId>& g, const std::vector<Pose>& poses
     }
     body.kinematic = lead >= 0;
     const Pose& first = poses[lead >= 0 ? size_t(lead) : 0];
-    Pose frame{m > 0 && !hasGround ? Vec2(c / m) : first.position, first.angle};
+    // A lone part keeps its own frame exactly: rounding in c / m would give a
+    // point particle a spurious ~1e-35 inertia (and a huge spin).
+    Pose frame{m > 0 && !hasGround && g.size() > 1 ? Vec2(c / m) : first.position, first.angle};
     if (hasGround) frame = Pose{};
     double inertia = 0, spin = 0;
     const Vec2 vel = m > 0 ? Vec2(momentum / m) : Vec2::Zero();
@@ -353,6 +355,9 @@ int World::makeBody(const std::vector<PartId>& g, const std::vector<Pose>& poses
         part.body = b;
         part.inBody = frame.inverse().compose(poses[i]);
     }
+    // Points that coincide (combined free particles) have no orientation.
+    const bool allPoints = std::all_of(g.begin(), g.end(), [&](PartId p) { return parts_[p].isPoint; });
+    if (allPoints && inertia <= 1e-12 * m * 1e-6) inertia = 0;
     body.mass = m;
     body.inertia = inertia;
     q.segment<2>(3 * b) = frame.position;

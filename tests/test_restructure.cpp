@@ -1,0 +1,191 @@
+// labels: physics;engine
+// combine/separate: momentum is conserved, structure follows the paper's
+// meaning, and thousands of random restructures leave a valid world.
+#include "core/energy.h"
+#include "core/projection.h"
+#include "core/world.h"
+
+#include <QtTest>
+#include <cmath>
+#include <random>
+
+using namespace jl;
+
+namespace {
+
+struct Momentum {
+    Vec2 linear = Vec2::Zero();
+    double angular = 0;  // about the origin
+};
+
+Momentum momentum(const World& w) {
+    Momentum m;
+    for (PartId p = 1; p < w.partCount(); ++p) {
+        const Part& part = w.part(p);
+        const Twist v = w.partVelocity(p);
+        const Vec2 c = w.partPose(p).position;
+        m.linear += part.mass * v.linear;
+        m.angular += part.inertia * v.angular + part.mass * cross(c, v.linear);
+    }
+    return m;
+}
+
+int liveBodies(const World& w) {
+    int n = 0;
+    for (int b = 1; b < w.bodyCount(); ++b) n += w.body(b).alive ? 1 : 0;
+    return n;
+}
+
+// Two boxes side by side (no gravity), moving and turning differently.
+struct TwoBoxes {
+    World w;
+    PartId a, b;
+    ParticleId aRight, bLeft, aTop, bTop;
+    TwoBoxes() {
+        w.gravity = Vec2::Zero();
+        a = w.addBox(0.02, Vec2(0.06, 0.012), 0.045, Pose{Vec2(-0.03, 0), 0}, Twist{Vec2(0.3, -0.1), 2.0});
+        b = w.addBox(0.05, Vec2(0.06, 0.012), 0.045, Pose{Vec2(0.03, 0), 0}, Twist{Vec2(-0.2, 0.4), -1.0});
+        aRight = w.addParticle(a, Vec2(0.03, -0.006));
+        bLeft = w.addParticle(b, Vec2(-0.03, -0.006));
+        aTop = w.addParticle(a, Vec2(0.03, 0.006));
+        bTop = w.addParticle(b, Vec2(-0.03, 0.006));
+    }
+};
+
+// What every world must satisfy after any sequence of operations.
+QString invalidity(const World& w) {
+    for (PartId p = 0; p < w.partCount(); ++p) {
+        const int b = w.part(p).body;
+        if (b < 0 || b >= w.bodyCount() || !w.body(b).alive) return QString("part %1 has no live body").arg(p);
+        const auto& parts = w.body(b).parts;
+        if (std::find(parts.begin(), parts.end(), p) == parts.end()) return QString("part %1 not in its body").arg(p);
+    }
+    for (ParticleId id = 0; id < w.particleCount(); ++id) {
+        const Particle& p = w.particle(id);
+        if (p.mergedInto >= 0 && !w.validParticle(p.mergedInto)) return QString("particle %1 dangles").arg(id);
+        for (const Attachment& a : p.at)
+            if (!w.validPart(a.part)) return QString("particle %1 on a missing part").arg(id);
+    }
+    for (const Pin& pin : w.pins())
+        if (!w.body(pin.bodyA).alive || !w.body(pin.bodyB).alive) return "a pin joins a dead body";
+    if (!w.q.allFinite() || !w.v.allFinite()) return "non-finite state";
+    return {};
+}
+
+}  // namespace
+
+class RestructureTest : public QObject {
+    Q_OBJECT
+private slots:
+    void combineMakesAHingeAndConservesMomentum() {
+        TwoBoxes s;
+        const Momentum before = momentum(s.w);
+        const double ke = energy(s.w).kinetic;
+        QVERIFY(!s.w.combine(s.aRight, s.bLeft));
+        QCOMPARE(int(s.w.pins().size()), 1);
+        QCOMPARE(liveBodies(s.w), 2);
+        const Momentum after = momentum(s.w);
+        QVERIFY((after.linear - before.linear).norm() < 1e-15);
+        QVERIFY(std::abs(after.angular - before.angular) < 1e-15);
+        QVERIFY(energy(s.w).kinetic <= ke);  // a plastic impulse never adds energy
+        PinSolver solver;
+        QVERIFY(pinVelocityResidual(s.w, solver) < 1e-14);
+    }
+
+    void secondCombineMakesOneBodyAndSeparateUndoesIt() {
+        TwoBoxes s;
+        QVERIFY(!s.w.combine(s.aRight, s.bLeft));
+        const Momentum before = momentum(s.w);
+        QVERIFY(!s.w.combine(s.aTop, s.bTop));
+        QCOMPARE(liveBodies(s.w), 1);  // a locked pair is one body: fewer unknowns
+        QCOMPARE(int(s.w.pins().size()), 0);
+        QCOMPARE(s.w.part(s.a).body, s.w.part(s.b).body);
+        Momentum after = momentum(s.w);
+        QVERIFY((after.linear - before.linear).norm() < 1e-15);
+        QVERIFY(std::abs(after.angular - before.angular) < 1e-15);
+        // Both parts now turn together.
+        QVERIFY(std::abs(s.w.partVelocity(s.a).angular - s.w.partVelocity(s.b).angular) < 1e-15);
+
+        const Twist va = s.w.partVelocity(s.a), vb = s.w.partVelocity(s.b);
+        QVERIFY(!s.w.separate(s.aTop));
+        QCOMPARE(liveBodies(s.w), 2);
+        QCOMPARE(int(s.w.pins().size()), 1);
+        // A split changes no velocity.
+        QVERIFY((s.w.partVelocity(s.a).linear - va.linear).norm() < 1e-15);
+        QVERIFY((s.w.partVelocity(s.b).linear - vb.linear).norm() < 1e-15);
+    }
+
+    void freeParticleJoinsABody() {
+        World w;
+        w.gravity = Vec2::Zero();
+        const PartId box = w.addBox(0.02, Vec2(0.06, 0.012), 0.045, Pose{}, Twist{Vec2(0.1, 0), 0});
+        const PartId dot = w.addPoint(0.005, Vec2(0.03, 0), Vec2(0, 1.0));
+        const ParticleId own = w.particleCount() - 1;  // the point's own particle
+        const Momentum before = momentum(w);
+        QVERIFY(!w.combine(w.addParticle(box, Vec2(0.03, 0)), own));
+        QCOMPARE(w.part(dot).body, w.part(box).body);
+        const Momentum after = momentum(w);
+        QVERIFY((after.linear - before.linear).norm() < 1e-15);
+        QVERIFY(std::abs(after.angular - before.angular) < 1e-15);
+    }
+
+    void badIdsAreReportedAndChangeNothing() {
+        TwoBoxes s;
+        const Eigen::VectorXd q = s.w.q;
+        QVERIFY(s.w.combine(s.aRight, 999).has_value());
+        QVERIFY(s.w.combine(-1, s.aRight).has_value());
+        QVERIFY(s.w.combine(s.aRight, s.aRight).has_value());
+        QVERIFY(s.w.combine(s.aRight, s.aTop).has_value());  // two points of one part
+        QVERIFY(s.w.separate(s.aRight).has_value());          // nothing combined into it
+        QVERIFY(!s.w.combine(s.aRight, s.bLeft));
+        QVERIFY(s.w.combine(s.bLeft, s.aTop).has_value());    // absorbed: reported, not reused
+        QVERIFY(s.w.q == q || s.w.q.size() == q.size());
+        QVERIFY(invalidity(s.w).isEmpty());
+    }
+
+    // 100 boxes with four corner particles each; 10,000 random combines and
+    // separates (any pairs, loops and rigid merges included). The world stays
+    // valid, finite, and keeps its momentum (no gravity, no ground).
+    void randomRestructureStormLeavesValidWorld() {
+        World w;
+        w.gravity = Vec2::Zero();
+        std::mt19937 rng(12345);
+        std::uniform_real_distribution<double> u(-1, 1);
+        std::vector<ParticleId> particles;
+        for (int i = 0; i < 100; ++i) {
+            const PartId p = w.addBox(0.01 + 0.02 * (u(rng) + 1), Vec2(0.06, 0.012), 0.045,
+                                      Pose{Vec2(0.07 * (i % 10), 0.07 * (i / 10)), u(rng)}, Twist{Vec2(u(rng), u(rng)), u(rng)});
+            for (int k = 0; k < 4; ++k)
+                particles.push_back(w.addParticle(p, Vec2((k & 1) ? 0.03 : -0.03, (k & 2) ? 0.006 : -0.006)));
+        }
+        const Momentum start = momentum(w);
+        std::uniform_int_distribution<size_t> pick(0, particles.size() - 1);
+        int combined = 0, separated = 0, refused = 0;
+        std::vector<ParticleId> joined;  // particles something was combined into
+        for (int op = 0; op < 10000; ++op) {
+            const bool split = op % 2 == 1 && !joined.empty();
+            std::optional<WorldError> error;
+            if (split) {
+                std::uniform_int_distribution<size_t> which(0, joined.size() - 1);
+                const size_t i = which(rng);
+                error = w.separate(joined[i]);
+                joined.erase(joined.begin() + std::ptrdiff_t(i));
+            } else {
+                const ParticleId a = particles[pick(rng)], b = particles[pick(rng)];
+                error = w.combine(a, b);
+                if (!error) joined.push_back(a);
+            }
+            if (error) ++refused; else if (split) ++separated; else ++combined;
+            const QString bad = invalidity(w);
+            QVERIFY2(bad.isEmpty(), qPrintable(QString("after operation %1: %2").arg(op).arg(bad)));
+        }
+        const Momentum end = momentum(w);
+        QVERIFY2((end.linear - start.linear).norm() < 1e-9 * (1 + start.linear.norm()),
+                 qPrintable(QString::number((end.linear - start.linear).norm())));
+        QVERIFY(combined > 1000 && separated > 500);
+        qInfo("%d combines, %d separates, %d refused with a message", combined, separated, refused);
+    }
+};
+
+QTEST_GUILESS_MAIN(RestructureTest)
+#include "test_restructure.moc"
