@@ -169,14 +169,19 @@ void Simulation::applyScriptAction(const ScriptAction& a) {
             e = {t_, EventKind::Cut, a.hinge, -1, "the ribbons of hinge " + std::to_string(a.hinge) + " are cut"};
         }
         break;
-    case K::Join:
+    case K::Join: {
+        // Joining two corners pulls them together and merges their motion:
+        // that is the script's doing, booked as work done on the ladder.
+        const double before = energy(world_).total();
         if (ladder_ && a.otherBlock >= 0 && a.otherBlock < blockCount() &&
             !world_.combine(ladder_->particle(a.block, a.corner), ladder_->particle(a.otherBlock, a.otherCorner))) {
+            ledger_.user += energy(world_).total() - before;
             e = {t_, EventKind::Join, -1, -1,
                  "corner " + std::to_string(a.corner) + " of block " + std::to_string(a.block) + " is joined to corner " +
                      std::to_string(a.otherCorner) + " of block " + std::to_string(a.otherBlock)};
         }
         break;
+    }
     }
     if (!e.text.empty()) record(e);
 }
@@ -266,6 +271,19 @@ void Simulation::endDrag() {
 
 void Simulation::record(const Event& e) { pending_.push_back(e); }
 
+// An unstable integrator makes energy from nothing long before a NaN or a
+// failed projection shows it: compare E with E0 + work - losses, against the
+// size of every term of the books.
+bool Simulation::booksDiverged() const {
+    constexpr double kDivergence = 0.5;
+    const Energy e = energy(world_);
+    const double held = ledger_.held + impactHeldWork_;
+    const double books = initialEnergy_ + held + ledger_.user - impactLoss_ - ledger_.damping;
+    const double scale = std::abs(initialEnergy_) + std::abs(held) + std::abs(ledger_.user) + impactLoss_ +
+                         ledger_.damping + std::abs(e.potential - initialEnergy_) + 1e-9;
+    return !(std::abs(e.total() - books) <= kDivergence * scale);
+}
+
 void Simulation::fail(const std::string& why) {
     failure_ = "at t = " + std::to_string(t_) + " s: " + why;
 }
@@ -293,6 +311,15 @@ bool Simulation::takeStep(double limit) {
     }
     double taken = m.step.taken;
     stats_.rejected += m.step.rejected;
+    if (booksDiverged()) {
+        world_.q = q0;
+        world_.v = v0;
+        ledger_ = l0;
+        world_.updateKinematics(t_);
+        fail("the energy no longer balances (the motion is blowing up): the step " + std::to_string(h) +
+             " s is too large for this integrator here; try a smaller step or the adaptive integrator");
+        return false;
+    }
     if (ladder_) {
         std::vector<double> g;
         // Is an event function negative in the state the world holds, at time t?

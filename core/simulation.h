@@ -76,6 +76,7 @@ private:
     void applyDragSample(const DragRecord& d, const DragRecord::Sample& s);
     bool takeStep(double limit);
     void record(const Event& e);
+    bool booksDiverged() const;
     void fail(const std::string& why);
 
     Scene scene_;

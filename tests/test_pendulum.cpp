@@ -28,7 +28,7 @@ struct Pendulum {
         rest = std::numbers::pi / 2 - std::atan2(corner.y(), corner.x());
         const double angle = rest + theta0;
         const Vec2 centre = -rotate(angle, corner);  // corner at the origin
-        block = world.addBox(mass, L, T, W, Pose{centre, angle});
+        block = world.addBox(mass, Vec2(L, T), W, Pose{centre, angle});
         world.combine(world.anchor(Vec2::Zero()), world.addParticle(block, corner));
     }
     double swing() const { return world.partPose(block).angle - rest; }
