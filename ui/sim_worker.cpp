@@ -233,9 +233,19 @@ bool SimWorker::simulateNextFrame() {
     return true;
 }
 
+// A seek far ahead can take long: show the way there, and let any new
+// command (a pause, another seek) end it where it got to.
 bool SimWorker::simulateTo(int index) {
-    while (history_.head() < index)
+    auto lastShown = Clock::now();
+    while (history_.head() < index) {
         if (!simulateNextFrame()) return false;
+        if (Clock::now() - lastShown > kWorkSlice * 4) {
+            publish();
+            lastShown = Clock::now();
+            std::lock_guard lock(queueMutex_);
+            if (!queue_.empty()) return false;
+        }
+    }
     return true;
 }
 
