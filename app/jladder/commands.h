@@ -10,5 +10,6 @@ int validate(const std::vector<std::string>& args);  // validate.cpp
 int run(const std::vector<std::string>& args);       // run.cpp
 int bench(const std::vector<std::string>& args);     // bench.cpp
 int exportFrames(const std::vector<std::string>& args); // export.cpp
+int reach(const std::vector<std::string>& args);     // reach.cpp
 
 }  // namespace jl::cli

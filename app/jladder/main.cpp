@@ -17,6 +17,7 @@ void usage(std::FILE* out) {
         "  run SCENE --until T simulate headless; JSON summary on stdout\n"
         "  bench [--quick]     measure speed against error; write tables and plots\n"
         "  export SCENE        write frames and events as CSV/JSON\n"
+        "  reach               how far the first ripple travels, by ladder length\n"
         "\n"
         "'jladder <command> --help' describes each command's options.\n",
         out);
@@ -39,6 +40,7 @@ int main(int argc, char** argv) {
     if (command == "run") return jl::cli::run(args);
     if (command == "bench") return jl::cli::bench(args);
     if (command == "export") return jl::cli::exportFrames(args);
+    if (command == "reach") return jl::cli::reach(args);
     std::fprintf(stderr, "jladder: unknown command '%s'\n", command.c_str());
     usage(stderr);
     return 2;
