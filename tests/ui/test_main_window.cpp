@@ -28,17 +28,6 @@ bool woodColoured(QColor c, QColor wood) {
     return std::abs(h - wood.hsvHueF() * 360) < 5 && s > 0.2f && c.valueF() > 0.3f;
 }
 
-// A capture may come back with a frame drawn just before the latest changes
-// reached the renderer; the second one in a row is drawn after them.
-QImage captureView(LadderView* view) {
-    QImage image;
-    for (int i = 0; i < 2; ++i) {
-        std::unique_ptr<Qt3DRender::QRenderCaptureReply> reply(view->capture()->requestCapture());
-        if (!QTest::qWaitFor([&] { return reply->isComplete(); }, 15000)) return {};
-        image = reply->image();
-    }
-    return image;
-}
 
 // Shows the window on the classic scene with its first frame simulated.
 bool showClassic(MainWindow& w) {
@@ -63,7 +52,7 @@ private slots:
         QCOMPARE(int(status->frame->blocks.size()), 6);
         QTest::qWait(300);  // a few rendered frames with the poses in place
 
-        const QImage image = captureView(w.ladderView());
+        const QImage image = jltest::captureView(w.ladderView());
         QVERIFY2(!image.isNull(), "no capture from the 3-D view");
         const double scale = double(image.width()) / w.ladderView()->width();
         const QColor wood(200, 162, 107);  // #c8a26b, the file's block colour
@@ -85,7 +74,7 @@ private slots:
         QTest::qWait(300);
         const QColor ribbon(40, 60, 140);  // the default ribbon colour
         auto ribbonPixels = [&] {
-            const QImage image = captureView(w.ladderView());
+            const QImage image = jltest::captureView(w.ladderView());
             int n = 0;
             for (int y = 0; y < image.height(); y += 2)
                 for (int x = 0; x < image.width(); x += 2) {
@@ -169,7 +158,7 @@ private slots:
             return s.recorded && s.recorded->ladder->overrides.size() == 1 && s.recorded->ladder->overrides[0].thickness && s.frame;
         }));
         QTest::qWait(300);
-        const QImage image = captureView(w.ladderView());
+        const QImage image = jltest::captureView(w.ladderView());
         const double scale = double(image.width()) / w.ladderView()->width();
         const auto frame = w.controller()->status()->frame;
         auto colourAt = [&](int block) { return image.pixelColor((w.ladderView()->pixelOf(frame->blocks[size_t(block)].position) * scale).toPoint()); };

@@ -142,9 +142,22 @@ private slots:
         QVERIFY(f.goTo(20));
         QTest::mouseMove(view, at + QPoint(80, -40));
         QVERIFY(f.goTo(30));
+        // The spring is drawn: a red line from the block to the hand.
+        auto redPixels = [&] {
+            const QImage image = jltest::captureView(view);
+            int n = 0;
+            for (int y = 0; y < image.height(); ++y)
+                for (int x = 0; x < image.width(); ++x) {
+                    const QColor c = image.pixelColor(x, y);
+                    n += c.red() > 180 && c.green() < 80 && c.blue() < 80;
+                }
+            return n;
+        };
+        QVERIFY2(redPixels() > 30, "no drag line drawn");
         QTest::mouseRelease(view, Qt::LeftButton, {}, at + QPoint(80, -40));
         QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return !s.dragging; }));
         QVERIFY(f.goTo(60));
+        QCOMPARE(redPixels(), 0);  // released: no line
         const auto s = f.sim->status();
         QCOMPARE(int(s->recorded->drags.size()), 1);
         QCOMPARE(s->recorded->drags[0].block, 3);

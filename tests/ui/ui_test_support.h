@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/scene_io.h"
+#include "ui/ladder_view.h"
 #include "ui/main_window.h"
 #include "ui/sim_controller.h"
 
@@ -10,6 +11,8 @@
 #include <QElapsedTimer>
 #include <QStandardPaths>
 #include <QTest>
+#include <Qt3DRender/QRenderCapture>
+#include <memory>
 
 namespace jltest {
 
@@ -52,6 +55,18 @@ inline std::uint64_t loadsSoFar(jlui::SimController* c) { return c->status()->lo
 // The simulation has built a scene posted after `before` loads and shows its first frame.
 inline bool loadedAfter(jlui::SimController* c, std::uint64_t before) {
     return waitForStatus(c, [before](const jlui::SimStatus& s) { return s.loadSerial > before && s.frame && s.failure.empty(); });
+}
+
+// A capture may come back with a frame drawn just before the latest changes
+// reached the renderer; the second one in a row is drawn after them.
+inline QImage captureView(jlui::LadderView* view) {
+    QImage image;
+    for (int i = 0; i < 2; ++i) {
+        std::unique_ptr<Qt3DRender::QRenderCaptureReply> reply(view->capture()->requestCapture());
+        if (!QTest::qWaitFor([&] { return reply->isComplete(); }, 15000)) return {};
+        image = reply->image();
+    }
+    return image;
 }
 
 }  // namespace jltest
