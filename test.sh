@@ -1,10 +1,32 @@
 #!/usr/bin/env bash
 # Install what is missing, build, and run every test with CTest under xvfb-run.
-# Slow suites (label "soak") run in a short form unless JL_SOAK=1.
+#
+# Before the main run, the sanitizers run in a short form (JL_SANITIZERS=0
+# skips them): AddressSanitizer + UndefinedBehaviorSanitizer over the engine,
+# the ladder, the scene loader and its mutation fuzzer; ThreadSanitizer over
+# the hand-off between the UI thread and the simulation thread. Slow suites
+# (label "hard") run their short forms; JL_SOAK=1 runs the long ones.
 set -euo pipefail
 cd "$(dirname "$0")"
 source tools/setup.sh
 jl_install
 jl_build build
-exec xvfb-run -a -s "-screen 0 1600x1000x24" \
-  ctest --test-dir build --output-on-failure --timeout 900
+
+xvfb() { xvfb-run -a -s "-screen 0 1600x1000x24" "$@"; }
+
+if [ "${JL_SANITIZERS:-1}" = 1 ]; then
+  echo "== AddressSanitizer + UndefinedBehaviorSanitizer (engine, ladder, loader, fuzz)"
+  jl_configure build-asan -DJL_SANITIZE_ADDRESS=ON -DJL_BUILD_UI=OFF
+  jl_compile build-asan
+  ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    ctest --test-dir build-asan --output-on-failure --timeout 900 -L "engine|ladder|io|fuzz"
+
+  echo "== ThreadSanitizer (the worker hand-off)"
+  jl_configure build-tsan -DJL_SANITIZE_THREAD=ON
+  jl_compile build-tsan test_worker_handoff
+  TSAN_OPTIONS="halt_on_error=1 suppressions=$PWD/tests/tsan/qt.supp" \
+    xvfb ctest --test-dir build-tsan --output-on-failure --timeout 900 -R '^test_worker_handoff$'
+fi
+
+echo "== Every test"
+exec xvfb ctest --test-dir build --output-on-failure --timeout 900

@@ -161,18 +161,19 @@ double Ladder::foldAngle(const World& w, int j) const {
 }
 
 double Ladder::foldAcceleration(const World& w, int j) const {
-    const int k = hinge(j).corner;
-    const Vec2 pin = cornerWorld(w, j - 1, k);
-    const double sense = cross(cornerWorld(w, j - 1, k ^ 1) - pin, cornerWorld(w, j - 1, k ^ 2) - pin) > 0 ? 1.0 : -1.0;
-    return sense * (w.a[3 * w.part(block(j)).body + 2] - w.a[3 * w.part(block(j - 1)).body + 2]);
+    return foldSense(w, j) * (w.a[3 * w.part(block(j)).body + 2] - w.a[3 * w.part(block(j - 1)).body + 2]);
 }
 
-// phi grows when block j turns against the sense of (d_a, n_a).
-double Ladder::foldRate(const World& w, int j) const {
+// +1 if phi grows as block j turns counter-clockwise relative to block j-1:
+// the sign of d_a x n_a, which flips with the hinge corner.
+double Ladder::foldSense(const World& w, int j) const {
     const int k = hinge(j).corner;
     const Vec2 pin = cornerWorld(w, j - 1, k);
-    const double sense = cross(cornerWorld(w, j - 1, k ^ 1) - pin, cornerWorld(w, j - 1, k ^ 2) - pin) > 0 ? 1.0 : -1.0;
-    return sense * (w.partVelocity(block(j)).angular - w.partVelocity(block(j - 1)).angular);
+    return cross(cornerWorld(w, j - 1, k ^ 1) - pin, cornerWorld(w, j - 1, k ^ 2) - pin) > 0 ? 1.0 : -1.0;
+}
+
+double Ladder::foldRate(const World& w, int j) const {
+    return foldSense(w, j) * (w.partVelocity(block(j)).angular - w.partVelocity(block(j - 1)).angular);
 }
 
 // Locked and folded pairs are rigid at exactly 0 and pi (snapped when they
@@ -330,11 +331,9 @@ void Ladder::eventFunctions(const World& w, const Dynamics& d, std::vector<doubl
 void Ladder::snap(World& w, int j, double target) {
     const double delta = target - foldAngle(w, j);
     if (delta == 0) return;
-    const int k = hinge(j).corner;
-    const Vec2 pin = cornerWorld(w, j - 1, k);
-    const double sense = cross(cornerWorld(w, j - 1, k ^ 1) - pin, cornerWorld(w, j - 1, k ^ 2) - pin) > 0 ? 1.0 : -1.0;
+    const Vec2 pin = cornerWorld(w, j - 1, hinge(j).corner);
     int b = w.part(block(j)).body;
-    double turn = sense * delta;
+    double turn = foldSense(w, j) * delta;
     if (w.body(b).kinematic) {  // the hand holds the lower side: turn the upper one
         b = w.part(block(j - 1)).body;
         turn = -turn;

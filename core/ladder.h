@@ -101,6 +101,7 @@ private:
     };
     Wrench internalWrench(const World& w, const Dynamics& d, int j, const Impact* impact) const;
     double foldAcceleration(const World& w, int j) const;
+    double foldSense(const World& w, int j) const;
     bool touchingLimit(const World& w, int j, bool folded, bool resting) const;
     std::vector<Event> impact(World& w, Dynamics& d, double t, const std::vector<int>& hits, double* loss,
                               double* heldWork, std::vector<int>* releasedNow);

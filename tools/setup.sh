@@ -30,12 +30,22 @@ jl_install() {
   fi
 }
 
-# jl_build DIR [cmake options...]: configure once, then build incrementally.
-jl_build() {
+# jl_configure DIR [cmake options...]: configure once (Release, Ninja).
+jl_configure() {
   local dir=$1; shift
   if [ ! -f "$dir/build.ninja" ]; then
     cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@"
   fi
-  # Two cores and heavy Qt headers: cap parallel jobs to what fits in memory.
-  cmake --build "$dir" -j "${JL_JOBS:-$(nproc)}"
+}
+
+# jl_compile DIR [targets...]: build incrementally, on every core.
+jl_compile() {
+  local dir=$1; shift
+  cmake --build "$dir" -j "${JL_JOBS:-$(nproc)}" ${1:+--target "$@"}
+}
+
+# jl_build DIR [cmake options...]: both, every target.
+jl_build() {
+  jl_configure "$@"
+  jl_compile "$1"
 }
