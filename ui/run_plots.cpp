@@ -1,0 +1,352 @@
+#include "ui/run_plots.h"
+
+#include "ui/time_chart.h"
+
+#include <QChart>
+#include <QCoreApplication>
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLayout>
+#include <QLineEdit>
+#include <QLineSeries>
+#include <QMessageBox>
+#include <QPainter>
+#include <QRegularExpression>
+#include <QSvgGenerator>
+#include <QToolButton>
+#include <QValueAxis>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace jlui {
+
+namespace {
+
+// Ten colours told apart by most eyes and projectors (Tableau 10).
+QColor curveColor(int i) {
+    static const QColor palette[] = {{31, 119, 180}, {255, 127, 14}, {44, 160, 44},  {214, 39, 40},  {148, 103, 189},
+                                     {140, 86, 75},  {227, 119, 194}, {127, 127, 127}, {188, 189, 34}, {23, 190, 207}};
+    return palette[size_t(i) % std::size(palette)];
+}
+
+struct EnergyLook {
+    QColor color;
+    qreal width;
+    Qt::PenStyle style;
+};
+
+EnergyLook energyLook(EnergyTrace t) {
+    switch (t) {
+    case EnergyTrace::Kinetic: return {{214, 39, 40}, 1.6, Qt::SolidLine};
+    case EnergyTrace::Potential: return {{31, 119, 180}, 1.6, Qt::SolidLine};
+    case EnergyTrace::Total: return {{20, 20, 20}, 2.4, Qt::SolidLine};
+    case EnergyTrace::ImpactLoss: return {{255, 127, 14}, 1.6, Qt::DashLine};
+    case EnergyTrace::DampingLoss: return {{140, 86, 75}, 1.6, Qt::DashLine};
+    case EnergyTrace::HeldWork: return {{44, 160, 44}, 1.6, Qt::DashDotLine};
+    case EnergyTrace::UserWork: return {{23, 190, 207}, 1.6, Qt::DashDotLine};
+    case EnergyTrace::Balance: return {{148, 103, 189}, 2.8, Qt::SolidLine};
+    case EnergyTrace::Count: break;
+    }
+    return {};
+}
+
+}  // namespace
+
+std::vector<int> parseIndexList(const QString& text, int lo, int hi) {
+    std::vector<int> out;
+    static const QRegularExpression item(R"((\d+)\s*(?:-\s*(\d+))?)");
+    for (auto it = item.globalMatch(text); it.hasNext();) {
+        const auto m = it.next();
+        const int a = m.captured(1).toInt(), b = m.captured(2).isEmpty() ? a : m.captured(2).toInt();
+        for (int i = std::max(lo, std::min(a, b)); i <= std::min(hi, std::max(a, b)) && out.size() < 64; ++i) out.push_back(i);
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
+QString indexListText(const std::vector<int>& indices) {
+    QStringList parts;
+    for (size_t i = 0; i < indices.size();) {
+        size_t j = i;
+        while (j + 1 < indices.size() && indices[j + 1] == indices[j] + 1) ++j;
+        parts << (j > i + 1 ? QString("%1-%2").arg(indices[i]).arg(indices[j]) : QString::number(indices[i]));
+        if (j == i + 1) parts << QString::number(indices[j]);
+        i = j + 1;
+    }
+    return parts.join(", ");
+}
+
+RunPlots::RunPlots(QWidget* parent) : QWidget(parent) {
+    setObjectName("plots");
+    auto* box = new QVBoxLayout(this);
+    box->setContentsMargins(2, 2, 2, 2);
+    box->setSpacing(2);
+    auto* row = new QHBoxLayout;
+    hingeField_ = new QLineEdit(this);
+    hingeField_->setObjectName("plotHinges");
+    hingeField_->setToolTip(tr("Hinges whose fold angle is plotted, e.g. 1-3, 5 (hinge j joins blocks j-1 and j)."));
+    blockField_ = new QLineEdit(this);
+    blockField_->setObjectName("plotBlocks");
+    blockField_->setToolTip(tr("Blocks whose angular speed is plotted, e.g. 0-2 (block 0 is the top one)."));
+    auto* exportButton = new QToolButton(this);
+    exportButton->setText(tr("Export..."));
+    exportButton->setToolTip(tr("Save the plots as a picture (PNG) or a drawing (SVG)."));
+    row->addWidget(new QLabel(tr("Hinges"), this));
+    row->addWidget(hingeField_, 1);
+    row->addWidget(new QLabel(tr("Blocks"), this));
+    row->addWidget(blockField_, 1);
+    row->addWidget(exportButton);
+    box->addLayout(row);
+
+    chartsArea_ = new QWidget(this);
+    auto* charts = new QVBoxLayout(chartsArea_);
+    charts->setContentsMargins(0, 0, 0, 0);
+    charts->setSpacing(0);
+    charts_[0] = new TimeChart(tr("Energy and its books"), tr("J"), chartsArea_);
+    charts_[1] = new TimeChart(tr("Fold angles"), tr("degrees"), chartsArea_);
+    charts_[2] = new TimeChart(tr("Angular speeds"), tr("rad/s"), chartsArea_);
+    // The admissible fold angles: open (0) to face to face (180).
+    charts_[1]->setValueRange(0, 180, 45);
+    for (TimeChart* c : charts_) {
+        charts->addWidget(c, 1);
+        connect(c, &TimeChart::seekRequested, this, &RunPlots::seekRequested);
+        // One time axis for the eye: the three plots keep the same left and right edges.
+        connect(c->chart(), &QChart::plotAreaChanged, this, [this] { QTimer::singleShot(0, this, &RunPlots::alignCharts); });
+    }
+    box->addWidget(chartsArea_, 1);
+    for (int t = 0; t < int(EnergyTrace::Count); ++t) {
+        const EnergyLook look = energyLook(EnergyTrace(t));
+        energyCurves_[size_t(t)] = charts_[0]->addCurve(traceName(EnergyTrace(t)), look.color, look.width, look.style);
+    }
+    // Damping and drags are usually absent: their curves start hidden, one click in the legend away.
+    charts_[0]->setCurveShown(energyCurves_[size_t(EnergyTrace::DampingLoss)], false);
+    charts_[0]->setCurveShown(energyCurves_[size_t(EnergyTrace::UserWork)], false);
+    rebuildChosenCurves();
+
+    refreshTimer_.setInterval(150);
+    refreshTimer_.setSingleShot(true);
+    connect(&refreshTimer_, &QTimer::timeout, this, &RunPlots::refresh);
+    // Before a run is recorded any index goes; after, only those that exist.
+    connect(hingeField_, &QLineEdit::editingFinished, this, [this] {
+        setChosen(parseIndexList(hingeField_->text(), 1, traces_.count() ? traces_.hingeCount() : 9999), blocks_);
+    });
+    connect(blockField_, &QLineEdit::editingFinished, this, [this] {
+        setChosen(hinges_, parseIndexList(blockField_->text(), 0, traces_.count() ? traces_.blockCount() - 1 : 9999));
+    });
+    connect(exportButton, &QToolButton::clicked, this, &RunPlots::exportDialog);
+}
+
+// A field losing the focus while the window closes must not touch charts being deleted.
+RunPlots::~RunPlots() {
+    hingeField_->disconnect(this);
+    blockField_->disconnect(this);
+}
+
+void RunPlots::setChosen(const std::vector<int>& hinges, const std::vector<int>& blocks) {
+    // The fields say they are finished whenever they lose the focus.
+    if (hinges == hinges_ && blocks == blocks_ && int(foldCurves_.size()) == int(hinges.size())) return;
+    hinges_ = hinges;
+    blocks_ = blocks;
+    rebuildChosenCurves();
+    refresh();
+}
+
+void RunPlots::rebuildChosenCurves() {
+    for (QLineSeries* s : foldCurves_) charts_[1]->chart()->removeSeries(s), delete s;
+    for (QLineSeries* s : speedCurves_) charts_[2]->chart()->removeSeries(s), delete s;
+    foldCurves_.clear();
+    speedCurves_.clear();
+    for (size_t i = 0; i < hinges_.size(); ++i)
+        foldCurves_.push_back(charts_[1]->addCurve(tr("hinge %1").arg(hinges_[i]), curveColor(int(i))));
+    for (size_t i = 0; i < blocks_.size(); ++i)
+        speedCurves_.push_back(charts_[2]->addCurve(tr("block %1").arg(blocks_[i]), curveColor(int(i))));
+    hingeField_->setText(indexListText(hinges_));
+    blockField_->setText(indexListText(blocks_));
+}
+
+double RunPlots::span() const {
+    // The time axis grows in whole steps, as the timeline's does, so it does not creep.
+    double s = duration_;
+    while (traces_.endTime() > s * 1.01) s *= 1.5;  // a last step a little past the end is not "past" it
+    return s;
+}
+
+void RunPlots::setDuration(double seconds) {
+    duration_ = std::max(0.1, seconds);
+    scheduleRefresh();
+}
+
+void RunPlots::scheduleRefresh() {
+    dirty_ = true;
+    if (!refreshTimer_.isActive()) refreshTimer_.start();
+}
+
+void RunPlots::append(const jl::Frame& frame) {
+    traces_.append(frame);
+    // A ladder of another size: choose hinges and blocks that exist.
+    if (traces_.hingeCount() != knownHinges_) {
+        knownHinges_ = traces_.hingeCount();
+        std::vector<int> h, b;
+        for (int j = 1; j <= std::min(5, knownHinges_); ++j) h.push_back(j);
+        for (int i = 0; i < std::min(3, traces_.blockCount()); ++i) b.push_back(i);
+        setChosen(h, b);
+    }
+    scheduleRefresh();
+}
+
+void RunPlots::setHistory(const std::vector<jl::Frame>& frames) {
+    traces_.clear();
+    for (const jl::Frame& f : frames) append(f);
+    refresh();
+}
+
+void RunPlots::setEvents(std::shared_ptr<const std::vector<jl::Event>> events) {
+    for (TimeChart* c : charts_) c->setEvents(events);
+}
+
+void RunPlots::setCursorTime(double t) {
+    for (TimeChart* c : charts_) c->setCursorTime(t);
+}
+
+void RunPlots::showStatus(const SimStatus& s) {
+    if (s.loadSerial != loadSerial_) {
+        loadSerial_ = s.loadSerial;
+        traces_.clear();
+        scheduleRefresh();
+    }
+    const double head = std::max(0, s.frameCount - 1) * s.interval;
+    if (traces_.count() > 0 && traces_.endTime() > head + s.interval * 0.5) {
+        traces_.truncateAfter(head + s.interval * 0.5);
+        scheduleRefresh();
+    }
+    if (s.frame && (traces_.count() == 0 || s.frame->time > traces_.endTime())) append(*s.frame);
+    setEvents(s.events);
+    setCursorTime(s.frame ? s.frame->time : 0);
+}
+
+void RunPlots::refresh() {
+    refreshTimer_.stop();
+    alignPasses_ = 0;
+    dirty_ = false;
+    const double t1 = span();
+    const std::vector<double>& t = traces_.time();
+    for (TimeChart* c : charts_) c->setTimeRange(0, t1);
+    auto buckets = [](TimeChart* c) { return std::max(100, int(c->chart()->plotArea().width())); };
+    // Millijoules for a wooden toy (0.02 kg blocks): the axis reads in whole numbers.
+    double largest = 0;
+    for (int e = 0; e < int(EnergyTrace::Count); ++e)
+        for (double v : traces_.energy(EnergyTrace(e))) largest = std::max(largest, std::abs(v));
+    energyScale_ = largest >= 1 ? 1.0 : largest >= 1e-3 || largest == 0 ? 1e3 : 1e6;
+    // The books in words: how far E strays from E0 + W - D over the whole run.
+    double books = 0;
+    for (double v : traces_.energy(EnergyTrace::Balance)) books = std::max(books, std::abs(v));
+    charts_[0]->chart()->setTitle(traces_.count() == 0 ? tr("Energy and its books")
+                                                        : tr("Energy and its books (they balance to %1 J)").arg(books, 0, 'g', 2));
+    charts_[0]->valueAxis()->setTitleText(energyScale_ == 1 ? tr("J") : energyScale_ == 1e3 ? tr("mJ") : tr("µJ"));
+    for (int e = 0; e < int(EnergyTrace::Count); ++e) {
+        std::vector<QPointF> pts = decimate(t, traces_.energy(EnergyTrace(e)), 0, t1, buckets(charts_[0]));
+        for (QPointF& p : pts) p.setY(p.y() * energyScale_);
+        charts_[0]->setPoints(energyCurves_[size_t(e)], pts);
+    }
+    for (size_t i = 0; i < hinges_.size(); ++i) {
+        std::vector<QPointF> pts;
+        if (hinges_[i] <= traces_.hingeCount()) pts = decimate(t, traces_.fold(hinges_[i]), 0, t1, buckets(charts_[1]));
+        for (QPointF& p : pts) p.setY(p.y() * (180 / std::numbers::pi));
+        charts_[1]->setPoints(foldCurves_[i], pts);
+    }
+    for (size_t i = 0; i < blocks_.size(); ++i) {
+        std::vector<QPointF> pts;
+        if (blocks_[i] < traces_.blockCount()) pts = decimate(t, traces_.angularSpeed(blocks_[i]), 0, t1, buckets(charts_[2]));
+        charts_[2]->setPoints(speedCurves_[i], pts);
+    }
+    charts_[0]->fitValues(1e-6 * energyScale_);
+    charts_[2]->fitValues(1);
+    charts_[1]->setVisible(traces_.hingeCount() > 0 || traces_.count() == 0);
+}
+
+void RunPlots::alignCharts() {
+    // Qt lays the axes out again after each change of margins, and label
+    // widths shift by a pixel or two: a few passes settle it, more chase noise.
+    if (++alignPasses_ > 4) return;
+    // Measure laid-out charts only: margins set a moment ago take effect at the next layout.
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    double left = -1e9, right = 1e9;
+    for (TimeChart* c : charts_)
+        if (c->isVisible()) left = std::max(left, c->naturalLeft()), right = std::min(right, c->naturalRight());
+    for (TimeChart* c : charts_)
+        if (c->isVisible()) c->setExtraMargins(left - c->naturalLeft(), c->naturalRight() - right);
+}
+
+void RunPlots::resizeEvent(QResizeEvent* e) {
+    QWidget::resizeEvent(e);
+    alignPasses_ = 0;
+}
+
+void RunPlots::setLarge(bool large) {
+    alignPasses_ = 0;
+    for (TimeChart* c : charts_) c->setLarge(large);
+}
+
+void RunPlots::settle() {
+    if (dirty_) refresh();
+    alignPasses_ = 0;
+    for (int pass = 0; pass < 4; ++pass) alignCharts();
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+}
+
+QImage RunPlots::renderImage(const QSize& size) {
+    QImage image(size, QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::white);
+    QPainter p(&image);
+    p.setRenderHint(QPainter::Antialiasing);
+    if (!chartsArea_->isVisible()) chartsArea_->resize(size);
+    settle();
+    const QSize area = chartsArea_->size();
+    p.scale(double(size.width()) / area.width(), double(size.height()) / area.height());
+    chartsArea_->render(&p, QPoint(), QRegion(), QWidget::DrawChildren);
+    return image;
+}
+
+bool RunPlots::savePng(const QString& path, const QSize& size, QString* error) {
+    if (renderImage(size).save(path, "PNG")) return true;
+    if (error) *error = tr("Could not write the picture %1.").arg(path);
+    return false;
+}
+
+bool RunPlots::saveSvg(const QString& path, const QSize& size, QString* error) {
+    QSvgGenerator svg;
+    svg.setFileName(path);
+    svg.setSize(size);
+    svg.setResolution(96);  // what browsers and slide programs take a pixel to be
+    svg.setViewBox(QRect(QPoint(), size));
+    svg.setTitle(tr("Jacob's ladder: energies, fold angles and angular speeds"));
+    if (!chartsArea_->isVisible()) chartsArea_->resize(size);
+    settle();
+    const QSize area = chartsArea_->size();
+    QPainter p;
+    if (!p.begin(&svg)) {
+        if (error) *error = tr("Could not write the drawing %1.").arg(path);
+        return false;
+    }
+    p.scale(double(size.width()) / area.width(), double(size.height()) / area.height());
+    chartsArea_->render(&p, QPoint(), QRegion(), QWidget::DrawChildren);
+    return p.end();
+}
+
+void RunPlots::exportDialog() {
+    QString filter;
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export the plots"), "plots.png",
+                                                      tr("PNG picture (*.png);;SVG drawing (*.svg)"), &filter);
+    if (path.isEmpty()) return;
+    QString error;
+    const QSize size = chartsArea_->size() * 2;
+    const bool ok = path.endsWith(".svg", Qt::CaseInsensitive) ? saveSvg(path, chartsArea_->size(), &error)
+                                                               : savePng(path, size, &error);
+    if (!ok) QMessageBox::warning(this, tr("Export the plots"), error);
+}
+
+}  // namespace jlui

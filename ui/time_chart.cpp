@@ -1,0 +1,215 @@
+#include "ui/time_chart.h"
+
+#include "ui/event_colors.h"
+
+#include <QChart>
+#include <QLegendMarker>
+#include <QLineSeries>
+#include <QMouseEvent>
+#include <QValueAxis>
+#include <algorithm>
+#include <cmath>
+
+namespace jlui {
+
+namespace {
+
+// Ticks at round numbers (1, 2 or 5 times a power of ten), four to eight of
+// them; the axis ends on ticks. Always the same for the
+// same range (QValueAxis::applyNiceNumbers also changes the tick count, so
+// calling it twice can give another axis).
+void setNiceRange(QValueAxis* axis, double lo, double hi) {
+    const double span = std::max(hi - lo, 1e-12);
+    const double rough = span / 5, power = std::pow(10.0, std::floor(std::log10(rough)));
+    double step = power;
+    for (double m : {1.0, 2.0, 5.0, 10.0})
+        if (m * power >= rough * 0.75) {
+            step = m * power;
+            break;
+        }
+    const double from = std::floor(lo / step + 1e-9) * step, to = std::ceil(hi / step - 1e-9) * step;
+    // Fixed ticks on multiples of the step (dynamic ticks ignore the label format in Qt 6.4).
+    axis->setTickType(QValueAxis::TicksFixed);
+    axis->setTickCount(int(std::lround((to - from) / step)) + 1);
+    axis->setRange(from, to);
+    // As many decimals as the step has, no more: 0.05 s, 45 degrees.
+    const int decimals = std::max(0, int(-std::floor(std::log10(step) + 1e-9)));
+    axis->setLabelFormat(QString("%.%1f").arg(decimals));
+}
+
+}  // namespace
+
+TimeChart::TimeChart(const QString& title, const QString& unit, QWidget* parent) : QChartView(new QChart, parent) {
+    setRenderHint(QPainter::Antialiasing);
+    setRubberBand(QChartView::NoRubberBand);
+    setMinimumHeight(150);
+    chart()->setTitle(title);
+    chart()->setMargins(QMargins(4, 2, 4, 2));
+    chart()->legend()->setAlignment(Qt::AlignRight);
+    chart()->setAnimationOptions(QChart::NoAnimation);
+    timeAxis_ = new QValueAxis(this);
+    timeAxis_->setTitleText(tr("t (s)"));
+
+    valueAxis_ = new QValueAxis(this);
+    valueAxis_->setTitleText(unit);
+
+    chart()->addAxis(timeAxis_, Qt::AlignBottom);
+    chart()->addAxis(valueAxis_, Qt::AlignLeft);
+    fonts_ = {chart()->titleFont(), chart()->legend()->font(), timeAxis_->labelsFont(), timeAxis_->titleFont()};
+    setToolTip(tr("Click to see that moment. Click a name in the legend to hide or show its curve."));
+}
+
+QLineSeries* TimeChart::addCurve(const QString& name, const QColor& color, qreal width, Qt::PenStyle style) {
+    auto* s = new QLineSeries(chart());
+    s->setName(name);
+    QPen pen(color, large_ ? width * 2 : width, style);
+    pen.setCapStyle(Qt::RoundCap);
+    s->setPen(pen);
+    chart()->addSeries(s);
+    s->attachAxis(timeAxis_);
+    s->attachAxis(valueAxis_);
+    // A legend entry toggles its curve: students compare two at a time.
+    for (QLegendMarker* m : chart()->legend()->markers(s))
+        connect(m, &QLegendMarker::clicked, this, [this, s] { setCurveShown(s, !s->isVisible()); });
+    return s;
+}
+
+void TimeChart::setCurveShown(QLineSeries* curve, bool shown) {
+    curve->setVisible(shown);
+    for (QLegendMarker* m : chart()->legend()->markers(curve)) {
+        m->setVisible(true);  // hiding a series hides its marker too; keep it to click again
+        QFont f = m->font();
+        f.setStrikeOut(!shown);
+        m->setFont(f);
+    }
+}
+
+void TimeChart::setPoints(QLineSeries* curve, const std::vector<QPointF>& points) {
+    curve->replace(QList<QPointF>(points.begin(), points.end()));
+}
+
+void TimeChart::setTimeRange(double t0, double t1) { setNiceRange(timeAxis_, t0, std::max(t1, t0 + 1e-3)); }
+
+void TimeChart::fitValues(double minSpan) {
+    if (fixedValues_) return;
+    double lo = INFINITY, hi = -INFINITY;
+    for (QAbstractSeries* a : chart()->series()) {
+        auto* s = static_cast<QLineSeries*>(a);
+        if (!s->isVisible()) continue;
+        for (const QPointF& p : s->points()) {
+            lo = std::min(lo, p.y());
+            hi = std::max(hi, p.y());
+        }
+    }
+    if (!(lo <= hi)) lo = hi = 0;
+    // A flat curve (the energy books) stays a flat line in the middle, not noise blown up.
+    const double mid = (lo + hi) / 2, half = std::max((hi - lo) / 2 * 1.05, minSpan / 2);
+    setNiceRange(valueAxis_, mid - half, mid + half);
+}
+
+void TimeChart::setValueRange(double lo, double hi, double tick) {
+    fixedValues_ = true;
+    valueAxis_->setTickType(QValueAxis::TicksFixed);
+    valueAxis_->setTickCount(int(std::lround((hi - lo) / tick)) + 1);
+    valueAxis_->setRange(lo, hi);
+    valueAxis_->setLabelFormat("%.0f");
+}
+
+void TimeChart::setCursorTime(double t) {
+    if (t == cursor_) return;
+    cursor_ = t;
+    viewport()->update();
+}
+
+void TimeChart::setEvents(std::shared_ptr<const std::vector<jl::Event>> events) {
+    if (events == events_) return;
+    events_ = std::move(events);
+    viewport()->update();
+}
+
+double TimeChart::naturalLeft() const { return chart()->plotArea().left() - extra_.first; }
+double TimeChart::naturalRight() const { return chart()->plotArea().right() + extra_.second; }
+
+void TimeChart::setExtraMargins(double left, double right) {
+    if (std::abs(left - extra_.first) < 0.5 && std::abs(right - extra_.second) < 0.5) return;
+    extra_ = {left, right};
+    chart()->setMargins(QMargins(4 + int(std::lround(left)), 2, 4 + int(std::lround(right)), 2));
+}
+
+void TimeChart::setLarge(bool large) {
+    if (large == large_) return;
+    large_ = large;
+    const double k = large ? 1.8 : 1.0;
+    auto scaled = [k](QFont f) {
+        f.setPointSizeF(f.pointSizeF() * k);
+        return f;
+    };
+    chart()->setTitleFont(scaled(fonts_.title));
+    chart()->legend()->setFont(scaled(fonts_.legend));
+    for (QValueAxis* a : {timeAxis_, valueAxis_}) {
+        a->setLabelsFont(scaled(fonts_.labels));
+        a->setTitleFont(scaled(fonts_.axisTitle));
+    }
+    for (QAbstractSeries* a : chart()->series()) {
+        auto* s = static_cast<QLineSeries*>(a);
+        QPen pen = s->pen();
+        pen.setWidthF(large ? pen.widthF() * 2 : pen.widthF() / 2);
+        s->setPen(pen);
+    }
+}
+
+QPointF TimeChart::viewPointOf(double t, double value) const {
+    return mapFromScene(chart()->mapToScene(chart()->mapToPosition(QPointF(t, value))));
+}
+
+double TimeChart::timeAtViewPoint(const QPointF& viewPoint) const {
+    return chart()->mapToValue(chart()->mapFromScene(mapToScene(viewPoint.toPoint()))).x();
+}
+
+void TimeChart::drawForeground(QPainter* painter, const QRectF& rect) {
+    QChartView::drawForeground(painter, rect);
+    const QRectF plot = chart()->mapToScene(chart()->plotArea()).boundingRect();
+    const double t0 = timeAxis_->min(), t1 = timeAxis_->max();
+    auto xOf = [&](double t) { return plot.left() + plot.width() * (t - t0) / (t1 - t0); };
+    painter->save();
+    painter->setRenderHint(QPainter::Antialiasing);
+    if (events_) {
+        // One mark per pixel column: a long ladder has thousands of events.
+        int lastColumn = -1;
+        for (const jl::Event& e : *events_) {
+            if (e.time < t0 || e.time > t1) continue;
+            const double x = xOf(e.time);
+            if (int(x) == lastColumn) continue;
+            lastColumn = int(x);
+            QColor c = eventColor(e.kind);
+            c.setAlpha(110);
+            painter->setPen(QPen(c, large_ ? 2.0 : 1.0));
+            painter->drawLine(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
+        }
+    }
+    if (cursor_ >= t0 && cursor_ <= t1) {
+        const double x = xOf(cursor_);
+        painter->setPen(QPen(QColor(200, 30, 30), large_ ? 3.0 : 1.6));
+        painter->drawLine(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
+    }
+    painter->restore();
+}
+
+void TimeChart::seekAt(const QPointF& viewPoint) {
+    const QRectF plot = chart()->plotArea();
+    const QPointF inChart = chart()->mapFromScene(mapToScene(viewPoint.toPoint()));
+    if (!plot.adjusted(-2, -2, 2, 2).contains(inChart)) return;
+    emit seekRequested(std::clamp(timeAtViewPoint(viewPoint), std::max(0.0, timeAxis_->min()), timeAxis_->max()));
+}
+
+void TimeChart::mousePressEvent(QMouseEvent* e) {
+    if (e->button() == Qt::LeftButton) seekAt(e->position());
+    QChartView::mousePressEvent(e);
+}
+
+void TimeChart::mouseMoveEvent(QMouseEvent* e) {
+    if (e->buttons() & Qt::LeftButton) seekAt(e->position());
+    QChartView::mouseMoveEvent(e);
+}
+
+}  // namespace jlui

@@ -1,0 +1,72 @@
+// One chart against simulated time: its curves, the events as marks, a
+// cursor at the frame on screen; a click in the plot asks to see that moment.
+#pragma once
+
+#include "core/frame.h"
+
+#include <QChartView>
+#include <QFont>
+#include <QPointF>
+#include <memory>
+#include <vector>
+
+class QLineSeries;
+class QValueAxis;
+
+namespace jlui {
+
+class TimeChart : public QChartView {
+    Q_OBJECT
+public:
+    explicit TimeChart(const QString& title, const QString& unit, QWidget* parent = nullptr);
+
+    // A curve of the chart; its points are set by setPoints.
+    QLineSeries* addCurve(const QString& name, const QColor& color, qreal width = 2.0, Qt::PenStyle style = Qt::SolidLine);
+    // Hidden curves keep their points; the legend shows them struck out.
+    void setCurveShown(QLineSeries* curve, bool shown);
+    void setPoints(QLineSeries* curve, const std::vector<QPointF>& points);
+    // The time axis [t0, t1]; the value axis fits what is drawn (at least `minSpan` high).
+    void setTimeRange(double t0, double t1);
+    void fitValues(double minSpan);
+    // A fixed value axis instead (fold angles: 0 to 180 degrees), ticks every `tick`.
+    void setValueRange(double lo, double hi, double tick);
+    void setCursorTime(double t);
+    void setEvents(std::shared_ptr<const std::vector<jl::Event>> events);
+    // Large fonts and lines for a projector (presentation mode).
+    void setLarge(bool large);
+
+    double timeAtViewPoint(const QPointF& viewPoint) const;
+    QPointF viewPointOf(double t, double value) const;
+    // Stacked charts line their plots up by widening their margins: where the
+    // plot's edges would be without that, and the widening to apply.
+    double naturalLeft() const;
+    double naturalRight() const;
+    void setExtraMargins(double left, double right);
+
+    QValueAxis* timeAxis() const { return timeAxis_; }
+    QValueAxis* valueAxis() const { return valueAxis_; }
+
+signals:
+    void seekRequested(double time);
+
+protected:
+    void drawForeground(QPainter* painter, const QRectF& rect) override;
+    void mousePressEvent(QMouseEvent* e) override;
+    void mouseMoveEvent(QMouseEvent* e) override;
+
+private:
+    void seekAt(const QPointF& viewPoint);
+
+    QValueAxis* timeAxis_;
+    QValueAxis* valueAxis_;
+    double cursor_ = 0;
+    bool large_ = false;
+    bool fixedValues_ = false;
+    std::pair<double, double> extra_{0, 0};
+    struct Fonts {
+        QFont title, legend, labels, axisTitle;
+    } fonts_;  // the theme's, scaled in presentation mode
+    std::shared_ptr<const std::vector<jl::Event>> events_;
+};
+
+}  // namespace jlui
