@@ -1,0 +1,333 @@
+#include "ui/side_view.h"
+
+#include "core/ladder.h"
+#include "core/world.h"
+
+#include <QPainter>
+#include <QPainterPath>
+#include <algorithm>
+#include <cmath>
+
+namespace jlui {
+
+namespace {
+
+const QColor kBackground(252, 252, 249);
+const QColor kGrid(232, 232, 226);
+const QColor kInk(40, 40, 46);
+
+// Text with a pale halo, readable on wood, ribbon and background alike.
+void haloText(QPainter& p, const QPointF& centre, const QString& text, const QColor& ink) {
+    const QFontMetricsF m(p.font());
+    const QRectF box(centre.x() - m.horizontalAdvance(text) / 2, centre.y() - m.height() / 2, m.horizontalAdvance(text),
+                     m.height());
+    QPainterPath path;
+    path.addText(box.left(), box.top() + m.ascent(), p.font(), text);
+    p.save();
+    p.setPen(QPen(QColor(255, 255, 255, 220), std::max(2.0, m.height() / 5), Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+    p.setBrush(Qt::NoBrush);
+    p.drawPath(path);
+    p.setPen(Qt::NoPen);
+    p.setBrush(ink);
+    p.drawPath(path);
+    p.restore();
+}
+
+void arrow(QPainter& p, const QPointF& from, const QPointF& to, double head) {
+    p.drawLine(from, to);
+    const QPointF d = to - from;
+    const double len = std::hypot(d.x(), d.y());
+    if (len < 1e-9) return;
+    const QPointF u = d / len, n(-u.y(), u.x());
+    p.drawPolygon(QPolygonF({to, to - u * head + n * head * 0.5, to - u * head - n * head * 0.5}));
+}
+
+}  // namespace
+
+QColor hingeColor(jl::HingeMode mode) {
+    switch (mode) {
+    case jl::HingeMode::Free: return {46, 160, 67};
+    case jl::HingeMode::OpenLocked: return {31, 100, 200};
+    case jl::HingeMode::Folded: return {220, 90, 20};
+    case jl::HingeMode::Cut: return {150, 150, 150};
+    }
+    return kInk;
+}
+
+// Plane (m, y up) to picture (pixels, y down): one scale for both axes, centred.
+struct SideView::Mapping {
+    double scale = 1;
+    QPointF origin;  // pixel of the plane's point (0, 0)
+    QPointF operator()(const jl::Vec2& v) const { return {origin.x() + scale * v.x(), origin.y() - scale * v.y()}; }
+    Mapping(const QRectF& plane, const QRectF& target) {
+        scale = std::min(target.width() / plane.width(), target.height() / plane.height());
+        const QPointF c = target.center(), pc = plane.center();
+        origin = {c.x() - scale * pc.x(), c.y() + scale * pc.y()};
+    }
+};
+
+SideView::SideView(QWidget* parent) : QWidget(parent) {
+    setObjectName("sideView");
+    setMinimumSize(200, 200);
+    setAttribute(Qt::WA_OpaquePaintEvent);
+    setToolTip(tr("The ladder seen from the side, as the paper draws it. Hinges: green free, blue locked open, "
+                  "orange folded."));
+}
+
+void SideView::setScene(const jl::Scene& scene) {
+    shapes_ = blockShapes(scene);
+    cornerLocal_.clear();
+    ladderBlocks_ = scene.ladder ? scene.ladder->blocks : 0;
+    firstParticle_ = int(shapes_.size() - scene.particles.size());
+    if (scene.ladder && !jl::Ladder::validate(*scene.ladder)) {
+        // The engine's own numbering (Ladder::cornerLocal), not a copy of its rule.
+        jl::World world;
+        const jl::Ladder ladder(world, *scene.ladder);
+        cornerLocal_.resize(size_t(ladder.blockCount()));
+        for (int i = 0; i < ladder.blockCount(); ++i)
+            for (int k = 0; k < 4; ++k) cornerLocal_[size_t(i)][size_t(k)] = ladder.cornerLocal(i, k);
+        ribbonColor_ = QColor(scene.ladder->ribbons.color.r, scene.ladder->ribbons.color.g, scene.ladder->ribbons.color.b);
+        ribbonThickness_ = scene.ladder->ribbons.thickness;
+    }
+    frame_ = {};
+    resetFraming();
+}
+
+void SideView::setOptions(const SideViewOptions& o) {
+    options_ = o;
+    update();
+}
+
+std::array<jl::Vec2, 4> SideView::corners(int block) const {
+    const jl::Pose& pose = frame_.blocks[size_t(block)];
+    std::array<jl::Vec2, 4> out;
+    if (block < int(cornerLocal_.size())) {
+        for (int k = 0; k < 4; ++k) out[size_t(k)] = pose.apply(cornerLocal_[size_t(block)][size_t(k)]);
+        return out;
+    }
+    // Bodies and particles: a box across local x, along local y, corners in drawing order.
+    const BlockShape& s = shapes_[size_t(block)];
+    const double a = s.across / 2, l = s.along / 2;
+    const jl::Vec2 local[4] = {{-a, -l}, {-a, l}, {a, -l}, {a, l}};
+    for (int k = 0; k < 4; ++k) out[size_t(k)] = pose.apply(local[k]);
+    return out;
+}
+
+QRectF SideView::extentOf(const jl::Frame& f) const {
+    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+    const size_t n = std::min(f.blocks.size(), shapes_.size());
+    for (size_t i = 0; i < n; ++i) {
+        // The circumscribed circle: the extent does not depend on the angle.
+        const double r = std::hypot(shapes_[i].across, shapes_[i].along) / 2;
+        const jl::Vec2& c = f.blocks[i].position;
+        x0 = std::min(x0, c.x() - r), x1 = std::max(x1, c.x() + r);
+        y0 = std::min(y0, c.y() - r), y1 = std::max(y1, c.y() + r);
+    }
+    if (!(x0 <= x1)) return {};
+    return QRectF(QPointF(x0, y0), QPointF(x1, y1));
+}
+
+void SideView::resetFraming() {
+    framing_ = {};
+    if (!frame_.blocks.empty()) growFraming(extentOf(frame_));
+    update();
+}
+
+void SideView::setFraming(const QRectF& plane) {
+    framing_ = plane.normalized();
+    update();
+}
+
+void SideView::growFraming(const QRectF& need) {
+    if (need.isEmpty() || framing_.contains(need)) return;
+    QRectF r = framing_.isEmpty() ? need : framing_.united(need);
+    // Grow with room to spare, so a swinging ladder changes scale seldom.
+    const double pad = 0.12 * std::max(r.width(), r.height());
+    r.adjust(-pad, -pad, pad, pad);
+    // A hanging ladder is tall and thin; show its surroundings too.
+    if (r.width() < 0.75 * r.height()) {
+        const double grow = (0.75 * r.height() - r.width()) / 2;
+        r.adjust(-grow, 0, grow, 0);
+    }
+    framing_ = r;
+}
+
+void SideView::showFrame(const jl::Frame& frame) {
+    frame_ = frame;
+    growFraming(extentOf(frame_));
+    update();
+}
+
+QPointF SideView::pixelOf(const jl::Vec2& point, const QRectF& target) const {
+    if (framing_.isEmpty()) return target.center();
+    return Mapping(framing_, target)(point);
+}
+
+QImage SideView::render(const QSize& size) const {
+    QImage image(size, QImage::Format_ARGB32_Premultiplied);
+    QPainter p(&image);
+    paint(p, QRectF(QPointF(0, 0), QSizeF(size)));
+    return image;
+}
+
+void SideView::paintEvent(QPaintEvent*) {
+    QPainter p(this);
+    paint(p, rect());
+}
+
+void SideView::paint(QPainter& p, const QRectF& target) const {
+    p.save();
+    p.setRenderHint(QPainter::Antialiasing);
+    p.setRenderHint(QPainter::TextAntialiasing);
+    p.fillRect(target, kBackground);
+    if (framing_.isEmpty() || frame_.blocks.empty()) {
+        p.restore();
+        return;
+    }
+    const Mapping map(framing_, target);
+    const double ui = options_.scale * std::max(1.0, std::min(target.width(), target.height()) / 700);
+    QFont font = p.font();
+    font.setPixelSize(int(std::lround(12 * ui)));
+
+    // A 5 cm grid: the scale of the picture at a glance.
+    const double cell = 0.05;
+    p.setPen(QPen(kGrid, 1));
+    for (double x = std::floor((framing_.left() - 1) / cell) * cell; x <= framing_.right() + 1; x += cell) {
+        const double px = map(jl::Vec2(x, 0)).x();
+        if (px >= target.left() && px <= target.right()) p.drawLine(QPointF(px, target.top()), QPointF(px, target.bottom()));
+    }
+    for (double y = std::floor((framing_.top() - 1) / cell) * cell; y <= framing_.bottom() + 1; y += cell) {
+        const double py = map(jl::Vec2(0, y)).y();
+        if (py >= target.top() && py <= target.bottom()) p.drawLine(QPointF(target.left(), py), QPointF(target.right(), py));
+    }
+
+    const int n = int(std::min(frame_.blocks.size(), shapes_.size()));
+    // Blocks first, ribbons over their faces, hinges and words on top.
+    for (int i = 0; i < std::min(n, firstParticle_); ++i) {
+        const auto c = corners(i);
+        // Corners 0,1 share a side and 2,3 the other: walk 0-1-3-2 round the block.
+        const QPolygonF poly({map(c[0]), map(c[1]), map(c[3]), map(c[2])});
+        const QColor wood = shapes_[size_t(i)].color;
+        const bool held = i < int(frame_.held.size()) && frame_.held[size_t(i)];
+        p.setPen(QPen(held ? kInk : wood.darker(170), (held ? 2.2 : 1.1) * ui, Qt::SolidLine, Qt::SquareCap, Qt::MiterJoin));
+        p.setBrush(wood);
+        p.drawPolygon(poly);
+    }
+    for (int i = firstParticle_; i < n; ++i) {
+        p.setPen(QPen(kInk, 1 * ui));
+        p.setBrush(shapes_[size_t(i)].color);
+        p.drawEllipse(map(frame_.blocks[size_t(i)].position), 4.5 * ui, 4.5 * ui);
+    }
+    if (options_.ribbons) {
+        const double w = std::max(1.6 * ui, ribbonThickness_ * map.scale);
+        p.setPen(QPen(ribbonColor_, w, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        p.setBrush(Qt::NoBrush);
+        for (const jl::RibbonFrame& r : frame_.ribbons) {
+            if (!r.visible || r.points.size() < 2) continue;
+            QPolygonF line;
+            for (const jl::Vec2& v : r.points) line << map(v);
+            p.drawPolyline(line);
+        }
+    }
+
+    // Labels only where a block is big enough on screen to carry them.
+    const double blockPixels = shapes_.empty() ? 0 : shapes_.front().along * map.scale;
+    if (options_.orientation && blockPixels > 24) {
+        p.setPen(QPen(kInk, 1.4 * ui));
+        p.setBrush(kInk);
+        for (int i = 0; i < std::min(n, int(cornerLocal_.size())); ++i) {
+            const auto c = corners(i);
+            const jl::Vec2 centre = frame_.blocks[size_t(i)].position;
+            const jl::Vec2 along = (c[1] - c[0]) * 0.3;  // corner 0 towards corner 1: the lengthwise orientation
+            arrow(p, map(centre - along), map(centre + along), 7 * ui);
+        }
+    }
+    if (options_.cornerNumbers && blockPixels > 40) {
+        QFont small = font;
+        small.setPixelSize(int(std::lround(9.5 * ui)));
+        p.setFont(small);
+        for (int i = 0; i < std::min(n, int(cornerLocal_.size())); ++i) {
+            const auto c = corners(i);
+            const jl::Vec2 centre = frame_.blocks[size_t(i)].position;
+            // Inside the block near each corner: a little in from the end, a
+            // quarter of the thickness in from the side, so the numbers of two
+            // blocks meeting at a hinge do not overlap.
+            const jl::Vec2 along = (c[1] - c[0]).normalized(), across = (c[2] - c[0]).normalized();
+            const double inset = 10 * ui / map.scale;
+            for (int k = 0; k < 4; ++k) {
+                const jl::Vec2 r = c[size_t(k)] - centre;
+                const double a = r.dot(along), b = r.dot(across);
+                const jl::Vec2 spot = centre + along * (a - std::copysign(std::min(inset, std::abs(a)), a)) + across * (b * 0.5);
+                const QPointF at = map(spot);
+                haloText(p, at, QString::number(k), QColor(90, 40, 120));
+            }
+        }
+    }
+    if (options_.blockNumbers && blockPixels > 16) {
+        QFont bold = font;
+        bold.setBold(true);
+        p.setFont(bold);
+        const int every = std::max(1, int(std::ceil(bold.pixelSize() * 1.6 / std::max(1.0, blockPixels))));
+        for (int i = 0; i < std::min(n, firstParticle_); i += every) {
+            const QPointF at = map(frame_.blocks[size_t(i)].position);
+            // Beside the arrow when both are asked for.
+            const QPointF shift = options_.orientation ? QPointF(0, -bold.pixelSize() * 0.9) : QPointF();
+            haloText(p, at + shift, QString::number(i), kInk);
+        }
+    }
+
+    const double r = std::clamp(blockPixels * 0.06, 3.5, 8.0) * ui;
+    for (const jl::HingeFrame& h : frame_.hinges) {
+        p.setPen(QPen(Qt::white, 1.2 * ui));
+        p.setBrush(hingeColor(h.mode));
+        p.drawEllipse(map(h.position), r, r);
+    }
+    if (frame_.dragging) {
+        p.setPen(QPen(QColor(200, 30, 30), 2 * ui, Qt::DashLine, Qt::RoundCap));
+        p.drawLine(map(frame_.dragFrom), map(frame_.dragTo));
+        p.setBrush(QColor(200, 30, 30));
+        p.setPen(Qt::NoPen);
+        p.drawEllipse(map(frame_.dragTo), 4 * ui, 4 * ui);
+    }
+
+    p.setFont(font);
+    const QFontMetricsF m(font);
+    const double pad = 8 * ui;
+    if (options_.clock) {
+        p.setPen(kInk);
+        p.drawText(QPointF(target.left() + pad, target.top() + pad + m.ascent()), tr("t = %1 s").arg(frame_.time, 0, 'f', 3));
+    }
+    // The scale bar: 5 cm.
+    {
+        const QPointF a(target.left() + pad, target.bottom() - pad), b = a + QPointF(cell * map.scale, 0);
+        p.setPen(QPen(kInk, 1.5 * ui));
+        p.drawLine(a, b);
+        p.drawLine(a, a - QPointF(0, 4 * ui));
+        p.drawLine(b, b - QPointF(0, 4 * ui));
+        p.drawText(QPointF(b.x() + 4 * ui, a.y()), tr("5 cm"));
+    }
+    if (options_.legend && !frame_.hinges.empty()) {
+        const std::pair<jl::HingeMode, QString> items[] = {{jl::HingeMode::Free, tr("free")},
+                                                            {jl::HingeMode::OpenLocked, tr("locked open")},
+                                                            {jl::HingeMode::Folded, tr("folded")}};
+        double width = 0;
+        for (const auto& [mode, text] : items) width = std::max(width, m.horizontalAdvance(text));
+        const double line = m.height() * 1.25, boxW = width + 3.2 * line, boxH = line * 3 + pad;
+        const QRectF box(target.right() - pad - boxW, target.top() + pad, boxW, boxH);
+        p.setPen(QPen(kGrid.darker(120), 1));
+        p.setBrush(QColor(255, 255, 255, 230));
+        p.drawRoundedRect(box, 4 * ui, 4 * ui);
+        double y = box.top() + pad / 2 + line / 2;
+        for (const auto& [mode, text] : items) {
+            p.setPen(QPen(Qt::white, 1.2 * ui));
+            p.setBrush(hingeColor(mode));
+            p.drawEllipse(QPointF(box.left() + line * 0.8, y), r, r);
+            p.setPen(kInk);
+            p.drawText(QPointF(box.left() + line * 1.6, y + m.ascent() / 2 - m.descent() / 2), text);
+            y += line;
+        }
+    }
+    p.restore();
+}
+
+}  // namespace jlui

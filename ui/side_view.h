@@ -1,0 +1,79 @@
+// The 2-D side view: the ladder as the paper draws it (blocks, hinges
+// coloured by mode, corner numbers, orientation arrows, ribbons, the drag
+// line), painted with QPainter so it works without OpenGL and offscreen.
+#pragma once
+
+#include "core/frame.h"
+#include "core/scene.h"
+#include "ui/block_shapes.h"
+
+#include <QImage>
+#include <QRectF>
+#include <QWidget>
+#include <array>
+#include <vector>
+
+namespace jlui {
+
+struct SideViewOptions {
+    bool blockNumbers = true;
+    bool cornerNumbers = false;  // the paper's 0..3 (k^1 along, k^2 across)
+    bool orientation = false;    // lengthwise orientation: corner 0 towards corner 1
+    bool ribbons = true;
+    bool legend = true;
+    bool clock = true;           // "t = 0.700 s" in a corner
+    double scale = 1.0;          // fonts and lines; 2 or more for a projector
+};
+
+class SideView : public QWidget {
+    Q_OBJECT
+public:
+    explicit SideView(QWidget* parent = nullptr);
+
+    // Sizes, colours and corner positions of the blocks come from the scene
+    // (frames carry only poses); the framing starts afresh.
+    void setScene(const jl::Scene& scene);
+    void showFrame(const jl::Frame& frame);
+    const jl::Frame& frame() const { return frame_; }
+    void setOptions(const SideViewOptions& o);
+    const SideViewOptions& options() const { return options_; }
+
+    // The part of the plane shown (m). It grows to keep every block in view
+    // and never shrinks by itself, so the picture does not jump about.
+    QRectF framing() const { return framing_; }
+    void setFraming(const QRectF& plane);
+    void resetFraming();
+    // Everything frame `f` occupies in the plane (m).
+    QRectF extentOf(const jl::Frame& f) const;
+
+    // Draws the current frame into `target` (any paint device: the widget,
+    // an image, an SVG file).
+    void paint(QPainter& p, const QRectF& target) const;
+    QImage render(const QSize& size) const;
+    // Where a point of the plane lands in a picture of `target` (for tests and hints).
+    QPointF pixelOf(const jl::Vec2& point, const QRectF& target) const;
+
+    QSize sizeHint() const override { return {420, 560}; }
+
+protected:
+    void paintEvent(QPaintEvent*) override;
+
+private:
+    struct Mapping;
+    std::array<jl::Vec2, 4> corners(int block) const;  // in the plane, numbered as the engine numbers them
+    void growFraming(const QRectF& need);
+
+    std::vector<BlockShape> shapes_;
+    std::vector<std::array<jl::Vec2, 4>> cornerLocal_;  // ladder blocks, from jl::Ladder
+    int ladderBlocks_ = 0, firstParticle_ = 0;
+    QColor ribbonColor_{40, 60, 140};
+    double ribbonThickness_ = 0.0005;
+    jl::Frame frame_;
+    QRectF framing_;
+    SideViewOptions options_;
+};
+
+// Hinge colours by mode, used by the side view and its legend.
+QColor hingeColor(jl::HingeMode mode);
+
+}  // namespace jlui
