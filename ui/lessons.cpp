@@ -1,0 +1,101 @@
+#include "ui/lessons.h"
+
+#include "core/scene_io.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFileInfo>
+#include <QTextBrowser>
+#include <QVBoxLayout>
+#include <algorithm>
+
+namespace jlui {
+
+namespace {
+
+// The order the issue tells the story in; files not named here come after.
+const char* const kTeachingOrder[] = {"classic",  "wrong-way", "back-and-forth",        "heavy-middle",
+                                      "long-ladder", "pendulum", "particles-and-springs", "falling-chain"};
+
+int rank(const QString& baseName) {
+    const auto it = std::find(std::begin(kTeachingOrder), std::end(kTeachingOrder), baseName.toStdString());
+    return int(it - std::begin(kTeachingOrder));
+}
+
+}  // namespace
+
+QString lessonsDirectory() {
+    QStringList tries;
+    if (const QString env = qEnvironmentVariable("JL_EXAMPLES"); !env.isEmpty()) tries << env;
+    const QString app = QCoreApplication::applicationDirPath();
+    tries << app + "/../share/jacobs-ladder/examples" << app + "/../examples" << app + "/../../examples";
+#ifdef JL_SOURCE_DIR
+    tries << QString(JL_SOURCE_DIR) + "/examples";
+#endif
+    for (const QString& d : tries)
+        if (QDir(d).exists() && !QDir(d).entryList({"*.yaml"}, QDir::Files).isEmpty()) return QDir(d).canonicalPath();
+    return {};
+}
+
+std::vector<Lesson> findLessons(const QString& directory) {
+    std::vector<Lesson> out;
+    if (directory.isEmpty()) return out;
+    const QDir dir(directory);
+    for (const QFileInfo& f : dir.entryInfoList({"*.yaml"}, QDir::Files, QDir::Name)) {
+        const jl::SceneLoad load = jl::loadScene(f.absoluteFilePath().toStdString());
+        if (!load.scene) continue;  // a broken example is not a lesson
+        Lesson l{f.absoluteFilePath(), QString::fromStdString(load.scene->title),
+                 QString::fromStdString(load.scene->description).trimmed()};
+        if (l.title.isEmpty()) l.title = f.completeBaseName();
+        out.push_back(std::move(l));
+    }
+    std::stable_sort(out.begin(), out.end(), [](const Lesson& a, const Lesson& b) {
+        return rank(QFileInfo(a.path).completeBaseName()) < rank(QFileInfo(b.path).completeBaseName());
+    });
+    return out;
+}
+
+LessonsMenu::LessonsMenu(const std::vector<Lesson>& lessons, QWidget* parent) : QMenu(tr("&Lessons"), parent) {
+    setObjectName("lessonsMenu");
+    setToolTipsVisible(true);
+    for (const Lesson& l : lessons) {
+        QAction* a = addAction(l.title);
+        a->setToolTip(l.description);
+        a->setStatusTip(l.description);
+        a->setData(l.path);
+        connect(a, &QAction::triggered, this, [this, path = l.path] { emit openRequested(path); });
+    }
+    if (lessons.empty()) addAction(tr("(no example scenes found)"))->setEnabled(false);
+}
+
+LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
+    setObjectName("lessonPanel");
+    auto* box = new QVBoxLayout(this);
+    box->setContentsMargins(0, 0, 0, 0);
+    text_ = new QTextBrowser(this);
+    text_->setObjectName("lessonText");
+    text_->setOpenLinks(false);
+    box->addWidget(text_);
+}
+
+void LessonPanel::showScene(const jl::Scene& scene) {
+    const QString title = QString::fromStdString(scene.title).toHtmlEscaped();
+    QString description = QString::fromStdString(scene.description).trimmed().toHtmlEscaped();
+    description.replace("\n\n", "</p><p>");
+    if (title.isEmpty() && description.isEmpty()) {
+        text_->setHtml(tr("<p><i>This scene has no title or description. Add them in the scene file "
+                          "(<tt>title:</tt> and <tt>description:</tt>) to make it a lesson.</i></p>"));
+        return;
+    }
+    text_->setHtml(QString("<h3>%1</h3><p>%2</p>").arg(title, description));
+}
+
+void LessonPanel::setLarge(bool large) {
+    QFont f = text_->font();
+    f.setPointSizeF(large ? 18 : QFont().pointSizeF());
+    text_->setFont(f);
+}
+
+QString LessonPanel::text() const { return text_->toPlainText(); }
+
+}  // namespace jlui

@@ -1,0 +1,52 @@
+// Lessons: the example scenes with their titles and descriptions, a menu
+// that opens them, and a panel that shows the open scene's description.
+#pragma once
+
+#include "core/scene.h"
+
+#include <QMenu>
+#include <QString>
+#include <QWidget>
+#include <vector>
+
+class QTextBrowser;
+
+namespace jlui {
+
+struct Lesson {
+    QString path;         // the scene file
+    QString title;        // its `title`, else the file name
+    QString description;  // its `description`
+};
+
+// Where the example scenes are: $JL_EXAMPLES, else next to the program
+// (installed or in the build tree), else the source tree it was built from.
+QString lessonsDirectory();
+// The scenes of `directory` that load, in teaching order (the classic
+// cascade first, then the variations, then whatever else is there).
+std::vector<Lesson> findLessons(const QString& directory);
+
+// The Lessons menu: one entry per lesson, its description as the tooltip.
+class LessonsMenu : public QMenu {
+    Q_OBJECT
+public:
+    explicit LessonsMenu(const std::vector<Lesson>& lessons, QWidget* parent = nullptr);
+
+signals:
+    void openRequested(const QString& path);
+};
+
+// Beside the view: what the open scene is about, in the author's words.
+class LessonPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit LessonPanel(QWidget* parent = nullptr);
+    void showScene(const jl::Scene& scene);
+    void setLarge(bool large);
+    QString text() const;
+
+private:
+    QTextBrowser* text_;
+};
+
+}  // namespace jlui

@@ -1,0 +1,72 @@
+#include "ui/presentation_mode.h"
+
+#include <QAction>
+#include <QDockWidget>
+#include <QKeyEvent>
+#include <QMainWindow>
+#include <QMenuBar>
+#include <QStatusBar>
+#include <QToolBar>
+
+namespace jlui {
+
+PresentationMode::PresentationMode(QMainWindow* window, QStringList keepDocks)
+    : QObject(window), window_(window), keepDocks_(std::move(keepDocks)) {}
+
+void PresentationMode::setActive(bool on) {
+    if (on == active_) return;
+    active_ = on;
+    on ? enter() : leave();
+    emit activeChanged(on);
+}
+
+void PresentationMode::enter() {
+    windowState_ = window_->windowState();
+    font_ = window_->font();
+    QFont big = font_;
+    big.setPointSizeF(font_.pointSizeF() * kFontScale);
+    window_->setFont(big);
+    hidden_.clear();
+    QList<QWidget*> chrome{window_->menuBar(), window_->statusBar()};
+    for (QToolBar* t : window_->findChildren<QToolBar*>()) chrome << t;
+    for (QDockWidget* d : window_->findChildren<QDockWidget*>())
+        if (!keepDocks_.contains(d->objectName())) chrome << d;
+    for (QWidget* w : chrome)
+        if (w && w->isVisible()) {
+            w->hide();
+            hidden_ << w;
+        }
+    // Shortcuts of actions that lived only in the hidden menus and toolbars
+    // die with them: the window itself carries them while presenting.
+    lifted_.clear();
+    for (QAction* a : window_->findChildren<QAction*>())
+        if (!a->shortcuts().isEmpty() && !window_->actions().contains(a)) lifted_ << a;
+    window_->addActions(lifted_);
+    window_->installEventFilter(this);
+    window_->showFullScreen();
+}
+
+void PresentationMode::leave() {
+    window_->removeEventFilter(this);
+    for (QAction* a : lifted_) window_->removeAction(a);
+    lifted_.clear();
+    for (const QPointer<QWidget>& w : hidden_)
+        if (w) w->show();
+    hidden_.clear();
+    window_->setFont(font_);
+    window_->setWindowState(windowState_);
+}
+
+bool PresentationMode::eventFilter(QObject* watched, QEvent* e) {
+    // Escape always leaves, whatever has the focus.
+    if (e->type() == QEvent::ShortcutOverride || e->type() == QEvent::KeyPress) {
+        if (static_cast<QKeyEvent*>(e)->key() == Qt::Key_Escape) {
+            if (e->type() == QEvent::KeyPress) setActive(false);
+            e->accept();
+            return true;
+        }
+    }
+    return QObject::eventFilter(watched, e);
+}
+
+}  // namespace jlui

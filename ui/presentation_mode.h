@@ -1,0 +1,50 @@
+// Presentation mode: full screen, large fonts and lines, minimal chrome, the
+// keyboard in charge, for a teacher in front of a projector.
+#pragma once
+
+#include <QFont>
+#include <QList>
+#include <QObject>
+#include <QPointer>
+#include <QStringList>
+
+class QAction;
+class QMainWindow;
+class QWidget;
+
+namespace jlui {
+
+class PresentationMode : public QObject {
+    Q_OBJECT
+public:
+    // `keepDocks`: object names of the docks that stay in view (the rest hide).
+    PresentationMode(QMainWindow* window, QStringList keepDocks);
+
+    bool active() const { return active_; }
+    void setActive(bool on);
+    void toggle() { setActive(!active_); }
+    // Fonts in presentation mode are this many times the normal size.
+    static constexpr double kFontScale = 1.6;
+
+signals:
+    // Views and plots connect here to draw large (SideView scale, RunPlots::setLarge).
+    void activeChanged(bool on);
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* e) override;
+
+private:
+    void enter();
+    void leave();
+
+    QMainWindow* window_;
+    QStringList keepDocks_;
+    bool active_ = false;
+    // What entering changed, to put back exactly on leaving.
+    Qt::WindowStates windowState_;
+    QFont font_;
+    QList<QPointer<QWidget>> hidden_;
+    QList<QAction*> lifted_;
+};
+
+}  // namespace jlui
