@@ -1,0 +1,146 @@
+#include "ui/exporter.h"
+
+#include "core/event_csv.h"
+#include "core/simulation.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QProcess>
+#include <QSaveFile>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QWidget>
+#include <cmath>
+#include <sstream>
+
+namespace jlui {
+
+namespace {
+
+ExportResult failed(const QString& why) { return {false, why, {}}; }
+
+// Poses of a whole range fit in memory unless the ladder is huge; then the
+// side view frames as it goes (growing, never shrinking).
+constexpr double kMaxPosesInMemory = 4e6;
+
+}  // namespace
+
+ExportResult Exporter::screenshot(QWidget* widget, const QString& path) {
+    if (!widget) return failed(QObject::tr("There is nothing to take a picture of."));
+    if (!widget->grab().save(path, "PNG")) return failed(QObject::tr("Could not write the picture %1.").arg(path));
+    return {true, {}, {path}};
+}
+
+ExportResult Exporter::sideViewPicture(const jl::Scene& scene, const jl::Frame& frame, const QSize& size,
+                                       const SideViewOptions& look, const QString& path) {
+    SideView view;
+    view.setOptions(look);
+    view.setScene(scene);
+    view.showFrame(frame);
+    if (!view.render(size).save(path, "PNG")) return failed(QObject::tr("Could not write the picture %1.").arg(path));
+    return {true, {}, {path}};
+}
+
+int Exporter::frameCount(double from, double to, double fps) {
+    if (!(fps > 0) || !(to >= from)) return 0;
+    return int(std::floor((to - from) * fps + 1e-9)) + 1;
+}
+
+ExportResult Exporter::imageSequence(const jl::Scene& scene, const SequenceRequest& r) {
+    const int total = frameCount(r.from, r.to, r.fps);
+    if (total == 0) return failed(QObject::tr("The time range is empty: choose an end after the start and a positive frame rate."));
+    if (r.size.isEmpty()) return failed(QObject::tr("The picture size is empty."));
+    if (!QDir().mkpath(r.directory)) return failed(QObject::tr("Could not make the folder %1.").arg(r.directory));
+    auto built = jl::Simulation::build(scene);
+    if (!built.simulation) {
+        return failed(QObject::tr("The scene does not build: %1")
+                          .arg(QString::fromStdString(built.errors.empty() ? std::string() : built.errors.front())));
+    }
+    jl::Simulation& sim = *built.simulation;
+
+    SideView view;
+    view.setOptions(r.look);
+    view.setScene(scene);
+    // Frame i of the range is the state after advancing to from + i / fps,
+    // as the timeline's frames are.
+    auto frameAt = [&](int i, jl::Frame& out) {
+        if (!sim.advanceTo(r.from + i / r.fps)) return false;
+        out = sim.frame();
+        return true;
+    };
+    std::vector<jl::Frame> frames;
+    const bool twoPasses = !r.painter && double(total) * sim.blockCount() <= kMaxPosesInMemory;
+    if (twoPasses) {
+        // First the whole range, so one framing holds every picture.
+        frames.resize(size_t(total));
+        QRectF all;
+        for (int i = 0; i < total; ++i) {
+            if (!frameAt(i, frames[size_t(i)])) return failed(QString::fromStdString(sim.failure()));
+            all = all.united(view.extentOf(frames[size_t(i)]));
+        }
+        view.setFraming(all.adjusted(-0.1 * all.width(), -0.06 * all.height(), 0.1 * all.width(), 0.06 * all.height()));
+    }
+    ExportResult result{true, {}, {}};
+    for (int i = 0; i < total; ++i) {
+        jl::Frame f;
+        if (twoPasses) f = std::move(frames[size_t(i)]);
+        else if (!frameAt(i, f)) return failed(QObject::tr("The run stopped at %1 s: %2").arg(sim.time()).arg(QString::fromStdString(sim.failure())));
+        QImage picture;
+        if (r.painter) {
+            picture = r.painter(f);
+        } else {
+            view.showFrame(f);
+            picture = view.render(r.size);
+        }
+        const QString path = QDir(r.directory).filePath(QString("frame_%1.png").arg(i, 5, 10, QChar('0')));
+        if (!picture.save(path, "PNG")) return failed(QObject::tr("Could not write the picture %1.").arg(path));
+        result.files << path;
+        if (r.progress && !r.progress(i + 1, total)) return failed(QObject::tr("Cancelled after %1 of %2 pictures.").arg(i + 1).arg(total));
+    }
+    return result;
+}
+
+ExportResult Exporter::eventsCsv(const std::vector<jl::Event>& events, const QString& path) {
+    std::ostringstream text;
+    jl::writeEventsCsv(text, events);
+    QSaveFile file(path);
+    const std::string bytes = text.str();
+    if (!file.open(QIODevice::WriteOnly) || file.write(bytes.data(), qint64(bytes.size())) != qint64(bytes.size()) ||
+        !file.commit())
+        return failed(QObject::tr("Could not write %1: %2").arg(path, file.errorString()));
+    return {true, {}, {path}};
+}
+
+QString Exporter::ffmpeg() { return QStandardPaths::findExecutable("ffmpeg"); }
+
+ExportResult Exporter::video(const jl::Scene& scene, SequenceRequest request, const QString& videoPath) {
+    const QString program = ffmpeg();
+    if (program.isEmpty()) {
+        return failed(QObject::tr("Making a video needs ffmpeg, which is not installed on this computer. "
+                                  "Install it (for example \"sudo apt install ffmpeg\") or export an image sequence "
+                                  "instead and make the video elsewhere."));
+    }
+    QTemporaryDir pictures;
+    if (!pictures.isValid()) return failed(QObject::tr("Could not make a temporary folder for the pictures."));
+    request.directory = pictures.path();
+    // H.264 wants even sizes.
+    request.size = QSize(request.size.width() / 2 * 2, request.size.height() / 2 * 2);
+    const ExportResult frames = imageSequence(scene, request);
+    if (!frames.ok) return frames;
+    QStringList args{"-y", "-loglevel", "error", "-framerate", QString::number(request.fps), "-i",
+                     QDir(pictures.path()).filePath("frame_%05d.png")};
+    if (QFileInfo(videoPath).suffix().compare("mp4", Qt::CaseInsensitive) == 0)
+        args << "-c:v" << "libx264" << "-pix_fmt" << "yuv420p";
+    args << videoPath;
+    QProcess process;
+    process.start(program, args);
+    if (!process.waitForStarted()) return failed(QObject::tr("ffmpeg did not start: %1").arg(process.errorString()));
+    process.waitForFinished(-1);
+    if (process.exitStatus() != QProcess::NormalExit || process.exitCode() != 0) {
+        return failed(QObject::tr("ffmpeg could not make the video: %1")
+                          .arg(QString::fromLocal8Bit(process.readAllStandardError()).trimmed()));
+    }
+    return {true, {}, {videoPath}};
+}
+
+}  // namespace jlui

@@ -1,0 +1,62 @@
+// Exports of a run for slides and reports: a screenshot, a sequence of PNG
+// frames over a time range, a video made from them by ffmpeg, the event log as CSV.
+#pragma once
+
+#include "core/frame.h"
+#include "core/scene.h"
+#include "ui/side_view.h"
+
+#include <QImage>
+#include <QSize>
+#include <QString>
+#include <QStringList>
+#include <functional>
+#include <vector>
+
+class QWidget;
+
+namespace jlui {
+
+struct ExportResult {
+    bool ok = false;
+    QString error;      // in words, when !ok
+    QStringList files;  // what was written
+};
+
+// Turns a frame into a picture (the 3-D view can be plugged in here).
+using FramePainter = std::function<QImage(const jl::Frame&)>;
+
+struct SequenceRequest {
+    double from = 0, to = 1;  // s, both ends included when on the grid
+    double fps = 30;          // pictures per simulated second
+    QSize size{1280, 720};
+    QString directory;        // frame_00000.png, frame_00001.png, ...
+    SideViewOptions look{};   // for the side view, when no painter is given
+    FramePainter painter;     // optional: draws each frame instead of the side view
+    std::function<bool(int done, int total)> progress;  // false cancels
+};
+
+class Exporter {
+public:
+    // A picture of a widget as it is on screen.
+    static ExportResult screenshot(QWidget* widget, const QString& path);
+    // The side view of one frame.
+    static ExportResult sideViewPicture(const jl::Scene& scene, const jl::Frame& frame, const QSize& size,
+                                        const SideViewOptions& look, const QString& path);
+
+    // How many pictures a range makes: one at from, then every 1/fps up to to.
+    static int frameCount(double from, double to, double fps);
+    // Re-runs the scene (its script and recorded drags: the same run as on
+    // screen, deterministically) without a display and saves each picture.
+    static ExportResult imageSequence(const jl::Scene& scene, const SequenceRequest& request);
+
+    // The event log as CSV (core/event_csv.h), written atomically.
+    static ExportResult eventsCsv(const std::vector<jl::Event>& events, const QString& path);
+
+    // Where ffmpeg is, or empty when it is not installed.
+    static QString ffmpeg();
+    // The sequence, then ffmpeg (H.264 in MP4, or whatever the suffix asks for).
+    static ExportResult video(const jl::Scene& scene, SequenceRequest request, const QString& videoPath);
+};
+
+}  // namespace jlui
