@@ -1,0 +1,428 @@
+// labels: ui
+// Teaching and analysis: the plots draw the engine's numbers and the energy
+// books balance, clicks seek, the side view draws blocks where the engine
+// says they are, exports write what they promise, lessons list the examples.
+#include "ui_test_support.h"
+
+#include "core/simulation.h"
+#include "ui/events_panel.h"
+#include "ui/exporter.h"
+#include "ui/lessons.h"
+#include "ui/pacing.h"
+#include "ui/run_plots.h"
+#include "ui/side_view.h"
+#include "ui/time_chart.h"
+
+#include <QDir>
+#include <QLineSeries>
+#include <QListWidget>
+#include <QSignalSpy>
+#include <QSvgRenderer>
+#include <QTemporaryDir>
+#include <QValueAxis>
+#include <QtTest>
+#include <cmath>
+#include <numbers>
+
+using namespace jlui;
+
+namespace {
+
+QString example(const char* name) { return QString(JL_SOURCE_DIR) + "/examples/" + name; }
+
+jl::Scene loadExample(const char* name) {
+    const jl::SceneLoad load = jl::loadScene(example(name).toStdString());
+    if (!load.scene) qFatal("%s does not load", name);
+    return *load.scene;
+}
+
+// The engine's frames at the scene's frame interval, as the timeline records them.
+struct Run {
+    std::vector<jl::Frame> frames;
+    std::vector<jl::Event> events;
+};
+Run runHeadless(const jl::Scene& scene, double until) {
+    auto built = jl::Simulation::build(scene);
+    if (!built.simulation) qFatal("the scene does not build");
+    Run r;
+    const double dt = scene.solver.frameInterval;
+    for (int i = 0; i * dt <= until + 1e-12; ++i) {
+        built.simulation->advanceTo(i * dt);
+        r.frames.push_back(built.simulation->frame());
+        for (const jl::Event& e : r.frames.back().events) r.events.push_back(e);
+    }
+    return r;
+}
+
+bool near(const QColor& a, const QColor& b, int tolerance = 4) {
+    return std::abs(a.red() - b.red()) <= tolerance && std::abs(a.green() - b.green()) <= tolerance &&
+           std::abs(a.blue() - b.blue()) <= tolerance;
+}
+
+QString colorText(const QColor& c) { return QString("(%1, %2, %3)").arg(c.red()).arg(c.green()).arg(c.blue()); }
+
+}  // namespace
+
+class TeachingTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { jltest::isolateSettings(); }
+
+    void energyCurvesAreTheEnginesNumbers() {
+        const jl::Scene scene = loadExample("classic.yaml");
+        const Run run = runHeadless(scene, 1.0);
+        RunPlots plots;
+        plots.resize(900, 700);
+        plots.setHistory(run.frames);
+        for (int t = 0; t < int(EnergyTrace::Count); ++t) {
+            const QList<QPointF> pts = plots.energyCurve(EnergyTrace(t))->points();
+            // 61 samples are fewer than the plot has pixels: every one is drawn as it is.
+            QCOMPARE(pts.size(), int(run.frames.size()));
+            for (size_t i = 0; i < run.frames.size(); ++i) {
+                const jl::EnergyFrame& e = run.frames[i].energy;
+                const double expected[] = {e.kinetic, e.potential, e.total(), e.impactLoss,
+                                           e.dampingLoss, e.heldWork, e.userWork, e.balance()};
+                QCOMPARE(pts[int(i)].x(), run.frames[i].time);
+                QCOMPARE(pts[int(i)].y(), expected[t] * plots.energyScale());
+            }
+        }
+        QCOMPARE(plots.energyScale(), 1e3);  // drawn in mJ: a 6-block toy holds a fraction of a joule
+        QCOMPARE(plots.energyChart()->valueAxis()->titleText(), QString("mJ"));
+        // The hand turns the top block: it does work and the impacts take some.
+        QVERIFY(run.frames.back().energy.heldWork > 1e-3);
+        QVERIFY(run.frames.back().energy.impactLoss > 1e-4);
+        // Fold angles are drawn in degrees.
+        const auto* hinge1 = static_cast<QLineSeries*>(plots.foldChart()->chart()->series().first());
+        QCOMPARE(hinge1->name(), QString("hinge 1"));
+        QVERIFY(std::abs(hinge1->points()[30].y() - run.frames[30].hinges[0].foldAngle * (180 / std::numbers::pi)) < 1e-12);
+    }
+
+    void theEnergyBooksBalanceToAFlatLineInTheClassicCascade() {
+        jl::Scene scene = loadExample("classic.yaml");
+        QCOMPARE(scene.ladder->hinges.damping, 0.0);
+        QCOMPARE(scene.angularDamping, 0.0);
+        const Run run = runHeadless(scene, scene.duration);
+        QVERIFY(run.events.size() >= 10);  // the cascade happened: folds and flips all the way down
+        RunPlots plots;
+        plots.resize(900, 700);
+        plots.setHistory(run.frames);
+        const QList<QPointF> books = plots.energyCurve(EnergyTrace::Balance)->points();
+        QVERIFY(books.size() > 100);
+        double worst = 0, swing = 0;
+        const double joules = 1 / plots.energyScale();
+        for (const QPointF& p : books) worst = std::max(worst, std::abs(p.y()) * joules);
+        const QList<QPointF> total = plots.energyCurve(EnergyTrace::Total)->points();
+        for (const QPointF& p : total) swing = std::max(swing, std::abs(p.y() - total.front().y()) * joules);
+        QVERIFY2(worst < 1e-6, qPrintable(QString("the books are off by %1 J").arg(worst)));
+        // ...while the energy itself changes by far more: the flat line says something.
+        QVERIFY(swing > 1e-2);
+    }
+
+    void decimationKeepsEveryPeakOfALongRun() {
+        std::vector<double> t(200000), y(200000, 1.0);
+        for (size_t i = 0; i < t.size(); ++i) t[i] = i * 1e-4;
+        y[123457] = 7.0;  // one sample wide
+        y[54321] = -3.0;
+        const auto pts = decimate(t, y, 0, 20, 500);
+        QVERIFY(pts.size() <= 4 * 500 + 2);
+        double hi = -1e9, lo = 1e9;
+        for (size_t i = 0; i < pts.size(); ++i) {
+            hi = std::max(hi, pts[i].y()), lo = std::min(lo, pts[i].y());
+            if (i > 0) QVERIFY(pts[i].x() > pts[i - 1].x());
+        }
+        QCOMPARE(hi, 7.0);
+        QCOMPARE(lo, -3.0);
+    }
+
+    void clickingAPlotSeeksToThatTime() {
+        const Run run = runHeadless(loadExample("classic.yaml"), 1.5);
+        RunPlots plots;
+        plots.resize(900, 700);
+        plots.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&plots));
+        plots.setHistory(run.frames);
+        QTest::qWait(50);  // the charts lay out their new axes
+        QSignalSpy seeks(&plots, &RunPlots::seekRequested);
+        for (TimeChart* chart : {plots.energyChart(), plots.foldChart(), plots.speedChart()}) {
+            const QPoint at = chart->viewPointOf(0.7, chart->valueAxis()->min() * 0.5 + chart->valueAxis()->max() * 0.5).toPoint();
+            QTest::mouseClick(chart->viewport(), Qt::LeftButton, {}, at);
+            QVERIFY(!seeks.isEmpty());
+            const double t = seeks.takeLast().at(0).toDouble();
+            // Within the time one pixel spans.
+            const double pixel = (chart->timeAxis()->max() - chart->timeAxis()->min()) / chart->chart()->plotArea().width();
+            QVERIFY2(std::abs(t - 0.7) < 1.5 * pixel, qPrintable(QString("%2: asked for 0.7 s, got %1 s").arg(t).arg(chart->chart()->title())));
+        }
+        // A click beside the plot (on the axis labels) asks for nothing.
+        QTest::mouseClick(plots.energyChart()->viewport(), Qt::LeftButton, {}, QPoint(2, 2));
+        QVERIFY(seeks.isEmpty());
+    }
+
+    void clickingAnEventInTheLogSeeksToIt() {
+        const Run run = runHeadless(loadExample("classic.yaml"), 1.0);
+        QVERIFY(run.events.size() >= 3);
+        EventsPanel panel;
+        panel.resize(400, 500);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        panel.setEvents(std::make_shared<const std::vector<jl::Event>>(run.events));
+        auto* list = panel.findChild<QListWidget*>("events");
+        QCOMPARE(list->count(), int(run.events.size()));
+        // Each entry says when and what, in words.
+        QCOMPARE(list->item(2)->text(), QString("%1 s: %2").arg(run.events[2].time, 0, 'f', 3).arg(QString::fromStdString(run.events[2].text)));
+        QVERIFY(!run.events[2].text.empty());
+        QSignalSpy seeks(&panel, &EventsPanel::seekRequested);
+        list->scrollToItem(list->item(2));
+        QTest::mouseClick(list->viewport(), Qt::LeftButton, {}, list->visualItemRect(list->item(2)).center());
+        QCOMPARE(seeks.size(), 1);
+        QCOMPARE(seeks.first().at(0).toDouble(), run.events[2].time);
+    }
+
+    void theSideViewDrawsEachBlockWhereTheEngineSaysItIs() {
+        const jl::Scene scene = loadExample("classic.yaml");
+        const Run run = runHeadless(scene, 0.7);
+        const jl::Frame& f = run.frames.back();
+        // The ladder has moved from where it hung: the check is not of a still picture.
+        QVERIFY((f.blocks[3].position - run.frames.front().blocks[3].position).norm() > 0.01);
+        SideView view;
+        SideViewOptions look;
+        look.blockNumbers = false;  // the number would sit on the centre pixel
+        view.setOptions(look);
+        view.setScene(scene);
+        view.showFrame(f);
+        const QSize size(600, 800);
+        const QImage image = view.render(size);
+        QCOMPARE(image.size(), size);
+        const QColor wood(200, 162, 107);  // "#c8a26b" in classic.yaml
+        const QRectF target(QPointF(0, 0), QSizeF(size));
+        for (size_t i = 0; i < f.blocks.size(); ++i) {
+            const QPoint at = view.pixelOf(f.blocks[i].position, target).toPoint();
+            QVERIFY(image.rect().contains(at));
+            const QColor c = image.pixelColor(at);
+            QVERIFY2(near(c, wood), qPrintable(QString("block %1 at %2,%3 is %4").arg(i).arg(at.x()).arg(at.y()).arg(colorText(c))));
+        }
+        // Well outside the ladder: the background (or a grid line), never wood.
+        // The middle of the framing's left or right edge, whichever is further from every block.
+        const QRectF shown = view.framing();
+        auto clearance = [&f](const jl::Vec2& p) {
+            double d = 1e9;
+            for (const jl::Pose& b : f.blocks) d = std::min(d, (b.position - p).norm());
+            return d;
+        };
+        const jl::Vec2 left(shown.left() + 0.05 * shown.width(), shown.center().y());
+        const jl::Vec2 right(shown.right() - 0.05 * shown.width(), shown.center().y());
+        const jl::Vec2 away = clearance(left) > clearance(right) ? left : right;
+        QVERIFY2(clearance(away) > 0.05, qPrintable(QString::number(clearance(away))));
+        const QPoint awayPixel = view.pixelOf(away, target).toPoint();
+        QVERIFY(image.rect().contains(awayPixel));
+        const QColor c = image.pixelColor(awayPixel);
+        QVERIFY2(near(c, QColor(252, 252, 249)) || near(c, QColor(232, 232, 226)), qPrintable(colorText(c)));
+        // Hinges are drawn in the colour of their mode.
+        int checked = 0;
+        for (const jl::HingeFrame& h : f.hinges) {
+            bool alone = true;
+            for (const jl::HingeFrame& o : f.hinges)
+                if (&o != &h && (o.position - h.position).norm() < 0.006) alone = false;
+            if (!alone) continue;
+            const QColor hc = image.pixelColor(view.pixelOf(h.position, target).toPoint());
+            QVERIFY2(near(hc, hingeColor(h.mode), 6), qPrintable(QString("%1 hinge is %2").arg(jl::toString(h.mode)).arg(colorText(hc))));
+            ++checked;
+        }
+        QVERIFY(checked >= 3);
+    }
+
+    void theSideViewUsesTheEnginesCornerNumbers() {
+        // Hinge j sits at corner 0 (j odd) or 3 (j even) of both blocks: the
+        // view's corner k of block j must be where the engine puts hinge j.
+        const jl::Scene scene = loadExample("classic.yaml");
+        const Run run = runHeadless(scene, 0.0);
+        SideView view;
+        view.setScene(scene);
+        view.showFrame(run.frames.front());
+        const QRectF target(0, 0, 600, 800);
+        for (size_t j = 1; j <= run.frames.front().hinges.size(); ++j) {
+            const jl::HingeFrame& h = run.frames.front().hinges[j - 1];
+            QCOMPARE(h.corner, j % 2 == 1 ? 0 : 3);
+        }
+        // Drawn with corner numbers and arrows, the picture still renders (and differs).
+        const QImage plain = view.render(target.size().toSize());
+        SideViewOptions all;
+        all.cornerNumbers = all.orientation = true;
+        view.setOptions(all);
+        QVERIFY(view.render(target.size().toSize()) != plain);
+    }
+
+    void exportsWriteWhatTheyPromise() {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const jl::Scene scene = loadExample("classic.yaml");
+        const Run run = runHeadless(scene, 0.7);
+
+        // A picture of the side view.
+        const QString shot = dir.filePath("side.png");
+        QVERIFY(Exporter::sideViewPicture(scene, run.frames.back(), QSize(640, 480), {}, shot).ok);
+        QCOMPARE(QImage(shot).size(), QSize(640, 480));
+
+        // An image sequence: 0.5 s to 1.0 s at 20 pictures a second is 11 pictures.
+        SequenceRequest r;
+        r.from = 0.5, r.to = 1.0, r.fps = 20, r.size = QSize(320, 240), r.directory = dir.filePath("seq");
+        QCOMPARE(Exporter::frameCount(r.from, r.to, r.fps), 11);
+        const ExportResult seq = Exporter::imageSequence(scene, r);
+        QVERIFY2(seq.ok, qPrintable(seq.error));
+        QCOMPARE(seq.files.size(), 11);
+        QCOMPARE(QDir(r.directory).entryList({"*.png"}, QDir::Files).size(), 11);
+        for (const QString& f : seq.files) QCOMPARE(QImage(f).size(), QSize(320, 240));
+        // The pictures follow the motion.
+        QVERIFY(QImage(seq.files.first()) != QImage(seq.files.last()));
+
+        // A painter of one's own (the 3-D view's capture) gets the engine's frames.
+        std::vector<double> times;
+        r.directory = dir.filePath("custom");
+        r.painter = [&times](const jl::Frame& f) {
+            times.push_back(f.time);
+            QImage i(64, 48, QImage::Format_RGB32);
+            i.fill(Qt::black);
+            return i;
+        };
+        QVERIFY(Exporter::imageSequence(scene, r).ok);
+        QCOMPARE(int(times.size()), 11);
+        QVERIFY(times.front() >= 0.5 && times.front() < 0.5 + scene.solver.step * 1.01);
+
+        // The event log as CSV: a header and one row per event, times that read back exactly.
+        const ExportResult csv = Exporter::eventsCsv(run.events, dir.filePath("events.csv"));
+        QVERIFY2(csv.ok, qPrintable(csv.error));
+        QFile file(dir.filePath("events.csv"));
+        QVERIFY(file.open(QIODevice::ReadOnly | QIODevice::Text));
+        const QStringList rows = QString::fromUtf8(file.readAll()).split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(rows.size(), int(run.events.size()) + 1);
+        QCOMPARE(rows.front(), QString("t,hinge,event,corner,text"));
+        for (size_t i = 0; i < run.events.size(); ++i) {
+            const QStringList cells = rows[int(i) + 1].split(',');
+            QVERIFY(cells.size() >= 5);  // the text may hold commas (quoted)
+            QCOMPARE(cells[0].toDouble(), run.events[i].time);
+            QCOMPARE(cells[1].toInt(), run.events[i].hinge);
+            QCOMPARE(cells[2], QString(jl::toString(run.events[i].kind)));
+        }
+
+        // The plots as PNG and SVG.
+        RunPlots plots;
+        plots.resize(800, 600);
+        plots.setHistory(run.frames);
+        QString error;
+        QVERIFY(plots.savePng(dir.filePath("plots.png"), QSize(1000, 800), &error));
+        QCOMPARE(QImage(dir.filePath("plots.png")).size(), QSize(1000, 800));
+        QVERIFY(plots.saveSvg(dir.filePath("plots.svg"), QSize(800, 600), &error));
+        QSvgRenderer svg(dir.filePath("plots.svg"));
+        QVERIFY(svg.isValid());
+        QCOMPARE(svg.viewBox(), QRect(0, 0, 800, 600));
+
+        // A video needs ffmpeg; without it the answer says so in words.
+        r.painter = {};
+        const ExportResult video = Exporter::video(scene, r, dir.filePath("run.mp4"));
+        if (Exporter::ffmpeg().isEmpty()) {
+            QVERIFY(!video.ok);
+            QVERIFY(video.error.contains("ffmpeg"));
+            QVERIFY(video.error.contains("not installed"));
+        } else {
+            QVERIFY2(video.ok, qPrintable(video.error));
+            QVERIFY(QFileInfo(dir.filePath("run.mp4")).size() > 0);
+        }
+    }
+
+    void lessonsListTheExamplesWithTitlesInTeachingOrder() {
+        const std::vector<Lesson> lessons = findLessons(QString(JL_SOURCE_DIR) + "/examples");
+        QCOMPARE(int(lessons.size()), int(QDir(QString(JL_SOURCE_DIR) + "/examples").entryList({"*.yaml"}).size()));
+        QCOMPARE(lessons.front().title, QString("The classic cascade"));
+        QCOMPARE(QFileInfo(lessons[1].path).fileName(), QString("wrong-way.yaml"));
+        for (const Lesson& l : lessons) {
+            QVERIFY(!l.title.isEmpty());
+            QVERIFY2(l.description.size() > 40, qPrintable(l.path));
+        }
+        LessonsMenu menu(lessons);
+        QSignalSpy open(&menu, &LessonsMenu::openRequested);
+        QCOMPARE(menu.actions().size(), int(lessons.size()));
+        menu.actions().at(3)->trigger();
+        QCOMPARE(open.size(), 1);
+        QCOMPARE(open.first().at(0).toString(), lessons[3].path);
+
+        LessonPanel panel;
+        panel.showScene(loadExample("classic.yaml"));
+        QVERIFY(panel.text().contains("The classic cascade"));
+        QVERIFY(panel.text().contains("flip-flop"));
+    }
+
+    void runToTheNextEventShowsTheFrameAfterIt() {
+        const jl::Scene scene = loadExample("classic.yaml");
+        const Run run = runHeadless(scene, 1.0);
+        QVERIFY(!run.events.empty());
+        SimController sim;
+        Pacing pacing(&sim);
+        const auto before = jltest::loadsSoFar(&sim);
+        sim.load(scene);
+        QVERIFY(jltest::loadedAfter(&sim, before));
+        const double dt = scene.solver.frameInterval;
+        // Nothing recorded yet: it simulates on until the first event happens.
+        pacing.runToNextEvent();
+        const int first = int(std::ceil(run.events[0].time / dt - 1e-9));
+        QVERIFY(jltest::waitForStatus(&sim, [&](const SimStatus& s) { return !pacing.seekingEvent() && s.frameIndex == first; }));
+        // The next one after the frame on screen (the first may share a frame with others).
+        const jl::Event* next = nullptr;
+        for (const jl::Event& e : run.events)
+            if (e.time > sim.status()->frame->time + 1e-9) { next = &e; break; }
+        QVERIFY(next);
+        pacing.runToNextEvent();
+        const int second = int(std::ceil(next->time / dt - 1e-9));
+        QVERIFY(jltest::waitForStatus(&sim, [&](const SimStatus& s) { return !pacing.seekingEvent() && s.frameIndex == second; }));
+        QVERIFY(!sim.status()->playing);
+    }
+
+    void aLoopReturnsToItsStart() {
+        SimController sim;
+        Pacing pacing(&sim);
+        const auto before = jltest::loadsSoFar(&sim);
+        sim.load(jltest::swingingLadder());
+        QVERIFY(jltest::loadedAfter(&sim, before));
+        pacing.setLoop(0.1, 0.3);
+        sim.setSpeed(2.0);
+        sim.play();
+        double latest = 0;
+        bool wrapped = false;
+        QVERIFY(jltest::waitForStatus(&sim, [&](const SimStatus& s) {
+            if (s.frame->time < latest - 0.1) wrapped = true;
+            latest = s.frame->time;
+            return wrapped && s.frame->time > 0.15;
+        }, 10000));
+        sim.pause();
+        QVERIFY(latest < 0.3 + 0.2);
+    }
+
+    // Not a check: with JL_DOCS_DIR set, writes the pictures of docs/.
+    void writesTheDocumentationPictures() {
+        const QString out = qEnvironmentVariable("JL_DOCS_DIR");
+        if (out.isEmpty()) QSKIP("JL_DOCS_DIR not set");
+        const jl::Scene scene = loadExample("classic.yaml");
+        const Run whole = runHeadless(scene, scene.duration);
+        // Near 0.7 s, the frame with the most hinges locked or folded: the picture shows every colour it can.
+        int at = int(std::lround(0.7 / scene.solver.frameInterval)), most = -1;
+        for (int i = int(0.62 / scene.solver.frameInterval); i <= int(0.78 / scene.solver.frameInterval); ++i) {
+            int held = 0;
+            for (const jl::HingeFrame& h : whole.frames[size_t(i)].hinges) held += h.mode != jl::HingeMode::Free;
+            if (held > most) most = held, at = i;
+        }
+        SideViewOptions look;
+        look.cornerNumbers = look.orientation = true;
+        QVERIFY(Exporter::sideViewPicture(scene, whole.frames[size_t(at)], QSize(900, 1000), look, out + "/side-view.png").ok);
+        RunPlots plots;
+        plots.resize(1000, 900);
+        plots.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&plots));
+        plots.setDuration(scene.duration);
+        plots.setHistory(whole.frames);
+        plots.setEvents(std::make_shared<const std::vector<jl::Event>>(whole.events));
+        plots.setCursorTime(0.7);
+        QString error;
+        QVERIFY2(plots.savePng(out + "/plots.png", QSize(1000, 900), &error), qPrintable(error));
+    }
+};
+
+QTEST_MAIN(TeachingTest)
+#include "test_teaching.moc"
