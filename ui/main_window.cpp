@@ -261,7 +261,12 @@ void MainWindow::onSceneChanged(SceneChange change) {
     ladderPanel_->refresh();
     simulationPanel_->refresh();
     scriptPanel_->refresh();
+    // An edit shows its effect at the moment on screen: the engine cannot
+    // change a parameter mid-run, so it runs again from the start up to there.
+    const auto now = sim_->status();
+    const double at = (change != SceneChange::Whole && now->frame) ? now->frame->time : 0.0;
     loadIntoSimulation();
+    if (at > 0) sim_->seek(at);
 }
 
 void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {

@@ -7,6 +7,7 @@
 #include "core/simulation.h"
 #include "ui/ladder_view.h"
 
+#include <QDoubleSpinBox>
 #include <QLabel>
 #include <QTimer>
 #include <QtTest>
@@ -109,6 +110,19 @@ private slots:
         QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return !s.playing; }));
         QTest::keyClick(view, Qt::Key_R, Qt::ControlModifier);
         QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return s.frameIndex == 0; }));
+    }
+
+    void anEditShowsItsEffectAtTheMomentOnScreen() {
+        Fixture f(jltest::swingingLadder());
+        QVERIFY(f.goTo(30));
+        const auto before = jltest::loadsSoFar(f.sim);
+        auto* thickness = f.window.findChild<QDoubleSpinBox*>("thickness");
+        thickness->setValue(6.0);  // mm
+        const jl::Scene edited = f.window.document()->scene();
+        QCOMPARE(edited.ladder->block.thickness, 0.006);
+        QVERIFY(jltest::waitForStatus(f.sim, [before](const SimStatus& s) { return s.loadSerial > before && s.frameIndex == 30; }));
+        QVERIFY(samePoses(*f.sim->status()->frame, engineFrameAt(edited, 30)));
+        QVERIFY(!samePoses(*f.sim->status()->frame, engineFrameAt(jltest::swingingLadder(), 30)));
     }
 
     void scrubbingBackShowsThePosesRecordedThen() {
