@@ -113,13 +113,15 @@ ExportResult Exporter::eventsCsv(const std::vector<jl::Event>& events, const QSt
 
 QString Exporter::ffmpeg() { return QStandardPaths::findExecutable("ffmpeg"); }
 
+QString Exporter::ffmpegMissing() {
+    return QObject::tr("Making a video needs ffmpeg, which is not installed on this computer. "
+                       "Install it (for example \"sudo apt install ffmpeg\") or export an image sequence "
+                       "instead and make the video elsewhere.");
+}
+
 ExportResult Exporter::video(const jl::Scene& scene, SequenceRequest request, const QString& videoPath) {
     const QString program = ffmpeg();
-    if (program.isEmpty()) {
-        return failed(QObject::tr("Making a video needs ffmpeg, which is not installed on this computer. "
-                                  "Install it (for example \"sudo apt install ffmpeg\") or export an image sequence "
-                                  "instead and make the video elsewhere."));
-    }
+    if (program.isEmpty()) return failed(ffmpegMissing());
     QTemporaryDir pictures;
     if (!pictures.isValid()) return failed(QObject::tr("Could not make a temporary folder for the pictures."));
     request.directory = pictures.path();

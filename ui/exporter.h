@@ -53,8 +53,9 @@ public:
     // The event log as CSV (core/event_csv.h), written atomically.
     static ExportResult eventsCsv(const std::vector<jl::Event>& events, const QString& path);
 
-    // Where ffmpeg is, or empty when it is not installed.
+    // Where ffmpeg is, or empty when it is not installed; what to tell the user then.
     static QString ffmpeg();
+    static QString ffmpegMissing();
     // The sequence, then ffmpeg (H.264 in MP4, or whatever the suffix asks for).
     static ExportResult video(const jl::Scene& scene, SequenceRequest request, const QString& videoPath);
 };

@@ -2,7 +2,6 @@
 
 #include <QAction>
 #include <QDockWidget>
-#include <QKeyEvent>
 #include <QMainWindow>
 #include <QMenuBar>
 #include <QStatusBar>
@@ -11,7 +10,11 @@
 namespace jlui {
 
 PresentationMode::PresentationMode(QMainWindow* window, QStringList keepDocks)
-    : QObject(window), window_(window), keepDocks_(std::move(keepDocks)) {}
+    : QObject(window), window_(window), keepDocks_(std::move(keepDocks)) {
+    escape_ = new QAction(tr("Leave presentation mode"), this);
+    escape_->setShortcut(Qt::Key_Escape);
+    connect(escape_, &QAction::triggered, this, [this] { setActive(false); });
+}
 
 void PresentationMode::setActive(bool on) {
     if (on == active_) return;
@@ -42,12 +45,12 @@ void PresentationMode::enter() {
     for (QAction* a : window_->findChildren<QAction*>())
         if (!a->shortcuts().isEmpty() && !window_->actions().contains(a)) lifted_ << a;
     window_->addActions(lifted_);
-    window_->installEventFilter(this);
+    window_->addAction(escape_);
     window_->showFullScreen();
 }
 
 void PresentationMode::leave() {
-    window_->removeEventFilter(this);
+    window_->removeAction(escape_);
     for (QAction* a : lifted_) window_->removeAction(a);
     lifted_.clear();
     for (const QPointer<QWidget>& w : hidden_)
@@ -55,18 +58,6 @@ void PresentationMode::leave() {
     hidden_.clear();
     window_->setFont(font_);
     window_->setWindowState(windowState_);
-}
-
-bool PresentationMode::eventFilter(QObject* watched, QEvent* e) {
-    // Escape always leaves, whatever has the focus.
-    if (e->type() == QEvent::ShortcutOverride || e->type() == QEvent::KeyPress) {
-        if (static_cast<QKeyEvent*>(e)->key() == Qt::Key_Escape) {
-            if (e->type() == QEvent::KeyPress) setActive(false);
-            e->accept();
-            return true;
-        }
-    }
-    return QObject::eventFilter(watched, e);
 }
 
 }  // namespace jlui

@@ -30,9 +30,6 @@ signals:
     // Views and plots connect here to draw large (SideView scale, RunPlots::setLarge).
     void activeChanged(bool on);
 
-protected:
-    bool eventFilter(QObject* watched, QEvent* e) override;
-
 private:
     void enter();
     void leave();
@@ -45,6 +42,7 @@ private:
     QFont font_;
     QList<QPointer<QWidget>> hidden_;
     QList<QAction*> lifted_;
+    QAction* escape_;  // Esc leaves, whatever has the focus
 };
 
 }  // namespace jlui

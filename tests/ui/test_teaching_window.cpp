@@ -1,0 +1,123 @@
+// labels: ui
+// The teaching tools in the main window: the side view and plots follow the
+// running simulation, a click in a plot moves the timeline, the Lessons and
+// Teach menus sit before Help, presentation mode hides the chrome and comes back.
+#include "ui_test_support.h"
+
+#include "ui/lessons.h"
+#include "ui/presentation_mode.h"
+#include "ui/run_plots.h"
+#include "ui/side_view.h"
+#include "ui/teaching_docks.h"
+#include "ui/time_chart.h"
+
+#include <QDockWidget>
+#include <QMenuBar>
+#include <QSignalSpy>
+#include <QToolBar>
+#include <QValueAxis>
+#include <QtTest>
+
+using namespace jlui;
+
+namespace {
+
+jl::Scene classic() {
+    const jl::SceneLoad load = jl::loadScene(std::string(JL_SOURCE_DIR) + "/examples/classic.yaml");
+    if (!load.scene) qFatal("classic.yaml does not load");
+    return *load.scene;
+}
+
+struct Fixture {
+    MainWindow window{jltest::quietWindow()};
+    TeachingDocks teaching{&window};
+    SimController* sim = window.controller();
+    Fixture() {
+        window.resize(1400, 950);
+        window.show();
+        const auto before = jltest::loadsSoFar(sim);
+        window.document()->reset(classic(), QString());
+        if (!jltest::loadedAfter(sim, before)) qFatal("the scene was not loaded");
+    }
+    bool showsTime(double t) {
+        const int index = int(std::floor(t / sim->status()->interval + 1e-6));
+        return jltest::waitForStatus(sim, [index](const SimStatus& s) { return s.frameIndex == index && !s.playing; });
+    }
+};
+
+}  // namespace
+
+class TeachingWindowTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { jltest::isolateSettings(); }
+
+    void theSideViewAndThePlotsFollowTheRunAndAPlotClickSeeks() {
+        Fixture f;
+        f.sim->seek(0.7);
+        QVERIFY(f.showsTime(0.7));
+        QTest::qWait(100);  // the controller's poll hands the status to the docks
+        const auto s = f.sim->status();
+        QCOMPARE(f.teaching.sideView()->frame().time, s->frame->time);
+        QCOMPARE(f.teaching.sideView()->frame().blocks[3].position, s->frame->blocks[3].position);
+        QVERIFY(f.teaching.plots()->traces().count() >= 2);
+        QCOMPARE(f.teaching.plots()->traces().endTime(), s->frame->time);
+
+        f.teaching.plots()->refresh();
+        QTest::qWait(50);
+        TimeChart* chart = f.teaching.plots()->energyChart();
+        const QPoint at = chart->viewPointOf(0.3, (chart->valueAxis()->min() + chart->valueAxis()->max()) / 2).toPoint();
+        QTest::mouseClick(chart->viewport(), Qt::LeftButton, {}, at);
+        const double pixel = (chart->timeAxis()->max() - chart->timeAxis()->min()) / chart->chart()->plotArea().width();
+        QVERIFY(jltest::waitForStatus(f.sim, [&](const SimStatus& st) {
+            return std::abs(st.frame->time - 0.3) < 1.5 * pixel + st.interval;
+        }));
+    }
+
+    void lessonsAndTeachMenusSitBeforeHelp() {
+        Fixture f;
+        QStringList titles;
+        for (QAction* a : f.window.menuBar()->actions())
+            if (a->menu()) titles << a->menu()->title().remove('&');
+        QVERIFY2(titles.size() >= 3, qPrintable(titles.join(",")));
+        QCOMPARE(titles.mid(titles.size() - 3), QStringList({"Lessons", "Teach", "Help"}));
+        auto* lessons = f.window.findChild<LessonsMenu*>("lessonsMenu");
+        QVERIFY(lessons);
+        QSignalSpy asked(&f.teaching, &TeachingDocks::lessonRequested);
+        lessons->actions().at(1)->trigger();
+        QCOMPARE(asked.size(), 1);
+        QVERIFY(asked.first().at(0).toString().endsWith("wrong-way.yaml"));
+    }
+
+    void presentationModeHidesTheChromeAndComesBack() {
+        Fixture f;
+        PresentationMode* p = f.teaching.presentation();
+        auto* ladderDock = f.window.findChild<QDockWidget*>("ladderDock");
+        auto* sideDock = f.window.findChild<QDockWidget*>("sideViewDock");
+        QVERIFY(f.window.menuBar()->isVisible());
+        const QFont before = f.window.font();
+        p->setActive(true);
+        QVERIFY(!f.window.menuBar()->isVisible());
+        for (QToolBar* t : f.window.findChildren<QToolBar*>()) QVERIFY(!t->isVisible());
+        QVERIFY(ladderDock->isHidden() || !ladderDock->isVisible());
+        QVERIFY(sideDock->isVisible());
+        QVERIFY(f.window.font().pointSizeF() > before.pointSizeF() * 1.5);
+        QCOMPARE(f.teaching.sideView()->options().scale, 2.0);
+        // The keyboard still drives: Space plays, though the toolbar is hidden.
+        f.window.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&f.window));
+        QTest::keyClick(&f.window, Qt::Key_Space);
+        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return s.playing; }));
+        QTest::keyClick(&f.window, Qt::Key_Space);
+        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return !s.playing; }));
+        // Esc leaves and everything comes back as it was.
+        QTest::keyClick(&f.window, Qt::Key_Escape);
+        QVERIFY(!p->active());
+        QVERIFY(f.window.menuBar()->isVisible());
+        QCOMPARE(f.window.font(), before);
+        QCOMPARE(f.teaching.sideView()->options().scale, 1.0);
+    }
+};
+
+QTEST_MAIN(TeachingWindowTest)
+#include "test_teaching_window.moc"

@@ -1,0 +1,203 @@
+#include "ui/teaching_docks.h"
+
+#include "ui/exporter.h"
+#include "ui/lessons.h"
+#include "ui/main_window.h"
+#include "ui/pacing.h"
+#include "ui/presentation_mode.h"
+#include "ui/run_plots.h"
+#include "ui/sequence_dialog.h"
+#include "ui/side_view.h"
+#include "ui/sim_controller.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QMenu>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QProgressDialog>
+#include <QStatusBar>
+
+namespace jlui {
+
+TeachingDocks::TeachingDocks(MainWindow* window) : QObject(window), window_(window) {
+    setObjectName("teaching");
+    sideView_ = new SideView(window);
+    plots_ = new RunPlots(window);
+    lessonPanel_ = new LessonPanel(window);
+    pacing_ = new Pacing(window->controller(), this);
+    dock(tr("Side view"), "sideViewDock", sideView_, Qt::RightDockWidgetArea);
+    dock(tr("Plots"), "plotsDock", plots_, Qt::BottomDockWidgetArea);
+    lessonDock_ = dock(tr("Lesson"), "lessonDock", lessonPanel_, Qt::LeftDockWidgetArea);
+    if (auto* ladder = window->findChild<QDockWidget*>("ladderDock")) window->tabifyDockWidget(ladder, lessonDock_);
+    // In presentation mode the views stay; the editing panels go.
+    presentation_ = new PresentationMode(window, {"sideViewDock", "plotsDock", "lessonDock"});
+    createMenus();
+
+    SimController* sim = window->controller();
+    connect(sim, &SimController::statusChanged, this, &TeachingDocks::onStatus);
+    connect(plots_, &RunPlots::seekRequested, sim, &SimController::seek);
+    connect(window->document(), &Document::changed, this, &TeachingDocks::onSceneChanged);
+    connect(pacing_, &Pacing::message, this, &TeachingDocks::say);
+    connect(presentation_, &PresentationMode::activeChanged, this, [this](bool on) {
+        setLook();
+        plots_->setLarge(on);
+        lessonPanel_->setLarge(on);
+    });
+    onSceneChanged();
+}
+
+QDockWidget* TeachingDocks::dock(const QString& title, const QString& name, QWidget* w, Qt::DockWidgetArea area) {
+    auto* d = new QDockWidget(title, window_);
+    d->setObjectName(name);
+    d->setWidget(w);
+    window_->addDockWidget(area, d);
+    return d;
+}
+
+void TeachingDocks::createMenus() {
+    QMenuBar* bar = window_->menuBar();
+    // Before Help, which stays last.
+    QAction* before = nullptr;
+    for (QAction* a : bar->actions())
+        if (a->menu() && a->menu()->title().remove('&') == tr("Help")) before = a;
+
+    auto* lessons = new LessonsMenu(findLessons(lessonsDirectory()), window_);
+    connect(lessons, &LessonsMenu::openRequested, this, &TeachingDocks::lessonRequested);
+    bar->insertMenu(before, lessons);
+
+    auto* teach = new QMenu(tr("&Teach"), window_);
+    teach->setObjectName("teachMenu");
+    auto add = [this, teach](const QString& text, const QKeySequence& key, const QString& tip, auto slot) {
+        QAction* a = teach->addAction(text);
+        a->setShortcut(key);
+        a->setStatusTip(tip);
+        a->setToolTip(tip);
+        connect(a, &QAction::triggered, this, slot);
+        return a;
+    };
+    add(tr("Run to the next &event"), Qt::Key_N, tr("Show the moment just after the next event, simulating on if needed"),
+        [this] { pacing_->runToNextEvent(); });
+    add(tr("&Loop a stretch"), Qt::Key_L,
+        tr("Press once where the loop starts and once where it ends; press again to stop looping"), [this] { markLoop(); });
+    QAction* present = add(tr("&Presentation mode"), Qt::Key_F5,
+                           tr("Full screen, large type, only the views; Esc or F5 to leave"), [this] { presentation_->toggle(); });
+    present->setCheckable(true);
+    connect(presentation_, &PresentationMode::activeChanged, present, &QAction::setChecked);
+    teach->addSeparator();
+    auto toggle = [this, teach](const QString& text, const QKeySequence& key, bool on) {
+        QAction* a = teach->addAction(text);
+        a->setCheckable(true);
+        a->setChecked(on);
+        a->setShortcut(key);
+        connect(a, &QAction::toggled, this, &TeachingDocks::setLook);
+        return a;
+    };
+    blockNumbers_ = toggle(tr("&Block numbers"), Qt::Key_B, true);
+    cornerNumbers_ = toggle(tr("&Corner numbers (0-3)"), Qt::Key_K, false);
+    arrows_ = toggle(tr("Lengthwise &orientation arrows"), Qt::Key_O, false);
+    teach->addSeparator();
+    QMenu* exports = teach->addMenu(tr("E&xport"));
+    exports->addAction(tr("Side view as a &picture..."), this, &TeachingDocks::sideViewPicture);
+    exports->addAction(tr("&Image sequence..."), this, [this] { exportSequence(false); });
+    exports->addAction(tr("&Video (ffmpeg)..."), this, [this] { exportSequence(true); });
+    exports->addAction(tr("&Event log as CSV..."), this, &TeachingDocks::exportEvents);
+    teach->addSeparator();
+    for (const char* name : {"sideViewDock", "plotsDock", "lessonDock"})
+        teach->addAction(window_->findChild<QDockWidget*>(name)->toggleViewAction());
+    bar->insertMenu(before, teach);
+}
+
+void TeachingDocks::setLook() {
+    SideViewOptions o = sideView_->options();
+    o.blockNumbers = blockNumbers_->isChecked();
+    o.cornerNumbers = cornerNumbers_->isChecked();
+    o.orientation = arrows_->isChecked();
+    o.scale = presentation_->active() ? 2.0 : 1.0;
+    sideView_->setOptions(o);
+}
+
+void TeachingDocks::onSceneChanged() {
+    const jl::Scene& scene = window_->document()->scene();
+    sideView_->setScene(scene);
+    plots_->setDuration(scene.duration);
+    lessonPanel_->showScene(scene);
+}
+
+void TeachingDocks::onStatus(std::shared_ptr<const SimStatus> s) {
+    if (s->frame) sideView_->showFrame(*s->frame);
+    plots_->showStatus(*s);
+}
+
+std::shared_ptr<const SimStatus> TeachingDocks::latest() const { return window_->controller()->status(); }
+
+void TeachingDocks::say(const QString& text) { window_->statusBar()->showMessage(text, 5000); }
+
+void TeachingDocks::markLoop() {
+    const auto s = latest();
+    const double now = s && s->frame ? s->frame->time : 0;
+    if (pacing_->looping()) {
+        pacing_->clearLoop();
+        loopStart_.reset();
+        return say(tr("Looping stopped."));
+    }
+    if (!loopStart_) {
+        loopStart_ = now;
+        return say(tr("The loop starts at %1 s: press L again where it should end.").arg(now, 0, 'f', 3));
+    }
+    const double a = std::min(*loopStart_, now), b = std::max(*loopStart_, now);
+    loopStart_.reset();
+    if (b - a < 1e-6) return say(tr("The loop needs two different times."));
+    pacing_->setLoop(a, b);
+    window_->controller()->seek(a);
+    window_->controller()->play();
+    say(tr("Looping from %1 s to %2 s: press L to stop.").arg(a, 0, 'f', 3).arg(b, 0, 'f', 3));
+}
+
+void TeachingDocks::sideViewPicture() {
+    const QString path = QFileDialog::getSaveFileName(window_, tr("Side view as a picture"), "side-view.png", tr("PNG picture (*.png)"));
+    if (path.isEmpty()) return;
+    // Twice the size on screen: sharp on slides.
+    if (!sideView_->render(sideView_->size() * 2).save(path, "PNG"))
+        QMessageBox::warning(window_, tr("Not exported"), tr("Could not write the picture %1.").arg(path));
+}
+
+void TeachingDocks::exportSequence(bool video) {
+    const auto s = latest();
+    if (video && Exporter::ffmpeg().isEmpty()) {
+        QMessageBox::information(window_, tr("Export a video"), Exporter::ffmpegMissing());
+        return;
+    }
+    const double head = s ? s->headTime : 0;
+    const double end = head > 0 ? head : window_->document()->scene().duration;
+    SequenceDialog dialog(video ? SequenceDialog::Kind::Video : SequenceDialog::Kind::Pictures, 0, end,
+                          std::max(end, window_->document()->scene().duration), window_);
+    if (dialog.exec() != QDialog::Accepted) return;
+    SequenceRequest r = dialog.request();
+    r.look = sideView_->options();
+    QProgressDialog progress(tr("Drawing the pictures..."), tr("Cancel"), 0, Exporter::frameCount(r.from, r.to, r.fps), window_);
+    progress.setWindowModality(Qt::WindowModal);
+    r.progress = [&progress](int done, int) {
+        progress.setValue(done);
+        QApplication::processEvents();
+        return !progress.wasCanceled();
+    };
+    // The run as recorded, with the user's drags: the pictures show what was on screen.
+    const jl::Scene scene = s && s->recorded ? *s->recorded : window_->document()->scene();
+    const ExportResult result = video ? Exporter::video(scene, r, dialog.target()) : Exporter::imageSequence(scene, r);
+    progress.reset();
+    if (!result.ok) QMessageBox::warning(window_, tr("Not exported"), result.error);
+    else say(tr("Exported %n file(s).", nullptr, int(result.files.size())));
+}
+
+void TeachingDocks::exportEvents() {
+    const auto s = latest();
+    const QString path = QFileDialog::getSaveFileName(window_, tr("Event log as CSV"), "events.csv", tr("CSV table (*.csv)"));
+    if (path.isEmpty()) return;
+    const ExportResult result = Exporter::eventsCsv(s && s->events ? *s->events : std::vector<jl::Event>{}, path);
+    if (!result.ok) QMessageBox::warning(window_, tr("Not exported"), result.error);
+}
+
+}  // namespace jlui
