@@ -75,7 +75,7 @@ void targets(std::ostream& md, const BenchResults& r) {
         if (total == 0) md << "- Falling chain N = 100, error 100x below each peer at its cost: **not measured** (" << r.peers << ").\n";
         else
             md << "- Falling chain N = 100, error at least 100x below each peer at the peer's cost: **" << (met == total ? "met" : "missed")
-               << "** in " << met << " of " << total << " peer runs.\n" << detail.str();
+               << "** (met in " << met << " of " << total << " peer runs).\n" << detail.str();
     }
     // 2. N = 1,000: 5x cheaper than Bullet Featherstone + RK4 at equal error.
     if (auto it = r.chains.find(1000); it != r.chains.end()) {
@@ -91,7 +91,7 @@ void targets(std::ostream& md, const BenchResults& r) {
         }
         if (total == 0) md << "- N = 1,000, 5x cheaper than Bullet Featherstone + RK4: **not measured** (" << r.peers << ").\n";
         else md << "- N = 1,000, at least 5x cheaper than Bullet Featherstone + RK4 at equal error: **" << (met == total ? "met" : "missed")
-                << "** in " << met << " of " << total << " runs.\n" << detail.str();
+                << "** (met in " << met << " of " << total << " runs).\n" << detail.str();
     } else {
         md << "- N = 1,000 against Bullet: not run in --quick mode.\n";
     }
