@@ -16,6 +16,7 @@
 #include <QSvgGenerator>
 #include <QToolButton>
 #include <QValueAxis>
+#include <QBoxLayout>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
@@ -103,7 +104,8 @@ RunPlots::RunPlots(QWidget* parent) : QWidget(parent) {
     box->addLayout(row);
 
     chartsArea_ = new QWidget(this);
-    auto* charts = new QVBoxLayout(chartsArea_);
+    chartsLayout_ = new QBoxLayout(QBoxLayout::LeftToRight, chartsArea_);
+    auto* charts = chartsLayout_;
     charts->setContentsMargins(0, 0, 0, 0);
     charts->setSpacing(0);
     charts_[0] = new TimeChart(tr("Energy and its books"), tr("J"), chartsArea_);
@@ -269,6 +271,7 @@ void RunPlots::refresh() {
 }
 
 void RunPlots::alignCharts() {
+    if (sideBySide_) return;  // each chart has its own time axis then
     // Qt lays the axes out again after each change of margins, and label
     // widths shift by a pixel or two: a few passes settle it, more chase noise.
     if (++alignPasses_ > 4) return;
@@ -284,6 +287,14 @@ void RunPlots::alignCharts() {
 void RunPlots::resizeEvent(QResizeEvent* e) {
     QWidget::resizeEvent(e);
     alignPasses_ = 0;
+    scheduleRefresh();  // tick counts follow the charts' heights
+    // A wide, low dock (under the view) shows the charts side by side; a
+    // tall one (beside it, or an exported page) stacks them on one time axis.
+    const bool wide = width() > 1.6 * height();
+    if (wide == sideBySide_) return;
+    sideBySide_ = wide;
+    chartsLayout_->setDirection(wide ? QBoxLayout::LeftToRight : QBoxLayout::TopToBottom);
+    for (TimeChart* c : charts_) c->setExtraMargins(0, 0);
 }
 
 void RunPlots::setLarge(bool large) {

@@ -12,6 +12,7 @@
 #include <memory>
 #include <vector>
 
+class QBoxLayout;
 class QLineEdit;
 class QLineSeries;
 
@@ -53,6 +54,9 @@ public:
     // The energy curves are in J times this (1e3: mJ, 1e6: µJ), chosen for the run's size.
     double energyScale() const { return energyScale_; }
 
+    // Low and wide: under the view it must leave the view room.
+    QSize sizeHint() const override { return {900, 240}; }
+
     QImage renderImage(const QSize& size);
     bool savePng(const QString& path, const QSize& size, QString* error);
     bool saveSvg(const QString& path, const QSize& size, QString* error);
@@ -80,6 +84,8 @@ private:
     QLineEdit* hingeField_;
     QLineEdit* blockField_;
     QWidget* chartsArea_;
+    QBoxLayout* chartsLayout_;
+    bool sideBySide_ = true;  // as under the view, where the window first puts it
     QTimer refreshTimer_;
     bool dirty_ = false;
     double duration_ = 5;

@@ -68,7 +68,7 @@ struct SideView::Mapping {
 
 SideView::SideView(QWidget* parent) : QWidget(parent) {
     setObjectName("sideView");
-    setMinimumSize(200, 200);
+    setMinimumSize(160, 160);
     setAttribute(Qt::WA_OpaquePaintEvent);
     setToolTip(tr("The ladder seen from the side, as the paper draws it. Hinges: green free, blue locked open, "
                   "orange folded."));

@@ -28,7 +28,12 @@ TeachingDocks::TeachingDocks(MainWindow* window) : QObject(window), window_(wind
     plots_ = new RunPlots(window);
     lessonPanel_ = new LessonPanel(window);
     pacing_ = new Pacing(window->controller(), this);
-    dock(tr("Side view"), "sideViewDock", sideView_, Qt::RightDockWidgetArea);
+    QDockWidget* sideDock = dock(tr("Side view"), "sideViewDock", sideView_, Qt::RightDockWidgetArea);
+    // The script is seldom edited in class: the side view shares its place, in front.
+    if (auto* script = window->findChild<QDockWidget*>("scriptDock")) {
+        window->tabifyDockWidget(script, sideDock);
+        sideDock->raise();
+    }
     dock(tr("Plots"), "plotsDock", plots_, Qt::BottomDockWidgetArea);
     lessonDock_ = dock(tr("Lesson"), "lessonDock", lessonPanel_, Qt::LeftDockWidgetArea);
     if (auto* ladder = window->findChild<QDockWidget*>("ladderDock")) window->tabifyDockWidget(ladder, lessonDock_);

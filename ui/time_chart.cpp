@@ -14,13 +14,13 @@ namespace jlui {
 
 namespace {
 
-// Ticks at round numbers (1, 2 or 5 times a power of ten), four to eight of
-// them; the axis ends on ticks. Always the same for the
+// Ticks at round numbers (1, 2 or 5 times a power of ten), about
+// `intervals` of them; the axis ends on ticks. Always the same for the
 // same range (QValueAxis::applyNiceNumbers also changes the tick count, so
 // calling it twice can give another axis).
-void setNiceRange(QValueAxis* axis, double lo, double hi) {
+void setNiceRange(QValueAxis* axis, double lo, double hi, int intervals = 5) {
     const double span = std::max(hi - lo, 1e-12);
-    const double rough = span / 5, power = std::pow(10.0, std::floor(std::log10(rough)));
+    const double rough = span / intervals, power = std::pow(10.0, std::floor(std::log10(rough)));
     double step = power;
     for (double m : {1.0, 2.0, 5.0, 10.0})
         if (m * power >= rough * 0.75) {
@@ -42,7 +42,7 @@ void setNiceRange(QValueAxis* axis, double lo, double hi) {
 TimeChart::TimeChart(const QString& title, const QString& unit, QWidget* parent) : QChartView(new QChart, parent) {
     setRenderHint(QPainter::Antialiasing);
     setRubberBand(QChartView::NoRubberBand);
-    setMinimumHeight(150);
+    setMinimumHeight(120);
     chart()->setTitle(title);
     chart()->setMargins(QMargins(4, 2, 4, 2));
     chart()->legend()->setAlignment(Qt::AlignRight);
@@ -104,7 +104,9 @@ void TimeChart::fitValues(double minSpan) {
     if (!(lo <= hi)) lo = hi = 0;
     // A flat curve (the energy books) stays a flat line in the middle, not noise blown up.
     const double mid = (lo + hi) / 2, half = std::max((hi - lo) / 2 * 1.05, minSpan / 2);
-    setNiceRange(valueAxis_, mid - half, mid + half);
+    // A short chart (a low dock) gets fewer ticks, so their labels still fit.
+    const int intervals = std::clamp(int(chart()->plotArea().height() / 32), 2, 5);
+    setNiceRange(valueAxis_, mid - half, mid + half, intervals);
 }
 
 void TimeChart::setValueRange(double lo, double hi, double tick) {

@@ -13,6 +13,7 @@
 
 #include <QDockWidget>
 #include <QMenuBar>
+#include <QScreen>
 #include <QSignalSpy>
 #include <QToolBar>
 #include <QValueAxis>
@@ -60,8 +61,15 @@ private slots:
         const auto s = f.sim->status();
         QCOMPARE(f.teaching.sideView()->frame().time, s->frame->time);
         QCOMPARE(f.teaching.sideView()->frame().blocks[3].position, s->frame->blocks[3].position);
-        QVERIFY(f.teaching.plots()->traces().count() >= 2);
         QCOMPARE(f.teaching.plots()->traces().endTime(), s->frame->time);
+        // Each new frame shown past the last one becomes a sample of the plots.
+        const int samples = f.teaching.plots()->traces().count();
+        f.sim->stepForward();
+        QVERIFY(jltest::waitForStatus(f.sim, [&](const SimStatus& st) { return st.frameIndex == s->frameIndex + 1; }));
+        QTest::qWait(100);
+        QCOMPARE(f.teaching.plots()->traces().count(), samples + 1);
+        QCOMPARE(f.teaching.plots()->traces().endTime(), f.sim->status()->frame->time);
+        QCOMPARE(f.teaching.plots()->traces().energy(EnergyTrace::Total).back(), f.sim->status()->frame->energy.total());
 
         f.teaching.plots()->refresh();
         QTest::qWait(50);
@@ -116,6 +124,24 @@ private slots:
         QVERIFY(f.window.menuBar()->isVisible());
         QCOMPARE(f.window.font(), before);
         QCOMPARE(f.teaching.sideView()->options().scale, 1.0);
+    }
+
+    // Not a check: with JL_DOCS_DIR set, a picture of the window with the teaching docks.
+    void writesTheWindowPicture() {
+        const QString out = qEnvironmentVariable("JL_DOCS_DIR");
+        if (out.isEmpty()) QSKIP("JL_DOCS_DIR not set");
+        Fixture f;
+        // Frame by frame, so the plots get every frame up to 0.75 s.
+        for (int i = 1; i <= 45; ++i) {
+            f.sim->seek((i + 0.25) * f.sim->status()->interval);
+            QVERIFY(jltest::waitForStatus(f.sim, [i](const SimStatus& s) { return s.frameIndex == i; }));
+            QTest::qWait(20);
+        }
+        f.teaching.plots()->refresh();
+        QTest::qWait(1500);
+        QCOMPARE(f.window.size(), QSize(1400, 950));  // the docks fit: showing them did not grow the window
+        const QRect g = f.window.frameGeometry();
+        QVERIFY(f.window.screen()->grabWindow(0, g.x(), g.y(), g.width(), g.height()).save(out + "/teaching-window.png"));
     }
 };
 
