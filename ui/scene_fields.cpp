@@ -35,6 +35,21 @@ NumberField solverNumber(QString key, QString label, QString unit, QString tip, 
     return f;
 }
 
+// The mass of every block; at 0 (not set) it follows from the density, and
+// the field says what that comes to rather than showing "0 g".
+NumberField blockMassField() {
+    using L = jl::LadderSpec;
+    NumberField f = ladderNumber("mass", tr("Block mass"), "g", tr("Mass of every block; 0 means computed from the density."),
+                                 0, 100000, 1000, 2, [](const L& l) { return l.block.mass.value_or(0.0); },
+                                 [](L& l, double v) { l.block.mass = v > 0 ? std::optional<double>(v) : std::nullopt; });
+    f.unset = [](const jl::Scene& s) {
+        if (!s.ladder) return QString();
+        const jl::BlockSpec& b = s.ladder->block;
+        return tr("from density: %1 g").arg(b.density * b.length * b.thickness * b.width * 1000, 0, 'f', 2);
+    };
+    return f;
+}
+
 }  // namespace
 
 void setBlockCount(jl::LadderSpec& ladder, int n) {
@@ -59,9 +74,7 @@ std::vector<NumberField> ladderNumberFields() {
                      1, 1000, 1000, 1, [](const L& l) { return l.block.width; }, [](L& l, double v) { l.block.width = v; }),
         ladderNumber("density", tr("Density"), "kg/m³", tr("Of the wood; gives each block's mass unless a mass is set."),
                      1, 20000, 1, 0, [](const L& l) { return l.block.density; }, [](L& l, double v) { l.block.density = v; }),
-        ladderNumber("mass", tr("Block mass"), "g", tr("Mass of every block; 0 means computed from the density."),
-                     0, 100000, 1000, 2, [](const L& l) { return l.block.mass.value_or(0.0); },
-                     [](L& l, double v) { l.block.mass = v > 0 ? std::optional<double>(v) : std::nullopt; }),
+        blockMassField(),
         ladderNumber("ribbonWidth", tr("Ribbon width"), "mm", tr("Width of the ribbons across the block faces (drawing only)."),
                      0.1, 100, 1000, 1, [](const L& l) { return l.ribbons.width; }, [](L& l, double v) { l.ribbons.width = v; }),
         ladderNumber("damping", tr("Hinge damping"), "N·m·s", tr("Viscous torque in free hinges; above about 1e-5 it stops long ripples."),

@@ -23,6 +23,9 @@ struct NumberField {
     SceneChange change = SceneChange::Ladder;
     std::function<double(const jl::Scene&)> get;       // SI
     std::function<void(jl::Scene&, double)> set;       // SI
+    // Shown instead of the minimum when that means "not set" (e.g. a mass
+    // that follows from the density): says what the engine will use.
+    std::function<QString(const jl::Scene&)> unset;
 };
 
 std::vector<NumberField> ladderNumberFields();

@@ -68,7 +68,10 @@ void ValueForm::refresh() {
         QWidget* w = editors_[i];
         const QSignalBlocker block(w);
         if (auto* s = qobject_cast<QSpinBox*>(w)) s->setValue(int(std::lround(shown)));
-        else if (auto* d = qobject_cast<QDoubleSpinBox*>(w)) d->setValue(shown);
+        else if (auto* d = qobject_cast<QDoubleSpinBox*>(w)) {
+            if (f.unset) d->setSpecialValueText(f.unset(doc_->scene()));
+            d->setValue(shown);
+        }
         else if (auto* e = qobject_cast<QLineEdit*>(w)) e->setText(QString::number(shown, 'g', 6));
     }
 }
