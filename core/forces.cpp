@@ -1,4 +1,4 @@
-// Applied forces: gravity, air damping, springs, rotary dampers, the mouse.
+// Applied forces: gravity, air damping, springs, rotary dampers, loads, the mouse.
 #include "core/dynamics.h"
 #include "core/world.h"
 
@@ -75,6 +75,13 @@ void accumulateForces(const World& w, Eigen::VectorXd& force, Powers& powers) {
         applyTorque(w, d.b, -d.damping * rel, force, powers);
         applyTorque(w, d.a, d.damping * rel, force, powers);
         powers.damping += d.damping * rel * rel;
+    }
+    for (const AppliedLoad& l : w.loads()) {
+        if (w.body(w.part(l.part).body).kinematic) continue;  // the hand holds it: no effect
+        const Vec2 x = w.pointPosition(l.part, l.local);
+        applyAt(w, l.part, x, l.force, force, powers);
+        applyTorque(w, l.part, l.torque, force, powers);
+        powers.user += l.force.dot(w.pointVelocity(l.part, l.local)) + l.torque * w.partVelocity(l.part).angular;
     }
     for (const UserDrag& g : w.drags()) {
         if (w.body(w.part(g.part).body).kinematic) continue;

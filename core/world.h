@@ -79,6 +79,15 @@ struct RotaryDamper {
     double damping = 0;  // N m s
 };
 
+// A constant applied force at a point of a part (world directions) and a
+// torque: the engine's "external forces". Their work is booked as the user's.
+struct AppliedLoad {
+    PartId part = -1;
+    Vec2 local = Vec2::Zero();  // where, in the part's frame (m)
+    Vec2 force = Vec2::Zero();  // N
+    double torque = 0;          // N m
+};
+
 // The mouse spring of PHYSICS.md section 5, pulling a point of a part.
 struct UserDrag {
     PartId part = -1;
@@ -106,6 +115,8 @@ public:
     ParticleId anchor(const Vec2& worldPoint);               // a point on the ground
     int addSpring(const Spring& s);
     int addRotaryDamper(const RotaryDamper& d);
+    std::vector<AppliedLoad>& loads() { return loads_; }
+    const std::vector<AppliedLoad>& loads() const { return loads_; }
     static constexpr PartId ground = 0;
 
     // ---- restructuring (the paper's combine and separate) ----
@@ -194,6 +205,7 @@ private:
     std::vector<Spring> springs_;
     std::vector<RotaryDamper> dampers_;
     std::vector<UserDrag> drags_;
+    std::vector<AppliedLoad> loads_;
     std::vector<int> freeBodies_;
     long long structureVersion_ = 0;
 
