@@ -232,6 +232,9 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
 
     // Labels only where a block is big enough on screen to carry them.
     const double blockPixels = shapes_.empty() ? 0 : shapes_.front().along * map.scale;
+    const double thicknessPixels = shapes_.empty() ? 0 : shapes_.front().across * map.scale;
+    // Two corner numbers sit side by side across a block: their size follows the thickness.
+    const double cornerFont = std::min(9.5 * ui, thicknessPixels * 0.42);
     if (options_.orientation && blockPixels > 24) {
         p.setPen(QPen(kInk, 1.4 * ui));
         p.setBrush(kInk);
@@ -242,9 +245,9 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
             arrow(p, map(centre - along), map(centre + along), 7 * ui);
         }
     }
-    if (options_.cornerNumbers && blockPixels > 40) {
+    if (options_.cornerNumbers && cornerFont >= 7) {
         QFont small = font;
-        small.setPixelSize(int(std::lround(9.5 * ui)));
+        small.setPixelSize(int(std::lround(cornerFont)));
         p.setFont(small);
         for (int i = 0; i < std::min(n, int(cornerLocal_.size())); ++i) {
             const auto c = corners(i);
@@ -253,7 +256,7 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
             // quarter of the thickness in from the side, so the numbers of two
             // blocks meeting at a hinge do not overlap.
             const jl::Vec2 along = (c[1] - c[0]).normalized(), across = (c[2] - c[0]).normalized();
-            const double inset = 10 * ui / map.scale;
+            const double inset = cornerFont * 1.05 / map.scale;
             for (int k = 0; k < 4; ++k) {
                 const jl::Vec2 r = c[size_t(k)] - centre;
                 const double a = r.dot(along), b = r.dot(across);
@@ -276,7 +279,8 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
         }
     }
 
-    const double r = std::clamp(blockPixels * 0.06, 3.5, 8.0) * ui;
+    // A hinge dot never hides the blocks it joins.
+    const double r = std::max(3.0, std::min(std::clamp(blockPixels * 0.06, 3.5, 8.0) * ui, thicknessPixels * 0.45));
     for (const jl::HingeFrame& h : frame_.hinges) {
         p.setPen(QPen(Qt::white, 1.2 * ui));
         p.setBrush(hingeColor(h.mode));
