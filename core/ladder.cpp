@@ -149,15 +149,22 @@ void Ladder::placeHanging(World& w) {
 
 // ---- fold angles ----
 
+// phi depends only on the two blocks' relative angle: one rotation, not
+// five corner positions (this runs for every hinge at every evaluation).
 double Ladder::foldAngle(const World& w, int j) const {
     const int k = hinge(j).corner;
-    const Vec2 pin = cornerWorld(w, j - 1, k);
-    const Vec2 da = (cornerWorld(w, j - 1, k ^ 1) - pin).normalized();
-    const Vec2 na = (cornerWorld(w, j - 1, k ^ 2) - pin).normalized();
-    const Vec2 db = (cornerWorld(w, j, k ^ 1) - cornerWorld(w, j, k)).normalized();
+    const Vec2 da = (cornerLocal(j - 1, k ^ 1) - cornerLocal(j - 1, k)).normalized();
+    const Vec2 na = (cornerLocal(j - 1, k ^ 2) - cornerLocal(j - 1, k)).normalized();
+    const double turn = blockAngle(w, j) - blockAngle(w, j - 1);
+    const Vec2 db = rotate(turn, (cornerLocal(j, k ^ 1) - cornerLocal(j, k)).normalized());
     const double raw = std::atan2(-na.dot(db), -da.dot(db));
     const double last = hinge(j).foldAngle;
     return last + wrapToPi(raw - last);
+}
+
+double Ladder::blockAngle(const World& w, int i) const {
+    const Part& part = w.part(block(i));
+    return w.q[3 * part.body + 2] + part.inBody.angle;
 }
 
 double Ladder::foldAcceleration(const World& w, int j) const {
@@ -165,11 +172,11 @@ double Ladder::foldAcceleration(const World& w, int j) const {
 }
 
 // +1 if phi grows as block j turns counter-clockwise relative to block j-1:
-// the sign of d_a x n_a, which flips with the hinge corner.
-double Ladder::foldSense(const World& w, int j) const {
+// the sign of d_a x n_a (a block-frame property: it flips with the corner).
+double Ladder::foldSense(const World&, int j) const {
     const int k = hinge(j).corner;
-    const Vec2 pin = cornerWorld(w, j - 1, k);
-    return cross(cornerWorld(w, j - 1, k ^ 1) - pin, cornerWorld(w, j - 1, k ^ 2) - pin) > 0 ? 1.0 : -1.0;
+    const Vec2 c = cornerLocal(j - 1, k);
+    return cross(cornerLocal(j - 1, k ^ 1) - c, cornerLocal(j - 1, k ^ 2) - c) > 0 ? 1.0 : -1.0;
 }
 
 double Ladder::foldRate(const World& w, int j) const {

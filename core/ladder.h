@@ -102,11 +102,13 @@ private:
     Wrench internalWrench(const World& w, const Dynamics& d, int j, const Impact* impact) const;
     double foldAcceleration(const World& w, int j) const;
     double foldSense(const World& w, int j) const;
+    double blockAngle(const World& w, int i) const;
     bool touchingLimit(const World& w, int j, bool folded, bool resting) const;
     std::vector<Event> impact(World& w, Dynamics& d, double t, const std::vector<int>& hits, double* loss,
                               double* heldWork, std::vector<int>* releasedNow);
-    std::optional<std::pair<int, EventKind>> pullingContact(const World& w, const Dynamics& d,
-                                                            const Impact* impact) const;
+    std::optional<std::pair<int, EventKind>> pullingContact(const World& w, const Dynamics& d, const Impact* impact,
+                                                            const std::vector<int>& keep = {}) const;
+    bool wouldChatter(const World& w, double t, int j, EventKind kind, const std::vector<Twist>& before) const;
     void release(World& w, int j, EventKind kind);
     HingeContact split(const World& w, int j, const Wrench& on) const;
     void snap(World& w, int j, double target);

@@ -67,13 +67,14 @@ void Ladder::release(World& w, int j, EventKind kind) {
 
 // The most negative contact force (or impulse) among locked and folded
 // hinges, and what releasing it means: unlock, flip-flop or unfold.
-std::optional<std::pair<int, EventKind>> Ladder::pullingContact(const World& w, const Dynamics& d,
-                                                                const Impact* impact) const {
+std::optional<std::pair<int, EventKind>> Ladder::pullingContact(const World& w, const Dynamics& d, const Impact* impact,
+                                                                const std::vector<int>& keep) const {
     std::optional<std::pair<int, EventKind>> worst;
     double most = -kForceTolerance;
     for (int j = 1; j < blockCount(); ++j) {
         const HingeMode mode = hinge(j).mode;
         if (mode != HingeMode::OpenLocked && mode != HingeMode::Folded) continue;
+        if (std::find(keep.begin(), keep.end(), j) != keep.end()) continue;
         const HingeContact c = split(w, j, internalWrench(w, d, j, impact));
         if (mode == HingeMode::OpenLocked && c.normal < most) {
             most = c.normal;
@@ -91,6 +92,27 @@ std::optional<std::pair<int, EventKind>> Ladder::pullingContact(const World& w, 
         }
     }
     return worst;
+}
+
+// Rule 6 of PHYSICS.md section 4: releasing hinge j at this impact would
+// part the pair slower than v_min while its free acceleration turns it back
+// into the limit, so it would only close again at once: it stays locked and
+// the force test decides afterwards. Tried on a copy of the world.
+bool Ladder::wouldChatter(const World& w, double t, int j, EventKind kind, const std::vector<Twist>& before) const {
+    World trial = w;
+    Ladder after = *this;
+    after.release(trial, j, kind);
+    trial.setPartVelocities(before);
+    PinSolver solver;
+    projectVelocities(trial, solver);
+    Dynamics d;
+    d.evaluate(trial, t);
+    // Away from the limit: phi grows from 0 after an unlock, falls from pi
+    // after an unfold or a flip (measured at the new corner).
+    const double away = kind == EventKind::Unlock ? 1.0 : -1.0;
+    const double speed = away * after.foldRate(trial, j);
+    const double accel = away * after.foldAcceleration(trial, j);
+    return speed < spec_.hinges.minReboundSpeed && accel < 0;
 }
 
 // A perfectly plastic impact at the hinges `hits` with every other
@@ -116,11 +138,16 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
     // A hinge released in this impact stays free in it, even at its limit
     // (PHYSICS.md section 4): the next step decides whether it closes again.
     std::vector<int>& released = *releasedNow;
+    std::vector<int> kept;  // rule 6: stays locked through this impact
     for (int guard = 0; guard < 4 * blockCount(); ++guard) {
         w.setPartVelocities(before);
         projectVelocities(w, d.solver(), &impulses);
         updateAngles(w);
-        if (auto pull = pullingContact(w, d, &im)) {
+        if (auto pull = pullingContact(w, d, &im, kept)) {
+            if (wouldChatter(w, t, pull->first, pull->second, before)) {
+                kept.push_back(pull->first);
+                continue;
+            }
             release(w, pull->first, pull->second);
             released.push_back(pull->first);
             events.push_back({t, pull->second, pull->first, hinge(pull->first).corner, {}});
