@@ -89,7 +89,7 @@ void SideView::setScene(const jl::Scene& scene) {
         ribbonColor_ = QColor(scene.ladder->ribbons.color.r, scene.ladder->ribbons.color.g, scene.ladder->ribbons.color.b);
         ribbonThickness_ = scene.ladder->ribbons.thickness;
     }
-    frame_ = {};
+    frame_ = std::make_shared<const jl::Frame>();
     resetFraming();
 }
 
@@ -99,7 +99,7 @@ void SideView::setOptions(const SideViewOptions& o) {
 }
 
 std::array<jl::Vec2, 4> SideView::corners(int block) const {
-    const jl::Pose& pose = frame_.blocks[size_t(block)];
+    const jl::Pose& pose = frame_->blocks[size_t(block)];
     std::array<jl::Vec2, 4> out;
     if (block < int(cornerLocal_.size())) {
         for (int k = 0; k < 4; ++k) out[size_t(k)] = pose.apply(cornerLocal_[size_t(block)][size_t(k)]);
@@ -129,7 +129,7 @@ QRectF SideView::extentOf(const jl::Frame& f) const {
 
 void SideView::resetFraming() {
     framing_ = {};
-    if (!frame_.blocks.empty()) growFraming(extentOf(frame_));
+    if (!frame_->blocks.empty()) growFraming(extentOf(*frame_));
     update();
 }
 
@@ -152,9 +152,12 @@ void SideView::growFraming(const QRectF& need) {
     framing_ = r;
 }
 
-void SideView::showFrame(const jl::Frame& frame) {
-    frame_ = frame;
-    growFraming(extentOf(frame_));
+void SideView::showFrame(const jl::Frame& frame) { showFrame(std::make_shared<const jl::Frame>(frame)); }
+
+void SideView::showFrame(std::shared_ptr<const jl::Frame> frame) {
+    if (!frame) return;
+    frame_ = std::move(frame);
+    growFraming(extentOf(*frame_));
     update();
 }
 
@@ -180,7 +183,7 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
     p.setRenderHint(QPainter::Antialiasing);
     p.setRenderHint(QPainter::TextAntialiasing);
     p.fillRect(target, kBackground);
-    if (framing_.isEmpty() || frame_.blocks.empty()) {
+    if (framing_.isEmpty() || frame_->blocks.empty()) {
         p.restore();
         return;
     }
@@ -189,8 +192,12 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
     QFont font = p.font();
     font.setPixelSize(int(std::lround(12 * ui)));
 
-    // A 5 cm grid: the scale of the picture at a glance.
-    const double cell = 0.05;
+    // A grid of round lengths, at least ~80 px apart: the scale at a glance.
+    double cell = 0.01;
+    for (double c : {0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 50.0}) {
+        cell = c;
+        if (c * map.scale >= 80 * ui) break;
+    }
     p.setPen(QPen(kGrid, 1));
     for (double x = std::floor((framing_.left() - 1) / cell) * cell; x <= framing_.right() + 1; x += cell) {
         const double px = map(jl::Vec2(x, 0)).x();
@@ -201,38 +208,54 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
         if (py >= target.top() && py <= target.bottom()) p.drawLine(QPointF(target.left(), py), QPointF(target.right(), py));
     }
 
-    const int n = int(std::min(frame_.blocks.size(), shapes_.size()));
+    const int n = int(std::min(frame_->blocks.size(), shapes_.size()));
+    const double blockPixels = shapes_.empty() ? 0 : shapes_.front().along * map.scale;
+    const double thicknessPixels = shapes_.empty() ? 0 : shapes_.front().across * map.scale;
+    // A long ladder seen whole is a thread: each block a line along its
+    // length, drawn in one call per colour; no ribbons (they would coincide).
+    const bool thread = thicknessPixels < 2.5;
     // Blocks first, ribbons over their faces, hinges and words on top.
-    for (int i = 0; i < std::min(n, firstParticle_); ++i) {
-        const auto c = corners(i);
-        // Corners 0,1 share a side and 2,3 the other: walk 0-1-3-2 round the block.
-        const QPolygonF poly({map(c[0]), map(c[1]), map(c[3]), map(c[2])});
-        const QColor wood = shapes_[size_t(i)].color;
-        const bool held = i < int(frame_.held.size()) && frame_.held[size_t(i)];
-        p.setPen(QPen(held ? kInk : wood.darker(170), (held ? 2.2 : 1.1) * ui, Qt::SolidLine, Qt::SquareCap, Qt::MiterJoin));
-        p.setBrush(wood);
-        p.drawPolygon(poly);
+    if (thread) {
+        QVector<QLineF> lines;
+        for (int i = 0; i < std::min(n, firstParticle_); ++i) {
+            const auto c = corners(i);
+            lines.append(QLineF(map((c[0] + c[2]) / 2), map((c[1] + c[3]) / 2)));
+            const bool last = i + 1 >= std::min(n, firstParticle_) || shapes_[size_t(i + 1)].color != shapes_[size_t(i)].color;
+            if (!last) continue;
+            p.setPen(QPen(shapes_[size_t(i)].color.darker(120), std::max(1.2, thicknessPixels), Qt::SolidLine, Qt::FlatCap));
+            p.drawLines(lines);
+            lines.clear();
+        }
+    } else {
+        for (int i = 0; i < std::min(n, firstParticle_); ++i) {
+            const auto c = corners(i);
+            // Corners 0,1 share a side and 2,3 the other: walk 0-1-3-2 round the block.
+            const QPolygonF poly({map(c[0]), map(c[1]), map(c[3]), map(c[2])});
+            const QColor wood = shapes_[size_t(i)].color;
+            const bool held = i < int(frame_->held.size()) && frame_->held[size_t(i)];
+            p.setPen(QPen(held ? kInk : wood.darker(170), (held ? 2.2 : 1.1) * ui, Qt::SolidLine, Qt::SquareCap, Qt::MiterJoin));
+            p.setBrush(wood);
+            p.drawPolygon(poly);
+        }
     }
     for (int i = firstParticle_; i < n; ++i) {
         p.setPen(QPen(kInk, 1 * ui));
         p.setBrush(shapes_[size_t(i)].color);
-        p.drawEllipse(map(frame_.blocks[size_t(i)].position), 4.5 * ui, 4.5 * ui);
+        p.drawEllipse(map(frame_->blocks[size_t(i)].position), 4.5 * ui, 4.5 * ui);
     }
-    if (options_.ribbons) {
+    if (options_.ribbons && !thread) {
         const double w = std::max(1.6 * ui, ribbonThickness_ * map.scale);
         p.setPen(QPen(ribbonColor_, w, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
         p.setBrush(Qt::NoBrush);
-        for (const jl::RibbonFrame& r : frame_.ribbons) {
-            if (!r.visible || r.points.size() < 2) continue;
-            QPolygonF line;
-            for (const jl::Vec2& v : r.points) line << map(v);
-            p.drawPolyline(line);
+        QVector<QLineF> segments;  // one call for all: a ladder has two ribbons per hinge
+        for (const jl::RibbonFrame& r : frame_->ribbons) {
+            if (!r.visible) continue;
+            for (size_t k = 1; k < r.points.size(); ++k) segments.append(QLineF(map(r.points[k - 1]), map(r.points[k])));
         }
+        p.drawLines(segments);
     }
 
     // Labels only where a block is big enough on screen to carry them.
-    const double blockPixels = shapes_.empty() ? 0 : shapes_.front().along * map.scale;
-    const double thicknessPixels = shapes_.empty() ? 0 : shapes_.front().across * map.scale;
     // Two corner numbers sit side by side across a block: their size follows the thickness.
     const double cornerFont = std::min(9.5 * ui, thicknessPixels * 0.42);
     if (options_.orientation && blockPixels > 24) {
@@ -240,7 +263,7 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
         p.setBrush(kInk);
         for (int i = 0; i < std::min(n, int(cornerLocal_.size())); ++i) {
             const auto c = corners(i);
-            const jl::Vec2 centre = frame_.blocks[size_t(i)].position;
+            const jl::Vec2 centre = frame_->blocks[size_t(i)].position;
             const jl::Vec2 along = (c[1] - c[0]) * 0.3;  // corner 0 towards corner 1: the lengthwise orientation
             arrow(p, map(centre - along), map(centre + along), 7 * ui);
         }
@@ -251,7 +274,7 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
         p.setFont(small);
         for (int i = 0; i < std::min(n, int(cornerLocal_.size())); ++i) {
             const auto c = corners(i);
-            const jl::Vec2 centre = frame_.blocks[size_t(i)].position;
+            const jl::Vec2 centre = frame_->blocks[size_t(i)].position;
             // Inside the block near each corner: a little in from the end, a
             // quarter of the thickness in from the side, so the numbers of two
             // blocks meeting at a hinge do not overlap.
@@ -272,7 +295,7 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
         p.setFont(bold);
         const int every = std::max(1, int(std::ceil(bold.pixelSize() * 1.6 / std::max(1.0, blockPixels))));
         for (int i = 0; i < std::min(n, firstParticle_); i += every) {
-            const QPointF at = map(frame_.blocks[size_t(i)].position);
+            const QPointF at = map(frame_->blocks[size_t(i)].position);
             // Beside the arrow when both are asked for.
             const QPointF shift = options_.orientation ? QPointF(0, -bold.pixelSize() * 0.9) : QPointF();
             haloText(p, at + shift, QString::number(i), kInk);
@@ -281,17 +304,19 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
 
     // A hinge dot never hides the blocks it joins.
     const double r = std::max(3.0, std::min(std::clamp(blockPixels * 0.06, 3.5, 8.0) * ui, thicknessPixels * 0.45));
-    for (const jl::HingeFrame& h : frame_.hinges) {
+    for (const jl::HingeFrame& h : frame_->hinges) {
+        // In a thread, only the hinges that hold (locked or folded) are worth a dot.
+        if (thread && h.mode == jl::HingeMode::Free) continue;
         p.setPen(QPen(Qt::white, 1.2 * ui));
         p.setBrush(hingeColor(h.mode));
         p.drawEllipse(map(h.position), r, r);
     }
-    if (frame_.dragging) {
+    if (frame_->dragging) {
         p.setPen(QPen(QColor(200, 30, 30), 2 * ui, Qt::DashLine, Qt::RoundCap));
-        p.drawLine(map(frame_.dragFrom), map(frame_.dragTo));
+        p.drawLine(map(frame_->dragFrom), map(frame_->dragTo));
         p.setBrush(QColor(200, 30, 30));
         p.setPen(Qt::NoPen);
-        p.drawEllipse(map(frame_.dragTo), 4 * ui, 4 * ui);
+        p.drawEllipse(map(frame_->dragTo), 4 * ui, 4 * ui);
     }
 
     p.setFont(font);
@@ -299,18 +324,19 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
     const double pad = 8 * ui;
     if (options_.clock) {
         p.setPen(kInk);
-        p.drawText(QPointF(target.left() + pad, target.top() + pad + m.ascent()), tr("t = %1 s").arg(frame_.time, 0, 'f', 3));
+        p.drawText(QPointF(target.left() + pad, target.top() + pad + m.ascent()), tr("t = %1 s").arg(frame_->time, 0, 'f', 3));
     }
-    // The scale bar: 5 cm.
+    // The scale bar: one grid cell.
     {
         const QPointF a(target.left() + pad, target.bottom() - pad), b = a + QPointF(cell * map.scale, 0);
         p.setPen(QPen(kInk, 1.5 * ui));
         p.drawLine(a, b);
         p.drawLine(a, a - QPointF(0, 4 * ui));
         p.drawLine(b, b - QPointF(0, 4 * ui));
-        p.drawText(QPointF(b.x() + 4 * ui, a.y()), tr("5 cm"));
+        const QString length = cell < 1 ? tr("%1 cm").arg(std::lround(cell * 100)) : tr("%1 m").arg(cell);
+        p.drawText(QPointF(b.x() + 4 * ui, a.y()), length);
     }
-    if (options_.legend && !frame_.hinges.empty()) {
+    if (options_.legend && !frame_->hinges.empty()) {
         const std::pair<jl::HingeMode, QString> items[] = {{jl::HingeMode::Free, tr("free")},
                                                             {jl::HingeMode::OpenLocked, tr("locked open")},
                                                             {jl::HingeMode::Folded, tr("folded")}};
@@ -325,7 +351,7 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
         for (const auto& [mode, text] : items) {
             p.setPen(QPen(Qt::white, 1.2 * ui));
             p.setBrush(hingeColor(mode));
-            p.drawEllipse(QPointF(box.left() + line * 0.8, y), r, r);
+            p.drawEllipse(QPointF(box.left() + line * 0.8, y), 6 * ui, 6 * ui);
             p.setPen(kInk);
             p.drawText(QPointF(box.left() + line * 1.6, y + m.ascent() / 2 - m.descent() / 2), text);
             y += line;

@@ -11,6 +11,7 @@
 #include <QRectF>
 #include <QWidget>
 #include <array>
+#include <memory>
 #include <vector>
 
 namespace jlui {
@@ -34,7 +35,9 @@ public:
     // (frames carry only poses); the framing starts afresh.
     void setScene(const jl::Scene& scene);
     void showFrame(const jl::Frame& frame);
-    const jl::Frame& frame() const { return frame_; }
+    // The simulation's published frame, shared rather than copied (60 times a second).
+    void showFrame(std::shared_ptr<const jl::Frame> frame);
+    const jl::Frame& frame() const { return *frame_; }
     void setOptions(const SideViewOptions& o);
     const SideViewOptions& options() const { return options_; }
 
@@ -68,7 +71,7 @@ private:
     int ladderBlocks_ = 0, firstParticle_ = 0;
     QColor ribbonColor_{40, 60, 140};
     double ribbonThickness_ = 0.0005;
-    jl::Frame frame_;
+    std::shared_ptr<const jl::Frame> frame_ = std::make_shared<const jl::Frame>();
     QRectF framing_;
     SideViewOptions options_;
 };

@@ -132,7 +132,7 @@ void TeachingDocks::onSceneChanged() {
 }
 
 void TeachingDocks::onStatus(std::shared_ptr<const SimStatus> s) {
-    if (s->frame) sideView_->showFrame(*s->frame);
+    if (s->frame && s->frame.get() != &sideView_->frame()) sideView_->showFrame(s->frame);
     plots_->showStatus(*s);
 }
 

@@ -119,8 +119,13 @@ void TimeChart::setValueRange(double lo, double hi, double tick) {
 
 void TimeChart::setCursorTime(double t) {
     if (t == cursor_) return;
+    // Only the strips under the old and the new cursor: repainting whole
+    // charts 60 times a second costs the window its responsiveness.
+    const QRect view = viewport()->rect();
+    const int pad = large_ ? 4 : 3;
+    for (double x : {viewPointOf(cursor_, 0).x(), viewPointOf(t, 0).x()})
+        viewport()->update(QRect(int(x) - pad, view.top(), 2 * pad + 1, view.height()));
     cursor_ = t;
-    viewport()->update();
 }
 
 void TimeChart::setEvents(std::shared_ptr<const std::vector<jl::Event>> events) {
