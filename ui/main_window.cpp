@@ -8,6 +8,7 @@
 #include "ui/shader_material.h"
 #include "ui/sim_controller.h"
 #include "ui/simulation_panel.h"
+#include "ui/teaching_docks.h"
 #include "ui/timeline.h"
 
 #include <QAction>
@@ -83,6 +84,12 @@ MainWindow::MainWindow(Options options) : options_(options) {
         QSettings().setValue("simulation/historyMegabytes", mb);
     });
 
+    // Side view, plots, lessons, pacing and exports (issue 6); before
+    // readSettings so their docks are restored with the others.
+    auto* teaching = new TeachingDocks(this);
+    connect(teaching, &TeachingDocks::lessonRequested, this, [this](const QString& path) {
+        if (maybeSave()) openFile(path);
+    });
     readSettings();
     onSceneChanged(SceneChange::Whole);
     updateTitle();

@@ -1,5 +1,5 @@
 // labels: ui
-// The teaching tools in the main window: the side view and plots follow the
+// The teaching tools in the main window (MainWindow makes its TeachingDocks): the side view and plots follow the
 // running simulation, a click in a plot moves the timeline, the Lessons and
 // Teach menus sit before Help, presentation mode hides the chrome and comes back.
 #include "ui_test_support.h"
@@ -31,7 +31,7 @@ jl::Scene classic() {
 
 struct Fixture {
     MainWindow window{jltest::quietWindow()};
-    TeachingDocks teaching{&window};
+    TeachingDocks& teaching = *window.findChild<TeachingDocks*>("teaching");
     SimController* sim = window.controller();
     Fixture() {
         window.resize(1400, 950);
