@@ -33,6 +33,8 @@ TeachingDocks::TeachingDocks(MainWindow* window) : QObject(window), window_(wind
     if (auto* script = window->findChild<QDockWidget*>("scriptDock")) {
         window->tabifyDockWidget(script, sideDock);
         sideDock->raise();
+        // Tabifying forgets the column's width the window asked for: ask again.
+        window->resizeDocks({sideDock}, {std::max(380, script->width())}, Qt::Horizontal);
     }
     dock(tr("Plots"), "plotsDock", plots_, Qt::BottomDockWidgetArea);
     lessonDock_ = dock(tr("Lesson"), "lessonDock", lessonPanel_, Qt::LeftDockWidgetArea);
