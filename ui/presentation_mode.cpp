@@ -13,6 +13,10 @@ PresentationMode::PresentationMode(QMainWindow* window, QStringList keepDocks)
     : QObject(window), window_(window), keepDocks_(std::move(keepDocks)) {
     escape_ = new QAction(tr("Leave presentation mode"), this);
     escape_->setShortcut(Qt::Key_Escape);
+    // The 3-D view is a window of its own inside ours: with the keyboard
+    // there, a window shortcut never fires. Presenting owns the screen, so
+    // Esc may act application-wide (the action exists only while presenting).
+    escape_->setShortcutContext(Qt::ApplicationShortcut);
     connect(escape_, &QAction::triggered, this, [this] { setActive(false); });
 }
 

@@ -11,7 +11,10 @@ constexpr std::size_t kDefaultBudget = std::size_t(512) << 20;
 }
 
 SimController::SimController(QObject* parent) : QObject(parent), worker_(std::make_unique<SimWorker>(kDefaultBudget)) {
-    thread_ = QThread::create([w = worker_.get()] { w->run(); });
+    thread_ = QThread::create([w = worker_.get()] {
+        w->run();
+        w->markFinished();
+    });
     thread_->setObjectName("simulation");
     thread_->start();
     poll_.setInterval(16);
@@ -24,11 +27,12 @@ SimController::~SimController() {
     worker_->post(cmd::Quit{});
     // A single engine step cannot be interrupted; if one never ends, leave
     // the thread to the process's exit rather than hang the window's close.
-    if (!thread_->wait(QDeadlineTimer(3000))) {
+    if (!worker_->waitFinished(std::chrono::milliseconds(3000))) {
         qWarning("the simulation thread did not stop; leaving it to the exit");
         (void)worker_.release();
         return;
     }
+    thread_->wait();  // it has returned from run(): only the thread's exit remains
     delete thread_;
 }
 

@@ -367,4 +367,16 @@ void SimWorker::publish() {
     dirty_ = false;
 }
 
+void SimWorker::markFinished() {
+    // Notify under the lock: once the waiter sees done_, it destroys us.
+    const std::lock_guard lock(finishMutex_);
+    done_ = true;
+    finished_.notify_all();
+}
+
+bool SimWorker::waitFinished(std::chrono::milliseconds limit) {
+    std::unique_lock lock(finishMutex_);
+    return finished_.wait_for(lock, limit, [this] { return done_; });
+}
+
 }  // namespace jlui

@@ -12,6 +12,8 @@
 #include <condition_variable>
 #include <deque>
 #include <memory>
+#include <chrono>
+#include <condition_variable>
 #include <mutex>
 #include <variant>
 
@@ -44,6 +46,12 @@ public:
     void post(SimCommand c);
     // Asks a long advance to stop between two steps (the program is closing).
     void abort() { abort_ = true; }
+    // The thread's last act, and a wait for it with a deadline. Through a
+    // std::mutex, so ThreadSanitizer sees that the worker's writes happen
+    // before its destruction (QThread::wait synchronises inside Qt, which
+    // Debian's Qt does not instrument).
+    void markFinished();
+    bool waitFinished(std::chrono::milliseconds limit);
     std::shared_ptr<const SimStatus> status() const;
     // The thread body; returns after a Quit command.
     void run();
@@ -75,6 +83,9 @@ private:
     mutable std::mutex statusMutex_;
     std::shared_ptr<const SimStatus> status_ = std::make_shared<SimStatus>();
     std::atomic<bool> abort_{false};
+    std::mutex finishMutex_;
+    std::condition_variable finished_;
+    bool done_ = false;
 
     // The worker's own; touched only on its thread.
     std::size_t budget_;
