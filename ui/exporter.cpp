@@ -1,6 +1,7 @@
 #include "ui/exporter.h"
 
 #include "core/event_csv.h"
+#include "core/frame_csv.h"
 #include "core/simulation.h"
 
 #include <QDir>
@@ -11,6 +12,7 @@
 #include <QTemporaryDir>
 #include <QWidget>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 namespace jlui {
@@ -18,6 +20,15 @@ namespace jlui {
 namespace {
 
 ExportResult failed(const QString& why) { return {false, why, {}}; }
+
+// Written whole or not at all.
+std::optional<QString> saveText(const QString& path, const std::string& text) {
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(text.data(), qint64(text.size())) != qint64(text.size()) ||
+        !file.commit())
+        return QObject::tr("Could not write %1: %2").arg(path, file.errorString());
+    return std::nullopt;
+}
 
 // Poses of a whole range fit in memory unless the ladder is huge; then the
 // side view frames as it goes (growing, never shrinking).
@@ -103,12 +114,39 @@ ExportResult Exporter::imageSequence(const jl::Scene& scene, const SequenceReque
 ExportResult Exporter::eventsCsv(const std::vector<jl::Event>& events, const QString& path) {
     std::ostringstream text;
     jl::writeEventsCsv(text, events);
-    QSaveFile file(path);
-    const std::string bytes = text.str();
-    if (!file.open(QIODevice::WriteOnly) || file.write(bytes.data(), qint64(bytes.size())) != qint64(bytes.size()) ||
-        !file.commit())
-        return failed(QObject::tr("Could not write %1: %2").arg(path, file.errorString()));
+    if (const auto error = saveText(path, text.str())) return failed(*error);
     return {true, {}, {path}};
+}
+
+ExportResult Exporter::tables(const jl::Scene& scene, double from, double to, double every, const QString& directory) {
+    const int total = frameCount(from, to, every > 0 ? 1 / every : 0);
+    if (total == 0) return failed(QObject::tr("The time range is empty: choose an end after the start and a positive interval."));
+    if (!QDir().mkpath(directory)) return failed(QObject::tr("Could not make the folder %1.").arg(directory));
+    auto built = jl::Simulation::build(scene);
+    if (!built.simulation) return failed(QObject::tr("The scene does not build."));
+    jl::Simulation& sim = *built.simulation;
+    std::vector<jl::Frame> frames;
+    std::vector<jl::Event> events;
+    for (int i = 0; i < total; ++i) {
+        if (!sim.advanceTo(from + i * every))
+            return failed(QObject::tr("The run stopped at %1 s: %2").arg(sim.time()).arg(QString::fromStdString(sim.failure())));
+        frames.push_back(sim.frame());
+        for (const jl::Event& e : frames.back().events)
+            if (e.time >= from) events.push_back(e);
+        frames.back().events.clear();
+    }
+    std::ostringstream poses, energy, log;
+    jl::writePosesCsv(poses, frames);
+    jl::writeEnergyCsv(energy, frames);
+    jl::writeEventsCsv(log, events);
+    ExportResult result{true, {}, {}};
+    const std::pair<const char*, std::string> files[] = {{"poses.csv", poses.str()}, {"energy.csv", energy.str()}, {"events.csv", log.str()}};
+    for (const auto& [name, text] : files) {
+        const QString path = QDir(directory).filePath(name);
+        if (const auto error = saveText(path, text)) return failed(*error);
+        result.files << path;
+    }
+    return result;
 }
 
 QString Exporter::ffmpeg() { return QStandardPaths::findExecutable("ffmpeg"); }

@@ -52,6 +52,10 @@ public:
 
     // The event log as CSV (core/event_csv.h), written atomically.
     static ExportResult eventsCsv(const std::vector<jl::Event>& events, const QString& path);
+    // Re-runs the scene and writes poses.csv, energy.csv and events.csv
+    // (core/frame_csv.h, core/event_csv.h) into `directory`: a frame at
+    // `from` and every `every` seconds up to `to`, the events in between.
+    static ExportResult tables(const jl::Scene& scene, double from, double to, double every, const QString& directory);
 
     // Where ffmpeg is, or empty when it is not installed; what to tell the user then.
     static QString ffmpeg();

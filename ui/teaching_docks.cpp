@@ -111,6 +111,7 @@ void TeachingDocks::createMenus() {
     exports->addAction(tr("&Image sequence..."), this, [this] { exportSequence(false); });
     exports->addAction(tr("&Video (ffmpeg)..."), this, [this] { exportSequence(true); });
     exports->addAction(tr("&Event log as CSV..."), this, &TeachingDocks::exportEvents);
+    exports->addAction(tr("&Tables as CSV (poses, energies, events)..."), this, &TeachingDocks::exportTables);
     teach->addSeparator();
     for (const char* name : {"sideViewDock", "plotsDock", "lessonDock"})
         teach->addAction(window_->findChild<QDockWidget*>(name)->toggleViewAction());
@@ -197,6 +198,18 @@ void TeachingDocks::exportSequence(bool video) {
     progress.reset();
     if (!result.ok) QMessageBox::warning(window_, tr("Not exported"), result.error);
     else say(tr("Exported %n file(s).", nullptr, int(result.files.size())));
+}
+
+void TeachingDocks::exportTables() {
+    const QString dir = QFileDialog::getExistingDirectory(window_, tr("Folder for poses.csv, energy.csv and events.csv"));
+    if (dir.isEmpty()) return;
+    const auto s = latest();
+    // Every frame of the recorded run, as the timeline has them.
+    const jl::Scene scene = s && s->recorded ? *s->recorded : window_->document()->scene();
+    const double end = s && s->headTime > 0 ? s->headTime : scene.duration;
+    const ExportResult result = Exporter::tables(scene, 0, end, scene.solver.frameInterval, dir);
+    if (!result.ok) QMessageBox::warning(window_, tr("Not exported"), result.error);
+    else say(tr("Wrote %1.").arg(result.files.join(", ")));
 }
 
 void TeachingDocks::exportEvents() {

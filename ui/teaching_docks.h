@@ -48,6 +48,7 @@ private:
     void sideViewPicture();
     void exportSequence(bool video);
     void exportEvents();
+    void exportTables();
     void say(const QString& text);
     std::shared_ptr<const SimStatus> latest() const;
 

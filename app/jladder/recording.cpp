@@ -1,6 +1,7 @@
 #include "app/jladder/recording.h"
 
 #include "app/jladder/options.h"
+#include "core/frame_csv.h"
 
 #include <algorithm>
 #include <chrono>
@@ -52,34 +53,18 @@ Recording record(Simulation& sim, double until, double every) {
     return r;
 }
 
+// The tables themselves are core's (core/frame_csv.h): the desktop program writes the same.
 bool writePosesCsv(const Recording& r, const std::string& path, std::string& error) {
     std::ofstream out(path);
-    if (!out) {
-        error = path + ": cannot write";
-        return false;
-    }
-    out.precision(17);
-    out << "t,block,x,y,theta\n";
-    for (const Frame& f : r.frames)
-        for (size_t i = 0; i < f.blocks.size(); ++i)
-            out << f.time << ',' << i << ',' << f.blocks[i].position.x() << ',' << f.blocks[i].position.y() << ','
-                << f.blocks[i].angle << '\n';
+    if (out) jl::writePosesCsv(out, r.frames);
+    if (!out) error = path + ": cannot write";
     return bool(out);
 }
 
 bool writeEnergyCsv(const Recording& r, const std::string& path, std::string& error) {
     std::ofstream out(path);
-    if (!out) {
-        error = path + ": cannot write";
-        return false;
-    }
-    out.precision(17);
-    out << "t,kinetic,potential,total,held_work,user_work,impact_loss,damping_loss,balance\n";
-    for (const Frame& f : r.frames) {
-        const EnergyFrame& e = f.energy;
-        out << f.time << ',' << e.kinetic << ',' << e.potential << ',' << e.total() << ',' << e.heldWork << ','
-            << e.userWork << ',' << e.impactLoss << ',' << e.dampingLoss << ',' << e.balance() << '\n';
-    }
+    if (out) jl::writeEnergyCsv(out, r.frames);
+    if (!out) error = path + ": cannot write";
     return bool(out);
 }
 

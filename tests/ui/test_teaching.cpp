@@ -303,6 +303,31 @@ private slots:
             QCOMPARE(cells[2], QString(jl::toString(run.events[i].kind)));
         }
 
+        // Poses, energies and events of 0 to 1 s every 0.1 s: 11 frames of 6 blocks.
+        const ExportResult tables = Exporter::tables(scene, 0, 1.0, 0.1, dir.filePath("tables"));
+        QVERIFY2(tables.ok, qPrintable(tables.error));
+        auto rowsOf = [&](const char* name) {
+            QFile f(QDir(dir.filePath("tables")).filePath(name));
+            if (!f.open(QIODevice::ReadOnly | QIODevice::Text)) return QStringList();
+            return QString::fromUtf8(f.readAll()).split('\n', Qt::SkipEmptyParts);
+        };
+        const QStringList poses = rowsOf("poses.csv"), energies = rowsOf("energy.csv");
+        QCOMPARE(poses.size(), 11 * 6 + 1);
+        QCOMPARE(poses.front(), QString("t,block,x,y,theta"));
+        QCOMPARE(energies.size(), 11 + 1);
+        QCOMPARE(energies.front().split(',').size(), 9);
+        QCOMPARE(energies.front().split(',').last(), QString("balance"));
+        for (const QString& row : energies.mid(1)) QVERIFY(std::abs(row.split(',').last().toDouble()) < 1e-6);
+        // Block 3 at 0.5 s (frame 5) is where the engine puts it, to the last bit.
+        auto engine = jl::Simulation::build(scene).simulation;
+        engine->advanceTo(0.5);
+        const jl::Pose at05 = engine->frame().blocks[3];
+        const QStringList cells = poses[5 * 6 + 3 + 1].split(',');
+        QCOMPARE(cells[1].toInt(), 3);
+        QCOMPARE(cells[2].toDouble(), at05.position.x());
+        QCOMPARE(cells[3].toDouble(), at05.position.y());
+        QCOMPARE(cells[4].toDouble(), at05.angle);
+
         // The plots as PNG and SVG.
         RunPlots plots;
         plots.resize(800, 600);

@@ -1,0 +1,18 @@
+// Recorded frames as CSV tables for spreadsheets: block poses (one row per
+// block per frame) and the energy books (one row per frame). Shared by the
+// command line (jladder run/export) and the desktop program's exports.
+#pragma once
+
+#include "core/frame.h"
+
+#include <ostream>
+#include <vector>
+
+namespace jl {
+
+// "t,block,x,y,theta": m and rad, 17 significant digits (they read back exactly).
+void writePosesCsv(std::ostream& out, const std::vector<Frame>& frames);
+// "t,kinetic,potential,total,held_work,user_work,impact_loss,damping_loss,balance": J.
+void writeEnergyCsv(std::ostream& out, const std::vector<Frame>& frames);
+
+}  // namespace jl
