@@ -29,4 +29,4 @@ if [ "${JL_SANITIZERS:-1}" = 1 ]; then
 fi
 
 echo "== Every test"
-exec xvfb ctest --test-dir build --output-on-failure --timeout 900
+xvfb ctest --test-dir build --output-on-failure --timeout 900
