@@ -322,17 +322,21 @@ bool Simulation::takeStep(double limit) {
     }
     if (ladder_) {
         std::vector<double> g;
-        // Is an event function negative in the state the world holds, at time t?
-        auto violated = [&](double t) {
+        // The smallest event function in the state the world holds, at time t
+        // (an event function is negative when its event has happened).
+        auto smallest = [&](double t) {
             dynamics_.evaluate(world_, t);
             ladder_->eventFunctions(world_, dynamics_, g);
-            return std::any_of(g.begin(), g.end(), [](double x) { return x < 0; });
+            return g.empty() ? 1.0 : *std::min_element(g.begin(), g.end());
         };
-        if (violated(t_ + taken)) {
+        double fhi = smallest(t_ + taken);
+        if (fhi < 0) {
             if (solver.events == EventPolicy::Located && taken > solver.eventTolerance) {
-                // Bisect the step for the first instant an event function is
-                // negative, re-running the step from its start each time.
-                double lo = 0, hi = taken;
+                // Find the instant the smallest event function turns negative,
+                // re-running the step from its start for each trial length:
+                // regula falsi with the Illinois correction (a few trials
+                // where halving takes twenty); halving when the start is not
+                // strictly before every event.
                 auto rerun = [&](double hh) {
                     world_.q = q0;
                     world_.v = v0;
@@ -340,9 +344,27 @@ bool Simulation::takeStep(double limit) {
                     return advanceAndProject(world_, dynamics_, stepper_, t_, hh, ledger_, solver.projectionTolerance,
                                              true).ok();
                 };
+                world_.q = q0;
+                world_.v = v0;
+                double lo = 0, hi = taken, flo = smallest(t_);
+                int kept = 0;  // which end stayed put last time: -1 low, +1 high
                 while (hi - lo > solver.eventTolerance) {
-                    const double mid = 0.5 * (lo + hi);
-                    if (!rerun(mid) || violated(t_ + mid)) hi = mid; else lo = mid;
+                    const double width = hi - lo;
+                    double mid = flo > 0 ? hi - fhi * width / (fhi - flo) : lo + 0.5 * width;
+                    if (!(mid > lo && mid < hi)) mid = lo + 0.5 * width;
+                    mid = std::clamp(mid, lo + 0.25 * solver.eventTolerance, hi - 0.25 * solver.eventTolerance);
+                    const double f = rerun(mid) ? smallest(t_ + mid) : -1.0;
+                    if (f < 0) {
+                        hi = mid;
+                        fhi = f;
+                        if (kept == -1) flo *= 0.5;
+                        kept = -1;
+                    } else {
+                        lo = mid;
+                        flo = f;
+                        if (kept == 1) fhi *= 0.5;
+                        kept = 1;
+                    }
                 }
                 if (!rerun(hi)) {
                     fail("an event could not be located: a step to it failed");
