@@ -15,6 +15,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace jl {
@@ -40,6 +41,10 @@ public:
 
     // The current state as a frame; events since the previous call move into it.
     Frame frame();
+    // Just the events since the previous call (a frame costs O(N) trig: a
+    // recorder that needs every event but not every frame takes these).
+    std::vector<Event> takeEvents() { return std::exchange(pending_, {}); }
+    double lastResidual() const { return lastResidual_; }  // m, after the last step
 
     // Steps until time() >= t (possibly a little past it: the last step is not
     // shortened). Returns false, keeping the last good state, on failure.

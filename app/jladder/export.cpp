@@ -38,7 +38,7 @@ int exportFrames(const std::vector<std::string>& args) {
     Simulation::Built built = Simulation::build(*load.scene);
     for (const std::string& e : built.errors) std::fprintf(stderr, "%s: %s\n", o.positional.front().c_str(), e.c_str());
     if (!built.simulation) return 1;
-    const Recording r = record(*built.simulation, until, every);
+    const Recording r = record(*built.simulation, until, every, true);
     std::string error;
     bool ok = r.failure.empty();
     if (auto f = o.get("--csv")) ok = writePosesCsv(r, *f, error) && ok;

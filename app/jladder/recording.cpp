@@ -17,7 +17,6 @@ void keep(Recording& r, Frame f, bool store) {
     for (Event& e : f.events) r.events.push_back(std::move(e));
     f.events.clear();
     r.worstBalance = std::max(r.worstBalance, std::abs(f.energy.balance()));
-    r.worstResidual = std::max(r.worstResidual, f.solver.residual);
     r.energyEnd = f.energy.total();
     if (store) r.frames.push_back(std::move(f));
 }
@@ -31,17 +30,19 @@ std::string number(double x) {
 
 }  // namespace
 
-Recording record(Simulation& sim, double until, double every) {
+Recording record(Simulation& sim, double until, double every, bool keepFrames) {
     Recording r;
     Frame first = sim.frame();
     r.energyStart = first.energy.total();
-    keep(r, std::move(first), every > 0);
+    keep(r, std::move(first), keepFrames);
     double nextFrame = every;
     const auto start = std::chrono::steady_clock::now();
     while (sim.time() < until && sim.failure().empty()) {
         if (!sim.stepOnce()) break;
+        for (Event& e : sim.takeEvents()) r.events.push_back(std::move(e));
+        r.worstResidual = std::max(r.worstResidual, sim.lastResidual());
         const bool due = every > 0 && sim.time() >= nextFrame - 1e-12;
-        keep(r, sim.frame(), due);
+        if (due || sim.time() >= until) keep(r, sim.frame(), keepFrames && due);
         while (every > 0 && nextFrame <= sim.time() + 1e-12) nextFrame += every;
     }
     const Frame last = sim.frame();

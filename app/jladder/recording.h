@@ -19,8 +19,10 @@ struct Recording {
     std::string failure;
 };
 
-// Runs `sim` to `until`, keeping a frame every `every` seconds (0: none).
-Recording record(Simulation& sim, double until, double every);
+// Runs `sim` to `until`, collecting every event and the largest pin gap
+// after every step, and a frame (energy books checked) every `every`
+// seconds; the frames are kept if `keepFrames`.
+Recording record(Simulation& sim, double until, double every, bool keepFrames);
 
 bool writePosesCsv(const Recording& r, const std::string& path, std::string& error);
 bool writeEnergyCsv(const Recording& r, const std::string& path, std::string& error);

@@ -63,7 +63,7 @@ int run(const std::vector<std::string>& args) {
     for (const std::string& e : built.errors) std::fprintf(stderr, "%s: %s\n", path.c_str(), e.c_str());
     if (!built.simulation) return 1;
 
-    const Recording r = record(*built.simulation, *until, o.get("--frames") ? every : 0);
+    const Recording r = record(*built.simulation, *until, every, o.get("--frames").has_value());
     std::string error;
     if (auto f = o.get("--events"); f && !writeEventsJson(r, *f, error)) std::fprintf(stderr, "%s\n", error.c_str());
     if (auto f = o.get("--frames"); f && !writePosesCsv(r, *f, error)) std::fprintf(stderr, "%s\n", error.c_str());
