@@ -36,13 +36,4 @@ DriveSample Drive::at(double t) const {
     return d;
 }
 
-std::vector<double> Drive::kinks() const {
-    std::vector<double> k;
-    for (const DriveMove& m : moves_) {
-        k.push_back(m.t0);
-        k.push_back(m.t0 + m.duration);
-    }
-    return k;
-}
-
 }  // namespace jl

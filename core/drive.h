@@ -34,9 +34,6 @@ public:
     const std::vector<DriveMove>& moves() const { return moves_; }
     const Pose& base() const { return base_; }
 
-    // Times where the prescribed acceleration jumps (for the force tests).
-    std::vector<double> kinks() const;
-
 private:
     Pose base_;
     std::vector<DriveMove> moves_;

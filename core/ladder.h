@@ -84,7 +84,6 @@ public:
 
     std::vector<HingeFrame> hingeFrames(const World& w) const;
     std::vector<RibbonFrame> ribbons(const World& w) const;
-    const RibbonSpec& ribbonSpec() const { return spec_.ribbons; }
 
 private:
     struct Wrench {

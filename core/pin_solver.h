@@ -30,7 +30,6 @@ public:
         version_ = -1;
         analysed_ = false;
     }
-    bool isChain() const { return chain_; }
     int pinCount() const { return int(pins_.size()); }
     // World-frame arm from body A's (B's) origin to pin i.
     const Vec2& armA(int i) const { return pins_[size_t(i)].rA; }

@@ -120,10 +120,18 @@ std::optional<std::string> Simulation::buildWorld() {
 // end of a held block's scripted move (its acceleration jumps there).
 double Simulation::nextScheduledTime() const {
     double next = kOpenEnd;
-    for (const ScriptAction& a : scene_.script) {
+    for (const ScriptAction& a : scene_.script)
         if (a.at > t_) next = std::min(next, a.at);
-        const bool moves = a.kind == ScriptAction::Kind::Turn || a.kind == ScriptAction::Kind::Move;
-        if (moves && a.at + a.duration > t_) next = std::min(next, a.at + a.duration);
+    // Every move of a held block (scripted or following the mouse) starts
+    // and ends with a jump of the hand's acceleration: the force tests run there.
+    for (int b = 1; b < world_.bodyCount(); ++b) {
+        if (!world_.body(b).alive || !world_.body(b).kinematic) continue;
+        for (PartId p : world_.body(b).parts) {
+            if (!world_.part(p).drive) continue;
+            for (const DriveMove& m : world_.part(p).drive->moves())
+                for (double kink : {m.t0, m.t0 + m.duration})
+                    if (kink > t_) next = std::min(next, kink);
+        }
     }
     return next;
 }
