@@ -131,15 +131,22 @@ private slots:
 
     void badIdsAreReportedAndChangeNothing() {
         TwoBoxes s;
-        const Eigen::VectorXd q = s.w.q;
+        auto unchanged = [&](const Eigen::VectorXd& q, const Eigen::VectorXd& v, int pins) {
+            return s.w.q == q && s.w.v == v && int(s.w.pins().size()) == pins;
+        };
+        Eigen::VectorXd q = s.w.q, v = s.w.v;
         QVERIFY(s.w.combine(s.aRight, 999).has_value());
         QVERIFY(s.w.combine(-1, s.aRight).has_value());
         QVERIFY(s.w.combine(s.aRight, s.aRight).has_value());
         QVERIFY(s.w.combine(s.aRight, s.aTop).has_value());  // two points of one part
         QVERIFY(s.w.separate(s.aRight).has_value());          // nothing combined into it
+        QVERIFY(unchanged(q, v, 0));
         QVERIFY(!s.w.combine(s.aRight, s.bLeft));
-        QVERIFY(s.w.combine(s.bLeft, s.aTop).has_value());    // absorbed: reported, not reused
-        QVERIFY(s.w.q == q || s.w.q.size() == q.size());
+        q = s.w.q, v = s.w.v;
+        const auto error = s.w.combine(s.bLeft, s.aTop);      // absorbed: reported, not reused
+        QVERIFY(error.has_value());
+        QVERIFY(error->message.find("combined into") != std::string::npos);
+        QVERIFY(unchanged(q, v, 1));
         QVERIFY(invalidity(s.w).isEmpty());
     }
 
