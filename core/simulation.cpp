@@ -20,6 +20,41 @@ constexpr double kOpenEnd = std::numeric_limits<double>::max();
 
 Vec2 vec(const Point2& p) { return {p[0], p[1]}; }
 
+// Kinetic energy relative to the held body when exactly one body is held,
+// else the plain kinetic energy: the measure the ladder's impacts book by, in
+// whose frame a plastic impact never creates energy (PHYSICS.md section 7).
+// The held body moves rigidly, so its motion applied to every part satisfies
+// every pin: a plastic projection can only lower this.
+double heldFrameKinetic(const World& w) {
+    int held = -1, count = 0;
+    for (int b = 1; b < w.bodyCount(); ++b)
+        if (w.body(b).alive && w.body(b).kinematic) {
+            held = b;
+            ++count;
+        }
+    if (count != 1) return energy(w).kinetic;
+    const Vec2 origin = w.q.segment<2>(3 * held), vel = w.v.segment<2>(3 * held);
+    const double omega = w.v[3 * held + 2];
+    double ke = 0;
+    for (PartId p = 1; p < w.partCount(); ++p) {
+        const Part& part = w.part(p);
+        if (part.drive || part.body == 0) continue;
+        const Twist v = w.partVelocity(p);
+        const Vec2 rel = v.linear - vel - omega * perp(w.partPose(p).position - origin);
+        ke += 0.5 * part.mass * rel.squaredNorm() + 0.5 * part.inertia * (v.angular - omega) * (v.angular - omega);
+    }
+    return ke;
+}
+
+// The largest distance between the points a particle joins (m).
+double particleSpread(const World& w, ParticleId id) {
+    const std::vector<Attachment>& at = w.particle(id).at;
+    const Vec2 first = w.pointPosition(at.front().part, at.front().local);
+    double spread = 0;
+    for (const Attachment& x : at) spread = std::max(spread, (w.pointPosition(x.part, x.local) - first).norm());
+    return spread;
+}
+
 }  // namespace
 
 struct Snapshot {
@@ -177,21 +212,58 @@ void Simulation::applyScriptAction(const ScriptAction& a) {
             e = {t_, EventKind::Cut, a.hinge, -1, "the ribbons of hinge " + std::to_string(a.hinge) + " are cut"};
         }
         break;
-    case K::Join: {
-        // Joining two corners pulls them together and merges their motion:
-        // that is the script's doing, booked as work done on the ladder.
-        const double before = energy(world_).total();
-        if (ladder_ && a.otherBlock >= 0 && a.otherBlock < blockCount() &&
-            !world_.combine(ladder_->particle(a.block, a.corner), ladder_->particle(a.otherBlock, a.otherCorner))) {
-            ledger_.user += energy(world_).total() - before;
-            e = {t_, EventKind::Join, -1, -1,
-                 "corner " + std::to_string(a.corner) + " of block " + std::to_string(a.block) + " is joined to corner " +
-                     std::to_string(a.otherCorner) + " of block " + std::to_string(a.otherBlock)};
-        }
+    case K::Join:
+        if (ladder_ && a.otherBlock >= 0 && a.otherBlock < blockCount()) join(a);
         break;
     }
-    }
     if (!e.text.empty()) record(e);
+}
+
+// A scripted join: the two corners are pulled together (positions only: the
+// mass-weighted projection onto the new pin) and their motion is merged
+// (velocities only: a plastic impact, the merge of a rigid pair and the
+// projection onto the pin). The books, as for the ladder's own impacts:
+// the pull's change of potential energy is the user's work; the merge loses
+// kinetic energy in the frame of the held block (impact dissipation, >= 0)
+// and the held blocks' impulses do the rest of its change (held work).
+// Hinges the pull drove past their limits are settled at once by the
+// ladder's events; their snaps finish the pull (user's work too).
+// Refused, leaving the world as it was, when the corners cannot be brought
+// together: the world's combine makes two blocks that already share a
+// point one rigid body at their current pose (a gap would stay locked
+// inside it, to be closed by whatever separates them later), two held
+// blocks cannot move, or the projection fails.
+void Simulation::join(const ScriptAction& a) {
+    const ParticleId p = ladder_->particle(a.block, a.corner), q = ladder_->particle(a.otherBlock, a.otherCorner);
+    const World saved = world_;
+    const Energy e0 = energy(world_);
+    const double k0 = heldFrameKinetic(world_);
+    if (world_.combine(p, q, false)) return;  // refused by the world: nothing changed
+    const double k1 = heldFrameKinetic(world_);
+    PinSolver solver;
+    const double tolerance = scene_.solver.projectionTolerance;
+    const ProjectionResult pulled = projectPositions(world_, solver, tolerance);
+    const double k2 = heldFrameKinetic(world_);
+    projectVelocities(world_, solver);
+    const double k3 = heldFrameKinetic(world_);
+    if (!pulled.converged || !(particleSpread(world_, p) <= tolerance) || !world_.q.allFinite() ||
+        !world_.v.allFinite()) {
+        world_ = saved;
+        dynamics_.solver().reset();
+        return;
+    }
+    const Energy e1 = energy(world_);
+    const double dissipated = (k0 - k1) + (k2 - k3);
+    ledger_.user += e1.potential - e0.potential;
+    impactLoss_ += dissipated;
+    impactHeldWork_ += e1.kinetic - e0.kinetic + dissipated;
+    record({t_, EventKind::Join, -1, -1,
+            "corner " + std::to_string(a.corner) + " of block " + std::to_string(a.block) + " is joined to corner " +
+                std::to_string(a.otherCorner) + " of block " + std::to_string(a.otherBlock)});
+    dynamics_.evaluate(world_, t_);
+    const double settling = energy(world_).potential;
+    for (Event& ev : ladder_->resolve(world_, dynamics_, t_, &impactLoss_, &impactHeldWork_)) record(ev);
+    ledger_.user += energy(world_).potential - settling;
 }
 
 // The user's drag: the mouse spring on a free block; a held block's hand

@@ -78,6 +78,7 @@ private:
     double nextScheduledTime() const;
     void applyDueInputs();
     void applyScriptAction(const ScriptAction& a);
+    void join(const ScriptAction& a);
     void applyDragSample(const DragRecord& d, const DragRecord::Sample& s);
     bool takeStep(double limit);
     void record(const Event& e);
