@@ -22,6 +22,9 @@ Powers Dynamics::evaluate(World& w, double t) {
         rhs_.segment<2>(2 * Eigen::Index(i)) =
             wa * wa * solver_.armA(int(i)) - wb * wb * solver_.armB(int(i)) - rhs_.segment<2>(2 * Eigen::Index(i));
     }
+    // Welds fix a relative angle, a linear constraint: no velocity term.
+    const Eigen::Index weldRows = 2 * Eigen::Index(pins.size());
+    rhs_.tail(rhs_.size() - weldRows) *= -1.0;
     solver_.solve(rhs_, lambda_);
 
     // a = W (f + J^T lambda) for dynamic bodies; kinematic ones keep theirs.
@@ -44,6 +47,15 @@ Powers Dynamics::evaluate(World& w, double t) {
             const Vec2 vp = w.v.segment<2>(3 * p.bodyB) + w.v[3 * p.bodyB + 2] * perp(solver_.armB(int(i)));
             powers.held += l.dot(vp);
         }
+    }
+    // The moment of a weld to a held body, times the held body's spin.
+    const std::vector<Weld>& welds = w.welds();
+    for (size_t i = 0; i < welds.size(); ++i) {
+        const Pin& p = pins[size_t(welds[i].pin)];
+        const bool ka = w.body(p.bodyA).kinematic, kb = w.body(p.bodyB).kinematic;
+        if (ka == kb) continue;
+        const double moment = welds[i].arm * lambda_[weldRows + Eigen::Index(i)];  // on A; -moment on B
+        powers.held += ka ? -moment * w.v[3 * p.bodyA + 2] : moment * w.v[3 * p.bodyB + 2];
     }
     // Blocks locked to a held block move with it: the hand supplies the rate
     // of change of their kinetic and potential energy.

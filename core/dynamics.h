@@ -22,7 +22,8 @@ public:
     // the dynamic bodies from w.q and w.v. Allocation-free once warmed up.
     Powers evaluate(World& w, double t);
 
-    // Pin forces of the last evaluation (2 per pin, force on body A).
+    // Pin forces of the last evaluation (2 per pin, force on body A), then
+    // one multiplier per weld (World::Weld).
     const Eigen::VectorXd& pinForces() const { return lambda_; }
     // Applied (non-constraint) forces of the last evaluation, 3 per body.
     const Eigen::VectorXd& appliedForces() const { return force_; }

@@ -203,6 +203,7 @@ void Ladder::updateAngles(const World& w) {
 // it; the part velocities before it and the pin impulses are
 // passed along with them).
 Ladder::Wrench Ladder::internalWrench(const World& w, const Dynamics& d, int j, const Impact* impact) const {
+    if (w.weldsRigidPairs()) return weldWrench(w, d, j, impact);
     const int body = w.part(block(j)).body;
     int lo = j - 1, hi = j;
     while (lo > 0 && w.part(block(lo - 1)).body == body) --lo;
@@ -278,6 +279,31 @@ Ladder::Wrench Ladder::internalWrench(const World& w, const Dynamics& d, int j, 
     }
     s.force *= sign;
     s.moment *= sign;
+    return s;
+}
+
+// Weld mode: the two blocks stay separate bodies, so the wrench is what the
+// pin and the weld between them carry (their multipliers), not a sum over
+// a side. No weld between them (the hand holds both): no wrench to test.
+Ladder::Wrench Ladder::weldWrench(const World& w, const Dynamics& d, int j, const Impact* impact) const {
+    const int below = w.part(block(j)).body, above = w.part(block(j - 1)).body;
+    const std::vector<Pin>& pins = w.pins();
+    const std::vector<Weld>& welds = w.welds();
+    const Eigen::VectorXd& lambda = impact ? *impact->pinImpulses : d.pinForces();
+    const Vec2 p = cornerWorld(w, j, hinge(j).corner);
+    Wrench s;
+    for (size_t i = 0; i < welds.size(); ++i) {
+        const Pin& pin = pins[size_t(welds[i].pin)];
+        if (!((pin.bodyA == above && pin.bodyB == below) || (pin.bodyA == below && pin.bodyB == above))) continue;
+        // Pin force l and weld moment arm * mu act on A; minus them on B.
+        const double sign = pin.bodyB == below ? -1.0 : 1.0;
+        const Vec2 l = lambda.segment<2>(2 * Eigen::Index(welds[i].pin));
+        const double mu = lambda[2 * Eigen::Index(pins.size()) + Eigen::Index(i)];
+        const Vec2 x = w.bodyPose(pin.bodyA).apply(pin.localA);
+        s.force = sign * l;
+        s.moment = sign * (welds[i].arm * mu + cross(x - p, l));
+        break;
+    }
     return s;
 }
 

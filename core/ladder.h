@@ -99,6 +99,7 @@ private:
         const Eigen::VectorXd* pinImpulses = nullptr;
     };
     Wrench internalWrench(const World& w, const Dynamics& d, int j, const Impact* impact) const;
+    Wrench weldWrench(const World& w, const Dynamics& d, int j, const Impact* impact) const;
     double foldAcceleration(const World& w, int j) const;
     double foldSense(const World& w, int j) const;
     double blockAngle(const World& w, int i) const;

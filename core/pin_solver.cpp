@@ -4,6 +4,7 @@
 
 #include <Eigen/LU>
 
+#include <algorithm>
 #include <cmath>
 
 namespace jl {
@@ -52,7 +53,8 @@ void PinSolver::order(const World& w) {
         for (int b : {pins[size_t(i)].bodyA, pins[size_t(i)].bodyB})
             if (!w.body(b).kinematic) byBody[size_t(b)].push_back(i);
     }
-    chain_ = true;
+    welds_.resize(w.welds().size());
+    chain_ = w.welds().empty() && !forceSparse_;
     for (const auto& list : byBody)
         if (list.size() > 2) chain_ = false;
     sequence_.clear();
@@ -127,6 +129,11 @@ void PinSolver::assemble(const World& w) {
         row.rA = turn(p.bodyA, p.localA);
         row.rB = turn(p.bodyB, p.localB);
     }
+    const std::vector<Weld>& welds = w.welds();
+    for (size_t i = 0; i < welds.size(); ++i) {
+        const PinRow& p = pins_[size_t(welds[i].pin)];
+        welds_[i] = {p.bodyA, p.bodyB, p.dynA, p.dynB, welds[i].arm};
+    }
     if (chain_)
         factorChain(w);
     else
@@ -162,32 +169,49 @@ void PinSolver::factorChain(const World& w) {
     }
 }
 
+// Every constraint row r acts on a body b through a 3-vector g (force x,
+// force y, moment per unit multiplier); the matrix entry of rows r, s is the
+// sum over their shared bodies of g_r^T W_b g_s.
 void PinSolver::factorSparse(const World& w) {
-    const int n = int(pins_.size());
-    std::vector<Eigen::Triplet<double>> t;
-    t.reserve(size_t(n) * 12);
-    auto add = [&](int i, int j, const Eigen::Matrix2d& m) {
-        for (int r = 0; r < 2; ++r)
-            for (int c = 0; c < 2; ++c) t.emplace_back(2 * i + r, 2 * j + c, m(r, c));
+    struct Entry {
+        int row;
+        Eigen::Vector3d g;
     };
-    std::vector<std::vector<std::pair<int, double>>> byBody(size_t(w.bodyCount()));
-    double scale = 0;
-    for (int i = 0; i < n; ++i) {
-        const PinRow& p = pins_[size_t(i)];
-        if (p.dynA) byBody[size_t(p.bodyA)].push_back({i, 1.0});
-        if (p.dynB) byBody[size_t(p.bodyB)].push_back({i, -1.0});
+    std::vector<std::vector<Entry>> byBody(size_t(w.bodyCount()));
+    for (size_t i = 0; i < pins_.size(); ++i) {
+        const PinRow& p = pins_[i];
+        const int row = 2 * int(i);
+        if (p.dynA) {
+            byBody[size_t(p.bodyA)].push_back({row, {1, 0, -p.rA.y()}});
+            byBody[size_t(p.bodyA)].push_back({row + 1, {0, 1, p.rA.x()}});
+        }
+        if (p.dynB) {
+            byBody[size_t(p.bodyB)].push_back({row, {-1, 0, p.rB.y()}});
+            byBody[size_t(p.bodyB)].push_back({row + 1, {0, -1, -p.rB.x()}});
+        }
     }
-    for (int b = 0; b < w.bodyCount(); ++b)
-        for (auto [i, si] : byBody[size_t(b)])
-            for (auto [j, sj] : byBody[size_t(b)]) {
-                const PinRow& pi = pins_[size_t(i)];
-                const PinRow& pj = pins_[size_t(j)];
-                const Eigen::Matrix2d m = si * sj * coupling(w, b, si > 0 ? pi.rA : pi.rB, sj > 0 ? pj.rA : pj.rB);
-                if (i == j) scale = std::max(scale, m.cwiseAbs().maxCoeff());
-                add(i, j, m);
+    for (size_t i = 0; i < welds_.size(); ++i) {
+        const WeldRow& wr = welds_[i];
+        const int row = int(2 * pins_.size() + i);
+        if (wr.dynA) byBody[size_t(wr.bodyA)].push_back({row, {0, 0, wr.arm}});
+        if (wr.dynB) byBody[size_t(wr.bodyB)].push_back({row, {0, 0, -wr.arm}});
+    }
+    const int n = rowCount();
+    std::vector<Eigen::Triplet<double>> t;
+    t.reserve(size_t(n) * 8);
+    double scale = 0;
+    for (int b = 0; b < w.bodyCount(); ++b) {
+        const Body& body = w.body(b);
+        const Eigen::Vector3d inverse(body.invMass, body.invMass, body.invInertia);
+        for (const Entry& r : byBody[size_t(b)])
+            for (const Entry& c : byBody[size_t(b)]) {
+                const double m = r.g.dot(inverse.cwiseProduct(c.g));
+                if (r.row == c.row) scale = std::max(scale, std::abs(m));
+                t.emplace_back(r.row, c.row, m);
             }
-    for (int i = 0; i < 2 * n; ++i) t.emplace_back(i, i, kRegularisation * (scale > 0 ? scale : 1.0));
-    matrix_.resize(2 * n, 2 * n);
+    }
+    for (int i = 0; i < n; ++i) t.emplace_back(i, i, kRegularisation * (scale > 0 ? scale : 1.0));
+    matrix_.resize(n, n);
     matrix_.setFromTriplets(t.begin(), t.end());
     if (!analysed_) {
         ldlt_.analyzePattern(matrix_);
@@ -221,12 +245,16 @@ void PinSolver::solve(const Eigen::VectorXd& r, Eigen::VectorXd& x) const {
 }
 
 void PinSolver::multiplyJ(const Eigen::VectorXd& u, Eigen::VectorXd& out) const {
-    out.resize(2 * Eigen::Index(pins_.size()));
+    out.resize(rowCount());
     for (size_t i = 0; i < pins_.size(); ++i) {
         const PinRow& p = pins_[i];
         const Vec2 ua = u.segment<2>(3 * p.bodyA) + u[3 * p.bodyA + 2] * perp(p.rA);
         const Vec2 ub = u.segment<2>(3 * p.bodyB) + u[3 * p.bodyB + 2] * perp(p.rB);
         out.segment<2>(2 * Eigen::Index(i)) = ua - ub;
+    }
+    for (size_t i = 0; i < welds_.size(); ++i) {
+        const WeldRow& wr = welds_[i];
+        out[Eigen::Index(2 * pins_.size() + i)] = wr.arm * (u[3 * wr.bodyA + 2] - u[3 * wr.bodyB + 2]);
     }
 }
 
@@ -238,6 +266,12 @@ void PinSolver::addJTranspose(const Eigen::VectorXd& x, Eigen::VectorXd& f) cons
         f[3 * p.bodyA + 2] += cross(p.rA, l);
         f.segment<2>(3 * p.bodyB) -= l;
         f[3 * p.bodyB + 2] -= cross(p.rB, l);
+    }
+    for (size_t i = 0; i < welds_.size(); ++i) {
+        const WeldRow& wr = welds_[i];
+        const double moment = wr.arm * x[Eigen::Index(2 * pins_.size() + i)];
+        f[3 * wr.bodyA + 2] += moment;
+        f[3 * wr.bodyB + 2] -= moment;
     }
 }
 

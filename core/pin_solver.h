@@ -17,7 +17,8 @@ public:
     // Arms and matrix at the world's current positions, then factorise.
     // Re-derives the pin ordering only when the world's structure changed.
     void assemble(const World& w);
-    // Solves (J W J^T) x = r; r and x hold 2 entries per pin, in w.pins() order.
+    // Solves (J W J^T) x = r; r and x hold 2 entries per pin, in w.pins()
+    // order, then 1 per weld (w.welds()).
     void solve(const Eigen::VectorXd& r, Eigen::VectorXd& x) const;
     // out = J u: the relative velocity (or acceleration part) of every pin
     // for body vector u (3 per body, kinematic bodies included).
@@ -31,6 +32,15 @@ public:
         analysed_ = false;
     }
     int pinCount() const { return int(pins_.size()); }
+    int rowCount() const { return int(2 * pins_.size() + welds_.size()); }
+    // The O(N) chain elimination handles pins only: welds (and branched or
+    // looped graphs) take the sparse factorisation. `forceSparse` takes it
+    // for everything, so the two models of a rigid pair can be compared on
+    // the same solver.
+    void setForceSparse(bool on) {
+        forceSparse_ = on;
+        version_ = -1;
+    }
     // World-frame arm from body A's (B's) origin to pin i.
     const Vec2& armA(int i) const { return pins_[size_t(i)].rA; }
     const Vec2& armB(int i) const { return pins_[size_t(i)].rB; }
@@ -49,6 +59,11 @@ private:
         bool dynA, dynB;   // has finite mass
         Vec2 rA, rB;       // world arms
     };
+    struct WeldRow {
+        int bodyA, bodyB;
+        bool dynA, dynB;
+        double arm;
+    };
     // Consecutive pins of a chain share one dynamic body.
     struct Link {
         int body;
@@ -63,6 +78,8 @@ private:
     long long version_ = -1;
     bool chain_ = true;
     std::vector<PinRow> pins_;
+    std::vector<WeldRow> welds_;
+    bool forceSparse_ = false;
     std::vector<Eigen::Vector2d> rotation_;  // (cos, sin) per body: one sincos per body, not per pin end
     // Chain mode: pins in path order, path starts, and links between neighbours.
     std::vector<int> sequence_;

@@ -19,16 +19,26 @@ void pinGaps(const World& w, Eigen::VectorXd& gap, std::vector<Eigen::Vector2d>&
         return Vec2(w.q[3 * body] + cs[0] * r.x() - cs[1] * r.y(), w.q[3 * body + 1] + cs[1] * r.x() + cs[0] * r.y());
     };
     const std::vector<Pin>& pins = w.pins();
-    gap.resize(2 * Eigen::Index(pins.size()));
+    const std::vector<Weld>& welds = w.welds();
+    const Eigen::Index weldRows = 2 * Eigen::Index(pins.size());
+    gap.resize(weldRows + Eigen::Index(welds.size()));
     for (size_t i = 0; i < pins.size(); ++i) {
         const Pin& p = pins[i];
         gap.segment<2>(2 * Eigen::Index(i)) = point(p.bodyA, p.localA) - point(p.bodyB, p.localB);
     }
+    // A weld's gap: how far its second shared point is off, arm * angle.
+    for (size_t i = 0; i < welds.size(); ++i) {
+        const Pin& p = pins[size_t(welds[i].pin)];
+        gap[weldRows + Eigen::Index(i)] = welds[i].arm * (w.q[3 * p.bodyA + 2] - w.q[3 * p.bodyB + 2] - welds[i].angle);
+    }
 }
 
-double largestPair(const Eigen::VectorXd& x) {
+// The largest gap: a pin's two rows are one distance, a weld's row another.
+double largestGap(const World& w, const Eigen::VectorXd& x) {
+    const Eigen::Index weldRows = 2 * Eigen::Index(w.pins().size());
     double m = 0;
-    for (Eigen::Index i = 0; i + 1 < x.size(); i += 2) m = std::max(m, std::hypot(x[i], x[i + 1]));
+    for (Eigen::Index i = 0; i + 1 < weldRows; i += 2) m = std::max(m, std::hypot(x[i], x[i + 1]));
+    for (Eigen::Index i = weldRows; i < x.size(); ++i) m = std::max(m, std::abs(x[i]));
     return m;
 }
 
@@ -38,14 +48,14 @@ double pinResidual(const World& w) {
     Eigen::VectorXd gap;
     std::vector<Eigen::Vector2d> rotation;
     pinGaps(w, gap, rotation);
-    return largestPair(gap);
+    return largestGap(w, gap);
 }
 
 double pinVelocityResidual(const World& w, PinSolver& solver) {
     solver.assemble(w);
     Eigen::VectorXd jv;
     solver.multiplyJ(w.v, jv);
-    return largestPair(jv);
+    return largestGap(w, jv);
 }
 
 ProjectionResult projectPositions(World& w, PinSolver& solver, double tolerance, int maxIterations) {
@@ -54,7 +64,7 @@ ProjectionResult projectPositions(World& w, PinSolver& solver, double tolerance,
     Eigen::VectorXd &gap = s.gap, &x = s.x, &dq = s.dq, &q0 = s.q0;
     pinGaps(w, gap, s.rotation);
     double size = gap.norm();
-    r.residual = largestPair(gap);
+    r.residual = largestGap(w, gap);
     while (r.residual > tolerance) {
         if (r.iterations == maxIterations) {
             r.converged = false;
@@ -86,7 +96,7 @@ ProjectionResult projectPositions(World& w, PinSolver& solver, double tolerance,
             }
             step *= 0.5;
         }
-        r.residual = largestPair(gap);
+        r.residual = largestGap(w, gap);
     }
     return r;
 }

@@ -16,7 +16,8 @@ struct ProjectionResult {
     double residual = 0;  // m, largest pin gap after the projection
 };
 
-// Largest distance between the two sides of any pin (m).
+// Largest distance between the two sides of any pin, or by which a weld's
+// second shared point is off (m).
 double pinResidual(const World& w);
 // Largest relative velocity across any pin (m/s).
 double pinVelocityResidual(const World& w, PinSolver& solver);
@@ -25,7 +26,8 @@ double pinVelocityResidual(const World& w, PinSolver& solver);
 ProjectionResult projectPositions(World& w, PinSolver& solver, double tolerance, int maxIterations = 25);
 
 // The plastic impulse: v+ = v- + W J^T P with J v+ = 0. Held bodies have
-// infinite mass. If `impulses` is given it receives P (2 per pin, on body A).
+// infinite mass. If `impulses` is given it receives P (2 per pin, on body A, then one
+// per weld).
 void projectVelocities(World& w, PinSolver& solver, Eigen::VectorXd* impulses = nullptr);
 
 // Both, after a change of structure (combine, separate, hold).

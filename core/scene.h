@@ -19,6 +19,9 @@ using Point2 = std::array<double, 2>;
 
 enum class Integrator { ExplicitEuler, SymplecticEuler, RK4, DormandPrince45 };
 enum class EventPolicy { Located, EndOfStep };
+// How a locked or folded pair is modelled: one body (the paper's combine,
+// fewer unknowns) or two bodies held by a pin and a weld (World::Weld).
+enum class RigidPairs { Merge, Weld };
 
 // Size and material of a block; every block of a ladder shares `length`.
 struct BlockSpec {
@@ -173,6 +176,7 @@ struct SolverSpec {
     EventPolicy events = EventPolicy::Located;
     double eventTolerance = 1e-9;       // s, located events
     double frameInterval = 1.0 / 60.0;  // s, output frames
+    RigidPairs rigidPairs = RigidPairs::Merge;
     bool operator==(const SolverSpec&) const = default;
 };
 

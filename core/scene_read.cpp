@@ -135,7 +135,7 @@ void readDamping(const Fields& parent, Scene& scene) {
 void readSolver(const Fields& parent, SolverSpec& solver) {
     Fields f(parent.problems(), parent.value("solver"),
              {"integrator", "step", "tolerance", "projection_tolerance", "events", "event_tolerance",
-              "frame_interval"});
+              "frame_interval", "rigid_pairs"});
     f.choice("integrator", solver.integrator,
              {{"explicit_euler", Integrator::ExplicitEuler},
               {"symplectic_euler", Integrator::SymplecticEuler},
@@ -147,6 +147,7 @@ void readSolver(const Fields& parent, SolverSpec& solver) {
     f.choice("events", solver.events, {{"located", EventPolicy::Located}, {"end_of_step", EventPolicy::EndOfStep}});
     f.number("event_tolerance", solver.eventTolerance, Bound::positive());
     f.number("frame_interval", solver.frameInterval, Bound::positive());
+    f.choice("rigid_pairs", solver.rigidPairs, {{"merge", RigidPairs::Merge}, {"weld", RigidPairs::Weld}});
 }
 
 void readView(const Fields& parent, ViewSpec& view) {

@@ -254,6 +254,7 @@ void writeSolver(Writer& w, const SolverSpec& solver) {
         w.text("events", solver.events == EventPolicy::Located ? "located" : "end_of_step");
     w.numberIf("event_tolerance", solver.eventTolerance, d.eventTolerance);
     w.numberIf("frame_interval", solver.frameInterval, d.frameInterval);
+    if (solver.rigidPairs != d.rigidPairs) w.text("rigid_pairs", solver.rigidPairs == RigidPairs::Merge ? "merge" : "weld");
     w.endMap();
 }
 

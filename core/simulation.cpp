@@ -86,6 +86,7 @@ Simulation::Built Simulation::build(const Scene& scene) {
 
 std::optional<std::string> Simulation::buildWorld() {
     world_.gravity = vec(scene_.gravity);
+    world_.setWeldRigidPairs(scene_.solver.rigidPairs == RigidPairs::Weld);
     std::map<std::string, PartId> named;
     if (scene_.ladder) {
         if (auto e = Ladder::validate(*scene_.ladder)) return e;

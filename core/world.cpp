@@ -3,7 +3,9 @@
 #include "core/projection.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
+#include <numbers>
 #include <numeric>
 
 namespace jl {
@@ -250,7 +252,9 @@ std::vector<std::vector<PartId>> World::rigidGroups(const std::vector<PartId>& p
         for (size_t i = 0; i < members.size(); ++i)
             for (size_t j = i + 1; j < members.size(); ++j) {
                 const int x = members[i], y = members[j];
-                if (parts_[parts[x]].isPoint || parts_[parts[y]].isPoint || ++shared[{x, y}] >= 2)
+                // In weld mode two extended parts stay apart: a weld holds them.
+                if (parts_[parts[x]].isPoint || parts_[parts[y]].isPoint ||
+                    (++shared[{x, y}] >= 2 && !weldRigidPairs_))
                     unite(x, y);
             }
     }
@@ -390,6 +394,11 @@ const std::vector<Pin>& World::pins() const {
     return pins_;
 }
 
+const std::vector<Weld>& World::welds() const {
+    if (pinsStale_) rebuildPins();
+    return welds_;
+}
+
 // Pins are derived lazily: a builder making many combines pays once.
 void World::rebuildPins() const {
     pinsStale_ = false;
@@ -409,6 +418,43 @@ void World::rebuildPins() const {
                              parts_[p.at[i].part].inBody.apply(p.at[i].local), id});
         }
     }
+    welds_.clear();
+    if (weldRigidPairs_) weldSharedPairs();
+}
+
+// Weld mode: of the pins between one pair of bodies (two bodies that share
+// two particles), the first stays a pin and the second becomes a weld of
+// their relative angle, taken from where the two shared points lie on each
+// body; any further pin is redundant and dropped.
+void World::weldSharedPairs() const {
+    std::map<std::pair<int, int>, int> firstPin;
+    std::vector<Pin> kept;
+    std::vector<char> welded;
+    kept.reserve(pins_.size());
+    for (const Pin& p : pins_) {
+        const std::pair<int, int> key{std::min(p.bodyA, p.bodyB), std::max(p.bodyA, p.bodyB)};
+        auto it = firstPin.find(key);
+        if (it == firstPin.end()) {
+            firstPin[key] = int(kept.size());
+            kept.push_back(p);
+            welded.push_back(0);
+            continue;
+        }
+        const int index = it->second;
+        if (welded[size_t(index)]) continue;
+        const Pin& first = kept[size_t(index)];
+        const bool same = p.bodyA == first.bodyA;
+        const Vec2 dA = (same ? p.localA : p.localB) - first.localA;
+        const Vec2 dB = (same ? p.localB : p.localA) - first.localB;
+        const double arm = dA.norm();
+        if (!(arm > 1e-12)) continue;  // the same point twice: the pin holds it
+        const double base = std::atan2(dB.y(), dB.x()) - std::atan2(dA.y(), dA.x());
+        const double now = q[3 * first.bodyA + 2] - q[3 * first.bodyB + 2];
+        const double turns = std::round((now - base) / (2 * std::numbers::pi));
+        welds_.push_back({index, arm, base + turns * 2 * std::numbers::pi});
+        welded[size_t(index)] = 1;
+    }
+    pins_ = std::move(kept);
 }
 
 }  // namespace jl

@@ -64,6 +64,18 @@ struct Pin {
     ParticleId particle = -1;
 };
 
+// In weld mode (World::setWeldRigidPairs), two bodies that share two or more
+// particles are not merged: they keep one pin (at `pin`) and this weld
+// closes their relative angle, theta_A - theta_B = angle. Its row is scaled
+// by `arm` (the distance between the two shared points) so that its gap is
+// a length and its multiplier a force: the gap is arm * (theta_A - theta_B -
+// angle), its multiplier times arm a moment on A (minus that on B).
+struct Weld {
+    int pin = -1;      // index into World::pins(): the same two bodies
+    double arm = 0;    // m
+    double angle = 0;  // rad
+};
+
 // A linear spring-damper between two particles.
 struct Spring {
     ParticleId a = -1, b = -1;
@@ -155,6 +167,16 @@ public:
     const Part& part(PartId p) const { return parts_[p]; }
     const Particle& particle(ParticleId p) const { return particles_[p]; }
     const std::vector<Pin>& pins() const;  // re-derived after a change of structure
+    const std::vector<Weld>& welds() const; // empty unless weld mode; with pins()
+    // Constraint rows: 2 per pin, then 1 per weld.
+    int constraintRows() const { return int(2 * pins().size() + welds().size()); }
+
+    // Model choice for rigid pairs (the benchmark's "model only what a scene
+    // needs"): false (default) merges parts that share two particles into
+    // one body; true keeps every extended part its own body and holds such
+    // pairs together with a pin and a weld instead. Set before building.
+    void setWeldRigidPairs(bool on) { weldRigidPairs_ = on; }
+    bool weldsRigidPairs() const { return weldRigidPairs_; }
     const std::vector<Spring>& springs() const { return springs_; }
     const std::vector<RotaryDamper>& rotaryDampers() const { return dampers_; }
     std::vector<UserDrag>& drags() { return drags_; }
@@ -195,12 +217,14 @@ private:
                  const std::vector<Twist>& partVelocities);
     int allocateBody();
     void rebuildPins() const;
+    void weldSharedPairs() const;
 
     std::vector<Part> parts_;
     std::vector<Body> bodies_;
     std::vector<Particle> particles_;
     std::vector<std::vector<ParticleId>> particlesOfPart_;  // every particle ever on the part
     mutable std::vector<Pin> pins_;
+    mutable std::vector<Weld> welds_;
     mutable bool pinsStale_ = false;
     std::vector<Spring> springs_;
     std::vector<RotaryDamper> dampers_;
@@ -208,6 +232,7 @@ private:
     std::vector<AppliedLoad> loads_;
     std::vector<int> freeBodies_;
     long long structureVersion_ = 0;
+    bool weldRigidPairs_ = false;
 
 };
 

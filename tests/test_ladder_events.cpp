@@ -22,17 +22,26 @@ constexpr double m = 600 * L * T * 0.045;
 // on top, hinge 1 at its left end. Block 1 starts at fold angle `phi`; past
 // pi/2 + atan(T/L) it topples onto block 0, below that it falls off the end.
 // At t = 1 s the hand turns block 0 by `turn` over 0.5 s.
-std::string flatHeldBlock(double phi, const char* turn) {
-    return std::string("format: jacobs-ladder/1\n"
-                       "ladder:\n"
-                       "  blocks: 2\n"
-                       "  held: [0]\n"
-                       "  initial: {fold_angles: [") +
+// `pairs` is the model of a locked or folded pair: "merge" (one body) or
+// "weld" (two bodies, a pin and a weld): the hand answers hold for both.
+std::string flatHeldBlock(double phi, const char* turn, const QString& pairs = "merge") {
+    return "format: jacobs-ladder/1\n"
+           "solver: {rigid_pairs: " + pairs.toStdString() + "}\n"
+           "ladder:\n"
+           "  blocks: 2\n"
+           "  held: [0]\n"
+           "  initial: {fold_angles: [" +
            std::to_string(phi) +
            "], poses: [{block: 0, position: [0, 0], angle: -90deg}]}\n"
            "script:\n"
            "  - {at: 1.0, turn: {block: 0, by: " +
            turn + ", duration: 0.5}}\n";
+}
+
+void bothModelsOfRigidPairs() {
+    QTest::addColumn<QString>("pairs");
+    QTest::newRow("merged") << QString("merge");
+    QTest::newRow("welded") << QString("weld");
 }
 
 HingeContact contactNow(const Simulation& sim, int j) {
@@ -49,8 +58,10 @@ class LadderEventsTest : public QObject {
 private slots:
     // Block 1 falls off the end of the flat block, hits phi = 0 and locks as a
     // cantilever. Moments about the pin: m g L/2 = N T, so N = m g L / (2 T).
+    void lockHoldsCantileverWithHandWorkedForce_data() { bothModelsOfRigidPairs(); }
     void lockHoldsCantileverWithHandWorkedForce() {
-        auto sim = simulate(flatHeldBlock(1.4, "90deg"));
+        QFETCH(QString, pairs);
+        auto sim = simulate(flatHeldBlock(1.4, "90deg", pairs));
         QVERIFY(sim);
         const Run r = runUntil(*sim, 0.9);
         QCOMPARE(int(r.events.size()), 1);
@@ -68,8 +79,10 @@ private slots:
     // (its acceleration jumps to zero) the hanging block would need N = -m g/2:
     // it unlocks, then swings as a pendulum about the corner from phi = 0 at
     // rest, up to twice its hanging angle atan(T/L).
+    void unlockWhenTheHandStopsThenSwingsToTwiceTheHangingAngle_data() { bothModelsOfRigidPairs(); }
     void unlockWhenTheHandStopsThenSwingsToTwiceTheHangingAngle() {
-        auto sim = simulate(flatHeldBlock(1.4, "90deg"));
+        QFETCH(QString, pairs);
+        auto sim = simulate(flatHeldBlock(1.4, "90deg", pairs));
         QVERIFY(sim);
         double lastLockedN = 1, maxPhi = 0;
         const Run r = runUntil(*sim, 1.9, [&](const Frame& f) {
@@ -87,8 +100,10 @@ private slots:
 
     // Block 1 topples onto the flat block and rests face to face: each end
     // carries half its weight, N_near = N_far = m g / 2.
+    void foldRestsWithHalfTheWeightAtEachEnd_data() { bothModelsOfRigidPairs(); }
     void foldRestsWithHalfTheWeightAtEachEnd() {
-        auto sim = simulate(flatHeldBlock(2.0, "-90deg"));
+        QFETCH(QString, pairs);
+        auto sim = simulate(flatHeldBlock(2.0, "-90deg", pairs));
         QVERIFY(sim);
         const Run r = runUntil(*sim, 0.9);
         QCOMPARE(int(r.events.size()), 1);
@@ -100,8 +115,10 @@ private slots:
 
     // Turning the far end down, block 1 tips outward about its lower end: the
     // near contact unloads first and the hinge jumps to the far corner k^1.
+    void flipFlopMovesHingeToFarCorner_data() { bothModelsOfRigidPairs(); }
     void flipFlopMovesHingeToFarCorner() {
-        auto sim = simulate(flatHeldBlock(2.0, "-90deg"));
+        QFETCH(QString, pairs);
+        auto sim = simulate(flatHeldBlock(2.0, "-90deg", pairs));
         QVERIFY(sim);
         HingeContact before;
         const Run r = runUntil(*sim, 1.45, [&](const Frame& f) {
@@ -119,8 +136,10 @@ private slots:
     }
 
     // The mirror turn unloads the far contact: the pair unfolds about k.
+    void unfoldKeepsTheHingeCorner_data() { bothModelsOfRigidPairs(); }
     void unfoldKeepsTheHingeCorner() {
-        auto sim = simulate(flatHeldBlock(2.0, "90deg"));
+        QFETCH(QString, pairs);
+        auto sim = simulate(flatHeldBlock(2.0, "90deg", pairs));
         QVERIFY(sim);
         HingeContact before;
         const Run r = runUntil(*sim, 1.45, [&](const Frame& f) {
@@ -144,8 +163,11 @@ private slots:
     // No held block, no gravity: a push at t = 0 closes the hinge; the plastic
     // LOCK impact keeps the pair's linear momentum (= the push) and its angular
     // momentum about the origin, and loses kinetic energy.
+    void lockConservesMomentumWithoutHeldBlocks_data() { bothModelsOfRigidPairs(); }
     void lockConservesMomentumWithoutHeldBlocks() {
+        QFETCH(QString, pairs);
         auto sim = simulate("format: jacobs-ladder/1\n"
+                            "solver: {rigid_pairs: " + pairs.toStdString() + "}\n"
                             "gravity: [0, 0]\n"
                             "ladder: {blocks: 2, held: [], initial: {fold_angles: [0.6]}}\n"
                             "script:\n"
@@ -182,8 +204,11 @@ private slots:
 
     // Three blocks, the top turned half a turn counter-clockwise: hinge 1
     // folds and flips (corner 0 -> 1), then hinge 2 (corner 3 -> 2).
+    void threeBlockCascadeFoldsAndFlipsInOrder_data() { bothModelsOfRigidPairs(); }
     void threeBlockCascadeFoldsAndFlipsInOrder() {
+        QFETCH(QString, pairs);
         auto sim = simulate("format: jacobs-ladder/1\n"
+                            "solver: {rigid_pairs: " + pairs.toStdString() + "}\n"
                             "ladder: {blocks: 3, held: [0]}\n"
                             "script: [{at: 0.2, turn: {block: 0, by: 180deg, duration: 0.3}}]\n");
         QVERIFY(sim);

@@ -119,6 +119,51 @@ private slots:
         QVERIFY2(std::abs(order - 4) < 0.3, qPrintable(QString::number(order)));
     }
 
+    // Two blocks end to end, joined at both corners of their shared face,
+    // swing from a corner as one bar 2L x T: the exact period with the
+    // bar's inertia, whether the pair is merged into one body or kept as
+    // two bodies held by a pin and a weld (World::setWeldRigidPairs).
+    void rigidPairSwingsAsOneBar_data() {
+        QTest::addColumn<bool>("weld");
+        QTest::newRow("merged") << false;
+        QTest::newRow("welded") << true;
+    }
+    void rigidPairSwingsAsOneBar() {
+        QFETCH(bool, weld);
+        const double theta0 = 1.0, m = rho * L * T * W, M = 2 * m;
+        const Vec2 corner(-L, -T / 2);  // the pivot, from the bar's centre
+        const double r = corner.norm(), inertia = M * (4 * L * L + T * T) / 12 + M * r * r;
+        const double rest = std::numbers::pi / 2 - std::atan2(corner.y(), corner.x());
+        const double angle = rest + theta0;
+        const Vec2 centre = -rotate(angle, corner);
+        World w;
+        w.setWeldRigidPairs(weld);
+        const PartId a = w.addBox(m, Vec2(L, T), W, Pose{centre + rotate(angle, Vec2(-L / 2, 0)), angle});
+        const PartId b = w.addBox(m, Vec2(L, T), W, Pose{centre + rotate(angle, Vec2(L / 2, 0)), angle});
+        QVERIFY(!w.combine(w.anchor(Vec2::Zero()), w.addParticle(a, Vec2(-L / 2, -T / 2))));
+        for (double y : {-T / 2, T / 2}) QVERIFY(!w.combine(w.addParticle(a, Vec2(L / 2, y)), w.addParticle(b, Vec2(-L / 2, y))));
+        QCOMPARE(int(w.welds().size()), weld ? 1 : 0);
+        QCOMPARE(w.part(a).body == w.part(b).body, !weld);
+        const double period = pendulumPeriod(inertia, M, g, r, theta0);
+        const int n = 2000;
+        Dynamics d;
+        Stepper s(Integrator::RK4);
+        Ledger ledger;
+        double worst = 0;
+        for (int i = 0; i < n; ++i) {
+            QVERIFY(advanceAndProject(w, d, s, i * period / n, period / n, ledger, 1e-12).ok());
+            worst = std::max(worst, pinResidual(w));
+        }
+        const double swing = w.partPose(a).angle - rest;
+        const double omegaScale = std::sqrt(M * g * r / inertia);
+        const double error = std::hypot(swing - theta0, w.partVelocity(a).angular / omegaScale);
+        QVERIFY2(error < 1e-8, qPrintable(QString::number(error)));
+        QVERIFY(worst <= 1e-12);
+        // The pair stays one rigid bar: same angle, same spin.
+        QVERIFY(std::abs(w.partPose(b).angle - w.partPose(a).angle) < 1e-12);
+        QVERIFY(std::abs(w.partVelocity(b).angular - w.partVelocity(a).angular) < 1e-10);
+    }
+
     void adaptiveReachesOneInABillion() {
         const double theta0 = 2.0;
         Pendulum p(theta0);

@@ -54,7 +54,7 @@ Scene ladderScene() {
     s.linearDamping = 0.01;
     s.angularDamping = 2e-5;
     s.duration = 12.75;
-    s.solver = {Integrator::DormandPrince45, 2.5e-4, 1e-9, 1e-12, EventPolicy::EndOfStep, 1e-10, 1.0 / 120.0};
+    s.solver = {Integrator::DormandPrince45, 2.5e-4, 1e-9, 1e-12, EventPolicy::EndOfStep, 1e-10, 1.0 / 120.0, RigidPairs::Weld};
     using K = ScriptAction::Kind;
     ScriptAction turn{.kind = K::Turn, .at = 0.2, .block = 0, .angle = -std::numbers::pi, .duration = 0.3};
     ScriptAction turn2{.kind = K::Turn, .at = 1.1, .block = 4, .angle = 1.2345678901234567, .duration = 0.7};
