@@ -377,6 +377,28 @@ private slots:
         }
     }
 
+    // A push on a block hanging at rest from a corner (pin straight above
+    // the centre, r = sqrt(L^2 + T^2) / 2): a sideways impulse P at the
+    // centre spins it about the pin, omega = P r / I_p with I_p = m (L^2 +
+    // T^2) / 3, so its work P v / 2 = P^2 r^2 / (2 I_p) = 3 P^2 / (8 m).
+    void pushBooksTheImpulsesWork() {
+        constexpr double impulse = 1e-3;  // N s
+        Scene s = hangingPair();
+        ScriptAction push = scripted(ScriptAction::Kind::Push, 0.1);
+        push.block = 1;
+        push.impulse = {impulse, 0.0};
+        s.script = {push};
+        Simulation::Built built = Simulation::build(s);
+        QVERIFY(built.simulation);
+        QVERIFY(built.simulation->advanceTo(0.1));
+        const EnergyFrame e = built.simulation->frame().energy;
+        const double work = 3 * impulse * impulse / (8 * kMass);
+        qInfo("user work %.12g J, 3 P^2 / 8 m = %.12g J", e.userWork, work);
+        QVERIFY2(std::abs(e.userWork - work) < 1e-9 * work, qPrintable(QString::number(e.userWork, 'g', 15)));
+        QVERIFY(std::abs(e.heldWork) < 1e-15);
+        QVERIFY(std::abs(e.balance()) < 1e-15);
+    }
+
     void heldBlockTurnedAtOneHundredTurnsPerSecond() {
         Scene s = ladderScene(6);
         s.script.push_back(turn(0.1, 2 * kPi * 10, 0.1));  // 10 turns in 0.1 s
