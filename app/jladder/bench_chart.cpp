@@ -13,7 +13,9 @@ namespace jl::cli {
 namespace {
 
 constexpr int kWidth = 860, kHeight = 520;
-constexpr double kLeft = 80, kRight = 280, kTop = 40, kBottom = 60;  // margins; the legend sits right
+constexpr double kLegend = 280;  // the legend's column at the right
+constexpr double kPad = 12;      // between the picture's edge and any text
+constexpr int kTitleSize = 14, kLabelSize = 12, kTickSize = 10;
 constexpr Rgb kPalette[] = {{31, 119, 180}, {214, 39, 40},  {44, 160, 44},  {255, 127, 14}, {148, 103, 189},
                             {140, 86, 75},  {227, 119, 194}, {127, 127, 127}, {188, 189, 34}, {23, 190, 207}};
 
@@ -51,6 +53,55 @@ std::pair<int, int> decades(const Chart& c, bool x) {
     return {a, b};
 }
 
+// Text extents. The raster font is the wider of the two renderings (the SVG's
+// sans-serif runs about 0.55 em a character), so a layout that keeps the
+// raster text apart keeps the SVG text apart too.
+int rasterScale(int size) { return size >= kTitleSize ? 3 : 2; }
+double textWidth(const std::string& s, int size) { return Raster::textWidth(s, rasterScale(size)); }
+double textHeight(int size) { return 5.0 * rasterScale(size); }
+
+// Where everything goes: one row each for the title and the y-axis label
+// above the plot, the x tick labels and the x-axis label below it, the y
+// tick labels in a column wide enough for the widest, and tick strides
+// that keep neighbouring tick labels apart.
+struct Layout {
+    int titleSize = kTitleSize;
+    double titleX = 0, titleY = 0, yLabelY = 0, xLabelY = 0, xTickY = 0;
+    double left = 0, right = 0, top = 0, bottom = 0;
+    int xStride = 1, yStride = 1;
+};
+
+Layout layout(const Chart& c, std::pair<int, int> xs, std::pair<int, int> ys) {
+    Layout l;
+    if (textWidth(c.title, kTitleSize) > kWidth - 2 * kPad) l.titleSize = kLabelSize;
+    l.titleY = kPad + textHeight(l.titleSize) / 2;
+    l.yLabelY = l.titleY + textHeight(l.titleSize) / 2 + 8 + textHeight(kLabelSize) / 2;
+    l.top = l.yLabelY + textHeight(kLabelSize) / 2 + 8 + textHeight(kTickSize) / 2;
+    l.xLabelY = kHeight - kPad - textHeight(kLabelSize) / 2;
+    // The x tick labels sit 10 px below the axis, clear of the lowest y tick
+    // label, which is centred on it.
+    l.bottom = l.xLabelY - textHeight(kLabelSize) / 2 - 8 - textHeight(kTickSize) - 10;
+    l.xTickY = l.bottom + 10 + textHeight(kTickSize) / 2;
+    auto widest = [](std::pair<int, int> range) {
+        double w = 0;
+        for (int d = range.first; d <= range.second; ++d) w = std::max(w, textWidth("1e" + std::to_string(d), kTickSize));
+        return w;
+    };
+    const double xWidest = widest(xs);
+    // Room for the y tick labels, and for half of the first x tick label.
+    l.left = std::max(kPad + widest(ys) + 6, kPad + xWidest / 2);
+    // The legend: a 24 px line, a 6 px gap and the longest name, inside the picture.
+    double names = 0;
+    for (const ChartSeries& series : c.series) names = std::max(names, textWidth(series.name, kTickSize));
+    l.right = kWidth - std::max(kLegend, 16 + 24 + 6 + names + kPad);
+    const double xStep = (l.right - l.left) / (xs.second - xs.first), yStep = (l.bottom - l.top) / (ys.second - ys.first);
+    while (l.xStride * xStep < xWidest + 8) ++l.xStride;
+    while (l.yStride * yStep < textHeight(kTickSize) + 4) ++l.yStride;
+    const double half = textWidth(c.title, l.titleSize) / 2;
+    l.titleX = std::clamp((l.left + l.right) / 2, kPad + half, std::max(kPad + half, kWidth - kPad - half));
+    return l;
+}
+
 // Everything drawn, as calls on an abstract pen, so SVG and PNG agree.
 struct Pen {
     virtual ~Pen() = default;
@@ -62,24 +113,24 @@ struct Pen {
 void draw(const Chart& c, Pen& pen) {
     const auto [x0, x1] = decades(c, true);
     const auto [y0, y1] = decades(c, false);
-    const double pw = kWidth - kLeft - kRight, ph = kHeight - kTop - kBottom;
-    auto X = [&](double v) { return kLeft + (std::log10(v) - x0) / (x1 - x0) * pw; };
-    auto Y = [&](double v) { return kTop + ph - (std::log10(v) - y0) / (y1 - y0) * ph; };
+    const Layout l = layout(c, {x0, x1}, {y0, y1});
+    const double pw = l.right - l.left, ph = l.bottom - l.top;
+    auto X = [&](double v) { return l.left + (std::log10(v) - x0) / (x1 - x0) * pw; };
+    auto Y = [&](double v) { return l.top + ph - (std::log10(v) - y0) / (y1 - y0) * ph; };
     const Rgb grid{225, 225, 225}, ink{40, 40, 40};
-    const int xStride = (x1 - x0) > 8 ? 2 : 1, yStride = (y1 - y0) > 10 ? 2 : 1;
-    for (int d = x0; d <= x1; d += xStride) {
-        pen.line(X(std::pow(10, d)), kTop, X(std::pow(10, d)), kTop + ph, grid, 1, false);
-        pen.text(X(std::pow(10, d)), kTop + ph + 14, "1e" + std::to_string(d), 10, 1, ink);
+    for (int d = x0; d <= x1; d += l.xStride) {
+        pen.line(X(std::pow(10, d)), l.top, X(std::pow(10, d)), l.bottom, grid, 1, false);
+        pen.text(X(std::pow(10, d)), l.xTickY, "1e" + std::to_string(d), kTickSize, 1, ink);
     }
-    for (int d = y0; d <= y1; d += yStride) {
-        pen.line(kLeft, Y(std::pow(10, d)), kLeft + pw, Y(std::pow(10, d)), grid, 1, false);
-        pen.text(kLeft - 6, Y(std::pow(10, d)), "1e" + std::to_string(d), 10, 2, ink);
+    for (int d = y0; d <= y1; d += l.yStride) {
+        pen.line(l.left, Y(std::pow(10, d)), l.right, Y(std::pow(10, d)), grid, 1, false);
+        pen.text(l.left - 6, Y(std::pow(10, d)), "1e" + std::to_string(d), kTickSize, 2, ink);
     }
-    pen.line(kLeft, kTop + ph, kLeft + pw, kTop + ph, ink, 1, false);
-    pen.line(kLeft, kTop, kLeft, kTop + ph, ink, 1, false);
-    pen.text(kLeft + pw / 2, 20, c.title, 14, 1, ink);
-    pen.text(kLeft + pw / 2, kHeight - 18, c.xLabel, 12, 1, ink);
-    pen.text(12, kTop - 14, c.yLabel, 12, 0, ink);
+    pen.line(l.left, l.bottom, l.right, l.bottom, ink, 1, false);
+    pen.line(l.left, l.top, l.left, l.bottom, ink, 1, false);
+    pen.text(l.titleX, l.titleY, c.title, l.titleSize, 1, ink);
+    pen.text((l.left + l.right) / 2, l.xLabelY, c.xLabel, kLabelSize, 1, ink);
+    pen.text(kPad, l.yLabelY, c.yLabel, kLabelSize, 0, ink);
     int index = 0;
     for (const ChartSeries& s : c.series) {
         const Rgb colour = kPalette[size_t(index) % std::size(kPalette)];
@@ -90,9 +141,9 @@ void draw(const Chart& c, Pen& pen) {
         for (size_t i = 0; i + 1 < pts.size(); ++i)
             pen.line(X(pts[i].first), Y(pts[i].second), X(pts[i + 1].first), Y(pts[i + 1].second), colour, 2, s.dashed);
         for (auto p : pts) pen.dot(X(p.first), Y(p.second), colour);
-        const double ly = kTop + 10 + 18 * index;
-        pen.line(kWidth - kRight + 16, ly, kWidth - kRight + 40, ly, colour, 2, s.dashed);
-        pen.text(kWidth - kRight + 46, ly, s.name, 10, 0, ink);
+        const double ly = l.top + 10 + 18 * index;
+        pen.line(l.right + 16, ly, l.right + 40, ly, colour, 2, s.dashed);
+        pen.text(l.right + 46, ly, s.name, kTickSize, 0, ink);
         ++index;
     }
 }
@@ -120,7 +171,7 @@ struct RasterPen : Pen {
     }
     void dot(double x, double y, Rgb c) override { raster.dot(x, y, 3, c); }
     void text(double x, double y, const std::string& s, int size, int anchor, Rgb c) override {
-        raster.text(x, y, s, size >= 14 ? 3 : 2, anchor, c);
+        raster.text(x, y, s, rasterScale(size), anchor, c);
     }
 };
 

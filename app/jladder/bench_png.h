@@ -1,5 +1,5 @@
 // A small RGB raster with lines, dots and a 3x5 pixel font, saved as PNG
-// (stored, uncompressed deflate blocks: no zlib needed).
+// (the rows deflated with zlib).
 #pragma once
 
 #include <cstdint>
