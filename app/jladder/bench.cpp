@@ -5,9 +5,11 @@
 #include "app/jladder/bench_chart.h"
 #include "app/jladder/bench_peers.h"
 #include "app/jladder/bench_report.h"
+#include "app/jladder/bench_stability.h"
 #include "app/jladder/commands.h"
 #include "app/jladder/options.h"
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -18,15 +20,19 @@ namespace jl::cli {
 namespace {
 
 const char* kHelp =
-    "usage: jladder bench [--quick] [--out DIR] [--report FILE]\n"
+    "usage: jladder bench [--quick] [--out DIR] [--report FILE] [--only stability]\n"
     "Measures cost (CPU seconds per simulated second) against error for every\n"
     "integrator and event policy on the physical pendulum, the falling chain\n"
     "(N = 10, 100, 1,000; against an independent reduced-coordinate reference)\n"
     "and the ladder cascade; cost per block-step for N = 10 .. 100,000; a long\n"
-    "ladder with RK4; and, if built with -DJL_BENCH_PEERS=ON, MuJoCo, Box2D and\n"
+    "ladder with RK4; the stability limit of long ladders (omega_max of the\n"
+    "hanging ladder, the step limit it predicts, the largest RK4 step that\n"
+    "runs); and, if built with -DJL_BENCH_PEERS=ON, MuJoCo, Box2D and\n"
     "Bullet on the same chains. Writes DIR/*.csv, DIR/*.svg, DIR/*.png\n"
     "(default DIR: docs/bench) and FILE (default docs/performance.md).\n"
-    "--quick: fewer sizes and steps; fits in CI (under two minutes).\n";
+    "--quick: fewer sizes and steps; fits in CI (under two minutes).\n"
+    "--only stability: that study alone; FILE (default DIR/stability.md) gets\n"
+    "its section only.\n";
 
 bool writeCsv(const std::vector<BenchRow>& rows, const std::filesystem::path& path) {
     std::ofstream f(path);
@@ -35,6 +41,25 @@ bool writeCsv(const std::vector<BenchRow>& rows, const std::filesystem::path& pa
     for (const BenchRow& r : rows)
         f << r.study << ',' << r.method << ',' << r.blocks << ',' << r.parameter << ',' << r.cost << ',' << r.error << ','
           << (r.finished ? 1 : 0) << ",\"" << r.note << "\"\n";
+    return bool(f);
+}
+
+bool writeStabilityCsv(const StabilityStudy& s, const std::filesystem::path& path) {
+    std::ofstream f(path);
+    f << "blocks,omega_max_engine,omega_max_reference,omega_hand_upper,omega_hand_airy,lanczos_steps,ritz_residual,"
+         "rk4_dt_limit_predicted,symplectic_euler_dt_limit_predicted,dormand_prince45_dt_limit_predicted,horizon_s,"
+         "rk4_seeded_stays,rk4_seeded_grows,rk4_hanging_runs,rk4_hanging_fails,rk4_turned_runs,rk4_turned_fails,"
+         "hanging_cost,turned_cost,hand_tension_factor,peak_tension_factor,peak_tension_time,rk4_dt_limit_at_peak,"
+         "dopri_steps,dopri_rejected,dopri_mean_step,dopri_cost\n";
+    f.precision(8);
+    for (const StabilityRow& r : s.rows)
+        f << r.blocks << ',' << r.omegaMax << ',' << std::sqrt(r.referenceOmega2) << ',' << r.handUpper << ','
+          << r.handAiry << ',' << r.engine.iterations << ',' << r.engine.residual << ',' << r.rk4Limit << ','
+          << r.symplecticLimit << ',' << r.dopriLimit << ',' << r.horizon << ',' << r.seededPass << ','
+          << r.seededFail << ',' << r.hangingPass << ',' << r.hangingFail << ',' << r.turnedPass << ','
+          << r.turnedFail << ',' << r.hangingCost << ',' << r.turnedCost << ',' << r.handTension << ','
+          << r.peakTension << ',' << r.peakTime << ',' << r.turnedPeakLimit << ',' << r.dopriSteps << ','
+          << r.dopriRejected << ',' << r.dopriMeanStep << ',' << r.dopriCost << '\n';
     return bool(f);
 }
 
@@ -56,26 +81,39 @@ Chart workPrecision(const std::string& title, const std::string& errorLabel, con
 }  // namespace
 
 int bench(const std::vector<std::string>& args) {
-    Options o = parse(args, {"--out", "--report"}, {"--quick", "--help"});
+    Options o = parse(args, {"--out", "--report", "--only"}, {"--quick", "--help"});
     if (o.has("--help")) {
         std::fputs(kHelp, stdout);
         return 0;
     }
+    if (o.error.empty() && o.get("--only") && *o.get("--only") != "stability")
+        o.error = "--only takes 'stability', not '" + *o.get("--only") + "'";
     if (!o.error.empty()) {
         std::fprintf(stderr, "jladder bench: %s\n", o.error.c_str());
         return 2;
     }
+    const bool onlyStability = o.get("--only").has_value();
     BenchPlan plan;
     plan.quick = o.has("--quick");
     plan.minSeconds = plan.quick ? 0.005 : 0.05;
     const std::filesystem::path out = o.get("--out").value_or("docs/bench");
-    const std::filesystem::path report = o.get("--report").value_or("docs/performance.md");
+    const std::filesystem::path report =
+        o.get("--report").value_or(onlyStability ? (out / "stability.md").string() : std::string("docs/performance.md"));
     std::error_code ec;
     std::filesystem::create_directories(out, ec);
     if (!ec && report.has_parent_path()) std::filesystem::create_directories(report.parent_path(), ec);
     if (ec) {
         std::fprintf(stderr, "jladder bench: cannot create %s: %s\n", out.c_str(), ec.message().c_str());
         return 1;
+    }
+
+    if (onlyStability) {
+        std::fprintf(stderr, "stability limit\n");
+        const StabilityStudy study = stabilityStudy(plan);
+        const bool ok = writeStabilityCsv(study, out / "stability.csv") && writeStabilityReport(study, plan.quick, report);
+        std::printf("{\"out\":%s,\"report\":%s,\"ok\":%s}\n", jsonString(out.string()).c_str(),
+                    jsonString(report.string()).c_str(), ok ? "true" : "false");
+        return ok ? 0 : 1;
     }
 
     BenchResults results;
@@ -98,10 +136,13 @@ int bench(const std::vector<std::string>& args) {
     results.scaling = scalingStudy(plan);
     std::fprintf(stderr, "long ladder\n");
     results.longLadder = longLadderStudy(plan);
+    std::fprintf(stderr, "stability limit\n");
+    results.stability = stabilityStudy(plan);
     results.peers = peerVersions();
 
     bool ok = writeCsv(results.pendulum, out / "pendulum.csv") && writeCsv(results.ladder, out / "ladder.csv") &&
-              writeCsv(results.scaling, out / "scaling.csv") && writeCsv(results.longLadder, out / "long_ladder.csv");
+              writeCsv(results.scaling, out / "scaling.csv") && writeCsv(results.longLadder, out / "long_ladder.csv") &&
+              writeStabilityCsv(results.stability, out / "stability.csv");
     ok = writeChart(workPrecision("Physical pendulum, one exact period (theta0 = 2 rad)", "error (rad)", results.pendulum),
                     out, "pendulum") && ok;
     for (const auto& [n, rows] : results.chains) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "app/jladder/bench_cases.h"
+#include "app/jladder/bench_stability.h"
 
 #include <filesystem>
 #include <map>
@@ -16,8 +17,11 @@ struct BenchResults {
     std::vector<BenchRow> pendulum, ladder, scaling, longLadder;
     std::map<int, std::vector<BenchRow>> chains;  // by N; peers' rows included
     std::string peers;                            // versions, or why not measured
+    StabilityStudy stability;
 };
 
 bool writeReport(const BenchResults& r, const std::filesystem::path& plots, const std::filesystem::path& report);
+// The section "Stability limit of long ladders" alone (jladder bench --only stability).
+bool writeStabilityReport(const StabilityStudy& s, bool quick, const std::filesystem::path& report);
 
 }  // namespace jl::cli
