@@ -67,6 +67,11 @@ public:
     // Which block is under a point of the plane, and where on it (block frame).
     std::optional<std::pair<int, Vec2>> pick(const Vec2& point) const;
 
+    // Solve every step's constraints with the sparse factorisation, even a
+    // plain chain the O(N) elimination would take: so the benchmark can
+    // compare the two models of a rigid pair (solver.rigid_pairs) on one solver.
+    void useSparseSolver(bool on) { dynamics_.solver().setForceSparse(on); }
+
     std::shared_ptr<const Snapshot> snapshot() const;
     void restore(const Snapshot& s);
     // FNV-1a over the bits of every block pose and velocity and the hinge modes.

@@ -3,6 +3,7 @@
 // SVG and PNG charts and the report docs/performance.md.
 #include "app/jladder/bench_cases.h"
 #include "app/jladder/bench_chart.h"
+#include "app/jladder/bench_models.h"
 #include "app/jladder/bench_peers.h"
 #include "app/jladder/bench_report.h"
 #include "app/jladder/bench_stability.h"
@@ -20,19 +21,20 @@ namespace jl::cli {
 namespace {
 
 const char* kHelp =
-    "usage: jladder bench [--quick] [--out DIR] [--report FILE] [--only stability]\n"
+    "usage: jladder bench [--quick] [--out DIR] [--report FILE] [--only stability|models]\n"
     "Measures cost (CPU seconds per simulated second) against error for every\n"
     "integrator and event policy on the physical pendulum, the falling chain\n"
     "(N = 10, 100, 1,000; against an independent reduced-coordinate reference)\n"
     "and the ladder cascade; cost per block-step for N = 10 .. 100,000; a long\n"
     "ladder with RK4; the stability limit of long ladders (omega_max of the\n"
     "hanging ladder, the step limit it predicts, the largest RK4 step that\n"
-    "runs); and, if built with -DJL_BENCH_PEERS=ON, MuJoCo, Box2D and\n"
+    "runs); cascades with locked pairs merged into one body against welded\n"
+    "pairs; and, if built with -DJL_BENCH_PEERS=ON, MuJoCo, Box2D and\n"
     "Bullet on the same chains. Writes DIR/*.csv, DIR/*.svg, DIR/*.png\n"
     "(default DIR: docs/bench) and FILE (default docs/performance.md).\n"
     "--quick: fewer sizes and steps; fits in CI (under two minutes).\n"
-    "--only stability: that study alone; FILE (default DIR/stability.md) gets\n"
-    "its section only.\n";
+    "--only stability|models: that study alone; FILE (default DIR/stability.md\n"
+    "or DIR/models.md) gets its section only.\n";
 
 bool writeCsv(const std::vector<BenchRow>& rows, const std::filesystem::path& path) {
     std::ofstream f(path);
@@ -86,19 +88,20 @@ int bench(const std::vector<std::string>& args) {
         std::fputs(kHelp, stdout);
         return 0;
     }
-    if (o.error.empty() && o.get("--only") && *o.get("--only") != "stability")
-        o.error = "--only takes 'stability', not '" + *o.get("--only") + "'";
+    const std::string only = o.get("--only").value_or("");
+    if (o.error.empty() && !only.empty() && only != "stability" && only != "models")
+        o.error = "--only takes 'stability' or 'models', not '" + only + "'";
     if (!o.error.empty()) {
         std::fprintf(stderr, "jladder bench: %s\n", o.error.c_str());
         return 2;
     }
-    const bool onlyStability = o.get("--only").has_value();
+    const bool onlyStability = only == "stability", onlyModels = only == "models";
     BenchPlan plan;
     plan.quick = o.has("--quick");
     plan.minSeconds = plan.quick ? 0.005 : 0.05;
     const std::filesystem::path out = o.get("--out").value_or("docs/bench");
     const std::filesystem::path report =
-        o.get("--report").value_or(onlyStability ? (out / "stability.md").string() : std::string("docs/performance.md"));
+        o.get("--report").value_or(!only.empty() ? (out / (only + ".md")).string() : std::string("docs/performance.md"));
     std::error_code ec;
     std::filesystem::create_directories(out, ec);
     if (!ec && report.has_parent_path()) std::filesystem::create_directories(report.parent_path(), ec);
@@ -111,6 +114,15 @@ int bench(const std::vector<std::string>& args) {
         std::fprintf(stderr, "stability limit\n");
         const StabilityStudy study = stabilityStudy(plan);
         const bool ok = writeStabilityCsv(study, out / "stability.csv") && writeStabilityReport(study, plan.quick, report);
+        std::printf("{\"out\":%s,\"report\":%s,\"ok\":%s}\n", jsonString(out.string()).c_str(),
+                    jsonString(report.string()).c_str(), ok ? "true" : "false");
+        return ok ? 0 : 1;
+    }
+
+    if (onlyModels) {
+        std::fprintf(stderr, "rigid pairs: merged or welded\n");
+        const std::vector<BenchRow> rows = rigidPairModelStudy(plan);
+        const bool ok = writeCsv(rows, out / "models.csv") && writeModelsReport(rows, plan.quick, report);
         std::printf("{\"out\":%s,\"report\":%s,\"ok\":%s}\n", jsonString(out.string()).c_str(),
                     jsonString(report.string()).c_str(), ok ? "true" : "false");
         return ok ? 0 : 1;
@@ -138,11 +150,13 @@ int bench(const std::vector<std::string>& args) {
     results.longLadder = longLadderStudy(plan);
     std::fprintf(stderr, "stability limit\n");
     results.stability = stabilityStudy(plan);
+    std::fprintf(stderr, "rigid pairs: merged or welded\n");
+    results.models = rigidPairModelStudy(plan);
     results.peers = peerVersions();
 
     bool ok = writeCsv(results.pendulum, out / "pendulum.csv") && writeCsv(results.ladder, out / "ladder.csv") &&
               writeCsv(results.scaling, out / "scaling.csv") && writeCsv(results.longLadder, out / "long_ladder.csv") &&
-              writeStabilityCsv(results.stability, out / "stability.csv");
+              writeStabilityCsv(results.stability, out / "stability.csv") && writeCsv(results.models, out / "models.csv");
     ok = writeChart(workPrecision("Physical pendulum, one exact period (theta0 = 2 rad)", "error (rad)", results.pendulum),
                     out, "pendulum") && ok;
     for (const auto& [n, rows] : results.chains) {

@@ -18,10 +18,13 @@ struct BenchResults {
     std::map<int, std::vector<BenchRow>> chains;  // by N; peers' rows included
     std::string peers;                            // versions, or why not measured
     StabilityStudy stability;
+    std::vector<BenchRow> models;  // rigidPairModelStudy
 };
 
 bool writeReport(const BenchResults& r, const std::filesystem::path& plots, const std::filesystem::path& report);
 // The section "Stability limit of long ladders" alone (jladder bench --only stability).
 bool writeStabilityReport(const StabilityStudy& s, bool quick, const std::filesystem::path& report);
+// The section "Model only what a scene needs" alone (jladder bench --only models).
+bool writeModelsReport(const std::vector<BenchRow>& rows, bool quick, const std::filesystem::path& report);
 
 }  // namespace jl::cli
