@@ -46,6 +46,21 @@ double heldFrameKinetic(const World& w) {
     return ke;
 }
 
+// Whether two parts share a point already (a hinge, or a pair locked or
+// folded by the ladder).
+bool shareAPoint(const World& w, PartId a, PartId b) {
+    for (ParticleId id = 0; id < w.particleCount(); ++id) {
+        if (!w.isLive(id)) continue;
+        bool onA = false, onB = false;
+        for (const Attachment& x : w.particle(id).at) {
+            onA = onA || x.part == a;
+            onB = onB || x.part == b;
+        }
+        if (onA && onB) return true;
+    }
+    return false;
+}
+
 // The largest distance between the points a particle joins (m).
 double particleSpread(const World& w, ParticleId id) {
     const std::vector<Attachment>& at = w.particle(id).at;
@@ -234,12 +249,15 @@ void Simulation::applyScriptAction(const ScriptAction& a) {
 // and the held blocks' impulses do the rest of its change (held work).
 // Hinges the pull drove past their limits are settled at once by the
 // ladder's events; their snaps finish the pull (user's work too).
-// Refused, leaving the world as it was, when the corners cannot be brought
-// together: the world's combine makes two blocks that already share a
-// point one rigid body at their current pose (a gap would stay locked
-// inside it, to be closed by whatever separates them later), two held
-// blocks cannot move, or the projection fails.
+// Refused, leaving the world as it was, when it would not make a hinge:
+// between two blocks that already share a point or move as one body (the
+// world's combine would make them one rigid body at their current pose, a
+// gap between the corners locked inside it for a later cut to close; in weld
+// mode it would turn one about the other, through it if need be), or when
+// the corners do not end up together (two held blocks, a failed projection).
 void Simulation::join(const ScriptAction& a) {
+    const PartId first = blockPart(a.block), second = blockPart(a.otherBlock);
+    if (world_.part(first).body == world_.part(second).body || shareAPoint(world_, first, second)) return;
     const ParticleId p = ladder_->particle(a.block, a.corner), q = ladder_->particle(a.otherBlock, a.otherCorner);
     const World saved = world_;
     const Energy e0 = energy(world_);
