@@ -49,6 +49,14 @@ public:
     // Steps until time() >= t (possibly a little past it: the last step is not
     // shortened). Returns false, keeping the last good state, on failure.
     bool advanceTo(double t);
+    // Steps until time() == t exactly, the last step shortened to land on
+    // it: for measurements at a given instant (the benchmark's errors). The
+    // views use advanceTo, so their frame times never shape the trajectory.
+    bool advanceExactlyTo(double t) {
+        while (t_ < t && failure_.empty())
+            if (!takeStep(t)) break;
+        return failure_.empty();
+    }
     // One internal step (or up to the next scripted instant).
     bool stepOnce();
     // Runs until an event happens or `limit` is reached; true if one happened.

@@ -183,7 +183,7 @@ CascadeResult runCascade(const Scene& scene) {
         r.failure = built.errors.empty() ? "not built" : built.errors.front();
         return r;
     }
-    built.simulation->advanceTo(scene.duration);
+    built.simulation->advanceExactlyTo(scene.duration);
     Frame f = built.simulation->frame();
     r.events = f.events;
     r.poses = f.blocks;

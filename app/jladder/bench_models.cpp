@@ -133,13 +133,13 @@ std::vector<BenchRow> rigidPairModelStudy(const BenchPlan& plan) {
         tight.solver.tolerance = 1e-12;
         tight.solver.eventTolerance = 1e-12;
         auto refSim = start(tight, false);
-        refSim->advanceTo(c.duration);
+        refSim->advanceExactlyTo(c.duration);
         const Outcome reference = finish(*refSim);
         // The welded model at the same tight settings: how far apart the two
         // models are when the integration error is gone.
         tight.solver.rigidPairs = RigidPairs::Weld;
         auto weldSim = start(tight, true);
-        weldSim->advanceTo(c.duration);
+        weldSim->advanceExactlyTo(c.duration);
         const Outcome weldedTight = finish(*weldSim);
         BenchRow models{std::string(c.study) + "_tight", "dormand_prince45, welded against merged", c.blocks, 1e-12, 0,
                         worstDistance(weldedTight.poses, reference.poses), reference.failure.empty() && weldedTight.failure.empty(), ""};
@@ -162,7 +162,7 @@ std::vector<BenchRow> rigidPairModelStudy(const BenchPlan& plan) {
                 const double begin = threadSeconds();
                 do {
                     auto sim = start(s, m.sparse);
-                    sim->advanceTo(c.duration);
+                    sim->advanceExactlyTo(c.duration);
                     o = finish(*sim);
                     ++runs;
                 } while (o.failure.empty() && threadSeconds() - begin < plan.minSeconds);
