@@ -107,6 +107,7 @@ private:
     std::vector<PartId> blocks_;
     double t_ = 0;
     double initialEnergy_ = 0;
+    double initialKinetic_ = 0, initialPotential_ = 0;  // after the inputs at t = 0
     double impactLoss_ = 0, impactHeldWork_ = 0;
     size_t nextAction_ = 0;
     std::vector<size_t> nextDragSample_;

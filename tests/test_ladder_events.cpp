@@ -200,6 +200,8 @@ private slots:
         QVERIFY2(std::abs(l1 - l0) < 1e-12, qPrintable(QString::number(l1 - l0)));
         QVERIFY(energy(sim->world()).kinetic < ke0);
         QVERIFY(r.lastImpactLoss > 0);
+        // The push at t = 0 is the user's work, booked once.
+        QVERIFY2(r.worstBalance < 1e-12, qPrintable(QString::number(r.worstBalance)));
     }
 
     // Three blocks, the top turned half a turn counter-clockwise: hinge 1
