@@ -437,6 +437,22 @@ std::optional<std::string> Ladder::cut(World& w, int j) {
     return std::nullopt;
 }
 
+std::optional<int> Ladder::cutHingeJoinedBy(int blockA, int cornerA, int blockB, int cornerB) const {
+    if (cornerA != cornerB || std::abs(blockA - blockB) != 1) return std::nullopt;
+    const int j = std::max(blockA, blockB);
+    const Hinge& h = hinge(j);
+    if (h.mode != HingeMode::Cut || (cornerA != h.corner && cornerA != (h.corner ^ 1))) return std::nullopt;
+    return j;
+}
+
+void Ladder::rehinged(const World& w, int j, int k) {
+    Hinge& h = hinges_[size_t(j - 1)];
+    h.corner = k;
+    h.mode = HingeMode::Free;
+    h.foldAngle = kPi / 2;  // the reference of foldAngle: phi in (-pi/2, 3pi/2]
+    h.foldAngle = foldAngle(w, j);
+}
+
 std::string Ladder::words(EventKind kind, int j) const {
     const std::string a = std::to_string(j - 1), b = std::to_string(j);
     switch (kind) {

@@ -78,6 +78,16 @@ public:
 
     // Scripted structural changes.
     std::optional<std::string> cut(World& w, int j);
+    // A scripted join of corner k of two neighbouring blocks whose hinge is
+    // cut, k on the hinge's side (k or k^1 of where it was): that joins the
+    // hinge again. Its number, or nothing if the join is not that. The
+    // caller combines hinge(j).own[k] with own[4 + k] (not the blocks'
+    // corner particles, so that locks and flips work on it as before) and
+    // then calls rehinged.
+    std::optional<int> cutHingeJoinedBy(int blockA, int cornerA, int blockB, int cornerB) const;
+    // The hinge is FREE at corner k again, phi taken from the poses (past
+    // a limit if the join left it there: the next resolve settles it).
+    void rehinged(const World& w, int j, int k);
     // A restructuring the world refused (a bug, reported rather than ignored).
     const std::string& error() const { return error_; }
     void updateAngles(const World& w);  // track phi continuously after a step

@@ -263,7 +263,12 @@ void Simulation::applyScriptAction(const ScriptAction& a) {
 void Simulation::join(const ScriptAction& a) {
     const PartId first = blockPart(a.block), second = blockPart(a.otherBlock);
     if (world_.part(first).body == world_.part(second).body || shareAPoint(world_, first, second)) return;
-    const ParticleId p = ladder_->particle(a.block, a.corner), q = ladder_->particle(a.otherBlock, a.otherCorner);
+    // Joining the corners of a cut hinge makes the hinge again (with its own
+    // particles, so that it locks and flips as before); any other join is a
+    // plain pin the ladder knows nothing of.
+    const std::optional<int> hinge = ladder_->cutHingeJoinedBy(a.block, a.corner, a.otherBlock, a.otherCorner);
+    const ParticleId p = hinge ? ladder_->hinge(*hinge).own[size_t(a.corner)] : ladder_->particle(a.block, a.corner);
+    const ParticleId q = hinge ? ladder_->hinge(*hinge).own[size_t(4 + a.corner)] : ladder_->particle(a.otherBlock, a.otherCorner);
     const World saved = world_;
     const Energy e0 = energy(world_);
     const double k0 = heldFrameKinetic(world_);
@@ -289,6 +294,7 @@ void Simulation::join(const ScriptAction& a) {
     record({t_, EventKind::Join, -1, -1,
             "corner " + std::to_string(a.corner) + " of block " + std::to_string(a.block) + " is joined to corner " +
                 std::to_string(a.otherCorner) + " of block " + std::to_string(a.otherBlock)});
+    if (hinge) ladder_->rehinged(world_, *hinge, a.corner);
     dynamics_.evaluate(world_, t_);
     const double settling = energy(world_).potential;
     for (Event& ev : ladder_->resolve(world_, dynamics_, t_, &impactLoss_, &impactHeldWork_)) record(ev);

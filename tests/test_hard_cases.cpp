@@ -305,6 +305,47 @@ private slots:
         QVERIFY(std::abs(sim.frame().energy.balance()) < 1e-12);
     }
 
+    // Joining the corners of a cut hinge makes the hinge again, limits and
+    // all: block 1, cut loose and set spinning by a push, is joined back at
+    // the hinge's corner; it swings about it and locks (phi reaches 0)
+    // instead of passing through block 0 as a plain pin would let it.
+    void joinAtACutHingeMakesTheHingeAgain() {
+        Scene s = hangingPair();
+        ScriptAction cut = scripted(ScriptAction::Kind::Cut, 0.1);
+        cut.hinge = 1;
+        ScriptAction push = scripted(ScriptAction::Kind::Push, 0.1);
+        push.block = 1;
+        push.impulse = {2e-3, 0.0};
+        push.point = {0.0, -0.02};
+        const int k = 0;  // hinge 1's corner
+        ScriptAction join = scripted(ScriptAction::Kind::Join, 0.15);
+        join.block = 0;
+        join.otherBlock = 1;
+        join.corner = join.otherCorner = k;
+        s.script = {cut, push, join};
+        Simulation::Built built = Simulation::build(s);
+        QVERIFY(built.simulation);
+        Simulation& sim = *built.simulation;
+        QVERIFY(sim.advanceTo(0.15));
+        QVERIFY(std::abs(sim.time() - 0.15) < 1e-12);
+        QVERIFY(sim.ladder()->hinge(1).mode != HingeMode::Cut);
+        QCOMPARE(sim.ladder()->hinge(1).corner, k);
+        bool locked = false;
+        double lowest = INFINITY, highest = -INFINITY, worst = 0;
+        for (double t = 0.16; t <= 1.0 + 1e-9; t += 0.01) {
+            QVERIFY(sim.advanceTo(t));
+            const Frame f = sim.frame();
+            lowest = std::min(lowest, f.hinges[0].foldAngle);
+            highest = std::max(highest, f.hinges[0].foldAngle);
+            worst = std::max(worst, std::abs(f.energy.balance()));
+            for (const Event& e : f.events) locked = locked || ((e.kind == EventKind::Lock || e.kind == EventKind::Fold) && e.hinge == 1);
+        }
+        qInfo("phi in [%.3g, %.3g], balance %.2e J", lowest, highest, worst);
+        QVERIFY(locked);
+        QVERIFY2(lowest >= -1e-6 && highest <= kPi + 1e-6, qPrintable(QString("phi in [%1, %2]").arg(lowest).arg(highest)));
+        QVERIFY2(worst < 1e-9, qPrintable(QString::number(worst)));
+    }
+
     // A join that would not make a hinge is refused and changes nothing, bit
     // for bit. Two blocks hinged already (at corner 0; corner 3 of each lies
     // at the opposite end of the pair): combining them would make the pair
