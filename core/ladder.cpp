@@ -66,6 +66,18 @@ Ladder::Ladder(World& w, const LadderSpec& spec) : spec_(spec), length_(spec.blo
     }
     hinges_.resize(size_t(n - 1));
     for (int j = 1; j < n; ++j) hinges_[size_t(j - 1)].corner = (j % 2 == 1) ? 0 : 3;
+    // phi = sense * (theta_j - theta_{j-1} + offset) for each corner k: the
+    // angle of -d_b in the frame (d_a, n_a), whose handedness is the sense.
+    foldLinear_.resize(size_t(n - 1));
+    for (int j = 1; j < n; ++j)
+        for (int k = 0; k < 4; ++k) {
+            const Vec2 c = cornerLocal(j - 1, k);
+            const Vec2 da = cornerLocal(j - 1, k ^ 1) - c, na = cornerLocal(j - 1, k ^ 2) - c;
+            const Vec2 db = cornerLocal(j, k ^ 1) - cornerLocal(j, k);
+            FoldLinear& f = foldLinear_[size_t(j - 1)][size_t(k)];
+            f.sense = cross(da, na) > 0 ? 1.0 : -1.0;
+            f.offset = std::atan2(db.y(), db.x()) + kPi - std::atan2(da.y(), da.x());
+        }
     place(w);
     for (int j = 1; j < n; ++j) {
         Hinge& h = hinges_[size_t(j - 1)];
@@ -149,15 +161,12 @@ void Ladder::placeHanging(World& w) {
 
 // ---- fold angles ----
 
-// phi depends only on the two blocks' relative angle: one rotation, not
-// five corner positions (this runs for every hinge at every evaluation).
+// phi = atan2(-n_a . d_b, -d_a . d_b) depends only on the two blocks'
+// relative angle, linearly: no trigonometry at run time (this runs for
+// every hinge at every evaluation of the event functions).
 double Ladder::foldAngle(const World& w, int j) const {
-    const int k = hinge(j).corner;
-    const Vec2 da = (cornerLocal(j - 1, k ^ 1) - cornerLocal(j - 1, k)).normalized();
-    const Vec2 na = (cornerLocal(j - 1, k ^ 2) - cornerLocal(j - 1, k)).normalized();
-    const double turn = blockAngle(w, j) - blockAngle(w, j - 1);
-    const Vec2 db = rotate(turn, (cornerLocal(j, k ^ 1) - cornerLocal(j, k)).normalized());
-    const double raw = std::atan2(-na.dot(db), -da.dot(db));
+    const FoldLinear& f = foldLinear_[size_t(j - 1)][size_t(hinge(j).corner)];
+    const double raw = f.sense * (blockAngle(w, j) - blockAngle(w, j - 1) + f.offset);
     const double last = hinge(j).foldAngle;
     return last + wrapToPi(raw - last);
 }
@@ -174,9 +183,7 @@ double Ladder::foldAcceleration(const World& w, int j) const {
 // +1 if phi grows as block j turns counter-clockwise relative to block j-1:
 // the sign of d_a x n_a (a block-frame property: it flips with the corner).
 double Ladder::foldSense(const World&, int j) const {
-    const int k = hinge(j).corner;
-    const Vec2 c = cornerLocal(j - 1, k);
-    return cross(cornerLocal(j - 1, k ^ 1) - c, cornerLocal(j - 1, k ^ 2) - c) > 0 ? 1.0 : -1.0;
+    return foldLinear_[size_t(j - 1)][size_t(hinge(j).corner)].sense;
 }
 
 double Ladder::foldRate(const World& w, int j) const {

@@ -138,6 +138,11 @@ private:
     std::vector<Hinge> hinges_;
     std::vector<int> dampers_;
     double length_ = 0;
+    // phi = sense * (theta_j - theta_{j-1} + offset), per hinge and corner.
+    struct FoldLinear {
+        double sense = 1, offset = 0;
+    };
+    std::vector<std::array<FoldLinear, 4>> foldLinear_;
     std::string error_;
 };
 

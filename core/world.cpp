@@ -158,10 +158,19 @@ void World::updateKinematics(double t) {
     }
 }
 
-Pose World::partPose(PartId p) const { return bodyPose(parts_[p].body).compose(parts_[p].inBody); }
+// A part alone in its body sits at the body's origin: its pose and velocity
+// need no rotation (bit for bit the same as the general formula, as
+// rotating a zero offset gives zero; the books and frames ask for them for
+// every block at every step).
+Pose World::partPose(PartId p) const {
+    const Part& part = parts_[p];
+    if (part.inBody.position.isZero()) return {q.segment<2>(3 * part.body), q[3 * part.body + 2] + part.inBody.angle};
+    return bodyPose(part.body).compose(part.inBody);
+}
 
 Twist World::partVelocity(PartId p) const {
     const int b = parts_[p].body;
+    if (parts_[p].inBody.position.isZero()) return bodyVelocity(b);
     const Twist bv = bodyVelocity(b);
     const Vec2 r = rotate(q[3 * b + 2], parts_[p].inBody.position);
     return {bv.linear + bv.angular * perp(r), bv.angular};
