@@ -115,7 +115,9 @@ std::vector<BenchRow> chainStudy(const BenchPlan& plan, int n, bool independent,
         ReferenceChainSpec spec;
         spec.links = n;
         ReferenceChain reference(spec);
-        reference.advanceTo(duration, 1e-12);
+        // As tight as double precision allows: the best runs below reach
+        // 1e-13 m, and a peer at 1e-11 m needs 1e-13 m to be shown 100x worse.
+        reference.advanceTo(duration, 1e-14);
         for (int i = 0; i < n; ++i) referenceOut.push_back(reference.centre(i));
     } else {
         World w;
@@ -131,7 +133,7 @@ std::vector<BenchRow> chainStudy(const BenchPlan& plan, int n, bool independent,
     const std::vector<double> steps = plan.quick ? std::vector<double>{1e-3, 1e-4}
                                                  : std::vector<double>{2e-3, 1e-3, 5e-4, 2.5e-4, 1e-4, 5e-5, 2e-5};
     const std::vector<double> tolerances = plan.quick ? std::vector<double>{1e-5, 1e-9}
-                                                      : std::vector<double>{1e-3, 1e-5, 1e-7, 1e-9, 1e-11};
+                                                      : std::vector<double>{1e-3, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13};
     std::vector<BenchRow> rows;
     for (const Method& m : kMethods)
         for (double p : parameters(m.kind, steps, tolerances)) {
