@@ -23,4 +23,30 @@ Energy energy(const World& w) {
     return e;
 }
 
+// Kinetic energy relative to the held body when exactly one body is held,
+// else the plain kinetic energy: the measure the ladder's impacts book by, in
+// whose frame a plastic impact never creates energy (PHYSICS.md section 7).
+// The held body moves rigidly, so its motion applied to every part satisfies
+// every pin: a plastic projection can only lower this.
+double heldFrameKinetic(const World& w) {
+    int held = -1, count = 0;
+    for (int b = 1; b < w.bodyCount(); ++b)
+        if (w.body(b).alive && w.body(b).kinematic) {
+            held = b;
+            ++count;
+        }
+    if (count != 1) return energy(w).kinetic;
+    const Vec2 origin = w.q.segment<2>(3 * held), vel = w.v.segment<2>(3 * held);
+    const double omega = w.v[3 * held + 2];
+    double ke = 0;
+    for (PartId p = 1; p < w.partCount(); ++p) {
+        const Part& part = w.part(p);
+        if (part.drive || part.body == 0) continue;
+        const Twist v = w.partVelocity(p);
+        const Vec2 rel = v.linear - vel - omega * perp(w.partPose(p).position - origin);
+        ke += 0.5 * part.mass * rel.squaredNorm() + 0.5 * part.inertia * (v.angular - omega) * (v.angular - omega);
+    }
+    return ke;
+}
+
 }  // namespace jl

@@ -17,31 +17,6 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kTouch = 2 * Ladder::kAngleTolerance;  // rad: this close to a limit touches it
 constexpr double kResting = 1e-9;   // rad/s: slower than this is at rest
 
-// Kinetic energy relative to the one moving held body, if there is exactly
-// one: in its frame an impact never creates energy (PHYSICS.md section 7).
-double relativeKinetic(const World& w) {
-    int moving = -1, count = 0;
-    for (int b = 1; b < w.bodyCount(); ++b)
-        if (w.body(b).alive && w.body(b).kinematic) {
-            moving = b;
-            ++count;
-        }
-    if (count != 1) return energy(w).kinetic;
-    const Vec2 origin = w.q.segment<2>(3 * moving);
-    const Vec2 vel = w.v.segment<2>(3 * moving);
-    const double omega = w.v[3 * moving + 2];
-    double ke = 0;
-    for (PartId p = 1; p < w.partCount(); ++p) {
-        const Part& part = w.part(p);
-        if (part.drive || part.body == 0) continue;
-        const Vec2 c = w.partPose(p).position;
-        const Twist v = w.partVelocity(p);
-        const Vec2 rel = v.linear - vel - omega * perp(c - origin);
-        ke += 0.5 * part.mass * rel.squaredNorm() + 0.5 * part.inertia * (v.angular - omega) * (v.angular - omega);
-    }
-    return ke;
-}
-
 }  // namespace
 
 // A free hinge at a limit (within kTouch, either side: the located time
@@ -124,7 +99,7 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
                                   double* heldWork, std::vector<int>* releasedNow) {
     std::vector<Event> events;
     const std::vector<Twist> before = w.partVelocities();
-    const double keBefore = energy(w).kinetic, relBefore = relativeKinetic(w);
+    const double keBefore = energy(w).kinetic, relBefore = heldFrameKinetic(w);
     std::vector<double> approach(hits.size());
     for (size_t i = 0; i < hits.size(); ++i) {
         const int j = hits[i];
@@ -189,7 +164,7 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
             projectVelocities(w, d.solver());
         }
     }
-    const double dissipated = relBefore - relativeKinetic(w);
+    const double dissipated = relBefore - heldFrameKinetic(w);
     *loss += dissipated;
     *heldWork += energy(w).kinetic - keBefore + dissipated;
     return events;
