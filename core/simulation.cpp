@@ -208,12 +208,19 @@ void Simulation::applyScriptAction(const ScriptAction& a) {
         break;
     }
     case K::Cut:
-        if (ladder_ && !ladder_->cut(world_, a.hinge)) {
+        // A refused action is said in the log, so a script's author sees why.
+        if (!ladder_) break;
+        if (auto refused = ladder_->cut(world_, a.hinge))
+            e.text = "the cut of hinge " + std::to_string(a.hinge) + " is refused: " + *refused;
+        else
             e = {t_, EventKind::Cut, a.hinge, -1, "the ribbons of hinge " + std::to_string(a.hinge) + " are cut"};
-        }
         break;
     case K::Join:
-        if (ladder_ && a.otherBlock >= 0 && a.otherBlock < blockCount()) join(a);
+        if (!ladder_ || a.otherBlock < 0 || a.otherBlock >= blockCount()) break;
+        if (auto refused = join(a))
+            e.text = "the join of corner " + std::to_string(a.corner) + " of block " + std::to_string(a.block) +
+                     " to corner " + std::to_string(a.otherCorner) + " of block " + std::to_string(a.otherBlock) +
+                     " is refused: " + *refused;
         break;
     }
     if (!e.text.empty()) record(e);
@@ -234,9 +241,10 @@ void Simulation::applyScriptAction(const ScriptAction& a) {
 // gap between the corners locked inside it for a later cut to close; in weld
 // mode it would turn one about the other, through it if need be), or when
 // the corners do not end up together (two held blocks, a failed projection).
-void Simulation::join(const ScriptAction& a) {
+std::optional<std::string> Simulation::join(const ScriptAction& a) {
     const PartId first = blockPart(a.block), second = blockPart(a.otherBlock);
-    if (world_.part(first).body == world_.part(second).body || shareAPoint(world_, first, second)) return;
+    if (world_.part(first).body == world_.part(second).body || shareAPoint(world_, first, second))
+        return "the blocks are joined already (a second point would make them one rigid body, not a hinge)";
     // Joining the corners of a cut hinge makes the hinge again (with its own
     // particles, so that it locks and flips as before); any other join is a
     // plain pin the ladder knows nothing of.
@@ -246,7 +254,7 @@ void Simulation::join(const ScriptAction& a) {
     const World saved = world_;
     const Energy e0 = energy(world_);
     const double k0 = heldFrameKinetic(world_);
-    if (world_.combine(p, q, false)) return;  // refused by the world: nothing changed
+    if (auto e = world_.combine(p, q, false)) return e->message;  // refused by the world: nothing changed
     const double k1 = heldFrameKinetic(world_);
     PinSolver solver;
     const double tolerance = scene_.solver.projectionTolerance;
@@ -258,7 +266,8 @@ void Simulation::join(const ScriptAction& a) {
         !world_.v.allFinite()) {
         world_ = saved;
         dynamics_.solver().reset();
-        return;
+        return pulled.converged ? "the corners cannot be brought together (both blocks are held)"
+                                : "the pull onto the new pin did not converge";
     }
     const Energy e1 = energy(world_);
     const double dissipated = (k0 - k1) + (k2 - k3);
@@ -273,6 +282,7 @@ void Simulation::join(const ScriptAction& a) {
     const double settling = energy(world_).potential;
     for (Event& ev : ladder_->resolve(world_, dynamics_, t_, &impactLoss_, &impactHeldWork_)) record(ev);
     ledger_.user += energy(world_).potential - settling;
+    return std::nullopt;
 }
 
 // The user's drag: the mouse spring on a free block; a held block's hand

@@ -91,7 +91,8 @@ private:
     double nextScheduledTime() const;
     void applyDueInputs();
     void applyScriptAction(const ScriptAction& a);
-    void join(const ScriptAction& a);
+    // A scripted join; the reason if refused (the world unchanged then).
+    std::optional<std::string> join(const ScriptAction& a);
     void applyDragSample(const DragRecord& d, const DragRecord::Sample& s);
     bool takeStep(double limit);
     void record(const Event& e);

@@ -382,6 +382,16 @@ private slots:
             QCOMPARE(joined, plain);
             QCOMPARE(joinedEvents.size(), plainEvents.size());
             for (const Event& e : joinedEvents) QVERIFY(e.kind != EventKind::Join);
+            // Both refusals are said in the log, with the reason.
+            for (const auto* log : {&joinedEvents, &plainEvents}) {
+                int said = 0;
+                for (const Event& e : *log)
+                    if (e.kind == EventKind::Script && e.text.find(" is refused: ") != std::string::npos) {
+                        qInfo("%s", e.text.c_str());
+                        ++said;
+                    }
+                QCOMPARE(said, 1);
+            }
         }
     }
 
