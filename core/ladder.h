@@ -73,6 +73,12 @@ public:
     // pulling), impacts included, until none remains. Returns what happened.
     std::vector<Event> resolve(World& w, Dynamics& d, double t, double* impactLoss, double* heldWork);
 
+    // An impulse P at a point (block frame) of block i that the hand does not
+    // hold itself, taken up like an impact: with every constraint active; a
+    // locked or folded contact it would pull is released (most negative
+    // first, rule 6 included) and P taken up again. Returns the releases.
+    std::vector<Event> push(World& w, Dynamics& d, double t, int i, const Vec2& local, const Vec2& impulse);
+
     // Contact forces of hinge j in the state last evaluated by d.
     HingeContact contact(const World& w, const Dynamics& d, int j) const;
 

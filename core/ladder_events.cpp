@@ -170,6 +170,36 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
     return events;
 }
 
+std::vector<Event> Ladder::push(World& w, Dynamics& d, double t, int i, const Vec2& local, const Vec2& impulse) {
+    std::vector<Event> events;
+    const PartId p = block(i);
+    const Part& part = w.part(p);
+    // The velocities the impulse gives the block on its own: a block locked
+    // to others (or to the hand) takes it through their contacts, which the
+    // loop below tests as it tests an impact's.
+    std::vector<Twist> before = w.partVelocities();
+    const Vec2 arm = w.pointPosition(p, local) - w.partPose(p).position;
+    before[size_t(p)].linear += impulse / part.mass;
+    if (part.inertia > 0) before[size_t(p)].angular += cross(arm, impulse) / part.inertia;
+    Eigen::VectorXd impulses;
+    const Impact im{&before, &impulses};
+    std::vector<int> kept;
+    for (int guard = 0; guard < 4 * blockCount(); ++guard) {
+        w.setPartVelocities(before);
+        projectVelocities(w, d.solver(), &impulses);
+        updateAngles(w);
+        const auto pull = pullingContact(w, d, &im, kept);
+        if (!pull) break;
+        if (wouldChatter(w, t, pull->first, pull->second, before)) {
+            kept.push_back(pull->first);
+            continue;
+        }
+        release(w, pull->first, pull->second);
+        events.push_back({t, pull->second, pull->first, hinge(pull->first).corner, words(pull->second, pull->first)});
+    }
+    return events;
+}
+
 std::vector<Event> Ladder::resolve(World& w, Dynamics& d, double t, double* loss, double* heldWork) {
     std::vector<Event> events;
     std::vector<int> released;  // in this pass: free even at a limit

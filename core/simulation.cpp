@@ -194,17 +194,25 @@ void Simulation::applyScriptAction(const ScriptAction& a) {
         // The impulse's work is P . (v- + v+)/2 at the point it acts on; the
         // pins carry the rest of the change of kinetic energy into held
         // blocks (their impulsive work). A held block takes the push itself.
+        if (world_.isHeld(part)) break;
         const double before = energy(world_).kinetic;
-        const int b = world_.part(part).body;
         const Vec2 local = vec(a.point), impulse = vec(a.impulse);
-        const Vec2 x = world_.pointPosition(part, local), v0 = world_.pointVelocity(part, local);
-        world_.v.segment<2>(3 * b) += world_.body(b).invMass * impulse;
-        world_.v[3 * b + 2] += world_.body(b).invInertia * cross(x - world_.q.segment<2>(3 * b), impulse);
-        projectVelocities(world_, dynamics_.solver());
-        const double work = world_.body(b).kinematic ? 0.0 : 0.5 * impulse.dot(v0 + world_.pointVelocity(part, local));
+        const Vec2 v0 = world_.pointVelocity(part, local);
+        std::vector<Event> released;
+        if (ladder_) {
+            released = ladder_->push(world_, dynamics_, t_, a.block, local, impulse);
+        } else {
+            const int b = world_.part(part).body;
+            const Vec2 x = world_.pointPosition(part, local);
+            world_.v.segment<2>(3 * b) += world_.body(b).invMass * impulse;
+            world_.v[3 * b + 2] += world_.body(b).invInertia * cross(x - world_.q.segment<2>(3 * b), impulse);
+            projectVelocities(world_, dynamics_.solver());
+        }
+        const double work = 0.5 * impulse.dot(v0 + world_.pointVelocity(part, local));
         ledger_.user += work;
         impactHeldWork_ += energy(world_).kinetic - before - work;
-        e.text = "block " + std::to_string(a.block) + " is pushed";
+        record({t_, EventKind::Script, -1, -1, "block " + std::to_string(a.block) + " is pushed"});
+        for (Event& r : released) record(r);
         break;
     }
     case K::Cut:

@@ -151,6 +151,48 @@ private slots:
         QVERIFY(before.farEnd < before.nearEnd);
     }
 
+    // A push is taken up like an impact: block 1, locked as a cantilever to
+    // the held flat block 0 (the first case), is pushed at its centre. Up,
+    // the impulse would pull the contact at the lower corner: it unlocks at
+    // once and block 1 turns about the hinge pin as about a fixed pivot,
+    // omega = ((c - h) x P) / I_p (worked by hand). Down, the contact takes
+    // the push and the hand holds the pair: nothing moves.
+    void pushThatWouldPullALockedContactUnlocksIt_data() {
+        QTest::addColumn<double>("up");
+        QTest::newRow("pushed up") << 1.0;
+        QTest::newRow("pushed down") << -1.0;
+    }
+    void pushThatWouldPullALockedContactUnlocksIt() {
+        QFETCH(double, up);
+        const Vec2 P(0, up * 1e-3);
+        auto sim = simulate(flatHeldBlock(1.4, "90deg") + "  - {at: 0.95, push: {block: 1, impulse: [0, " +
+                            std::to_string(P.y()) + "], point: [0, 0]}}\n");
+        QVERIFY(sim);
+        const Run r = runUntil(*sim, 0.95);
+        QVERIFY(std::abs(sim->time() - 0.95) < 1e-12);
+        QCOMPARE(r.events.front().kind, EventKind::Lock);
+        const World& w = sim->world();
+        const PartId b = sim->blockPart(1);
+        const Twist v = w.partVelocity(b);
+        if (up < 0) {
+            QCOMPARE(r.events.back().kind, EventKind::Lock);
+            QCOMPARE(sim->ladder()->hinge(1).mode, HingeMode::OpenLocked);
+            QVERIFY(v.linear.norm() < 1e-12 && std::abs(v.angular) < 1e-12);
+            return;
+        }
+        QCOMPARE(r.events.back().kind, EventKind::Unlock);
+        QCOMPARE(r.events.back().time, 0.95);
+        QCOMPARE(sim->ladder()->hinge(1).mode, HingeMode::Free);
+        const Vec2 h = sim->ladder()->cornerWorld(w, 0, sim->ladder()->hinge(1).corner);
+        const Vec2 c = w.partPose(b).position;
+        const double ip = w.part(b).inertia + m * (c - h).squaredNorm();
+        const double omega = cross(c - h, P) / ip;
+        QVERIFY2(std::abs(v.angular / omega - 1) < 1e-9, qPrintable(QString("omega %1, by hand %2").arg(v.angular).arg(omega)));
+        QVERIFY((v.linear - omega * perp(c - h)).norm() < 1e-9 * std::abs(omega) * (c - h).norm());
+        QVERIFY(sim->ladder()->foldRate(w, 1) > 0);  // opening
+        QVERIFY2(r.worstBalance < 1e-8, qPrintable(QString::number(r.worstBalance)));  // as the lock case
+    }
+
     void flipAndUnfoldAreMirrorImages() {
         auto flip = simulate(flatHeldBlock(2.0, "-90deg"));
         auto unfold = simulate(flatHeldBlock(2.0, "90deg"));
