@@ -140,6 +140,13 @@ std::optional<std::string> Simulation::buildWorld() {
     initialEnergy_ = e0.total() + impactLoss_ - impactHeldWork_ - ledger_.user - ledger_.held + ledger_.damping;
     initialKinetic_ = e0.kinetic;
     initialPotential_ = e0.potential;
+    // What "small" means for the books when nothing has moved yet: every
+    // part lifted by its own half size (at rest, the flows are all zero and
+    // the first step's rounding, or explicit Euler's first kick, would look
+    // like a blow-up against them alone).
+    energyFloor_ = 0;
+    for (PartId p = 1; p < world_.partCount(); ++p)
+        energyFloor_ += world_.part(p).mass * world_.gravity.norm() * (world_.part(p).halfSize.norm() + 1e-3);
     lastResidual_ = pinResidual(world_);
     return std::nullopt;
 }
@@ -389,8 +396,8 @@ bool Simulation::booksDiverged() const {
     // What "large" means: the energy that has flowed, none of it measured
     // from the arbitrary zero of the potential (a 10,000-block ladder has
     // -5.8e5 J of it, which would hide any blow-up).
-    const double scale = initialKinetic_ + std::abs(e.potential - initialPotential_) + std::abs(held) +
-                         std::abs(ledger_.user) + impactLoss_ + ledger_.damping + 1e-9;
+    const double scale = energyFloor_ + initialKinetic_ + std::abs(e.potential - initialPotential_) +
+                         std::abs(held) + std::abs(ledger_.user) + impactLoss_ + ledger_.damping + 1e-9;
     return !(std::abs(e.total() - books) <= kDivergence * scale);
 }
 
@@ -415,7 +422,9 @@ bool Simulation::takeStep(double limit) {
     if (!m.ok()) {
         fail(m.step.finite ? "the projection onto the pins did not converge (residual " +
                                  std::to_string(m.projection.residual) + " m after " +
-                                 std::to_string(m.projection.iterations) + " iterations)"
+                                 std::to_string(m.projection.iterations) +
+                                 " iterations): the motion is blowing up, the step " + std::to_string(h) +
+                                 " s is too large for this integrator here; try a smaller step"
                            : "the step produced a non-finite state (the integrator is unstable at this step size)");
         return false;
     }

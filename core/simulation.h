@@ -109,6 +109,7 @@ private:
     double t_ = 0;
     double initialEnergy_ = 0;
     double initialKinetic_ = 0, initialPotential_ = 0;  // after the inputs at t = 0
+    double energyFloor_ = 0;  // J, the least energy scale of the blow-up check
     double impactLoss_ = 0, impactHeldWork_ = 0;
     size_t nextAction_ = 0;
     std::vector<size_t> nextDragSample_;
