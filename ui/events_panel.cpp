@@ -5,6 +5,27 @@
 
 namespace jlui {
 
+namespace {
+
+constexpr double kRunGap = 0.01;  // s: a lock and an unlock of one hinge this close belong to one run
+constexpr int kRunRow = 4;        // events: two lock-unlock cycles and more make one row
+
+bool lockOrUnlock(const jl::Event& e) {
+    return e.hinge > 0 && (e.kind == jl::EventKind::Lock || e.kind == jl::EventKind::Unlock);
+}
+
+QString runInWords(const jl::Event& first, const jl::Event& last, int count) {
+    return QObject::tr("%1–%2 s: blocks %3 and %4 lock and unlock again and again (%5 events): they rest against each "
+                       "other with almost no force")
+        .arg(first.time, 0, 'f', 3)
+        .arg(last.time, 0, 'f', 3)
+        .arg(first.hinge - 1)
+        .arg(first.hinge)
+        .arg(count);
+}
+
+}  // namespace
+
 QString eventInWords(const jl::Event& e) {
     QString what = QString::fromStdString(e.text);
     if (what.isEmpty()) what = QObject::tr("hinge %1: %2").arg(e.hinge).arg(QString::fromUtf8(jl::toString(e.kind)));
@@ -24,17 +45,50 @@ EventsPanel::EventsPanel(QWidget* parent) : QWidget(parent) {
     });
 }
 
+QListWidgetItem* EventsPanel::addRow(const QString& text, double time) {
+    auto* item = new QListWidgetItem(text, list_);
+    item->setData(Qt::UserRole, time);
+    return item;
+}
+
+// One more event: a row of its own, or part of its hinge's run of locks and
+// unlocks (whose row seeks to the run's start).
+void EventsPanel::append(size_t index) {
+    const jl::Event& e = (*events_)[index];
+    auto it = runs_.find(e.hinge);
+    if (lockOrUnlock(e) && it != runs_.end() && e.time - (*events_)[it->second.last].time <= kRunGap) {
+        Run& run = it->second;
+        run.last = index;
+        ++run.count;
+        if (run.count < kRunRow) {
+            run.rows.push_back(addRow(eventInWords(e), e.time));
+            return;
+        }
+        if (run.count == kRunRow) {
+            for (size_t k = 1; k < run.rows.size(); ++k) delete list_->takeItem(list_->row(run.rows[k]));
+            run.rows.resize(1);
+        }
+        run.rows.front()->setText(runInWords((*events_)[run.first], e, run.count));
+        return;
+    }
+    QListWidgetItem* row = addRow(eventInWords(e), e.time);
+    if (lockOrUnlock(e))
+        runs_[e.hinge] = Run{index, index, 1, {row}};
+    else if (e.hinge > 0)
+        runs_.erase(e.hinge);  // a fold or a flip ends the hinge's run
+}
+
 void EventsPanel::setEvents(std::shared_ptr<const std::vector<jl::Event>> events) {
     if (events == events_) return;
     const size_t had = (events_ && events && events->size() >= events_->size()) ? events_->size() : 0;
     // The log only grows while playing: append; anything else rebuilds it.
-    if (had == 0) list_->clear();
+    if (had == 0) {
+        list_->clear();
+        runs_.clear();
+    }
     events_ = std::move(events);
     if (!events_) return;
-    for (size_t i = had; i < events_->size(); ++i) {
-        auto* item = new QListWidgetItem(eventInWords((*events_)[i]), list_);
-        item->setData(Qt::UserRole, (*events_)[i].time);
-    }
+    for (size_t i = had; i < events_->size(); ++i) append(i);
     if (had < events_->size()) list_->scrollToBottom();
 }
 

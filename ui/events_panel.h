@@ -4,10 +4,12 @@
 #include "core/frame.h"
 
 #include <QWidget>
+#include <map>
 #include <memory>
 #include <vector>
 
 class QListWidget;
+class QListWidgetItem;
 
 namespace jlui {
 
@@ -23,8 +25,20 @@ signals:
     void seekRequested(double time);
 
 private:
+    // A pair resting against each other with almost no force locks and
+    // unlocks every few milliseconds (grazing contact): from two cycles on,
+    // the run is one row, so the log still reads as a story.
+    struct Run {
+        size_t first = 0, last = 0;          // event indices
+        int count = 0;                        // events in the run
+        std::vector<QListWidgetItem*> rows;   // one row each until merged, then the run's row
+    };
+    void append(size_t index);
+    QListWidgetItem* addRow(const QString& text, double time);
+
     QListWidget* list_;
     std::shared_ptr<const std::vector<jl::Event>> events_;
+    std::map<int, Run> runs_;  // by hinge: its latest run of locks and unlocks
 };
 
 }  // namespace jlui

@@ -177,6 +177,49 @@ private slots:
         QCOMPARE(seeks.first().at(0).toDouble(), run.events[2].time);
     }
 
+    // A pair resting against each other with almost no force locks and
+    // unlocks every few milliseconds; from two cycles on the log shows the
+    // run as one row (which seeks to its start), even with other hinges'
+    // events in between. One lock and unlock stay two rows.
+    void aRunOfLocksAndUnlocksIsOneRow() {
+        using K = jl::EventKind;
+        std::vector<jl::Event> events{{0.100, K::Lock, 1, 0, "blocks 0 and 1 lock end to end"},
+                                      {0.200, K::Unlock, 1, 0, "blocks 0 and 1 unlock"}};
+        for (int k = 0; k < 10; ++k) {
+            events.push_back({0.300 + 0.002 * k, k % 2 ? K::Unlock : K::Lock, 1, 0,
+                              k % 2 ? "blocks 0 and 1 unlock" : "blocks 0 and 1 lock end to end"});
+            if (k == 4) events.push_back({0.3085, K::FlipFlop, 2, 1, "block 2 flips over the far end of block 1"});
+        }
+        events.push_back({1.000, K::Lock, 3, 0, "blocks 2 and 3 lock end to end"});
+        events.push_back({1.005, K::Unlock, 3, 0, "blocks 2 and 3 unlock"});
+        EventsPanel panel;
+        panel.resize(600, 400);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        // Delivered as a player would: a few events at a time.
+        auto shown = std::make_shared<std::vector<jl::Event>>();
+        for (const jl::Event& e : events) {
+            shown->push_back(e);
+            panel.setEvents(std::make_shared<const std::vector<jl::Event>>(*shown));
+        }
+        auto* list = panel.findChild<QListWidget*>("events");
+        QStringList rows;
+        for (int i = 0; i < list->count(); ++i) rows << list->item(i)->text();
+        QCOMPARE(list->count(), 6);
+        QVERIFY2(rows[2].startsWith("0.300–0.318 s: blocks 0 and 1 lock and unlock again and again (10 events)"), qPrintable(rows[2]));
+        QVERIFY2(rows[3].contains("block 2 flips"), qPrintable(rows[3]));
+        QVERIFY(rows[4].startsWith("1.000 s:") && rows[5].startsWith("1.005 s:"));
+        QSignalSpy seeks(&panel, &EventsPanel::seekRequested);
+        QTest::mouseClick(list->viewport(), Qt::LeftButton, {}, list->visualItemRect(list->item(2)).center());
+        QCOMPARE(seeks.size(), 1);
+        QCOMPARE(seeks.first().at(0).toDouble(), 0.300);
+        // Rebuilt at once (a seek back replaces the log), the same rows.
+        panel.setEvents(nullptr);
+        panel.setEvents(std::make_shared<const std::vector<jl::Event>>(events));
+        QCOMPARE(list->count(), 6);
+        QCOMPARE(list->item(2)->text(), rows[2]);
+    }
+
     void theSideViewDrawsEachBlockWhereTheEngineSaysItIs() {
         const jl::Scene scene = loadExample("classic.yaml");
         const Run run = runHeadless(scene, 0.7);
