@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace jl {
@@ -11,6 +12,7 @@ namespace jl {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
+constexpr double kNoEvent = 1.0;  // the value of a function with no event to watch
 
 double wrapToPi(double x) { return std::remainder(x, 2 * kPi); }
 
@@ -339,17 +341,14 @@ HingeContact Ladder::contact(const World& w, const Dynamics& d, int j) const {
 }
 
 // Two functions per hinge, >= 0 while the mode may stand.
-void Ladder::eventFunctions(const World& w, const Dynamics& d, std::vector<double>& out) const {
-    out.assign(2 * hinges_.size(), 1.0);
+double Ladder::eventFunctions(const World& w, const Dynamics& d, std::vector<double>& out) const {
+    angleEventFunctions(w, out);
+    double smallestForce = std::numeric_limits<double>::infinity();
     for (int j = 1; j < blockCount(); ++j) {
         double* g = &out[2 * size_t(j - 1)];
         switch (hinge(j).mode) {
-        case HingeMode::Free: {
-            const double phi = foldAngle(w, j);
-            g[0] = phi + kAngleTolerance;
-            g[1] = kPi - phi + kAngleTolerance;
-            break;
-        }
+        case HingeMode::Free:
+        case HingeMode::Cut: continue;
         case HingeMode::OpenLocked:
             g[0] = contact(w, d, j).normal + kForceTolerance;
             break;
@@ -359,8 +358,19 @@ void Ladder::eventFunctions(const World& w, const Dynamics& d, std::vector<doubl
             g[1] = c.farEnd + kForceTolerance;
             break;
         }
-        case HingeMode::Cut: break;
         }
+        smallestForce = std::min({smallestForce, g[0], g[1]});
+    }
+    return smallestForce;
+}
+
+void Ladder::angleEventFunctions(const World& w, std::vector<double>& out) const {
+    out.assign(2 * hinges_.size(), kNoEvent);
+    for (int j = 1; j < blockCount(); ++j) {
+        if (hinge(j).mode != HingeMode::Free) continue;
+        const double phi = foldAngle(w, j);
+        out[2 * size_t(j - 1)] = phi + kAngleTolerance;
+        out[2 * size_t(j - 1) + 1] = kPi - phi + kAngleTolerance;
     }
 }
 

@@ -67,7 +67,11 @@ public:
     static constexpr double kAngleTolerance = 5e-8;   // rad
     static constexpr double kForceTolerance = 1e-9;   // N (N s for impulses)
     // Needs the accelerations of the state (Dynamics::evaluate done).
-    void eventFunctions(const World& w, const Dynamics& d, std::vector<double>& out) const;
+    // Returns the smallest of the contact-force functions (+inf if none).
+    double eventFunctions(const World& w, const Dynamics& d, std::vector<double>& out) const;
+    // Only the fold-angle functions of free hinges (the others +inf): they
+    // need positions alone, no evaluation of the dynamics.
+    void angleEventFunctions(const World& w, std::vector<double>& out) const;
 
     // Applies whatever events the state calls for (limits crossed, contacts
     // pulling), impacts included, until none remains. Returns what happened.

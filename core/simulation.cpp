@@ -1,6 +1,7 @@
 #include "core/simulation.h"
 
 #include "core/energy.h"
+#include "core/event_bracket.h"
 #include "core/motion.h"
 
 #include <algorithm>
@@ -415,7 +416,11 @@ bool Simulation::takeStep(double limit) {
     if (lands) h = scheduled - t_;
     if (h <= 0) return true;
 
-    const Eigen::VectorXd q0 = world_.q, v0 = world_.v;
+    // The state the step starts from, in buffers kept from step to step.
+    Eigen::VectorXd& q0 = stepStartQ_;
+    Eigen::VectorXd& v0 = stepStartV_;
+    q0 = world_.q;
+    v0 = world_.v;
     const Ledger l0 = ledger_;
     const double next0 = stepper_.nextStep();
     MotionStep m = advanceAndProject(world_, dynamics_, stepper_, t_, h, ledger_, solver.projectionTolerance);
@@ -441,57 +446,68 @@ bool Simulation::takeStep(double limit) {
         return false;
     }
     if (ladder_) {
-        std::vector<double> g;
+        std::vector<double>& g = eventValues_;
         // The smallest event function in the state the world holds, at time t
         // (an event function is negative when its event has happened).
+        double forces = 0;  // the smallest contact-force function of the last call
         auto smallest = [&](double t) {
             dynamics_.evaluate(world_, t);
-            ladder_->eventFunctions(world_, dynamics_, g);
+            forces = ladder_->eventFunctions(world_, dynamics_, g);
             return g.empty() ? 1.0 : *std::min_element(g.begin(), g.end());
         };
         double fhi = smallest(t_ + taken);
         if (fhi < 0) {
             if (solver.events == EventPolicy::Located && taken > solver.eventTolerance) {
-                // Find the instant the smallest event function turns negative,
-                // re-running the step from its start for each trial length:
-                // regula falsi with the Illinois correction (a few trials
-                // where halving takes twenty); halving when the start is not
-                // strictly before every event.
+                // The first instant an event function turns negative, to
+                // within the event tolerance. First narrowed on the step's
+                // interpolant, at one evaluation per trial instead of a whole
+                // step; when no contact force pulls at either end, the event
+                // is a hinge reaching a limit, which positions alone tell, and
+                // a trial needs no dynamics at all. Then both ends of that
+                // bracket are checked by re-running the step from its start,
+                // and where the interpolant was wrong the bracket is narrowed
+                // again with a re-run for every trial: the instant is the
+                // integrator's own, as if every trial had been re-run.
+                const double forcesAtEnd = forces;
+                interpolant_.setEnd(world_.q, world_.v, world_.a);
+                world_.q = q0;
+                world_.v = v0;
+                const double flo = smallest(t_);
+                interpolant_.setStart(taken, q0, v0, world_.a);
+                const bool anglesOnly = forces >= 0 && forcesAtEnd >= 0;
+                double at = -1;  // the length of the step whose end the world holds
                 auto rerun = [&](double hh) {
                     world_.q = q0;
                     world_.v = v0;
                     ledger_ = l0;
+                    at = hh;
                     return advanceAndProject(world_, dynamics_, stepper_, t_, hh, ledger_, solver.projectionTolerance,
                                              true).ok();
                 };
-                world_.q = q0;
-                world_.v = v0;
-                double lo = 0, hi = taken, flo = smallest(t_);
-                int kept = 0;  // which end stayed put last time: -1 low, +1 high
-                while (hi - lo > solver.eventTolerance) {
-                    const double width = hi - lo;
-                    double mid = flo > 0 ? hi - fhi * width / (fhi - flo) : lo + 0.5 * width;
-                    if (!(mid > lo && mid < hi)) mid = lo + 0.5 * width;
-                    mid = std::clamp(mid, lo + 0.25 * solver.eventTolerance, hi - 0.25 * solver.eventTolerance);
-                    const double f = rerun(mid) ? smallest(t_ + mid) : -1.0;
-                    if (f < 0) {
-                        hi = mid;
-                        fhi = f;
-                        if (kept == -1) flo *= 0.5;
-                        kept = -1;
-                    } else {
-                        lo = mid;
-                        flo = f;
-                        if (kept == 1) fhi *= 0.5;
-                        kept = 1;
-                    }
+                auto stepped = [&](double hh) { return rerun(hh) ? smallest(t_ + hh) : -1.0; };
+                const double fEnd = fhi;
+                EventBracket b{0, flo, taken, fhi};
+                narrow(b, solver.eventTolerance, [&](double hh) {
+                    interpolant_.at(hh, world_.q, world_.v);
+                    if (!anglesOnly) return smallest(t_ + hh);
+                    world_.updateKinematics(t_ + hh);
+                    ladder_->angleEventFunctions(world_, g);
+                    return g.empty() ? 1.0 : *std::min_element(g.begin(), g.end());
+                });
+                if (b.lo > 0) {
+                    if (const double f = stepped(b.lo); f < 0) b = {0, flo, b.lo, f};
+                    else b = {b.lo, f, b.hi, b.hi == taken ? fEnd : stepped(b.hi)};
+                } else if (b.hi < taken) {
+                    b.fhi = stepped(b.hi);
                 }
-                if (!rerun(hi)) {
+                if (b.fhi >= 0) b = {b.hi, b.fhi, taken, fEnd};
+                narrow(b, solver.eventTolerance, stepped);
+                if (at != b.hi && !rerun(b.hi)) {
                     fail("an event could not be located: a step to it failed");
                     return false;
                 }
                 stepper_.setNextStep(next0 > 0 ? next0 : solver.step);
-                taken = hi;
+                taken = b.hi;
             }
             std::vector<Event> happened = ladder_->resolve(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
             if (happened.empty() && taken < m.step.taken) {

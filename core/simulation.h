@@ -8,6 +8,7 @@
 #include "core/frame.h"
 #include "core/ladder.h"
 #include "core/scene.h"
+#include "core/step_interpolant.h"
 #include "core/stepper.h"
 #include "core/world.h"
 
@@ -118,6 +119,10 @@ private:
     std::string failure_;
     SolverFrame stats_;
     double lastResidual_ = 0;
+    // Kept from step to step so that stepping allocates nothing.
+    Eigen::VectorXd stepStartQ_, stepStartV_;
+    std::vector<double> eventValues_;
+    StepInterpolant interpolant_;
 };
 
 }  // namespace jl

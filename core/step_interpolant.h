@@ -1,0 +1,28 @@
+// The motion inside an accepted step, without re-running it: quintic Hermite
+// interpolation of every body's coordinates from the positions, velocities
+// and accelerations at both ends. Locating an event then costs one
+// evaluation of the event functions per trial instead of a whole step.
+#pragma once
+
+#include <Eigen/Core>
+
+namespace jl {
+
+class StepInterpolant {
+public:
+    // The step of length h from (q0, v0, a0) to (q1, v1, a1), its end given
+    // first (the caller evaluates it first). Copies into buffers kept from
+    // step to step: no allocation once warmed up.
+    void setEnd(const Eigen::VectorXd& q1, const Eigen::VectorXd& v1, const Eigen::VectorXd& a1);
+    void setStart(double h, const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, const Eigen::VectorXd& a0);
+    // Position and velocity a time `tau` (0 <= tau <= h) into the step.
+    // Exact for motion polynomial of degree 5 in time; error O(h^6) in
+    // position and O(h^5) in velocity otherwise.
+    void at(double tau, Eigen::VectorXd& q, Eigen::VectorXd& v) const;
+
+private:
+    double h_ = 0;
+    Eigen::VectorXd q0_, v0_, a0_, q1_, v1_, a1_;
+};
+
+}  // namespace jl
