@@ -14,7 +14,10 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kNoEvent = 1.0;  // the value of a function with no event to watch
 
-double wrapToPi(double x) { return std::remainder(x, 2 * kPi); }
+// Within [-pi, pi] std::remainder returns x itself; it is slow (it saves
+// and restores the floating-point environment), and the change of a fold
+// angle between two calls is nearly always that small.
+double wrapToPi(double x) { return std::abs(x) <= kPi ? x : std::remainder(x, 2 * kPi); }
 
 double blockValue(const LadderSpec& s, int i, double BlockSpec::*field,
                   std::optional<double> BlockOverride::*over) {

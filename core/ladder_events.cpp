@@ -72,15 +72,26 @@ std::optional<std::pair<int, EventKind>> Ladder::pullingContact(const World& w, 
 // Rule 6 of PHYSICS.md section 4: releasing hinge j at this impact would
 // part the pair slower than v_min while its free acceleration turns it back
 // into the limit, so it would only close again at once: it stays locked and
-// the force test decides afterwards. Tried on a copy of the world.
+// the force test decides afterwards. Tried on a copy of the world, kept per
+// thread so that its buffers are reused (grazing hinges ask at every impact);
+// the solvers are reset, so nothing but capacity carries from call to call.
 bool Ladder::wouldChatter(const World& w, double t, int j, EventKind kind, const std::vector<Twist>& before) const {
-    World trial = w;
-    Ladder after = *this;
+    struct Trial {
+        World world;
+        std::optional<Ladder> ladder;
+        Dynamics dynamics;
+    };
+    thread_local Trial scratch;
+    World& trial = scratch.world;
+    trial = w;
+    if (scratch.ladder) *scratch.ladder = *this;
+    else scratch.ladder.emplace(*this);
+    Ladder& after = *scratch.ladder;
+    Dynamics& d = scratch.dynamics;
+    d.solver().reset();
     after.release(trial, j, kind);
     trial.setPartVelocities(before);
-    PinSolver solver;
-    projectVelocities(trial, solver);
-    Dynamics d;
+    projectVelocities(trial, d.solver());
     d.evaluate(trial, t);
     // Away from the limit: phi grows from 0 after an unlock, falls from pi
     // after an unfold or a flip (measured at the new corner).

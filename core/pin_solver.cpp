@@ -47,26 +47,33 @@ void PinSolver::order(const World& w) {
     const std::vector<Pin>& pins = w.pins();
     const int n = int(pins.size());
     pins_.resize(size_t(n));
-    // Pins per dynamic body; more than two anywhere means a branch.
-    std::vector<std::vector<int>> byBody(size_t(w.bodyCount()));
+    // The first two pins on each dynamic body, and how many it has: more
+    // than two anywhere means a branch. Flat buffers kept from call to call,
+    // as the ladder re-orders at every lock and unlock.
+    pinsOfBody_.assign(size_t(w.bodyCount()), {-1, -1});
+    pinCountOfBody_.assign(size_t(w.bodyCount()), 0);
     for (int i = 0; i < n; ++i) {
-        for (int b : {pins[size_t(i)].bodyA, pins[size_t(i)].bodyB})
-            if (!w.body(b).kinematic) byBody[size_t(b)].push_back(i);
+        for (int b : {pins[size_t(i)].bodyA, pins[size_t(i)].bodyB}) {
+            if (w.body(b).kinematic) continue;
+            int& count = pinCountOfBody_[size_t(b)];
+            if (count < 2) pinsOfBody_[size_t(b)][size_t(count)] = i;
+            ++count;
+        }
     }
     welds_.resize(w.welds().size());
     chain_ = w.welds().empty() && !forceSparse_;
-    for (const auto& list : byBody)
-        if (list.size() > 2) chain_ = false;
+    for (int count : pinCountOfBody_)
+        if (count > 2) chain_ = false;
     sequence_.clear();
     pathStart_.clear();
     links_.clear();
     if (chain_) {
         auto neighbour = [&](int pin, int body) {
-            for (int other : byBody[size_t(body)])
-                if (other != pin) return other;
+            for (int k = 0; k < pinCountOfBody_[size_t(body)]; ++k)
+                if (const int other = pinsOfBody_[size_t(body)][size_t(k)]; other != pin) return other;
             return -1;
         };
-        std::vector<char> visited(size_t(n), 0);
+        visited_.assign(size_t(n), 0);
         auto degree = [&](int i) {
             int d = 0;
             for (int b : {pins[size_t(i)].bodyA, pins[size_t(i)].bodyB})
@@ -74,17 +81,17 @@ void PinSolver::order(const World& w) {
             return d;
         };
         for (int start = 0; start < n; ++start) {
-            if (visited[size_t(start)] || degree(start) > 1) continue;
+            if (visited_[size_t(start)] || degree(start) > 1) continue;
             pathStart_.push_back(int(sequence_.size()));
             int pin = start, from = -1;
             while (pin >= 0) {
-                visited[size_t(pin)] = 1;
+                visited_[size_t(pin)] = 1;
                 sequence_.push_back(pin);
                 int next = -1;
                 for (int b : {pins[size_t(pin)].bodyA, pins[size_t(pin)].bodyB}) {
                     if (w.body(b).kinematic) continue;
                     const int o = neighbour(pin, b);
-                    if (o >= 0 && o != from && !visited[size_t(o)]) {
+                    if (o >= 0 && o != from && !visited_[size_t(o)]) {
                         next = o;
                         links_.push_back({b, pins[size_t(pin)].bodyA == b ? 1.0 : -1.0,
                                           pins[size_t(o)].bodyA == b ? 1.0 : -1.0});

@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCholesky>
+#include <array>
 #include <vector>
 
 namespace jl {
@@ -82,6 +83,9 @@ private:
     bool forceSparse_ = false;
     std::vector<Eigen::Vector2d> rotation_;  // (cos, sin) per body: one sincos per body, not per pin end
     // Chain mode: pins in path order, path starts, and links between neighbours.
+    std::vector<std::array<int, 2>> pinsOfBody_;  // order(): the first two pins of each body
+    std::vector<int> pinCountOfBody_;
+    std::vector<char> visited_;
     std::vector<int> sequence_;
     std::vector<int> pathStart_;   // index into sequence_, plus a final end marker
     std::vector<Link> links_;      // links_[i] joins sequence_[i] and sequence_[i+1]

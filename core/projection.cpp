@@ -115,7 +115,11 @@ void projectVelocities(World& w, PinSolver& solver, Eigen::VectorXd* impulses) {
 }
 
 ProjectionResult makeConsistent(World& w, double tolerance) {
-    PinSolver solver;
+    // Scratch kept per thread so that a restructure allocates nothing once
+    // warmed up; reset, so that nothing but capacity carries from one world
+    // (or one call) to the next.
+    thread_local PinSolver solver;
+    solver.reset();
     ProjectionResult r = projectPositions(w, solver, tolerance);
     projectVelocities(w, solver);
     return r;
