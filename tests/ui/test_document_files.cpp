@@ -7,6 +7,7 @@
 
 #include <QFile>
 #include <QMessageBox>
+#include <QAction>
 #include <QMimeData>
 #include <QPushButton>
 #include <QTimer>
@@ -18,7 +19,45 @@ using namespace jlui;
 
 namespace {
 const QString kClassic = QStringLiteral(JL_SOURCE_DIR "/examples/classic.yaml");
+
+// Answers the next message box the window opens with `button`, as a person
+// would click it (the box is modal: the answer has to come from the event loop).
+void answerNextBox(QMessageBox::StandardButton button, QString* text = nullptr) {
+    auto* poll = new QTimer;
+    auto* waited = new int(0);
+    QObject::connect(poll, &QTimer::timeout, [=] {
+        auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        if (!box && ++*waited < 250) return;
+        if (box) {
+            if (text) *text = box->text();
+            box->button(button)->click();
+        }
+        poll->stop();
+        poll->deleteLater();
+        delete waited;
+    });
+    poll->start(20);
 }
+
+QAction* action(QWidget& w, const QString& text) {
+    for (QAction* a : w.findChildren<QAction*>())
+        if (a->text() == text) return a;
+    qFatal("no action %s", qPrintable(text));
+}
+
+QByteArray contents(const QString& path) {
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) qFatal("cannot read %s", qPrintable(path));
+    return f.readAll();
+}
+
+// A scene of our own to edit, so the examples on disk are never touched.
+QString copyOfClassic(const QTemporaryDir& dir) {
+    const QString path = dir.filePath("mine.yaml");
+    QFile::copy(kClassic, path);
+    return path;
+}
+}  // namespace
 
 class DocumentFilesTest : public QObject {
     Q_OBJECT
@@ -63,6 +102,85 @@ private slots:
         QCOMPARE(next.document()->scene().ladder->blocks, 12);
         QVERIFY(next.document()->isModified());
         QCOMPARE(next.document()->path(), QFileInfo(kClassic).absoluteFilePath());
+    }
+
+    // Revert asks first; No keeps the edits, Yes reads the file again.
+    void revertAsksThenReadsTheFileAgain() {
+        QTemporaryDir dir;
+        const QString path = copyOfClassic(dir);
+        const QByteArray onDisk = contents(path);
+        MainWindow w(jltest::quietWindow());
+        QVERIFY(w.openFile(path));
+        const int blocks = w.document()->scene().ladder->blocks;
+        QAction* revert = action(w, "&Revert");
+        QVERIFY(!revert->isEnabled());  // nothing to throw away yet
+        w.findChild<QSpinBox*>("blocks")->setValue(blocks + 3);
+        QVERIFY(revert->isEnabled());
+
+        QString asked;
+        answerNextBox(QMessageBox::No, &asked);
+        revert->trigger();
+        QVERIFY2(asked.contains("mine.yaml"), qPrintable(asked));
+        QCOMPARE(w.document()->scene().ladder->blocks, blocks + 3);
+        QVERIFY(w.document()->isModified());
+
+        answerNextBox(QMessageBox::Yes);
+        revert->trigger();
+        QCOMPARE(w.document()->scene().ladder->blocks, blocks);
+        QVERIFY(!w.document()->isModified());
+        QVERIFY(!revert->isEnabled());
+        QCOMPARE(contents(path), onDisk);
+    }
+
+    // Closing with unsaved edits: Cancel keeps the window and the edits,
+    // Save writes them, Discard leaves the file as it was.
+    void closingWithUnsavedChangesAsks() {
+        QTemporaryDir dir;
+        const QString path = copyOfClassic(dir);
+        const QByteArray onDisk = contents(path);
+        {
+            MainWindow w({false, true});
+            QVERIFY(w.openFile(path));
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            const int blocks = w.document()->scene().ladder->blocks;
+            w.findChild<QSpinBox*>("blocks")->setValue(blocks + 2);
+
+            QString asked;
+            answerNextBox(QMessageBox::Cancel, &asked);
+            QVERIFY(!w.close());
+            QVERIFY2(asked.contains("not saved"), qPrintable(asked));
+            QVERIFY(w.isVisible());
+            QVERIFY(w.document()->isModified());
+            QCOMPARE(contents(path), onDisk);
+
+            answerNextBox(QMessageBox::Discard);
+            QVERIFY(w.close());
+            QCOMPARE(contents(path), onDisk);
+        }
+        {
+            MainWindow w({false, true});
+            QVERIFY(w.openFile(path));
+            const int blocks = w.document()->scene().ladder->blocks;
+            w.findChild<QSpinBox*>("blocks")->setValue(blocks + 2);
+            answerNextBox(QMessageBox::Save);
+            QVERIFY(w.close());
+            const jl::SceneLoad saved = jl::parseScene(contents(path).toStdString(), "mine.yaml");
+            QVERIFY(saved.scene.has_value());
+            QCOMPARE(saved.scene->ladder->blocks, blocks + 2);
+        }
+        {
+            // New, with the prompt cancelled, keeps the scene as it is.
+            MainWindow w({false, true});
+            QVERIFY(w.openFile(path));
+            w.findChild<QSpinBox*>("blocks")->setValue(5);
+            answerNextBox(QMessageBox::Cancel);
+            action(w, "&New")->trigger();
+            QCOMPARE(w.document()->path(), QFileInfo(path).absoluteFilePath());
+            QCOMPARE(w.document()->scene().ladder->blocks, 5);
+            answerNextBox(QMessageBox::Discard);
+            QVERIFY(w.close());
+        }
     }
 
     void droppingASceneFileOnTheWindowOpensIt() {
