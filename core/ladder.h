@@ -69,7 +69,7 @@ public:
     // Needs the accelerations of the state (Dynamics::evaluate done).
     // Returns the smallest of the contact-force functions (+inf if none).
     double eventFunctions(const World& w, const Dynamics& d, std::vector<double>& out) const;
-    // Only the fold-angle functions of free hinges (the others +inf): they
+    // Only the fold-angle functions of free hinges (the others 1, no event): they
     // need positions alone, no evaluation of the dynamics.
     void angleEventFunctions(const World& w, std::vector<double>& out) const;
 

@@ -1,11 +1,9 @@
 #include "core/simulation.h"
 
 #include "core/energy.h"
-#include "core/event_bracket.h"
 #include "core/motion.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -17,7 +15,6 @@ namespace {
 
 constexpr double kDragTimeConstant = 0.05;  // s, the mouse spring's response
 constexpr double kDragMaxAcceleration = 20; // in g: the spring's force cap per kg
-constexpr double kOpenEnd = std::numeric_limits<double>::max();
 
 Vec2 vec(const Point2& p) { return {p[0], p[1]}; }
 
@@ -380,186 +377,6 @@ void Simulation::endDrag() {
     scene_.drags[size_t(liveDrag_)].end = t_;
     liveDrag_ = -1;
     applyDueInputs();
-}
-
-// ---- stepping ----
-
-void Simulation::record(const Event& e) { pending_.push_back(e); }
-
-// An unstable integrator makes energy from nothing long before a NaN or a
-// failed projection shows it: compare E with E0 + work - losses, against the
-// size of every term of the books.
-bool Simulation::booksDiverged() const {
-    constexpr double kDivergence = 0.5;
-    const Energy e = energy(world_);
-    const double held = ledger_.held + impactHeldWork_;
-    const double books = initialEnergy_ + held + ledger_.user - impactLoss_ - ledger_.damping;
-    // What "large" means: the energy that has flowed, none of it measured
-    // from the arbitrary zero of the potential (a 10,000-block ladder has
-    // -5.8e5 J of it, which would hide any blow-up).
-    const double scale = energyFloor_ + initialKinetic_ + std::abs(e.potential - initialPotential_) +
-                         std::abs(held) + std::abs(ledger_.user) + impactLoss_ + ledger_.damping + 1e-9;
-    return !(std::abs(e.total() - books) <= kDivergence * scale);
-}
-
-void Simulation::fail(const std::string& why) {
-    failure_ = "at t = " + std::to_string(t_) + " s: " + why;
-}
-
-bool Simulation::takeStep(double limit) {
-    if (!failure_.empty()) return false;
-    const SolverSpec& solver = scene_.solver;
-    const bool adaptive = solver.integrator == Integrator::DormandPrince45;
-    double h = adaptive && stepper_.nextStep() > 0 ? stepper_.nextStep() : solver.step;
-    const double scheduled = std::min(nextScheduledTime(), limit);
-    const bool lands = t_ + h >= scheduled - 1e-12;
-    if (lands) h = scheduled - t_;
-    if (h <= 0) return true;
-
-    // The state the step starts from, in buffers kept from step to step.
-    Eigen::VectorXd& q0 = stepStartQ_;
-    Eigen::VectorXd& v0 = stepStartV_;
-    q0 = world_.q;
-    v0 = world_.v;
-    const Ledger l0 = ledger_;
-    const double next0 = stepper_.nextStep();
-    MotionStep m = advanceAndProject(world_, dynamics_, stepper_, t_, h, ledger_, solver.projectionTolerance);
-    if (!m.ok()) {
-        fail(m.step.finite ? "the projection onto the pins did not converge (residual " +
-                                 std::to_string(m.projection.residual) + " m after " +
-                                 std::to_string(m.projection.iterations) +
-                                 " iterations): the motion is blowing up, the step " + std::to_string(h) +
-                                 " s is too large for this integrator here; try a smaller step"
-                           : "the step produced a non-finite state (the integrator is unstable at this step size)");
-        return false;
-    }
-    double taken = m.step.taken;
-    stats_.rejected += m.step.rejected;
-    if (booksDiverged()) {
-        world_.q = q0;
-        world_.v = v0;
-        ledger_ = l0;
-        world_.updateKinematics(t_);
-        fail("the energy no longer balances (the motion is blowing up): the step " + std::to_string(h) +
-             " s is too large for this integrator here (a fast vibration grows at every step); try a smaller "
-             "step, or the adaptive integrator, which finds one itself at a higher cost");
-        return false;
-    }
-    if (ladder_) {
-        std::vector<double>& g = eventValues_;
-        // The smallest event function in the state the world holds, at time t
-        // (an event function is negative when its event has happened).
-        double forces = 0;  // the smallest contact-force function of the last call
-        auto smallest = [&](double t) {
-            dynamics_.evaluate(world_, t);
-            forces = ladder_->eventFunctions(world_, dynamics_, g);
-            return g.empty() ? 1.0 : *std::min_element(g.begin(), g.end());
-        };
-        double fhi = smallest(t_ + taken);
-        if (fhi < 0) {
-            if (solver.events == EventPolicy::Located && taken > solver.eventTolerance) {
-                // The first instant an event function turns negative, to
-                // within the event tolerance. First narrowed on the step's
-                // interpolant, at one evaluation per trial instead of a whole
-                // step; when no contact force pulls at either end, the event
-                // is a hinge reaching a limit, which positions alone tell, and
-                // a trial needs no dynamics at all. Then both ends of that
-                // bracket are checked by re-running the step from its start,
-                // and where the interpolant was wrong the bracket is narrowed
-                // again with a re-run for every trial: the instant is the
-                // integrator's own, as if every trial had been re-run.
-                const double forcesAtEnd = forces;
-                interpolant_.setEnd(world_.q, world_.v, world_.a);
-                world_.q = q0;
-                world_.v = v0;
-                const double flo = smallest(t_);
-                interpolant_.setStart(taken, q0, v0, world_.a);
-                const bool anglesOnly = forces >= 0 && forcesAtEnd >= 0;
-                double at = -1;  // the length of the step whose end the world holds
-                auto rerun = [&](double hh) {
-                    world_.q = q0;
-                    world_.v = v0;
-                    ledger_ = l0;
-                    at = hh;
-                    return advanceAndProject(world_, dynamics_, stepper_, t_, hh, ledger_, solver.projectionTolerance,
-                                             true).ok();
-                };
-                auto stepped = [&](double hh) { return rerun(hh) ? smallest(t_ + hh) : -1.0; };
-                const double fEnd = fhi;
-                EventBracket b{0, flo, taken, fhi};
-                narrow(b, solver.eventTolerance, [&](double hh) {
-                    interpolant_.at(hh, world_.q, world_.v);
-                    if (!anglesOnly) return smallest(t_ + hh);
-                    world_.updateKinematics(t_ + hh);
-                    ladder_->angleEventFunctions(world_, g);
-                    return g.empty() ? 1.0 : *std::min_element(g.begin(), g.end());
-                });
-                if (b.lo > 0) {
-                    if (const double f = stepped(b.lo); f < 0) b = {0, flo, b.lo, f};
-                    else b = {b.lo, f, b.hi, b.hi == taken ? fEnd : stepped(b.hi)};
-                } else if (b.hi < taken) {
-                    b.fhi = stepped(b.hi);
-                }
-                if (b.fhi >= 0) b = {b.hi, b.fhi, taken, fEnd};
-                narrow(b, solver.eventTolerance, stepped);
-                if (at != b.hi && !rerun(b.hi)) {
-                    fail("an event could not be located: a step to it failed");
-                    return false;
-                }
-                stepper_.setNextStep(next0 > 0 ? next0 : solver.step);
-                taken = b.hi;
-            }
-            std::vector<Event> happened = ladder_->resolve(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
-            if (happened.empty() && taken < m.step.taken) {
-                // The located instant asked for nothing after all (a function
-                // within rounding of its threshold): take the whole step, so
-                // time can never stall on it.
-                world_.q = q0;
-                world_.v = v0;
-                ledger_ = l0;
-                m = advanceAndProject(world_, dynamics_, stepper_, t_, m.step.taken, ledger_, solver.projectionTolerance, true);
-                taken = m.step.taken;
-                ++stats_.spuriousEvents;
-                happened = ladder_->resolve(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
-            }
-            for (Event& e : happened) record(e);
-            if (!ladder_->error().empty()) {
-                fail(ladder_->error());
-                return false;
-            }
-            if (!world_.q.allFinite() || !world_.v.allFinite()) {
-                world_.q = q0;
-                world_.v = v0;
-                ledger_ = l0;
-                fail("an impact produced a non-finite state");
-                return false;
-            }
-        }
-        ladder_->updateAngles(world_);
-    }
-    t_ = (lands && taken == h) ? scheduled : t_ + taken;
-    ++stats_.steps;
-    stats_.lastStep = taken;
-    lastResidual_ = m.projection.residual;
-    applyDueInputs();
-    return true;
-}
-
-bool Simulation::stepOnce() { return takeStep(kOpenEnd); }
-
-bool Simulation::advanceTo(double t) {
-    const auto start = std::chrono::steady_clock::now();
-    while (t_ < t && failure_.empty())
-        if (!takeStep(kOpenEnd)) break;
-    stats_.wallSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return failure_.empty();
-}
-
-bool Simulation::advanceToNextEvent(double limit) {
-    const size_t before = pending_.size();
-    while (t_ < limit && failure_.empty() && pending_.size() == before)
-        if (!takeStep(kOpenEnd)) break;
-    return pending_.size() > before;
 }
 
 // ---- frames, picking, snapshots ----

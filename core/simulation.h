@@ -13,6 +13,7 @@
 #include "core/world.h"
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -95,10 +96,17 @@ private:
     // A scripted join; the reason if refused (the world unchanged then).
     std::optional<std::string> join(const ScriptAction& a);
     void applyDragSample(const DragRecord& d, const DragRecord::Sample& s);
+    // Stepping (simulation_step.cpp).
     bool takeStep(double limit);
+    bool locateEvent(double& taken, double fEnd, double forcesAtEnd);
+    double smallestEventFunction(double t, double* forces = nullptr);
+    void restoreStepStart();
+    bool rerunStep(double h);
     void record(const Event& e);
     bool booksDiverged() const;
     void fail(const std::string& why);
+
+    static constexpr double kOpenEnd = std::numeric_limits<double>::max();  // no time limit
 
     Scene scene_;
     World world_;
@@ -120,7 +128,8 @@ private:
     SolverFrame stats_;
     double lastResidual_ = 0;
     // Kept from step to step so that stepping allocates nothing.
-    Eigen::VectorXd stepStartQ_, stepStartV_;
+    Eigen::VectorXd stepStartQ_, stepStartV_;  // the state the step started from
+    Ledger stepStartLedger_;
     std::vector<double> eventValues_;
     StepInterpolant interpolant_;
 };

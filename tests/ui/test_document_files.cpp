@@ -94,10 +94,7 @@ private slots:
         }  // gone without a close: like a crash, the recovery copy stays
         QVERIFY(QFile::exists(Document::recoveryPath()));
         MainWindow next({true, false});
-        // Answer the question the window asks.
-        QTimer::singleShot(300, [] {
-            if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) box->button(QMessageBox::Yes)->click();
-        });
+        answerNextBox(QMessageBox::Yes);
         next.offerRecovery();
         QCOMPARE(next.document()->scene().ladder->blocks, 12);
         QVERIFY(next.document()->isModified());

@@ -1,0 +1,200 @@
+// Stepping a simulation: one step of the integrator, the check that the
+// motion has not blown up, and the ladder's events located inside the step
+// and resolved at their instant.
+#include "core/simulation.h"
+
+#include "core/energy.h"
+#include "core/event_bracket.h"
+#include "core/motion.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace jl {
+
+void Simulation::record(const Event& e) { pending_.push_back(e); }
+
+// An unstable integrator makes energy from nothing long before a NaN or a
+// failed projection shows it: compare E with E0 + work - losses, against the
+// size of every term of the books.
+bool Simulation::booksDiverged() const {
+    constexpr double kDivergence = 0.5;
+    const Energy e = energy(world_);
+    const double held = ledger_.held + impactHeldWork_;
+    const double books = initialEnergy_ + held + ledger_.user - impactLoss_ - ledger_.damping;
+    // What "large" means: the energy that has flowed, none of it measured
+    // from the arbitrary zero of the potential (a 10,000-block ladder has
+    // -5.8e5 J of it, which would hide any blow-up).
+    const double scale = energyFloor_ + initialKinetic_ + std::abs(e.potential - initialPotential_) +
+                         std::abs(held) + std::abs(ledger_.user) + impactLoss_ + ledger_.damping + 1e-9;
+    return !(std::abs(e.total() - books) <= kDivergence * scale);
+}
+
+void Simulation::fail(const std::string& why) {
+    failure_ = "at t = " + std::to_string(t_) + " s: " + why;
+}
+
+void Simulation::restoreStepStart() {
+    world_.q = stepStartQ_;
+    world_.v = stepStartV_;
+    ledger_ = stepStartLedger_;
+}
+
+bool Simulation::rerunStep(double h) {
+    restoreStepStart();
+    return advanceAndProject(world_, dynamics_, stepper_, t_, h, ledger_, scene_.solver.projectionTolerance, true).ok();
+}
+
+// The smallest event function in the state the world holds, at time t (an
+// event function is negative when its event has happened); `forces` gets
+// the smallest of the contact-force ones.
+double Simulation::smallestEventFunction(double t, double* forces) {
+    dynamics_.evaluate(world_, t);
+    const double f = ladder_->eventFunctions(world_, dynamics_, eventValues_);
+    if (forces) *forces = f;
+    return eventValues_.empty() ? 1.0 : *std::min_element(eventValues_.begin(), eventValues_.end());
+}
+
+// The first instant inside the step just taken (length `taken`, event
+// function fEnd < 0 at its end) at which an event function turns negative,
+// to within the event tolerance; leaves the world there and `taken` set to it.
+//
+// First narrowed on the step's interpolant, at one evaluation per trial
+// instead of a whole step; when no contact force pulls at either end, the
+// event is a hinge reaching a limit, which positions alone tell, and a trial
+// needs no dynamics at all. Then both ends of that bracket are checked by
+// re-running the step from its start, and where the interpolant was wrong
+// the bracket is narrowed again with a re-run for every trial: the instant
+// is the integrator's own, as if every trial had been re-run.
+bool Simulation::locateEvent(double& taken, double fEnd, double forcesAtEnd) {
+    const double tolerance = scene_.solver.eventTolerance;
+    interpolant_.setEnd(world_.q, world_.v, world_.a);
+    restoreStepStart();
+    double forcesAtStart = 0;
+    const double fStart = smallestEventFunction(t_, &forcesAtStart);
+    interpolant_.setStart(taken, stepStartQ_, stepStartV_, world_.a);
+    const bool anglesOnly = forcesAtStart >= 0 && forcesAtEnd >= 0;
+
+    EventBracket b{0, fStart, taken, fEnd};
+    narrow(b, tolerance, [&](double h) {
+        interpolant_.at(h, world_.q, world_.v);
+        if (!anglesOnly) return smallestEventFunction(t_ + h);
+        world_.updateKinematics(t_ + h);
+        ladder_->angleEventFunctions(world_, eventValues_);
+        return eventValues_.empty() ? 1.0 : *std::min_element(eventValues_.begin(), eventValues_.end());
+    });
+
+    double held = -1;  // the length of the re-run step whose end the world holds
+    auto stepped = [&](double h) {
+        held = h;
+        return rerunStep(h) ? smallestEventFunction(t_ + h) : -1.0;
+    };
+    if (b.lo > 0) {
+        if (const double f = stepped(b.lo); f < 0) b = {0, fStart, b.lo, f};
+        else b = {b.lo, f, b.hi, b.hi == taken ? fEnd : stepped(b.hi)};
+    } else if (b.hi < taken) {
+        b.fhi = stepped(b.hi);
+    }
+    if (b.fhi >= 0) b = {b.hi, b.fhi, taken, fEnd};
+    narrow(b, tolerance, stepped);
+    if (held != b.hi && !rerunStep(b.hi)) {
+        fail("an event could not be located: a step to it failed");
+        return false;
+    }
+    taken = b.hi;
+    return true;
+}
+
+bool Simulation::takeStep(double limit) {
+    if (!failure_.empty()) return false;
+    const SolverSpec& solver = scene_.solver;
+    const bool adaptive = solver.integrator == Integrator::DormandPrince45;
+    double h = adaptive && stepper_.nextStep() > 0 ? stepper_.nextStep() : solver.step;
+    const double scheduled = std::min(nextScheduledTime(), limit);
+    const bool lands = t_ + h >= scheduled - 1e-12;
+    if (lands) h = scheduled - t_;
+    if (h <= 0) return true;
+
+    stepStartQ_ = world_.q;
+    stepStartV_ = world_.v;
+    stepStartLedger_ = ledger_;
+    const double next0 = stepper_.nextStep();
+    MotionStep m = advanceAndProject(world_, dynamics_, stepper_, t_, h, ledger_, solver.projectionTolerance);
+    if (!m.ok()) {
+        fail(m.step.finite ? "the projection onto the pins did not converge (residual " +
+                                 std::to_string(m.projection.residual) + " m after " +
+                                 std::to_string(m.projection.iterations) +
+                                 " iterations): the motion is blowing up, the step " + std::to_string(h) +
+                                 " s is too large for this integrator here; try a smaller step"
+                           : "the step produced a non-finite state (the integrator is unstable at this step size)");
+        return false;
+    }
+    double taken = m.step.taken;
+    stats_.rejected += m.step.rejected;
+    if (booksDiverged()) {
+        restoreStepStart();
+        world_.updateKinematics(t_);
+        fail("the energy no longer balances (the motion is blowing up): the step " + std::to_string(h) +
+             " s is too large for this integrator here (a fast vibration grows at every step); try a smaller "
+             "step, or the adaptive integrator, which finds one itself at a higher cost");
+        return false;
+    }
+    if (ladder_) {
+        double forces = 0;
+        const double fEnd = smallestEventFunction(t_ + taken, &forces);
+        if (fEnd < 0) {
+            if (solver.events == EventPolicy::Located && taken > solver.eventTolerance) {
+                if (!locateEvent(taken, fEnd, forces)) return false;
+                stepper_.setNextStep(next0 > 0 ? next0 : solver.step);
+            }
+            std::vector<Event> happened = ladder_->resolve(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
+            if (happened.empty() && taken < m.step.taken) {
+                // The located instant asked for nothing after all (a function
+                // within rounding of its threshold): take the whole step, so
+                // time can never stall on it.
+                restoreStepStart();
+                m = advanceAndProject(world_, dynamics_, stepper_, t_, m.step.taken, ledger_, solver.projectionTolerance, true);
+                taken = m.step.taken;
+                ++stats_.spuriousEvents;
+                happened = ladder_->resolve(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
+            }
+            for (Event& e : happened) record(e);
+            if (!ladder_->error().empty()) {
+                fail(ladder_->error());
+                return false;
+            }
+            if (!world_.q.allFinite() || !world_.v.allFinite()) {
+                restoreStepStart();
+                fail("an impact produced a non-finite state");
+                return false;
+            }
+        }
+        ladder_->updateAngles(world_);
+    }
+    t_ = (lands && taken == h) ? scheduled : t_ + taken;
+    ++stats_.steps;
+    stats_.lastStep = taken;
+    lastResidual_ = m.projection.residual;
+    applyDueInputs();
+    return true;
+}
+
+bool Simulation::stepOnce() { return takeStep(kOpenEnd); }
+
+bool Simulation::advanceTo(double t) {
+    const auto start = std::chrono::steady_clock::now();
+    while (t_ < t && failure_.empty())
+        if (!takeStep(kOpenEnd)) break;
+    stats_.wallSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return failure_.empty();
+}
+
+bool Simulation::advanceToNextEvent(double limit) {
+    const size_t before = pending_.size();
+    while (t_ < limit && failure_.empty() && pending_.size() == before)
+        if (!takeStep(kOpenEnd)) break;
+    return pending_.size() > before;
+}
+
+}  // namespace jl
