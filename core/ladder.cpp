@@ -83,6 +83,9 @@ Ladder::Ladder(World& w, const LadderSpec& spec) : spec_(spec), length_(spec.blo
             f.sense = cross(da, na) > 0 ? 1.0 : -1.0;
             f.offset = std::atan2(db.y(), db.x()) + kPi - std::atan2(da.y(), da.x());
         }
+    // A small fraction of the time a block takes to fall its own length.
+    const double g = w.gravity.norm();
+    zenoTime_ = g > 0 ? 0.0125 * std::sqrt(length_ / g) : 1e-3;
     place(w);
     for (int j = 1; j < n; ++j) {
         Hinge& h = hinges_[size_t(j - 1)];
@@ -200,7 +203,10 @@ double Ladder::foldRate(const World& w, int j) const {
 void Ladder::updateAngles(const World& w) {
     for (int j = 1; j < blockCount(); ++j) {
         Hinge& h = hinges_[size_t(j - 1)];
-        if (h.mode == HingeMode::Free) h.foldAngle = foldAngle(w, j);
+        if (h.mode == HingeMode::Free) {
+            h.foldAngle = foldAngle(w, j);
+            if (h.foldAngle > kTouchBand && h.foldAngle < kPi - kTouchBand) h.releaseGap = 0;  // clear of both limits
+        }
         if (h.mode == HingeMode::OpenLocked) h.foldAngle = 0;
         if (h.mode == HingeMode::Folded) h.foldAngle = kPi;
     }
@@ -349,6 +355,7 @@ double Ladder::eventFunctions(const World& w, const Dynamics& d, std::vector<dou
     double smallestForce = std::numeric_limits<double>::infinity();
     for (int j = 1; j < blockCount(); ++j) {
         double* g = &out[2 * size_t(j - 1)];
+        if (hinge(j).held) continue;  // let go by trackHolds, not by a sign change
         switch (hinge(j).mode) {
         case HingeMode::Free:
         case HingeMode::Cut: continue;
@@ -371,9 +378,10 @@ void Ladder::angleEventFunctions(const World& w, std::vector<double>& out) const
     out.assign(2 * hinges_.size(), kNoEvent);
     for (int j = 1; j < blockCount(); ++j) {
         if (hinge(j).mode != HingeMode::Free) continue;
-        const double phi = foldAngle(w, j);
-        out[2 * size_t(j - 1)] = phi + kAngleTolerance;
-        out[2 * size_t(j - 1) + 1] = kPi - phi + kAngleTolerance;
+        const double phi = foldAngle(w, j);  // events where phi crosses 0 or pi
+        const double zero = hinge(j).releaseGap - kAngleTolerance;
+        out[2 * size_t(j - 1)] = phi - zero;
+        out[2 * size_t(j - 1) + 1] = kPi - phi - zero;
     }
 }
 

@@ -19,6 +19,14 @@ struct Hinge {
     HingeMode mode = HingeMode::Free;
     int corner = 0;        // k: the same corner number on both blocks
     double foldAngle = 0;  // phi, tracked continuously
+    // The accumulation point of a Zeno sequence (docs/model.md, "No
+    // chattering"): a contact that closed again within the Zeno time of its
+    // last release is held closed until its contact force has pulled for a
+    // whole Zeno time and letting it go would not close it again at once.
+    double releasedAt = -1e300;  // s, the last release
+    bool held = false;
+    double releaseGap = 0;       // rad, <= 0: how far past the limit it left the pair read (projection noise)
+    double pullingSince = -1;    // s, when the held contact's force turned to pull (-1: it pushes)
     // The hinge's own particles at each corner k of the upper (side 0) and
     // lower (side 1) block: a block's corner can be a hinge point of both
     // its hinges at once (after a flip both sit at one end), so no two
@@ -59,12 +67,17 @@ public:
 
     // Event functions: each is >= 0 while its hinge may stay in its mode; a
     // negative value is an event (located inside the step by the simulation).
-    // Tolerances: fold angles past a limit by more than kAngleTolerance,
-    // contact forces pulling by more than kForceTolerance. The angle one is
-    // half the band within which resolve() treats a hinge as touching, so a
-    // located crossing always lands where resolve() acts on it, while the
-    // rounding of a hinge resting at its limit (~1e-9 rad) never looks like one.
-    static constexpr double kAngleTolerance = 5e-8;   // rad
+    // A limit is an event where the fold angle crosses it: kAngleTolerance
+    // is only the rounding of phi (computed from two body angles that may
+    // have turned many times), never an overshoot that the physics sees. It
+    // is half the band within which resolve() treats a hinge as touching, so
+    // a located crossing always lands where resolve() acts on it. A hinge
+    // just released measures its limit from where the release left it.
+    static constexpr double kAngleTolerance = 1e-12;  // rad
+    // Fold angles of bodies just projected onto their pins carry the
+    // projection's noise (1e-10 m over a 1 mm block): a hinge within this
+    // band of a limit touches it, and one past it by more is past it.
+    static constexpr double kTouchBand = 1e-7;  // rad
     static constexpr double kForceTolerance = 1e-9;   // N (N s for impulses)
     // Needs the accelerations of the state (Dynamics::evaluate done).
     // Returns the smallest of the contact-force functions (+inf if none).
@@ -101,6 +114,17 @@ public:
     // A restructuring the world refused (a bug, reported rather than ignored).
     const std::string& error() const { return error_; }
     void updateAngles(const World& w);  // track phi continuously after a step
+    // After a step (the dynamics evaluated at its end, time t): the held
+    // contacts whose force has pulled for a whole Zeno time. The caller
+    // either lets each go (then resolve() at t releases it) or renews its
+    // hold, if letting go would only make it close again at once.
+    std::vector<int> expiredHolds(const World& w, const Dynamics& d, double t);
+    void letGo(int j);
+    void renewHold(int j, double t);
+    // s: open intervals shorter than this are the chatter of a contact that
+    // has reached its Zeno limit (a small fraction of the ladder's own time
+    // scale sqrt(L/g), about 1 ms for 60 mm blocks).
+    double zenoTime() const { return zenoTime_; }
 
     std::vector<HingeFrame> hingeFrames(const World& w) const;
     std::vector<RibbonFrame> ribbons(const World& w) const;
@@ -129,7 +153,8 @@ private:
     std::optional<std::pair<int, EventKind>> pullingContact(const World& w, const Dynamics& d, const Impact* impact,
                                                             const std::vector<int>& keep = {}) const;
     bool wouldChatter(const World& w, double t, int j, EventKind kind, const std::vector<Twist>& before) const;
-    void release(World& w, int j, EventKind kind);
+    void release(World& w, int j, EventKind kind, double t);
+    void noteClose(int j, double t);
     HingeContact split(const World& w, int j, const Wrench& on) const;
     void snap(World& w, int j, double target);
     void join(World& w, int j, int k);     // combine the hinge's points at corner k
@@ -148,6 +173,7 @@ private:
     std::vector<Hinge> hinges_;
     std::vector<int> dampers_;
     double length_ = 0;
+    double zenoTime_ = 1e-3;
     // phi = sense * (theta_j - theta_{j-1} + offset), per hinge and corner.
     struct FoldLinear {
         double sense = 1, offset = 0;

@@ -14,7 +14,7 @@ namespace jl {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kTouch = 2 * Ladder::kAngleTolerance;  // rad: this close to a limit touches it
+constexpr double kTouch = Ladder::kTouchBand;  // rad: this close to a limit touches it
 constexpr double kResting = 1e-9;   // rad/s: slower than this is at rest
 
 }  // namespace
@@ -34,11 +34,51 @@ bool Ladder::touchingLimit(const World& w, int j, bool folded, bool resting) con
     return resting && rate <= kResting && (folded ? -foldAcceleration(w, j) : foldAcceleration(w, j)) < 0;
 }
 
-void Ladder::release(World& w, int j, EventKind kind) {
+void Ladder::release(World& w, int j, EventKind kind, double t) {
     if (kind == EventKind::Unlock) unlock(w, j);
     if (kind == EventKind::FlipFlop) flipFlop(w, j);
     if (kind == EventKind::Unfold) unfold(w, j);
+    Hinge& h = hinges_[size_t(j - 1)];
+    h.releasedAt = t;
+    h.held = false;
+    h.pullingSince = -1;
+    // The parted bodies were projected onto their pins: phi may read a hair
+    // past the limit it leaves. That is its zero until it moves clear.
+    const double phi = foldAngle(w, j);
+    h.releaseGap = std::min(0.0, h.foldAngle < kPi / 2 ? phi : kPi - phi);
 }
+
+// A contact closed at t within the Zeno time of its release: it closed
+// again at once, and is held (docs/model.md, "No chattering").
+void Ladder::noteClose(int j, double t) {
+    Hinge& h = hinges_[size_t(j - 1)];
+    if (t - h.releasedAt <= zenoTime_) h.held = true;
+}
+
+std::vector<int> Ladder::expiredHolds(const World& w, const Dynamics& d, double t) {
+    std::vector<int> out;
+    for (int j = 1; j < blockCount(); ++j) {
+        Hinge& h = hinges_[size_t(j - 1)];
+        if (!h.held) continue;
+        if (h.mode != HingeMode::OpenLocked && h.mode != HingeMode::Folded) {
+            h.held = false;
+            continue;
+        }
+        const HingeContact c = contact(w, d, j);
+        const bool pulls = h.mode == HingeMode::OpenLocked ? c.normal < 0 : std::min(c.nearEnd, c.farEnd) < 0;
+        if (!pulls) h.pullingSince = -1;
+        else if (h.pullingSince < 0) h.pullingSince = t;
+        if (pulls && t - h.pullingSince >= zenoTime_) out.push_back(j);
+    }
+    return out;
+}
+
+void Ladder::letGo(int j) {
+    hinges_[size_t(j - 1)].held = false;
+    hinges_[size_t(j - 1)].pullingSince = -1;
+}
+
+void Ladder::renewHold(int j, double t) { hinges_[size_t(j - 1)].pullingSince = t; }
 
 // The most negative contact force (or impulse) among locked and folded
 // hinges, and what releasing it means: unlock, flip-flop or unfold.
@@ -49,7 +89,7 @@ std::optional<std::pair<int, EventKind>> Ladder::pullingContact(const World& w, 
     for (int j = 1; j < blockCount(); ++j) {
         const HingeMode mode = hinge(j).mode;
         if (mode != HingeMode::OpenLocked && mode != HingeMode::Folded) continue;
-        if (std::find(keep.begin(), keep.end(), j) != keep.end()) continue;
+        if (hinge(j).held || std::find(keep.begin(), keep.end(), j) != keep.end()) continue;
         const HingeContact c = split(w, j, internalWrench(w, d, j, impact));
         if (mode == HingeMode::OpenLocked && c.normal < most) {
             most = c.normal;
@@ -89,7 +129,7 @@ bool Ladder::wouldChatter(const World& w, double t, int j, EventKind kind, const
     Ladder& after = *scratch.ladder;
     Dynamics& d = scratch.dynamics;
     d.solver().reset();
-    after.release(trial, j, kind);
+    after.release(trial, j, kind, t);
     trial.setPartVelocities(before);
     projectVelocities(trial, d.solver());
     d.evaluate(trial, t);
@@ -117,6 +157,7 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
         const bool folding = hinge(j).foldAngle > kPi / 2;
         approach[i] = std::abs(foldRate(w, j));
         if (folding) fold(w, j); else lock(w, j);
+        noteClose(j, t);
         events.push_back({t, folding ? EventKind::Fold : EventKind::Lock, j, hinge(j).corner, {}});
     }
     Eigen::VectorXd impulses;
@@ -134,7 +175,7 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
                 kept.push_back(pull->first);
                 continue;
             }
-            release(w, pull->first, pull->second);
+            release(w, pull->first, pull->second, t);
             released.push_back(pull->first);
             events.push_back({t, pull->second, pull->first, hinge(pull->first).corner, {}});
             continue;
@@ -146,6 +187,7 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
             for (bool folded : {false, true})
                 if (!driven && touchingLimit(w, j, folded, false)) {
                     if (folded) fold(w, j); else lock(w, j);
+                    noteClose(j, t);
                     events.push_back({t, folded ? EventKind::Fold : EventKind::Lock, j, hinge(j).corner, {}});
                     driven = true;
                 }
@@ -160,9 +202,10 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
         for (size_t i = 0; i < hits.size(); ++i) {
             const int j = hits[i];
             const HingeMode mode = hinge(j).mode;
-            if ((mode != HingeMode::OpenLocked && mode != HingeMode::Folded) || e * approach[i] <= spec_.hinges.minReboundSpeed)
+            if ((mode != HingeMode::OpenLocked && mode != HingeMode::Folded) || hinge(j).held ||
+                e * approach[i] <= spec_.hinges.minReboundSpeed)
                 continue;
-            if (mode == HingeMode::OpenLocked) unlock(w, j); else unfold(w, j);
+            release(w, j, mode == HingeMode::OpenLocked ? EventKind::Unlock : EventKind::Unfold, t);
             events.push_back({t, EventKind::Bounce, j, hinge(j).corner, {}});
             bounced = true;
         }
@@ -205,7 +248,7 @@ std::vector<Event> Ladder::push(World& w, Dynamics& d, double t, int i, const Ve
             kept.push_back(pull->first);
             continue;
         }
-        release(w, pull->first, pull->second);
+        release(w, pull->first, pull->second, t);
         events.push_back({t, pull->second, pull->first, hinge(pull->first).corner, words(pull->second, pull->first)});
     }
     return events;
@@ -214,6 +257,7 @@ std::vector<Event> Ladder::push(World& w, Dynamics& d, double t, int i, const Ve
 std::vector<Event> Ladder::resolve(World& w, Dynamics& d, double t, double* loss, double* heldWork) {
     std::vector<Event> events;
     std::vector<int> released;  // in this pass: free even at a limit
+    bool capped = true;
     for (int guard = 0; guard < 8 * blockCount() + 8; ++guard) {
         d.evaluate(w, t);
         updateAngles(w);
@@ -228,12 +272,16 @@ std::vector<Event> Ladder::resolve(World& w, Dynamics& d, double t, double* loss
         }
         if (auto pull = pullingContact(w, d, nullptr)) {
             released.push_back(pull->first);
-            release(w, pull->first, pull->second);
+            release(w, pull->first, pull->second, t);
             events.push_back({t, pull->second, pull->first, hinge(pull->first).corner, {}});
             continue;
         }
+        capped = false;
         break;
     }
+    if (capped && error_.empty())
+        error_ = "the contacts at t = " + std::to_string(t) + " s could not be settled (" + std::to_string(events.size()) +
+                 " events at one instant)";
     d.evaluate(w, t);
     updateAngles(w);
     for (Event& e : events) e.text = words(e.kind, e.hinge);

@@ -104,6 +104,8 @@ private:
     bool rerunStep(double h);
     void record(const Event& e);
     bool booksDiverged() const;
+    void settleHolds(double t);
+    bool wouldCloseAgain(int j, double t);
     void fail(const std::string& why);
 
     static constexpr double kOpenEnd = std::numeric_limits<double>::max();  // no time limit
@@ -127,6 +129,7 @@ private:
     std::string failure_;
     SolverFrame stats_;
     double lastResidual_ = 0;
+    bool trial_ = false;  // inside wouldCloseAgain: holds are not settled
     // Kept from step to step so that stepping allocates nothing.
     Eigen::VectorXd stepStartQ_, stepStartV_;  // the state the step started from
     Ledger stepStartLedger_;

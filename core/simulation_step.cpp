@@ -106,6 +106,51 @@ bool Simulation::locateEvent(double& taken, double fEnd, double forcesAtEnd) {
     return true;
 }
 
+// The dynamics hold the step's end (evaluated for the event functions or by
+// resolve): a held contact that has pulled for a Zeno time is let go, unless
+// a trial shows that it would close again within a Zeno time (the pull is the
+// chatter of a contact at its Zeno limit, not a parting).
+void Simulation::settleHolds(double t) {
+    const std::vector<int> expired = ladder_->expiredHolds(world_, dynamics_, t);
+    if (expired.empty()) return;
+    bool released = false;
+    for (int j : expired) {
+        if (wouldCloseAgain(j, t)) {
+            ladder_->renewHold(j, t);
+            continue;
+        }
+        ladder_->letGo(j);
+        released = true;
+    }
+    if (!released) return;
+    for (Event& e : ladder_->resolve(world_, dynamics_, t, &impactLoss_, &impactHeldWork_)) record(e);
+}
+
+// Lets held hinge j go at t (the state's time) on the real simulation, runs
+// a Zeno time on, and puts everything back: whether j closed again.
+bool Simulation::wouldCloseAgain(int j, double t) {
+    const std::shared_ptr<const Snapshot> before = snapshot();
+    const double tBefore = t_;
+    std::vector<Event> pending = std::exchange(pending_, {});
+    const int drag = liveDrag_;
+    t_ = t;
+    trial_ = true;
+    ladder_->letGo(j);
+    bool closed = false;
+    for (Event& e : ladder_->resolve(world_, dynamics_, t, &impactLoss_, &impactHeldWork_)) record(e);
+    const double until = t + ladder_->zenoTime();
+    while (!closed && t_ < until && failure_.empty() && takeStep(kOpenEnd))
+        for (const Event& e : pending_)
+            closed = closed || (e.hinge == j && (e.kind == EventKind::Lock || e.kind == EventKind::Fold));
+    trial_ = false;
+    restore(*before);
+    t_ = tBefore;
+    dynamics_.evaluate(world_, t);  // restore() evaluated at the snapshot's clock
+    pending_ = std::move(pending);
+    liveDrag_ = drag;
+    return closed;
+}
+
 bool Simulation::takeStep(double limit) {
     if (!failure_.empty()) return false;
     const SolverSpec& solver = scene_.solver;
@@ -171,6 +216,7 @@ bool Simulation::takeStep(double limit) {
             }
         }
         ladder_->updateAngles(world_);
+        if (!trial_) settleHolds(t_ + taken);
     }
     t_ = (lands && taken == h) ? scheduled : t_ + taken;
     ++stats_.steps;

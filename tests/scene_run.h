@@ -6,6 +6,7 @@
 
 #include <QtTest>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -61,6 +62,33 @@ inline std::vector<int> firstFlipOrder(const std::vector<Event>& events) {
         if (e.kind == EventKind::FlipFlop && std::find(order.begin(), order.end(), e.hinge) == order.end())
             order.push_back(e.hinge);
     return order;
+}
+
+// Chatter: a hinge released (unlock, flip, unfold) and closed again (lock,
+// fold) within `window` seconds is one quick cycle; `longest` is the most
+// quick cycles of one hinge in a row (a slower cycle ends a row).
+struct Chatter {
+    int cycles = 0;
+    int longest = 0;
+};
+inline Chatter chatter(const std::vector<Event>& events, double window = 1e-3) {
+    Chatter c;
+    std::map<int, double> releasedAt;
+    std::map<int, int> row;
+    for (const Event& e : events) {
+        if (e.kind == EventKind::Unlock || e.kind == EventKind::FlipFlop || e.kind == EventKind::Unfold ||
+            e.kind == EventKind::Bounce)
+            releasedAt[e.hinge] = e.time;
+        if (e.kind != EventKind::Lock && e.kind != EventKind::Fold) continue;
+        const auto r = releasedAt.find(e.hinge);
+        if (r != releasedAt.end() && e.time - r->second <= window) {
+            ++c.cycles;
+            c.longest = std::max(c.longest, ++row[e.hinge]);
+        } else {
+            row[e.hinge] = 0;
+        }
+    }
+    return c;
 }
 
 }  // namespace jl::test
