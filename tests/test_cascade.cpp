@@ -1,7 +1,7 @@
 // labels: physics;ladder
-// The whole ladder (PHYSICS.md section 4): the classic cascade, the wrong-way
-// turn, the ladder left alone at rest, event times under step refinement,
-// and a 1,000-block ladder turned over.
+// The whole ladder (docs/model.md sections 8 and 14.7): the classic cascade,
+// the wrong-way turn, the ladder left alone at rest, event times under step
+// refinement, and a 1,000-block ladder turned over.
 #include "tests/scene_run.h"
 
 #include <QtTest>
@@ -81,7 +81,7 @@ private slots:
         QVERIFY(sim);
         const Frame start = sim->frame();
         QVERIFY(start.events.empty());
-        // Fold angles as PHYSICS.md gives them for equal blocks.
+        // Fold angles as docs/model.md section 2.5 gives them for equal blocks.
         const double a = std::atan(0.012 / 0.06);
         QVERIFY(std::abs(start.hinges[0].foldAngle - a) < 1e-12);
         for (size_t j = 1; j < start.hinges.size(); ++j) QVERIFY(std::abs(start.hinges[j].foldAngle - 2 * a) < 1e-12);

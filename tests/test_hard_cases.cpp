@@ -1,7 +1,8 @@
 // labels: hard
-// Hard cases of issue 7: each must end without a crash and without NaN, with
-// the energy balance of PHYSICS.md section 7 and the pin residual in bounds,
-// or stop with a clear diagnostic while keeping the last good state.
+// Hard cases (docs/model.md section 16.3): each must end without a crash and
+// without NaN, with the energy balance of docs/model.md section 12 and the pin
+// residual in bounds, or stop with a clear diagnostic while keeping the last
+// good state.
 // Short forms by default (CI); JL_SOAK=1 runs the long forms.
 #include "core/falling_chain.h"
 #include "core/motion.h"

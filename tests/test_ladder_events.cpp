@@ -1,6 +1,6 @@
 // labels: physics;ladder
-// Two- and three-block cases worked by hand for each event type (PHYSICS.md
-// section 7): the mode sequence, the hinge corner and the sign and size of
+// Two- and three-block cases worked by hand for each event type (docs/model.md
+// section 14.5): the mode sequence, the hinge corner and the sign and size of
 // the reactions. Blocks are 60 x 12 x 45 mm, density 600 (m = 19.44 g).
 #include "core/dynamics.h"
 #include "core/energy.h"

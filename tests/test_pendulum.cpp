@@ -1,6 +1,7 @@
 // labels: physics
 // A block swinging from a corner pin against the exact physical-pendulum
-// period (PHYSICS.md section 7), and each integrator's order of convergence.
+// period (docs/model.md section 14.1), and each integrator's order of
+// convergence.
 #include "core/elliptic.h"
 #include "core/motion.h"
 #include "core/world.h"

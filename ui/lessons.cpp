@@ -13,7 +13,7 @@ namespace jlui {
 
 namespace {
 
-// The order the issue tells the story in; files not named here come after.
+// The teaching order of docs/teaching.md; files not named here come after.
 const char* const kTeachingOrder[] = {"classic",  "wrong-way", "back-and-forth",        "heavy-middle",
                                       "long-ladder", "pendulum", "particles-and-springs", "falling-chain"};
 

@@ -84,7 +84,7 @@ MainWindow::MainWindow(Options options) : options_(options) {
         QSettings().setValue("simulation/historyMegabytes", mb);
     });
 
-    // Side view, plots, lessons, pacing and exports (issue 6); before
+    // Side view, plots, lessons, pacing and exports (docs/teaching.md); before
     // readSettings so their docks are restored with the others.
     auto* teaching = new TeachingDocks(this);
     connect(teaching, &TeachingDocks::lessonRequested, this, [this](const QString& path) {

@@ -106,7 +106,7 @@ std::vector<BenchRow> rigidPairModelStudy(const BenchPlan& plan) {
         bool rightWay;
     };
     // The classic six blocks both ways; the thin 25-block ladder whose
-    // ripple runs 23 hinges (PHYSICS.md section 4); and 25 thick blocks
+    // ripple runs 23 hinges (docs/model.md section 15); and 25 thick blocks
     // turned the wrong way, where most pairs lock.
     const std::vector<Case> cases =
         plan.quick ? std::vector<Case>{{"models_classic6", 6, 0.012, 1.2, true}}

@@ -1,6 +1,6 @@
-// "Model only what a scene needs" (issue 7): the same cascades with locked
-// and folded pairs merged into one body, and kept as two bodies held by a
-// pin and a weld, side by side in cost and error.
+// "Model only what a scene needs" (docs/model.md section 16.2): the same
+// cascades with locked and folded pairs merged into one body, and kept as
+// two bodies held by a pin and a weld, side by side in cost and error.
 #pragma once
 
 #include "app/jladder/bench_cases.h"

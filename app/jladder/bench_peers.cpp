@@ -27,7 +27,7 @@ namespace jl::cli {
 
 namespace {
 
-// The falling chain of the engine issue.
+// The falling chain of docs/model.md section 16.1.
 constexpr double kL = 0.06, kT = 0.012, kW = 0.045, kRho = 600, kG = 9.81;
 constexpr double kMass = kRho * kL * kT * kW;
 
@@ -166,7 +166,7 @@ std::vector<PeerRun> measurePeers(int n, const std::vector<double>& steps, doubl
     std::vector<PeerRun> out;
     for (const auto& [name, runner] : peers) {
         // MuJoCo's dense factorisation and Box2D's iterations take minutes at
-        // N = 1,000; there the issue's target names Bullet only.
+        // N = 1,000; there the target (docs/model.md section 16.2) names Bullet only.
         if (n >= 1000 && name.rfind("bullet", 0) != 0) continue;
         for (double h : steps) {
             const int count = int(std::lround(duration / h));

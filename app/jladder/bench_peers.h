@@ -18,7 +18,7 @@ struct PeerRun {
     bool finished = true; // false: it blew up or produced NaN
 };
 
-// Falling chain of n blocks (the engine issue's definition) run to `duration`
+// Falling chain of n blocks (docs/model.md section 16.1) run to `duration`
 // at each step; errors against `reference` (block centres at `duration`).
 std::vector<PeerRun> measurePeers(int n, const std::vector<double>& steps, double duration,
                                   const std::vector<Vec2>& reference, double minSeconds);

@@ -164,7 +164,7 @@ void stability(std::ostream& md, const StabilityStudy& s, bool quick) {
     if (s.rows.empty()) return;
     const StabilityRow& big = s.rows.back();
     const double y = big.omegaMax * 1e-3;
-    md << "**The target of issue 7** (" << big.blocks << " blocks" << (quick ? ", the largest of this quick run" : "")
+    md << "**The long-ladder target of docs/model.md section 16.2** (" << big.blocks << " blocks" << (quick ? ", the largest of this quick run" : "")
        << "): at dt = 1 ms, omega_max dt = " << sig(y, 3) << (y > s.imaginaryRk4 ? " > " : " <= ")
        << sig(s.imaginaryRk4, 4) << ", so ";
     if (y > s.imaginaryRk4) {
@@ -239,7 +239,7 @@ void models(std::ostream& md, const std::vector<BenchRow>& rows, bool quick) {
 }
 
 void targets(std::ostream& md, const BenchResults& r) {
-    md << "## Targets of issue 7, checked against the numbers above\n\n";
+    md << "## Targets of docs/model.md section 16.2, checked against the numbers above\n\n";
     // 1. N = 100: at every peer's cost, an error 100x below.
     if (auto it = r.chains.find(100); it != r.chains.end()) {
         int met = 0, total = 0;

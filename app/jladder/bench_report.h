@@ -1,5 +1,6 @@
 // docs/performance.md from the benchmark's measurements: tables, charts,
-// the machine, and each target of issue 7 checked against the numbers.
+// the machine, and each target of docs/model.md section 16.2 checked against
+// the numbers.
 #pragma once
 
 #include "app/jladder/bench_cases.h"

@@ -344,8 +344,8 @@ StabilityStudy stabilityStudy(const BenchPlan& plan) {
     std::fprintf(stderr, "  imaginary-axis limits: rk4 %.6f (2 sqrt 2 = %.6f), dormand_prince45 %.6f\n",
                  study.imaginaryRk4, 2 * std::sqrt(2.0), study.imaginaryDopri);
 
-    // Known answers: a 2-block ladder is one physical pendulum (PHYSICS.md
-    // section 7: omega^2 = m g r / I_p, r = l/2, I_p = m l^2 / 3); a 3-block
+    // Known answers: a 2-block ladder is one physical pendulum (docs/model.md
+    // section 14.4: omega^2 = m g r / I_p, r = l/2, I_p = m l^2 / 3); a 3-block
     // ladder is the double pendulum of two uniform rods of length l,
     // omega^2 = (3 +- 6/sqrt 7) g / l.
     const Block b = defaultBlock();

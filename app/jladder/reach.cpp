@@ -1,5 +1,5 @@
 // jladder reach: how far the first ripple travels down ladders of several
-// lengths and block thicknesses (PHYSICS.md section 4), as a Markdown table.
+// lengths and block thicknesses (docs/model.md section 15), as a Markdown table.
 #include "app/jladder/commands.h"
 #include "app/jladder/options.h"
 #include "core/simulation.h"
@@ -69,8 +69,8 @@ int reach(const std::vector<std::string>& args) {
     if (o.has("--help")) {
         std::fputs("usage: jladder reach [--out FILE]\n"
                    "Turns the top block of ladders of 6, 8, 12, 25 and 50 blocks (60 x 12 mm) and\n"
-                   "of the thinner designs PHYSICS.md quotes, and tabulates how many hinges the\n"
-                   "first ripple flips, in Markdown (stdout, or FILE).\n",
+                   "of the thinner designs docs/model.md section 15 quotes, and tabulates how many\n"
+                   "hinges the first ripple flips, in Markdown (stdout, or FILE).\n",
                    stdout);
         return 0;
     }
