@@ -9,7 +9,7 @@ namespace jl {
 
 // A move of the held block's centre by `offset` and a turn about its centre by
 // `turn`, from t0 over `duration`, along the smooth profile (1 - cos(pi s))/2
-// of PHYSICS.md section 5: velocity is continuous, acceleration jumps only at
+// of docs/model.md section 10: velocity is continuous, acceleration jumps only at
 // the ends (where the force tests run).
 struct DriveMove {
     double t0 = 0;

@@ -25,7 +25,7 @@ Energy energy(const World& w) {
 
 // Kinetic energy relative to the held body when exactly one body is held,
 // else the plain kinetic energy: the measure the ladder's impacts book by, in
-// whose frame a plastic impact never creates energy (PHYSICS.md section 7).
+// whose frame a plastic impact never creates energy (docs/model.md section 12.3).
 // The held body moves rigidly, so its motion applied to every part satisfies
 // every pin: a plastic projection can only lower this.
 double heldFrameKinetic(const World& w) {

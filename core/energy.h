@@ -15,7 +15,7 @@ Energy energy(const World& w);
 
 // Kinetic energy relative to the held body when exactly one body is held,
 // else the plain kinetic energy: in that frame a plastic impact never
-// creates energy (PHYSICS.md section 7), so impacts book their loss by it.
+// creates energy (docs/model.md section 12.3), so impacts book their loss by it.
 double heldFrameKinetic(const World& w);
 
 }  // namespace jl

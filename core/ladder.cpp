@@ -325,7 +325,7 @@ Ladder::Wrench Ladder::weldWrench(const World& w, const Dynamics& d, int j, cons
     return s;
 }
 
-// Splits the wrench on block j into pin + normal forces (PHYSICS.md sec. 4).
+// Splits the wrench on block j into pin + normal forces (docs/model.md section 8.3).
 HingeContact Ladder::split(const World& w, int j, const Wrench& on) const {
     const int k = hinge(j).corner;
     const Vec2 pk = cornerWorld(w, j - 1, k);

@@ -1,5 +1,5 @@
 // The Jacob's ladder on the engine: blocks with xor-numbered corners, the
-// hinge state machine of PHYSICS.md section 4 (free, open-locked, folded) and
+// hinge state machine of docs/model.md section 8 (free, open-locked, folded) and
 // its events, written on World::combine/separate; which ribbons show.
 #pragma once
 
@@ -34,7 +34,7 @@ struct Hinge {
     std::array<ParticleId, 8> own{-1, -1, -1, -1, -1, -1, -1, -1};
 };
 
-// Contact forces of a locked or folded hinge (PHYSICS.md section 4), N,
+// Contact forces of a locked or folded hinge (docs/model.md section 8.3), N,
 // positive = pushing block j away from block j-1.
 struct HingeContact {
     double normal = 0;  // OPEN-LOCKED: N at corner k^2

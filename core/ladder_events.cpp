@@ -1,5 +1,5 @@
 // The ladder's events: impacts at the limits of the fold angle and releases
-// of contacts that would pull (PHYSICS.md section 4), as a deterministic
+// of contacts that would pull (docs/model.md section 8), as a deterministic
 // active set.
 #include "core/energy.h"
 #include "core/ladder.h"
@@ -49,7 +49,7 @@ void Ladder::release(World& w, int j, EventKind kind, double t) {
 }
 
 // A contact closed at t within the Zeno time of its release: it closed
-// again at once, and is held (docs/model.md, "No chattering").
+// again at once, and is held (docs/model.md section 8.6, "No chattering").
 void Ladder::noteClose(int j, double t) {
     Hinge& h = hinges_[size_t(j - 1)];
     if (t - h.releasedAt <= zenoTime_) h.held = true;
@@ -109,7 +109,7 @@ std::optional<std::pair<int, EventKind>> Ladder::pullingContact(const World& w, 
     return worst;
 }
 
-// Rule 6 of PHYSICS.md section 4: releasing hinge j at this impact would
+// Rule 6 (docs/model.md section 8.6, "No chattering"): releasing hinge j at this impact would
 // part the pair slower than v_min while its free acceleration turns it back
 // into the limit, so it would only close again at once: it stays locked and
 // the force test decides afterwards. Tried on a copy of the world, kept per
@@ -163,7 +163,7 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
     Eigen::VectorXd impulses;
     const Impact im{&before, &impulses};
     // A hinge released in this impact stays free in it, even at its limit
-    // (PHYSICS.md section 4): the next step decides whether it closes again.
+    // (docs/model.md section 8.4): the next step decides whether it closes again.
     std::vector<int>& released = *releasedNow;
     std::vector<int> kept;  // rule 6: stays locked through this impact
     for (int guard = 0; guard < 4 * blockCount(); ++guard) {

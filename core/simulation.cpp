@@ -128,7 +128,7 @@ std::optional<std::string> Simulation::buildWorld() {
     world_.shrinkToFit();
     makeConsistent(world_, scene_.solver.projectionTolerance);
     dynamics_.evaluate(world_, 0);
-    // Force tests at t = 0 (PHYSICS.md section 4, rule 7), then the books open.
+    // Force tests at t = 0 (docs/model.md section 8.7), then the books open.
     applyDueInputs();
     if (ladder_)
         for (Event& e : ladder_->resolve(world_, dynamics_, 0, &impactLoss_, &impactHeldWork_)) record(e);
@@ -299,7 +299,7 @@ std::optional<std::string> Simulation::join(const ScriptAction& a) {
 }
 
 // The user's drag: the mouse spring on a free block; a held block's hand
-// follows the mouse instead (PHYSICS.md section 5).
+// follows the mouse instead (docs/model.md sections 10 and 11.3).
 void Simulation::applyDragSample(const DragRecord& d, const DragRecord::Sample& s) {
     if (d.block < 0 || d.block >= blockCount()) return;
     const PartId part = blockPart(d.block);

@@ -100,7 +100,7 @@ struct AppliedLoad {
     double torque = 0;          // N m
 };
 
-// The mouse spring of PHYSICS.md section 5, pulling a point of a part.
+// The mouse spring of docs/model.md section 11.3, pulling a point of a part.
 struct UserDrag {
     PartId part = -1;
     Vec2 local = Vec2::Zero();
