@@ -27,7 +27,7 @@ struct Event {
 struct HingeFrame {
     HingeMode mode = HingeMode::Free;
     int corner = 0;         // k, the same number on both blocks
-    double foldAngle = 0;   // rad, phi of PHYSICS.md section 3
+    double foldAngle = 0;   // rad, phi of docs/model.md section 7
     Vec2 position = Vec2::Zero();  // m, the hinge point in the plane
 };
 
@@ -51,6 +51,12 @@ struct SolverFrame {
     long long steps = 0, evaluations = 0, rejected = 0;
     long long spuriousEvents = 0;  // located crossings that resolved to nothing
     double lastStep = 0;           // s
+    // The fixed-step integrators' step: the scene's, or chosen by the engine
+    // from the fastest vibration (smallest and largest so far), halved for
+    // the rest of the run after each step that blew up.
+    bool automaticStep = false;
+    double smallestStep = 0, largestStep = 0;  // s
+    int stepHalvings = 0;
     double residual = 0;           // m, largest pin gap after the last step
     int bodies = 0, pins = 0;      // unknowns in use (locked pairs are one body)
     double wallSeconds = 0;        // spent simulating so far

@@ -170,7 +170,9 @@ struct DragRecord {
 
 struct SolverSpec {
     Integrator integrator = Integrator::RK4;
-    double step = 1e-3;                 // s, fixed-step integrators; first try for adaptive
+    // s, fixed-step integrators' step and the adaptive one's first try; 0:
+    // chosen by the engine (at most 1 ms, within the stability limit).
+    double step = 0;
     double tolerance = 1e-8;            // adaptive integrator's local error tolerance
     double projectionTolerance = 1e-10; // m, constraint residual after projection
     EventPolicy events = EventPolicy::Located;

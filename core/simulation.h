@@ -65,7 +65,7 @@ public:
     bool advanceToNextEvent(double limit);
     const std::string& failure() const { return failure_; }
 
-    // The mouse spring of PHYSICS.md section 5 on block `block`, grabbed at
+    // The mouse spring of docs/model.md section 11.3 on block `block`, grabbed at
     // `local` (block frame), pulled toward `target` (plane). Recorded into
     // scene().drags with the time each sample takes effect, so a replay of
     // the scene reproduces it exactly.
@@ -104,6 +104,8 @@ private:
     bool rerunStep(double h);
     void record(const Event& e);
     bool booksDiverged() const;
+    double fixedStep();
+    bool retryWithSmallerStep();
     void settleHolds(double t);
     bool wouldCloseAgain(int j, double t);
     void fail(const std::string& why);
@@ -129,6 +131,7 @@ private:
     std::string failure_;
     SolverFrame stats_;
     double lastResidual_ = 0;
+    double stepScale_ = 1;  // automatic step: halved after each step that blew up
     bool trial_ = false;  // inside wouldCloseAgain: holds are not settled
     // Kept from step to step so that stepping allocates nothing.
     Eigen::VectorXd stepStartQ_, stepStartV_;  // the state the step started from

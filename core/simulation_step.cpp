@@ -6,6 +6,7 @@
 #include "core/energy.h"
 #include "core/event_bracket.h"
 #include "core/motion.h"
+#include "core/stable_step.h"
 
 #include <algorithm>
 #include <chrono>
@@ -151,11 +152,40 @@ bool Simulation::wouldCloseAgain(int j, double t) {
     return closed;
 }
 
+// The scene's step, or the engine's: 1 ms at most, and within the stability
+// limit of the fastest vibration the pin forces of the last evaluation allow.
+double Simulation::fixedStep() {
+    constexpr double kLargestAutomaticStep = 1e-3;  // s
+    if (scene_.solver.step > 0) return scene_.solver.step;
+    const double omega = fastestVibration(world_, dynamics_.pinForces());
+    const double h = stepScale_ * automaticStep(scene_.solver.integrator, omega, kLargestAutomaticStep);
+    stats_.automaticStep = true;
+    stats_.smallestStep = stats_.smallestStep > 0 ? std::min(stats_.smallestStep, h) : h;
+    stats_.largestStep = std::max(stats_.largestStep, h);
+    return h;
+}
+
+// A step that blew up with the engine's own step: back to its start, and
+// every later step half as long (a tension the bound did not foresee, such
+// as a block whipping round). The scene's own step is the user's choice:
+// that fails with a diagnostic instead.
+bool Simulation::retryWithSmallerStep() {
+    constexpr int kMostHalvings = 10;
+    if (scene_.solver.step > 0 || stats_.stepHalvings >= kMostHalvings) return false;
+    restoreStepStart();
+    world_.updateKinematics(t_);
+    dynamics_.evaluate(world_, t_);
+    stepScale_ *= 0.5;
+    ++stats_.stepHalvings;
+    return true;
+}
+
 bool Simulation::takeStep(double limit) {
     if (!failure_.empty()) return false;
     const SolverSpec& solver = scene_.solver;
     const bool adaptive = solver.integrator == Integrator::DormandPrince45;
-    double h = adaptive && stepper_.nextStep() > 0 ? stepper_.nextStep() : solver.step;
+    double h = adaptive && stepper_.nextStep() > 0 ? stepper_.nextStep() : fixedStep();
+    const double chosen = h;
     const double scheduled = std::min(nextScheduledTime(), limit);
     const bool lands = t_ + h >= scheduled - 1e-12;
     if (lands) h = scheduled - t_;
@@ -167,6 +197,7 @@ bool Simulation::takeStep(double limit) {
     const double next0 = stepper_.nextStep();
     MotionStep m = advanceAndProject(world_, dynamics_, stepper_, t_, h, ledger_, solver.projectionTolerance);
     if (!m.ok()) {
+        if (retryWithSmallerStep()) return true;
         fail(m.step.finite ? "the projection onto the pins did not converge (residual " +
                                  std::to_string(m.projection.residual) + " m after " +
                                  std::to_string(m.projection.iterations) +
@@ -178,6 +209,7 @@ bool Simulation::takeStep(double limit) {
     double taken = m.step.taken;
     stats_.rejected += m.step.rejected;
     if (booksDiverged()) {
+        if (retryWithSmallerStep()) return true;
         restoreStepStart();
         world_.updateKinematics(t_);
         fail("the energy no longer balances (the motion is blowing up): the step " + std::to_string(h) +
@@ -191,7 +223,7 @@ bool Simulation::takeStep(double limit) {
         if (fEnd < 0) {
             if (solver.events == EventPolicy::Located && taken > solver.eventTolerance) {
                 if (!locateEvent(taken, fEnd, forces)) return false;
-                stepper_.setNextStep(next0 > 0 ? next0 : solver.step);
+                stepper_.setNextStep(next0 > 0 ? next0 : chosen);
             }
             std::vector<Event> happened = ladder_->resolve(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
             if (happened.empty() && taken < m.step.taken) {

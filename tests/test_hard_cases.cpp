@@ -186,6 +186,7 @@ private slots:
         // checks still passed (off by less than half the energy of lifting
         // every block by its half size: 31 J here, 2.7e-5 of m g H).
         Scene s = ladderScene(10000);
+        s.solver.step = 1e-3;  // the user's own step: the engine keeps it and says when it fails
         s.script.push_back(turn(0.0, kPi, 0.3));
         const Outcome o = run(s, 0.1, 0.002);
         QVERIFY(o.finite);
@@ -194,6 +195,41 @@ private slots:
         QVERIFY2(o.worstBalance <= 3e-5 * o.energyScale,
                  qPrintable(QString("balance %1 J of scale %2 J").arg(o.worstBalance).arg(o.energyScale)));
         QVERIFY2(o.worstResidual <= 1e-8, qPrintable(QString::number(o.worstResidual)));
+    }
+
+    // Defaults that run: a scene that names no step gets the engine's, at
+    // most 1 ms and within the stability limit of the fastest vibration,
+    // bounded from the pin forces (so it shrinks while the turn loads the
+    // ladder). At 1 ms the 1,000-block thin ladder blew up at 0.51 s and
+    // the 10,000-block ones while still hanging at rest (0.014 s).
+    void defaultSettingsRunLaddersOfAnyLength_data() {
+        QTest::addColumn<int>("blocks");
+        QTest::addColumn<double>("thickness");
+        QTest::addColumn<double>("until");
+        const bool s = soak();
+        QTest::newRow("2 blocks") << 2 << 0.012 << 1.0;
+        QTest::newRow("200 thin blocks") << 200 << 0.003 << 1.0;
+        QTest::newRow("1,000 thin blocks") << 1000 << 0.003 << (s ? 3.0 : 0.7);
+        QTest::newRow("10,000 blocks") << 10000 << 0.012 << (s ? 0.5 : 0.03);
+        QTest::newRow("10,000 thin blocks") << 10000 << 0.003 << (s ? 0.5 : 0.03);
+        QTest::newRow("100,000 thin blocks") << 100000 << 0.003 << (s ? 0.01 : 0.002);
+    }
+    void defaultSettingsRunLaddersOfAnyLength() {
+        QFETCH(int, blocks);
+        QFETCH(double, thickness);
+        QFETCH(double, until);
+        Scene s = ladderScene(blocks);
+        s.ladder->block.thickness = thickness;
+        s.ladder->held = {0};
+        s.script.push_back(turn(0.0, kPi, 0.3));
+        QCOMPARE(s.solver.step, 0.0);  // the default: the engine chooses
+        const Outcome o = run(s, until, std::min(0.01, until / 2));
+        requireSound(o);
+        Simulation::Built built = Simulation::build(s);
+        built.simulation->stepOnce();
+        const SolverFrame f = built.simulation->frame().solver;
+        QVERIFY(f.automaticStep);
+        QVERIFY(f.largestStep > 0 && f.largestStep <= 1e-3);
     }
 
     void violentDragTenMetresAwayForOneSecond() {

@@ -50,6 +50,17 @@ NumberField blockMassField() {
     return f;
 }
 
+// The step: 0 lets the engine choose it (1 ms at most, within the stability
+// limit of the ladder's fastest vibration), which the field says in words.
+NumberField automaticStepField() {
+    NumberField f = solverNumber("step", tr("Time step"), "ms",
+                                 tr("Fixed step of the integrator (the first try of the adaptive one); 0: the engine "
+                                    "chooses it, at most 1 ms and short enough to stay stable on long ladders."),
+                                 0, 100, 1000, 3, false, &jl::SolverSpec::step);
+    f.unset = [](const jl::Scene&) { return tr("automatic"); };
+    return f;
+}
+
 }  // namespace
 
 void setBlockCount(jl::LadderSpec& ladder, int n) {
@@ -87,8 +98,7 @@ std::vector<NumberField> ladderNumberFields() {
 std::vector<NumberField> solverNumberFields() {
     using S = jl::SolverSpec;
     return {
-        solverNumber("step", tr("Time step"), "ms", tr("Fixed step of the integrator; the first try of the adaptive one."),
-                     0.001, 100, 1000, 3, false, &S::step),
+        automaticStepField(),
         solverNumber("tolerance", tr("Error tolerance"), "", tr("Local error allowed per step by the adaptive integrator."),
                      1e-14, 1e-2, 1, 0, true, &S::tolerance),
         solverNumber("projectionTolerance", tr("Pin tolerance"), "m", tr("Largest gap left in a pin after the constraint projection."),

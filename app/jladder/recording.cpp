@@ -50,6 +50,7 @@ Recording record(Simulation& sim, double until, double every, bool keepFrames) {
     r.time = sim.time();
     r.steps = last.solver.steps;
     r.evaluations = last.solver.evaluations;
+    r.solver = last.solver;
     r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return r;
 }
@@ -85,10 +86,23 @@ bool writeEventsJson(const Recording& r, const std::string& path, std::string& e
     return bool(out);
 }
 
+// What step the run took: the scene's, or the engine's choice (its range,
+// and how often a step that blew up made it halve the rest).
+std::string stepJson(const SolverFrame& f) {
+    std::ostringstream s;
+    if (!f.automaticStep) {
+        s << "{\"chosen_by\":\"scene\"}";
+        return s.str();
+    }
+    s << "{\"chosen_by\":\"engine\",\"smallest\":" << number(f.smallestStep) << ",\"largest\":" << number(f.largestStep)
+      << ",\"halvings\":" << f.stepHalvings << "}";
+    return s.str();
+}
+
 std::string summaryJson(const Recording& r, const std::string& scenePath) {
     std::ostringstream s;
     s << "{\"scene\":" << jsonString(scenePath) << ",\"time\":" << number(r.time) << ",\"steps\":" << r.steps
-      << ",\"evaluations\":" << r.evaluations << ",\"events\":" << r.events.size()
+      << ",\"evaluations\":" << r.evaluations << ",\"step\":" << stepJson(r.solver) << ",\"events\":" << r.events.size()
       << ",\"energy_start\":" << number(r.energyStart) << ",\"energy_end\":" << number(r.energyEnd)
       << ",\"worst_energy_balance\":" << number(r.worstBalance) << ",\"max_residual\":" << number(r.worstResidual)
       << ",\"wall_seconds\":" << number(r.wallSeconds)

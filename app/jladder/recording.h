@@ -16,6 +16,7 @@ struct Recording {
     double energyStart = 0, energyEnd = 0, worstBalance = 0, worstResidual = 0, wallSeconds = 0;
     double time = 0;
     long long steps = 0, evaluations = 0;
+    SolverFrame solver;            // the last frame's statistics (the step the engine chose among them)
     std::string failure;
 };
 
