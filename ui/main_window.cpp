@@ -231,13 +231,20 @@ void MainWindow::createStatusBar() {
         statusBar()->addPermanentWidget(l);
         return l;
     };
+    // A failure says what failed, where and what to try: it wraps onto more
+    // lines rather than being cut off at the status bar's edge.
     warningLabel_ = new QLabel(this);
     warningLabel_->setObjectName("warning");
+    warningLabel_->setWordWrap(true);
+    warningLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    warningLabel_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     statusBar()->addWidget(warningLabel_, 1);
     timeLabel_ = label("time", tr("Simulated time of the frame on screen, and how far the run has been recorded."), 150);
     rateLabel_ = label("rate", tr("Real-time factor (simulated seconds per second) and solver steps per second."), 190);
     energyLabel_ = label("energy", tr("Kinetic plus potential energy; in brackets, what the energy books fail to explain."), 190);
     residualLabel_ = label("residual", tr("Largest gap left in a hinge pin after the last step."), 130);
+    stepLabel_ = label("step", tr("The integrator's step: the scene's own, or (auto) the engine's choice: at most 1 ms, "
+                                  "and short enough to stay stable on long ladders."), 130);
 }
 
 void MainWindow::connectView() {
@@ -293,6 +300,9 @@ void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {
         const jl::EnergyFrame& e = s->frame->energy;
         energyLabel_->setText(tr("E = %1  (books %2)").arg(energyText(e.total()), energyText(e.balance())));
         residualLabel_->setText(tr("gap %1 m").arg(s->frame->solver.residual, 0, 'e', 1));
+        const jl::SolverFrame& solver = s->frame->solver;
+        const QString step = QString::number(solver.lastStep * 1e3, 'g', 3);
+        stepLabel_->setText(solver.automaticStep ? tr("step %1 ms (auto)").arg(step) : tr("step %1 ms").arg(step));
     }
     if (!s->failure.empty()) {
         warningLabel_->setStyleSheet("color: #b00020; font-weight: bold;");

@@ -93,6 +93,7 @@ private:
     QLabel* rateLabel_;
     QLabel* energyLabel_;
     QLabel* residualLabel_;
+    QLabel* stepLabel_;
     QLabel* warningLabel_;
     std::uint64_t loadsPosted_ = 0;
     std::uint64_t shownLoad_ = 0;

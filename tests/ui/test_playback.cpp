@@ -211,6 +211,13 @@ private slots:
         QVERIFY(s->frame->time > 0 && s->frame->time < 1.0);
         auto* warning = f.window.findChild<QLabel*>("warning");
         QVERIFY(jltest::waitForStatus(f.sim, [&](const SimStatus&) { return warning->text().contains(QString::fromStdString(s->failure)); }));
+        // Shown whole: the words wrap within the window instead of running
+        // past the status bar's edge (the advice at the end was cut off).
+        f.window.resize(1440, 900);
+        QTRY_VERIFY(warning->wordWrap() && warning->width() <= f.window.width() &&
+                    warning->height() >= warning->heightForWidth(warning->width()));
+        // The step the run uses is on show too.
+        QVERIFY(f.window.findChild<QLabel*>("step")->text().contains("50 ms"));
         // Play does nothing more until the scene changes.
         f.sim->play();
         QTest::qWait(200);
