@@ -27,6 +27,7 @@ struct Hinge {
     bool held = false;
     double releaseGap = 0;       // rad, <= 0: how far past the limit it left the pair read (projection noise)
     double pullingSince = -1;    // s, when the held contact's force turned to pull (-1: it pushes)
+    int renewals = 0;            // trials in a row that kept it held: each doubles the wait for the next (8x at most)
     // The hinge's own particles at each corner k of the upper (side 0) and
     // lower (side 1) block: a block's corner can be a hinge point of both
     // its hinges at once (after a flip both sit at one end), so no two

@@ -42,6 +42,7 @@ void Ladder::release(World& w, int j, EventKind kind, double t) {
     h.releasedAt = t;
     h.held = false;
     h.pullingSince = -1;
+    h.renewals = 0;
     // The parted bodies were projected onto their pins: phi may read a hair
     // past the limit it leaves. That is its zero until it moves clear.
     const double phi = foldAngle(w, j);
@@ -66,9 +67,9 @@ std::vector<int> Ladder::expiredHolds(const World& w, const Dynamics& d, double 
         }
         const HingeContact c = contact(w, d, j);
         const bool pulls = h.mode == HingeMode::OpenLocked ? c.normal < 0 : std::min(c.nearEnd, c.farEnd) < 0;
-        if (!pulls) h.pullingSince = -1;
+        if (!pulls) h.pullingSince = -1, h.renewals = 0;
         else if (h.pullingSince < 0) h.pullingSince = t;
-        if (pulls && t - h.pullingSince >= zenoTime_) out.push_back(j);
+        if (pulls && t - h.pullingSince >= zenoTime_ * double(1 << std::min(h.renewals, 3))) out.push_back(j);
     }
     return out;
 }
@@ -78,7 +79,10 @@ void Ladder::letGo(int j) {
     hinges_[size_t(j - 1)].pullingSince = -1;
 }
 
-void Ladder::renewHold(int j, double t) { hinges_[size_t(j - 1)].pullingSince = t; }
+void Ladder::renewHold(int j, double t) {
+    hinges_[size_t(j - 1)].pullingSince = t;
+    ++hinges_[size_t(j - 1)].renewals;
+}
 
 // The most negative contact force (or impulse) among locked and folded
 // hinges, and what releasing it means: unlock, flip-flop or unfold.

@@ -106,8 +106,9 @@ private:
     bool booksDiverged() const;
     double fixedStep();
     bool retryWithSmallerStep();
-    void settleHolds(double t);
-    bool wouldCloseAgain(int j, double t);
+    void settleHolds(double limit);
+    enum class Trial { ClosedAgain, Kept, Undecided };
+    Trial tryLettingGo(int j, double limit);
     void fail(const std::string& why);
 
     static constexpr double kOpenEnd = std::numeric_limits<double>::max();  // no time limit
@@ -132,7 +133,7 @@ private:
     SolverFrame stats_;
     double lastResidual_ = 0;
     double stepScale_ = 1;  // automatic step: halved after each step that blew up
-    bool trial_ = false;  // inside wouldCloseAgain: holds are not settled
+    bool trial_ = false;  // inside tryLettingGo: holds are not settled
     // Kept from step to step so that stepping allocates nothing.
     Eigen::VectorXd stepStartQ_, stepStartV_;  // the state the step started from
     Ledger stepStartLedger_;

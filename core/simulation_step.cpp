@@ -91,12 +91,10 @@ bool Simulation::locateEvent(double& taken, double fEnd, double forcesAtEnd) {
         held = h;
         return rerunStep(h) ? smallestEventFunction(t_ + h) : -1.0;
     };
-    if (b.lo > 0) {
-        if (const double f = stepped(b.lo); f < 0) b = {0, fStart, b.lo, f};
-        else b = {b.lo, f, b.hi, b.hi == taken ? fEnd : stepped(b.hi)};
-    } else if (b.hi < taken) {
-        b.fhi = stepped(b.hi);
-    }
+    // The interpolant's low end is not checked: where the integrator's own
+    // solution crossed a hair earlier (by the interpolant's O(h^6) error),
+    // the event lands that hair late, still within the touching band.
+    if (b.hi < taken) b.fhi = stepped(b.hi);
     if (b.fhi >= 0) b = {b.hi, b.fhi, taken, fEnd};
     narrow(b, tolerance, stepped);
     if (held != b.hi && !rerunStep(b.hi)) {
@@ -107,49 +105,45 @@ bool Simulation::locateEvent(double& taken, double fEnd, double forcesAtEnd) {
     return true;
 }
 
-// The dynamics hold the step's end (evaluated for the event functions or by
-// resolve): a held contact that has pulled for a Zeno time is let go, unless
-// a trial shows that it would close again within a Zeno time (the pull is the
-// chatter of a contact at its Zeno limit, not a parting).
-void Simulation::settleHolds(double t) {
-    const std::vector<int> expired = ladder_->expiredHolds(world_, dynamics_, t);
-    if (expired.empty()) return;
-    bool released = false;
-    for (int j : expired) {
-        if (wouldCloseAgain(j, t)) {
-            ladder_->renewHold(j, t);
-            continue;
-        }
-        ladder_->letGo(j);
-        released = true;
+// After a step (the dynamics evaluated at its end, time t_): a held contact
+// that has pulled for long enough is let go, unless a trial shows that it
+// would close again within a Zeno time (the pull is the chatter of a contact
+// at its Zeno limit, not a parting). A trial that lets it go is kept as the
+// run's own continuation (the same code would compute the same steps again),
+// so only the renewals cost extra; `limit` as for takeStep.
+void Simulation::settleHolds(double limit) {
+    for (int j : ladder_->expiredHolds(world_, dynamics_, t_)) {
+        const Trial trial = tryLettingGo(j, limit);
+        if (trial == Trial::Kept) return;  // the state has moved on: the other holds wait for the next step
+        if (trial == Trial::ClosedAgain) ladder_->renewHold(j, t_);
     }
-    if (!released) return;
-    for (Event& e : ladder_->resolve(world_, dynamics_, t, &impactLoss_, &impactHeldWork_)) record(e);
 }
 
-// Lets held hinge j go at t (the state's time) on the real simulation, runs
-// a Zeno time on, and puts everything back: whether j closed again.
-bool Simulation::wouldCloseAgain(int j, double t) {
+// Lets held hinge j go at t_ and runs on for a Zeno time (or to `limit`).
+// If j closed again, or the run did not get a whole Zeno time, everything is
+// put back; otherwise the run carries on from where the trial got to.
+Simulation::Trial Simulation::tryLettingGo(int j, double limit) {
     const std::shared_ptr<const Snapshot> before = snapshot();
-    const double tBefore = t_;
     std::vector<Event> pending = std::exchange(pending_, {});
     const int drag = liveDrag_;
-    t_ = t;
     trial_ = true;
     ladder_->letGo(j);
     bool closed = false;
-    for (Event& e : ladder_->resolve(world_, dynamics_, t, &impactLoss_, &impactHeldWork_)) record(e);
-    const double until = t + ladder_->zenoTime();
-    while (!closed && t_ < until && failure_.empty() && takeStep(kOpenEnd))
+    for (Event& e : ladder_->resolve(world_, dynamics_, t_, &impactLoss_, &impactHeldWork_)) record(e);
+    const double until = t_ + ladder_->zenoTime();
+    while (!closed && t_ < until && t_ < limit && failure_.empty() && takeStep(limit))
         for (const Event& e : pending_)
             closed = closed || (e.hinge == j && (e.kind == EventKind::Lock || e.kind == EventKind::Fold));
     trial_ = false;
+    if (!closed && t_ >= until && failure_.empty()) {
+        pending.insert(pending.end(), pending_.begin(), pending_.end());
+        pending_ = std::move(pending);
+        return Trial::Kept;
+    }
     restore(*before);
-    t_ = tBefore;
-    dynamics_.evaluate(world_, t);  // restore() evaluated at the snapshot's clock
     pending_ = std::move(pending);
     liveDrag_ = drag;
-    return closed;
+    return closed ? Trial::ClosedAgain : Trial::Undecided;
 }
 
 // The scene's step, or the engine's: 1 ms at most, and within the stability
@@ -248,13 +242,13 @@ bool Simulation::takeStep(double limit) {
             }
         }
         ladder_->updateAngles(world_);
-        if (!trial_) settleHolds(t_ + taken);
     }
     t_ = (lands && taken == h) ? scheduled : t_ + taken;
     ++stats_.steps;
     stats_.lastStep = taken;
     lastResidual_ = m.projection.residual;
     applyDueInputs();
+    if (ladder_ && !trial_) settleHolds(limit);
     return true;
 }
 
