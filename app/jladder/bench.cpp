@@ -3,6 +3,7 @@
 // SVG and PNG charts and the report docs/performance.md.
 #include "app/jladder/bench_cases.h"
 #include "app/jladder/bench_chart.h"
+#include "app/jladder/bench_events.h"
 #include "app/jladder/bench_models.h"
 #include "app/jladder/bench_peers.h"
 #include "app/jladder/bench_report.h"
@@ -21,7 +22,7 @@ namespace jl::cli {
 namespace {
 
 const char* kHelp =
-    "usage: jladder bench [--quick] [--out DIR] [--report FILE] [--only stability|models]\n"
+    "usage: jladder bench [--quick] [--out DIR] [--report FILE] [--only stability|models|events]\n"
     "Measures cost (CPU seconds per simulated second) against error for every\n"
     "integrator and event policy on the physical pendulum, the falling chain\n"
     "(N = 10, 100, 1,000; against an independent reduced-coordinate reference)\n"
@@ -29,12 +30,13 @@ const char* kHelp =
     "ladder with RK4; the stability limit of long ladders (omega_max of the\n"
     "hanging ladder, the step limit it predicts, the largest RK4 step that\n"
     "runs); cascades with locked pairs merged into one body against welded\n"
-    "pairs; and, if built with -DJL_BENCH_PEERS=ON, MuJoCo, Box2D and\n"
+    "pairs; the CPU cost of an event on ladders of 12 .. 10,000 thin blocks;\n"
+    "and, if built with -DJL_BENCH_PEERS=ON, MuJoCo, Box2D and\n"
     "Bullet on the same chains. Writes DIR/*.csv, DIR/*.svg, DIR/*.png\n"
     "(default DIR: docs/bench) and FILE (default docs/performance.md).\n"
-    "--quick: fewer sizes and steps; fits in CI (under two minutes).\n"
-    "--only stability|models: that study alone; FILE (default DIR/stability.md\n"
-    "or DIR/models.md) gets its section only.\n";
+    "--quick: fewer sizes and steps; fits in CI (under a minute).\n"
+    "--only stability|models|events: that study alone; FILE (default\n"
+    "DIR/stability.md, DIR/models.md or DIR/events.md) gets its section only.\n";
 
 bool writeCsv(const std::vector<BenchRow>& rows, const std::filesystem::path& path) {
     std::ofstream f(path);
@@ -43,6 +45,25 @@ bool writeCsv(const std::vector<BenchRow>& rows, const std::filesystem::path& pa
     for (const BenchRow& r : rows)
         f << r.study << ',' << r.method << ',' << r.blocks << ',' << r.parameter << ',' << r.cost << ',' << r.error << ','
           << (r.finished ? 1 : 0) << ",\"" << r.note << "\"\n";
+    return bool(f);
+}
+
+bool writeEventCostCsv(const std::vector<EventCostRow>& rows, const std::filesystem::path& path) {
+    std::ofstream f(path);
+    f << "blocks,window_from_s,window_to_s,steps,mean_step_s,events,instants,kinds,window_cpu_s,repetitions,repeatable,"
+         "plain_step_s,plain_steps,plain_repetitions,plain_events,plain_step_cpu_s,event_cpu_s,cpu_per_event_s,"
+         "cpu_per_instant_s,event_share,plain_steps_per_event,turning_steps,turning_events,turning_step_cpu_s,"
+         "cpu_per_event_turning_baseline_s,eventful_steps,eventful_steps_cpu_s,cpu_per_event_in_eventful_steps_s,"
+         "failure\n";
+    f.precision(6);
+    for (const EventCostRow& r : rows)
+        f << r.blocks << ',' << r.from << ',' << r.to << ',' << r.steps << ',' << r.meanStep << ',' << r.events << ','
+          << r.instants << ",\"" << r.kinds << "\"," << r.runCpu << ',' << r.runRepetitions << ','
+          << (r.repeatable ? 1 : 0) << ',' << r.plainStep << ',' << r.plainSteps << ',' << r.plainRepetitions << ','
+          << r.plainEvents << ',' << r.plainStepCpu << ',' << r.runCpu - double(r.steps) * r.plainStepCpu << ','
+          << r.perEvent << ',' << r.perInstant << ',' << r.eventShare << ',' << r.perEvent / r.plainStepCpu << ','
+          << r.controlSteps << ',' << r.controlEvents << ',' << r.controlStepCpu << ',' << r.perEventControl << ','
+          << r.eventfulSteps << ',' << r.eventfulCpu << ',' << r.perEventInStep << ",\"" << r.failure << "\"\n";
     return bool(f);
 }
 
@@ -89,13 +110,13 @@ int bench(const std::vector<std::string>& args) {
         return 0;
     }
     const std::string only = o.get("--only").value_or("");
-    if (o.error.empty() && !only.empty() && only != "stability" && only != "models")
-        o.error = "--only takes 'stability' or 'models', not '" + only + "'";
+    if (o.error.empty() && !only.empty() && only != "stability" && only != "models" && only != "events")
+        o.error = "--only takes 'stability', 'models' or 'events', not '" + only + "'";
     if (!o.error.empty()) {
         std::fprintf(stderr, "jladder bench: %s\n", o.error.c_str());
         return 2;
     }
-    const bool onlyStability = only == "stability", onlyModels = only == "models";
+    const bool onlyStability = only == "stability", onlyModels = only == "models", onlyEvents = only == "events";
     BenchPlan plan;
     plan.quick = o.has("--quick");
     plan.minSeconds = plan.quick ? 0.005 : 0.05;
@@ -110,22 +131,26 @@ int bench(const std::vector<std::string>& args) {
         return 1;
     }
 
+    // The JSON line every form ends with.
+    auto finish = [&](bool ok) {
+        std::printf("{\"out\":%s,\"report\":%s,\"ok\":%s}\n", jsonString(out.string()).c_str(),
+                    jsonString(report.string()).c_str(), ok ? "true" : "false");
+        return ok ? 0 : 1;
+    };
     if (onlyStability) {
         std::fprintf(stderr, "stability limit\n");
         const StabilityStudy study = stabilityStudy(plan);
-        const bool ok = writeStabilityCsv(study, out / "stability.csv") && writeStabilityReport(study, plan.quick, report);
-        std::printf("{\"out\":%s,\"report\":%s,\"ok\":%s}\n", jsonString(out.string()).c_str(),
-                    jsonString(report.string()).c_str(), ok ? "true" : "false");
-        return ok ? 0 : 1;
+        return finish(writeStabilityCsv(study, out / "stability.csv") && writeStabilityReport(study, plan.quick, report));
     }
-
     if (onlyModels) {
         std::fprintf(stderr, "rigid pairs: merged or welded\n");
         const std::vector<BenchRow> rows = rigidPairModelStudy(plan);
-        const bool ok = writeCsv(rows, out / "models.csv") && writeModelsReport(rows, plan.quick, report);
-        std::printf("{\"out\":%s,\"report\":%s,\"ok\":%s}\n", jsonString(out.string()).c_str(),
-                    jsonString(report.string()).c_str(), ok ? "true" : "false");
-        return ok ? 0 : 1;
+        return finish(writeCsv(rows, out / "models.csv") && writeModelsReport(rows, plan.quick, report));
+    }
+    if (onlyEvents) {
+        std::fprintf(stderr, "cost of an event\n");
+        const std::vector<EventCostRow> rows = eventCostStudy(plan);
+        return finish(writeEventCostCsv(rows, out / "events.csv") && writeEventCostReport(rows, plan.quick, report));
     }
 
     BenchResults results;
@@ -152,11 +177,14 @@ int bench(const std::vector<std::string>& args) {
     results.stability = stabilityStudy(plan);
     std::fprintf(stderr, "rigid pairs: merged or welded\n");
     results.models = rigidPairModelStudy(plan);
+    std::fprintf(stderr, "cost of an event\n");
+    results.eventCost = eventCostStudy(plan);
     results.peers = peerVersions();
 
     bool ok = writeCsv(results.pendulum, out / "pendulum.csv") && writeCsv(results.ladder, out / "ladder.csv") &&
               writeCsv(results.scaling, out / "scaling.csv") && writeCsv(results.longLadder, out / "long_ladder.csv") &&
-              writeStabilityCsv(results.stability, out / "stability.csv") && writeCsv(results.models, out / "models.csv");
+              writeStabilityCsv(results.stability, out / "stability.csv") && writeCsv(results.models, out / "models.csv") &&
+              writeEventCostCsv(results.eventCost, out / "events.csv");
     ok = writeChart(workPrecision("Physical pendulum, one exact period (theta0 = 2 rad)", "error (rad)", results.pendulum),
                     out, "pendulum") && ok;
     for (const auto& [n, rows] : results.chains) {
@@ -180,9 +208,7 @@ int bench(const std::vector<std::string>& args) {
     }
     ok = writeChart(scaling, out, "scaling") && ok;
     ok = writeReport(results, out, report) && ok;
-    std::printf("{\"out\":%s,\"report\":%s,\"ok\":%s}\n", jsonString(out.string()).c_str(),
-                jsonString(report.string()).c_str(), ok ? "true" : "false");
-    return ok ? 0 : 1;
+    return finish(ok);
 }
 
 }  // namespace jl::cli

@@ -69,6 +69,14 @@ void log(const BenchRow& r) {
 
 }  // namespace
 
+ScriptAction halfTurn(double at) {
+    ScriptAction turn;
+    turn.at = at;
+    turn.angle = std::numbers::pi;
+    turn.duration = 0.3;
+    return turn;
+}
+
 // ---- the physical pendulum: one exact period ----
 
 std::vector<BenchRow> pendulumStudy(const BenchPlan& plan) {
@@ -163,11 +171,7 @@ Scene cascade(int blocks, double duration) {
     Scene s;
     s.ladder = LadderSpec{};
     s.ladder->blocks = blocks;
-    ScriptAction turn;
-    turn.at = 0.2;
-    turn.angle = std::numbers::pi;
-    turn.duration = 0.3;
-    s.script.push_back(turn);
+    s.script.push_back(halfTurn(0.2));
     s.duration = duration;
     return s;
 }

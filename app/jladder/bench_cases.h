@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/geometry.h"
+#include "core/scene.h"
 
 #include <string>
 #include <vector>
@@ -25,6 +26,10 @@ struct BenchPlan {
     bool quick = false;
     double minSeconds = 0.02;  // each configuration repeated until it took this long
 };
+
+// The turn of the benchmark's ladders: block 0 turned half a turn
+// counter-clockwise from `at` over 0.3 s.
+ScriptAction halfTurn(double at);
 
 std::vector<BenchRow> pendulumStudy(const BenchPlan& plan);
 // Falling chain of n blocks against the reduced-coordinate reference

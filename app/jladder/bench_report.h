@@ -4,6 +4,7 @@
 #pragma once
 
 #include "app/jladder/bench_cases.h"
+#include "app/jladder/bench_events.h"
 #include "app/jladder/bench_stability.h"
 
 #include <filesystem>
@@ -20,6 +21,7 @@ struct BenchResults {
     std::string peers;                            // versions, or why not measured
     StabilityStudy stability;
     std::vector<BenchRow> models;  // rigidPairModelStudy
+    std::vector<EventCostRow> eventCost;
 };
 
 bool writeReport(const BenchResults& r, const std::filesystem::path& plots, const std::filesystem::path& report);
@@ -27,5 +29,7 @@ bool writeReport(const BenchResults& r, const std::filesystem::path& plots, cons
 bool writeStabilityReport(const StabilityStudy& s, bool quick, const std::filesystem::path& report);
 // The section "Model only what a scene needs" alone (jladder bench --only models).
 bool writeModelsReport(const std::vector<BenchRow>& rows, bool quick, const std::filesystem::path& report);
+// The section "Cost of an event" alone (jladder bench --only events).
+bool writeEventCostReport(const std::vector<EventCostRow>& rows, bool quick, const std::filesystem::path& report);
 
 }  // namespace jl::cli

@@ -10,7 +10,6 @@
 #include <cmath>
 #include <complex>
 #include <cstdio>
-#include <numbers>
 #include <random>
 
 namespace jl::cli {
@@ -25,13 +24,7 @@ Scene ladderScene(int blocks, bool turned, double step) {
     Scene s;
     s.ladder = LadderSpec{};
     s.ladder->blocks = blocks;
-    if (turned) {
-        ScriptAction turn;
-        turn.at = 0.0;
-        turn.angle = std::numbers::pi;
-        turn.duration = 0.3;
-        s.script.push_back(turn);
-    }
+    if (turned) s.script.push_back(halfTurn(0.0));
     s.solver.integrator = Integrator::RK4;
     s.solver.step = step;
     return s;
