@@ -231,12 +231,8 @@ void MainWindow::createStatusBar() {
         statusBar()->addPermanentWidget(l);
         return l;
     };
-    // A failure says what failed, where and what to try: it wraps onto more
-    // lines rather than being cut off at the status bar's edge.
     warningLabel_ = new QLabel(this);
     warningLabel_->setObjectName("warning");
-    warningLabel_->setWordWrap(true);
-    warningLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     warningLabel_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     statusBar()->addWidget(warningLabel_, 1);
     timeLabel_ = label("time", tr("Simulated time of the frame on screen, and how far the run has been recorded."), 150);
@@ -305,13 +301,32 @@ void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {
         stepLabel_->setText(solver.automaticStep ? tr("step %1 ms (auto)").arg(step) : tr("step %1 ms").arg(step));
     }
     if (!s->failure.empty()) {
+        const QString failure = QString::fromStdString(s->failure);
         warningLabel_->setStyleSheet("color: #b00020; font-weight: bold;");
-        warningLabel_->setText(tr("Stopped: %1").arg(QString::fromStdString(s->failure)));
+        warningLabel_->setText(tr("Stopped: %1").arg(failure));
+        warningLabel_->setToolTip(failure);
+        if (failure != shownFailure_) showFailure(failure);
     } else {
         warningLabel_->setStyleSheet({});
         warningLabel_->setText(s->dragging ? tr("Pushing a block: release the button to let go.") : QString());
     }
     syncRecordedDrags(*s);
+}
+
+// A failure says what failed, where and what to try, which is more than the
+// status bar's width: the whole of it in a message that does not block the
+// window (the last good frame stays on show to be looked at).
+void MainWindow::showFailure(const QString& failure) {
+    shownFailure_ = failure;
+    auto* box = findChild<QMessageBox*>("failureMessage");
+    if (!box) {
+        box = new QMessageBox(QMessageBox::Warning, tr("The simulation stopped"), {}, QMessageBox::Ok, this);
+        box->setObjectName("failureMessage");
+        box->setModal(false);
+    }
+    box->setText(tr("The simulation stopped and keeps its last good state."));
+    box->setInformativeText(failure);
+    box->show();
 }
 
 // A finished mouse drag becomes part of the scene (saved, undoable), so a

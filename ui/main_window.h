@@ -57,6 +57,7 @@ private:
     void createDocks();
     void createStatusBar();
     void connectView();
+    void showFailure(const QString& failure);
     void readSettings();
     void writeSettings() const;
 
@@ -94,6 +95,7 @@ private:
     QLabel* energyLabel_;
     QLabel* residualLabel_;
     QLabel* stepLabel_;
+    QString shownFailure_;  // the failure last shown in full
     QLabel* warningLabel_;
     std::uint64_t loadsPosted_ = 0;
     std::uint64_t shownLoad_ = 0;
