@@ -2,6 +2,7 @@
 // J a = -Jdot v, and the powers that the energy balance integrates.
 #pragma once
 
+#include "core/geometry.h"
 #include "core/pin_solver.h"
 
 #include <Eigen/Core>
@@ -39,5 +40,15 @@ private:
 // Applied forces on every body (3 per body: fx, fy, torque about the body's
 // origin) and the held, user and damping powers of those forces.
 void accumulateForces(const World& w, Eigen::VectorXd& force, Powers& powers);
+
+// The applied forces on one part alone (gravity, air damping, springs,
+// loads, the mouse; not the rotary dampers, which act between parts), as a
+// force and a moment about the point `about`: one side of a locked pair is
+// held by its contact against these (Ladder's contact forces).
+struct AppliedWrench {
+    Vec2 force = Vec2::Zero();
+    double moment = 0;
+};
+AppliedWrench appliedOnPart(const World& w, int part, const Vec2& about);  // part: a PartId
 
 }  // namespace jl

@@ -16,7 +16,7 @@ Energy energy(const World& w) {
         e.potential -= part.mass * w.gravity.dot(w.partPose(p).position);
     }
     for (const Spring& s : w.springs()) {
-        if (!w.isLive(s.a) || !w.isLive(s.b)) continue;
+        if (!w.validParticle(s.a) || !w.validParticle(s.b)) continue;  // an absorbed end still acts
         const double stretch = (w.particlePosition(s.b) - w.particlePosition(s.a)).norm() - s.restLength;
         e.potential += 0.5 * s.stiffness * stretch * stretch;
     }

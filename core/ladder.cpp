@@ -251,23 +251,12 @@ Ladder::Wrench Ladder::internalWrench(const World& w, const Dynamics& d, int j, 
             s.moment += part.inertia * (after.angular - before.angular) + cross(c - p, dp);
             continue;
         }
+        // What the block's motion needs, less what the applied forces supply.
         const Vec2 r = c - origin;
         const Vec2 acc = w.a.segment<2>(3 * body) + alpha * perp(r) - omega * omega * r;
-        Vec2 f = part.mass * acc - part.mass * w.gravity;
-        double m = part.inertia * alpha + cross(c - p, part.mass * acc) - cross(c - p, part.mass * w.gravity);
-        const Twist vel = w.partVelocity(block(i));
-        f += part.linearDamping * vel.linear;
-        m += part.angularDamping * vel.angular + cross(c - p, part.linearDamping * vel.linear);
-        for (const UserDrag& g : w.drags()) {
-            if (g.part != block(i)) continue;
-            const Vec2 x = w.pointPosition(g.part, g.local);
-            Vec2 pull = g.stiffness * (g.target - x) - g.damping * w.pointVelocity(g.part, g.local);
-            if (pull.norm() > g.maxForce) pull *= g.maxForce / pull.norm();
-            f -= pull;
-            m -= cross(x - p, pull);
-        }
-        s.force += f;
-        s.moment += m;
+        const AppliedWrench applied = appliedOnPart(w, block(i), p);
+        s.force += part.mass * acc - applied.force;
+        s.moment += part.inertia * alpha + cross(c - p, part.mass * acc) - applied.moment;
     }
     // Pins to other bodies act on the side too.
     const Eigen::VectorXd& lambda = impact ? *impact->pinImpulses : d.pinForces();
@@ -462,6 +451,8 @@ std::optional<std::string> Ladder::cut(World& w, int j) {
     if (h.mode == HingeMode::Folded) unfold(w, j);
     part(w, j, h.corner);
     h.mode = HingeMode::Cut;
+    // The damper stands for friction in the ribbons' hinge: cut, it is gone.
+    if (!dampers_.empty()) w.setRotaryDamping(dampers_[size_t(j - 1)], 0);
     return std::nullopt;
 }
 
@@ -473,7 +464,8 @@ std::optional<int> Ladder::cutHingeJoinedBy(int blockA, int cornerA, int blockB,
     return j;
 }
 
-void Ladder::rehinged(const World& w, int j, int k) {
+void Ladder::rehinged(World& w, int j, int k) {
+    if (!dampers_.empty()) w.setRotaryDamping(dampers_[size_t(j - 1)], spec_.hinges.damping);
     Hinge& h = hinges_[size_t(j - 1)];
     h.corner = k;
     h.mode = HingeMode::Free;

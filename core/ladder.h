@@ -111,7 +111,7 @@ public:
     std::optional<int> cutHingeJoinedBy(int blockA, int cornerA, int blockB, int cornerB) const;
     // The hinge is FREE at corner k again, phi taken from the poses (past
     // a limit if the join left it there: the next resolve settles it).
-    void rehinged(const World& w, int j, int k);
+    void rehinged(World& w, int j, int k);
     // A restructuring the world refused (a bug, reported rather than ignored).
     const std::string& error() const { return error_; }
     void updateAngles(const World& w);  // track phi continuously after a step
@@ -156,6 +156,7 @@ private:
     bool wouldChatter(const World& w, double t, int j, EventKind kind, const std::vector<Twist>& before) const;
     void release(World& w, int j, EventKind kind, double t);
     void noteClose(int j, double t);
+    void capped(double t, const std::string& what);
     HingeContact split(const World& w, int j, const Wrench& on) const;
     void snap(World& w, int j, double target);
     void join(World& w, int j, int k);     // combine the hinge's points at corner k

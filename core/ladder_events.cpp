@@ -170,7 +170,8 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
     // (docs/model.md section 8.4): the next step decides whether it closes again.
     std::vector<int>& released = *releasedNow;
     std::vector<int> kept;  // rule 6: stays locked through this impact
-    for (int guard = 0; guard < 4 * blockCount(); ++guard) {
+    bool settled = false;
+    for (int guard = 0; guard < 4 * blockCount() + 4 && !settled; ++guard) {
         w.setPartVelocities(before);
         projectVelocities(w, d.solver(), &impulses);
         updateAngles(w);
@@ -196,8 +197,9 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
                     driven = true;
                 }
         }
-        if (!driven) break;
+        settled = !driven;
     }
+    if (!settled) capped(t, "an impact's contacts");
     // Restitution: phi_dot+ = -e phi_dot- for the hinges that were hit.
     const double e = spec_.hinges.restitution;
     if (e > 0) {
@@ -242,12 +244,13 @@ std::vector<Event> Ladder::push(World& w, Dynamics& d, double t, int i, const Ve
     Eigen::VectorXd impulses;
     const Impact im{&before, &impulses};
     std::vector<int> kept;
-    for (int guard = 0; guard < 4 * blockCount(); ++guard) {
+    bool settled = false;
+    for (int guard = 0; guard < 4 * blockCount() + 4 && !settled; ++guard) {
         w.setPartVelocities(before);
         projectVelocities(w, d.solver(), &impulses);
         updateAngles(w);
         const auto pull = pullingContact(w, d, &im, kept);
-        if (!pull) break;
+        if ((settled = !pull)) break;
         if (wouldChatter(w, t, pull->first, pull->second, before)) {
             kept.push_back(pull->first);
             continue;
@@ -255,13 +258,20 @@ std::vector<Event> Ladder::push(World& w, Dynamics& d, double t, int i, const Ve
         release(w, pull->first, pull->second, t);
         events.push_back({t, pull->second, pull->first, hinge(pull->first).corner, words(pull->second, pull->first)});
     }
+    if (!settled) capped(t, "a push's contacts");
     return events;
+}
+
+// An active-set loop that ran out of passes: a bug or a case the rules do
+// not settle, said in the run's diagnostics rather than left half done.
+void Ladder::capped(double t, const std::string& what) {
+    if (error_.empty()) error_ = what + " at t = " + std::to_string(t) + " s could not be settled";
 }
 
 std::vector<Event> Ladder::resolve(World& w, Dynamics& d, double t, double* loss, double* heldWork) {
     std::vector<Event> events;
     std::vector<int> released;  // in this pass: free even at a limit
-    bool capped = true;
+    bool unsettled = true;
     for (int guard = 0; guard < 8 * blockCount() + 8; ++guard) {
         d.evaluate(w, t);
         updateAngles(w);
@@ -280,12 +290,10 @@ std::vector<Event> Ladder::resolve(World& w, Dynamics& d, double t, double* loss
             events.push_back({t, pull->second, pull->first, hinge(pull->first).corner, {}});
             continue;
         }
-        capped = false;
+        unsettled = false;
         break;
     }
-    if (capped && error_.empty())
-        error_ = "the contacts at t = " + std::to_string(t) + " s could not be settled (" + std::to_string(events.size()) +
-                 " events at one instant)";
+    if (unsettled) capped(t, "the contacts (" + std::to_string(events.size()) + " events at one instant)");
     d.evaluate(w, t);
     updateAngles(w);
     for (Event& e : events) e.text = words(e.kind, e.hinge);

@@ -105,8 +105,21 @@ std::optional<WorldError> World::combine(ParticleId p, ParticleId q, bool consis
     pp.absorbed.push_back(q);
     particles_[q].mergedInto = p;
     regroup(touched);
-    if (consistent) makeConsistent(*this);
+    if (consistent) return closePins("combine");
     return std::nullopt;
+}
+
+// After a change of structure: the pins closed and the velocities made
+// consistent. The projection aims at 1e-12 m; a gap left beyond 1e-9 m (ten
+// times the default tolerance of a step's projection) is a projection that
+// failed, said in words. The structure has changed by then: a caller that
+// gets this error stops (the simulation keeps its last good frame).
+std::optional<WorldError> World::closePins(const char* operation) {
+    constexpr double kFailedGap = 1e-9;  // m
+    const ProjectionResult r = makeConsistent(*this);
+    if (r.converged || r.residual <= kFailedGap) return std::nullopt;
+    return WorldError{std::string(operation) + ": the pins could not be closed after the change of structure (gap " +
+                      std::to_string(r.residual) + " m after " + std::to_string(r.iterations) + " iterations)"};
 }
 
 std::optional<WorldError> World::separate(ParticleId p, bool consistent) {
@@ -122,7 +135,7 @@ std::optional<WorldError> World::separate(ParticleId p, bool consistent) {
     pp.at.resize(pp.at.size() - particles_[q].at.size());  // combine appended q's last
     particles_[q].mergedInto = -1;
     regroup(touched);
-    if (consistent) makeConsistent(*this);
+    if (consistent) return closePins("separate");
     return std::nullopt;
 }
 

@@ -127,6 +127,7 @@ public:
     ParticleId anchor(const Vec2& worldPoint);               // a point on the ground
     int addSpring(const Spring& s);
     int addRotaryDamper(const RotaryDamper& d);
+    void setRotaryDamping(int id, double damping) { dampers_[size_t(id)].damping = damping; }
     std::vector<AppliedLoad>& loads() { return loads_; }
     const std::vector<AppliedLoad>& loads() const { return loads_; }
     static constexpr PartId ground = 0;
@@ -141,6 +142,8 @@ public:
     // makeConsistent once at the end instead of once per combine).
     std::optional<WorldError> combine(ParticleId p, ParticleId q, bool consistent = true);
     // separate(p): undoes the last combine into p.
+    // Both also return an error, in words, if the projection after the
+    // change could not close the pins; the structure has changed then.
     std::optional<WorldError> separate(ParticleId p, bool consistent = true);
     bool isLive(ParticleId p) const;
     bool validParticle(ParticleId p) const { return p >= 0 && p < int(particles_.size()); }
@@ -210,6 +213,7 @@ public:
     long long structureVersion() const { return structureVersion_; }
 
 private:
+    std::optional<WorldError> closePins(const char* operation);
     std::optional<WorldError> checkParticle(ParticleId p) const;
     void regroup(const std::vector<int>& touchedBodies);
     std::vector<std::vector<PartId>> rigidGroups(const std::vector<PartId>& parts) const;

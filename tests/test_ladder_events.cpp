@@ -116,6 +116,52 @@ private slots:
         if (eventTolerance <= 1e-10) QVERIFY(std::abs(error) < 1e-10);
     }
 
+    // The same cantilever with a spring from a point above pulling block 1
+    // up at its centre: the contact carries what gravity and the spring
+    // together need, N = N0 * M / M0 with M the moment of gravity and spring
+    // about the pin and M0 that of gravity alone (N0 = m g L / 2T).
+    // The contact test once left springs and loads out and kept N0.
+    void lockedContactCarriesTheSpringsPullToo() {
+        const double k = 0.572;  // N/m: about 0.3 m g at the 0.1 m stretch
+        auto sim = simulate(flatHeldBlock(1.4, "90deg") +
+                            "springs: [{a: {body: world, local: [-0.06, 0.1]}, b: {body: 'block:1', local: [0, 0]}, "
+                            "stiffness: " + std::to_string(k) + ", rest_length: 0}]\n");
+        QVERIFY(sim);
+        const Run r = runUntil(*sim, 0.9);
+        QVERIFY(r.failure.empty());
+        QCOMPARE(sim->ladder()->hinge(1).mode, HingeMode::OpenLocked);
+        const World& w = sim->world();
+        const Vec2 p = sim->ladder()->cornerWorld(w, 0, sim->ladder()->hinge(1).corner);
+        const Vec2 c = w.partPose(sim->blockPart(1)).position;
+        const Vec2 spring = k * (Vec2(-0.06, 0.1) - c), weight = m * w.gravity;
+        const double expected = m * g * L / (2 * T) * (cross(c - p, weight) + cross(c - p, spring)) / cross(c - p, weight);
+        const double n = contactNow(*sim, 1).normal;
+        qInfo("N = %.9f N, by hand %.9f N (without the spring %.9f N)", n, expected, m * g * L / (2 * T));
+        QVERIFY2(std::abs(n / expected - 1) < 1e-6, qPrintable(QString("N = %1, by hand %2").arg(n).arg(expected)));
+    }
+
+    // A cut hinge has no ribbons, so no hinge friction either: block 1,
+    // falling and turning after its hinge is cut, loses nothing to the
+    // damper (it once kept acting across the cut).
+    void aCutHingeLosesItsDamper() {
+        auto sim = simulate("format: jacobs-ladder/1\n"
+                            "ladder: {blocks: 2, held: [0], hinges: {damping: 1e-3}, initial: {fold_angles: [1.2]}}\n"
+                            "script: [{at: 0.05, cut: {hinge: 1}}]\n");
+        QVERIFY(sim);
+        double lossAtCut = -1, omega0 = 0;
+        const Run r = runUntil(*sim, 0.2, [&](const Frame& f) {
+            if (f.time >= 0.05 && lossAtCut < 0) {
+                lossAtCut = f.energy.dampingLoss;
+                omega0 = sim->world().partVelocity(sim->blockPart(1)).angular;
+            }
+        });
+        QVERIFY(r.failure.empty());
+        QVERIFY(lossAtCut > 0);  // the damper worked while the hinge held
+        QVERIFY(std::abs(omega0) > 0.1);
+        QCOMPARE(sim->frame().energy.dampingLoss, lossAtCut);
+        QCOMPARE(sim->world().partVelocity(sim->blockPart(1)).angular, omega0);
+    }
+
     // Turned upright, the locked pair's contact unloads; when the hand stops
     // (its acceleration jumps to zero) the hanging block would need N = -m g/2:
     // it unlocks, then swings as a pendulum about the corner from phi = 0 at

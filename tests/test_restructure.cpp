@@ -1,6 +1,8 @@
 // labels: physics;engine
 // combine/separate: momentum is conserved, structure follows the paper's
 // meaning, and thousands of random restructures leave a valid world.
+#include "core/drive.h"
+#include "core/dynamics.h"
 #include "core/energy.h"
 #include "core/projection.h"
 #include "core/world.h"
@@ -127,6 +129,44 @@ private slots:
         const Momentum after = momentum(w);
         QVERIFY((after.linear - before.linear).norm() < 1e-15);
         QVERIFY(std::abs(after.angular - before.angular) < 1e-15);
+    }
+
+    // A spring on a particle that combine absorbed still pulls (at the shared
+    // point) and still stores energy: both the forces and the books once
+    // skipped it. Here a point joined to a box is pulled by a spring from a
+    // world anchor: the pair accelerates at F / (m_box + m_point).
+    void aSpringOnAnAbsorbedParticleStillPulls() {
+        World w;
+        w.gravity = Vec2::Zero();
+        const PartId box = w.addBox(0.02, Vec2(0.06, 0.012), 0.045, Pose{});
+        w.addPoint(0.005, Vec2(0.03, 0));
+        const ParticleId own = w.particleCount() - 1;
+        const ParticleId ground = w.anchor(Vec2(0.03, 0.1));
+        w.addSpring({ground, own, 40.0, 0.05, 0.0});  // stretched by 0.05 m: 2 N towards the anchor
+        QVERIFY(!w.combine(w.addParticle(box, Vec2(0.03, 0)), own));
+        QVERIFY(!w.isLive(own));
+        Dynamics d;
+        d.evaluate(w, 0);
+        const int b = w.part(box).body;
+        QVERIFY2(std::abs(w.a[3 * b + 1] - 2.0 / 0.025) < 1e-9, qPrintable(QString::number(w.a[3 * b + 1])));
+        QVERIFY(std::abs(energy(w).potential - 0.5 * 40 * 0.05 * 0.05) < 1e-15);
+    }
+
+    // A free box pinned by one end to a held box and then by its other end
+    // to another held box a metre away: no projection can close that second
+    // pin, and combine says so instead of returning as if it had.
+    void combineThatCannotCloseItsPinSaysSo() {
+        World w;
+        const PartId a = w.addBox(0.02, Vec2(0.012, 0.06), 0.045, Pose{});
+        const PartId c = w.addBox(0.02, Vec2(0.012, 0.06), 0.045, Pose{Vec2(0, -1), 0});
+        const PartId b = w.addBox(0.02, Vec2(0.012, 0.06), 0.045, Pose{Vec2(0, -0.06), 0});
+        w.hold(a, Drive(w.partPose(a)));
+        w.hold(c, Drive(w.partPose(c)));
+        QVERIFY(!w.combine(w.addParticle(a, Vec2(0, -0.03)), w.addParticle(b, Vec2(0, 0.03))));
+        const auto error = w.combine(w.addParticle(b, Vec2(0, -0.03)), w.addParticle(c, Vec2(0, 0.03)));
+        QVERIFY(error);
+        qInfo("%s", error->message.c_str());
+        QVERIFY(error->message.find("could not be closed") != std::string::npos);
     }
 
     void badIdsAreReportedAndChangeNothing() {
