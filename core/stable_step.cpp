@@ -26,6 +26,13 @@ double fastestVibration(const World& w, const Eigen::VectorXd& pinForces) {
     return std::sqrt(omega2);
 }
 
+double fastestTurn(const World& w) {
+    double omega = 0;
+    for (int b = 0; b < w.bodyCount(); ++b)
+        if (w.body(b).alive) omega = std::max(omega, std::abs(w.v[3 * b + 2]));
+    return omega;
+}
+
 double imaginaryStabilityLimit(Integrator integrator) {
     switch (integrator) {
     case Integrator::RK4: return 2 * std::sqrt(2.0);

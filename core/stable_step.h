@@ -18,6 +18,11 @@ namespace jl {
 // without rotational inertia (particles) do not count; 0 if nothing pulls.
 double fastestVibration(const World& w, const Eigen::VectorXd& pinForces);
 
+// The fastest any body turns, held ones included (rad/s). A step resolves a
+// turn only in small pieces: a hand spinning the top block at 100 turns a
+// second forces the ladder at that rate, stable step or not.
+double fastestTurn(const World& w);
+
 // The largest omega * dt for which the integrator does not amplify an
 // undamped oscillation (on the imaginary axis of its stability region):
 // 2 sqrt 2 for RK4, 2 for symplectic Euler, 0.9972 for Dormand-Prince 5(4)

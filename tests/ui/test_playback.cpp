@@ -191,10 +191,10 @@ private slots:
     }
 
     void aFailedSolvePausesAndSaysWhyWithTheLastGoodFrame() {
-        // Explicit Euler with 50 ms steps: the solver gives up within half a second.
+        // Explicit Euler with 10 ms steps: the solver gives up within half a second.
         jl::Scene scene = jltest::swingingLadder();
         scene.solver.integrator = jl::Integrator::ExplicitEuler;
-        scene.solver.step = 0.05;
+        scene.solver.step = 0.01;
         Fixture f(scene);
         f.window.setSpeed(4.0);
         f.sim->play();
@@ -219,7 +219,7 @@ private slots:
         QVERIFY(!box->isModal());
         QCOMPARE(box->informativeText(), QString::fromStdString(s->failure));
         // The step the run uses is on show too.
-        QVERIFY(f.window.findChild<QLabel*>("step")->text().contains("50 ms"));
+        QVERIFY(f.window.findChild<QLabel*>("step")->text().contains("10 ms"));
         // Play does nothing more until the scene changes.
         f.sim->play();
         QTest::qWait(200);
