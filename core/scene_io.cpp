@@ -3,9 +3,6 @@
 // this file: every failure becomes a diagnostic.
 #include "core/scene_io.h"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 #include <yaml-cpp/exceptions.h>
 #include <yaml-cpp/node/parse.h>
 
@@ -15,6 +12,7 @@
 #include <fstream>
 #include <new>
 
+#include "core/output_file.h"
 #include "core/problems.h"
 #include "core/scene_read.h"
 #include "core/yaml_prepass.h"
@@ -114,32 +112,7 @@ SceneLoad loadScene(const std::string& path, const LoadLimits& limits) {
     }
 }
 
-namespace {
-
-bool writeAll(int fd, const std::string& text) {
-    std::size_t done = 0;
-    while (done < text.size()) {
-        const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) return false;
-        done += static_cast<std::size_t>(n);
-    }
-    return true;
-}
-
-// The directory entry of the rename must reach the disk too, or a crash
-// could bring back the old file after we reported success.
-void syncDirectory(const std::string& dir) {
-    const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY);
-    if (fd < 0) return;
-    ::fsync(fd);
-    ::close(fd);
-}
-
-}  // namespace
-
 std::optional<Diagnostic> saveScene(const Scene& scene, const std::string& path) {
-    namespace fs = std::filesystem;
     std::string text;
     try {
         text = sceneToYaml(scene);
@@ -147,29 +120,8 @@ std::optional<Diagnostic> saveScene(const Scene& scene, const std::string& path)
         return Diagnostic{path, 0, 0, std::string("cannot save: ") + e.what()};
     }
     if (text.empty()) return Diagnostic{path, 0, 0, "cannot save: the scene could not be written as YAML"};
-    const fs::path target(path);
-    const std::string dir = target.has_parent_path() ? target.parent_path().string() : std::string(".");
-    // A hidden name next to the target, so the rename stays in one file system.
-    std::string name = target.filename().string();
-    name.insert(0, 1, '.');
-    name.append(".saving-XXXXXX");
-    std::string temp = (fs::path(dir) / name).string();
-    const int fd = ::mkstemp(temp.data());
-    if (fd < 0)
-        return Diagnostic{path, 0, 0, "cannot save: cannot create a temporary file in " + dir + ": " + std::strerror(errno)};
-    // Keep the permissions of the file being replaced; new files get 0644.
-    struct stat old {};
-    ::fchmod(fd, ::stat(path.c_str(), &old) == 0 ? (old.st_mode & 07777) : 0644);
-    std::string failure;
-    int error = 0;
-    if (!writeAll(fd, text) || ::fsync(fd) != 0) failure = "cannot write the file", error = errno;
-    if (::close(fd) != 0 && failure.empty()) failure = "cannot write the file", error = errno;
-    if (failure.empty() && ::rename(temp.c_str(), path.c_str()) != 0) failure = "cannot replace the file", error = errno;
-    if (!failure.empty()) {
-        ::unlink(temp.c_str());
-        return Diagnostic{path, 0, 0, "cannot save: " + failure + ": " + std::strerror(error)};
-    }
-    syncDirectory(dir);
+    OutputFile file;
+    if (!file.open(path) || !file.write(text) || !file.commit()) return Diagnostic{path, 0, 0, "cannot save: " + file.error()};
     return std::nullopt;
 }
 

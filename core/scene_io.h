@@ -39,8 +39,9 @@ SceneLoad parseScene(std::string_view text, const std::string& fileNameForMessag
 // defaults (always `format`), numbers that read back bit for bit.
 std::string sceneToYaml(const Scene& scene);
 
-// Writes atomically: a temporary file in the same directory, flushed to disk,
-// then renamed over `path`. On failure the old file is untouched and the
+// Writes atomically (core/output_file.h): a temporary file in the same
+// directory, synced to disk, then renamed over `path` (a symbolic link stays
+// a link to the new file). On failure the old file is untouched and the
 // returned diagnostic says why.
 std::optional<Diagnostic> saveScene(const Scene& scene, const std::string& path);
 

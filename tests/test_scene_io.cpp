@@ -6,12 +6,15 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
 #include <sstream>
 
+#include "core/output_file.h"
 #include "core/scene_io.h"
 
 namespace fs = std::filesystem;
@@ -185,6 +188,63 @@ private slots:
         ::chmod(locked.c_str(), 0755);
         QVERIFY(error);
         QCOMPARE(readBytes(locked / "scene.yaml"), std::string("old contents"));
+    }
+
+    void saveThroughALinkReplacesWhatItPointsTo() {
+        QTemporaryDir dir;
+        const fs::path root(dir.path().toStdString());
+        writeBytes(root / "real.yaml", "old");
+        fs::create_symlink("real.yaml", root / "link.yaml");
+        QVERIFY(!saveScene(generalScene(), (root / "link.yaml").string()));
+        QVERIFY(fs::is_symlink(root / "link.yaml"));
+        QCOMPARE(readBytes(root / "real.yaml"), sceneToYaml(generalScene()));
+        QCOMPARE(std::distance(fs::directory_iterator(root), fs::directory_iterator{}), 2L);
+    }
+
+    void outputFileShowsNothingUntilCommitted() {
+        QTemporaryDir dir;
+        const fs::path root(dir.path().toStdString());
+        const fs::path path = root / "out.csv";
+        writeBytes(path, "old\n");
+        {
+            OutputFile out;
+            QVERIFY(out.open(path.string()));
+            QVERIFY(!out.direct());
+            QVERIFY(out.write("new\n") && out.flush());
+            QCOMPARE(readBytes(path), std::string("old\n"));
+            QCOMPARE(readBytes(out.temporary()), std::string("new\n"));  // a killed process leaves this
+            QVERIFY(out.commit());
+        }
+        QCOMPARE(readBytes(path), std::string("new\n"));
+        {
+            OutputFile out;  // abandoned: the temporary goes, the file stays
+            QVERIFY(out.open(path.string()) && out.write("lost\n") && out.flush());
+        }
+        QCOMPARE(readBytes(path), std::string("new\n"));
+        {
+            OutputFile out;  // kept aside: the file stays, the partial result is kept
+            QVERIFY(out.open(path.string()) && out.write("partial\n"));
+            QVERIFY(out.keepAs(path.string() + ".partial"));
+        }
+        QCOMPARE(readBytes(path), std::string("new\n"));
+        QCOMPARE(readBytes(path.string() + ".partial"), std::string("partial\n"));
+        QCOMPARE(std::distance(fs::directory_iterator(root), fs::directory_iterator{}), 2L);
+    }
+
+    void outputFileChecksEveryWrite() {
+        OutputFile full;
+        QVERIFY(full.open("/dev/full"));
+        QVERIFY(full.direct());
+        full.write(std::string(100, 'x'));
+        QVERIFY(!full.commit());
+        QVERIFY2(full.error().find(std::strerror(ENOSPC)) != std::string::npos, full.error().c_str());
+        OutputFile none;
+        QVERIFY(!none.open("/no/such/directory/out.csv"));
+        QVERIFY(none.error().find("/no/such/directory") != std::string::npos);
+        QTemporaryDir dir;
+        OutputFile folder;
+        QVERIFY(!folder.open(dir.path().toStdString()));
+        QVERIFY(!folder.write("x"));
     }
 
     void badFilesReportTheExpectedErrors() {
