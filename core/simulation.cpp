@@ -2,6 +2,7 @@
 
 #include "core/energy.h"
 #include "core/motion.h"
+#include "core/projection.h"
 
 #include <algorithm>
 #include <cmath>
@@ -171,6 +172,24 @@ double Simulation::nextScheduledTime() const {
     return next;
 }
 
+// The hand takes hold of a block where it is. A moving block stops dead:
+// an impact on everything joined to it (a held block has infinite mass),
+// taken up by the pins' impulses and booked like the ladder's impacts: what
+// the held frame's kinetic energy lost is dissipated, the rest is the hand's
+// work. A held block is outside the books (its energy is the hand's), so
+// its own kinetic and potential energy leave them as the hand's work too.
+// The force tests follow (applyDueInputs runs them after any action).
+void Simulation::grab(PartId part) {
+    const double before = energy(world_).total(), relBefore = heldFrameKinetic(world_);
+    world_.hold(part, Drive(world_.partPose(part)));
+    world_.updateKinematics(t_);
+    projectVelocities(world_, dynamics_.solver());
+    const double dissipated = std::max(0.0, relBefore - heldFrameKinetic(world_));
+    impactLoss_ += dissipated;
+    impactHeldWork_ += energy(world_).total() - before + dissipated;
+    if (ladder_) ladder_->updateAngles(world_);
+}
+
 void Simulation::applyScriptAction(const ScriptAction& a) {
     using K = ScriptAction::Kind;
     const bool blockOk = a.block >= 0 && a.block < blockCount();
@@ -180,7 +199,7 @@ void Simulation::applyScriptAction(const ScriptAction& a) {
     switch (a.kind) {
     case K::Turn:
     case K::Move: {
-        if (!world_.isHeld(part)) world_.hold(part, Drive(world_.partPose(part)));
+        if (!world_.isHeld(part)) grab(part);
         const double turn = a.kind == K::Turn ? a.angle : 0.0;
         const Vec2 offset = a.kind == K::Move ? vec(a.offset) : Vec2::Zero();
         world_.drive(part)->add({a.at, a.duration, offset, turn});
@@ -188,13 +207,18 @@ void Simulation::applyScriptAction(const ScriptAction& a) {
         break;
     }
     case K::Hold:
-        world_.hold(part, Drive(world_.partPose(part)));
+        grab(part);
         e.text = "the hand holds block " + std::to_string(a.block);
         break;
-    case K::Release:
+    case K::Release: {
+        // The block comes back into the books with its energy, which the
+        // hand held until now: the hand's work.
+        const double before = energy(world_).total();
         world_.release(part);
+        impactHeldWork_ += energy(world_).total() - before;
         e.text = "the hand lets go of block " + std::to_string(a.block);
         break;
+    }
     case K::Push: {
         // The impulse's work is P . (v- + v+)/2 at the point it acts on; the
         // pins carry the rest of the change of kinetic energy into held

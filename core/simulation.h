@@ -93,6 +93,7 @@ private:
     double nextScheduledTime() const;
     void applyDueInputs();
     void applyScriptAction(const ScriptAction& a);
+    void grab(PartId part);
     // A scripted join; the reason if refused (the world unchanged then).
     std::optional<std::string> join(const ScriptAction& a);
     void applyDragSample(const DragRecord& d, const DragRecord::Sample& s);
@@ -106,6 +107,7 @@ private:
     bool booksDiverged() const;
     double fixedStep();
     bool retryWithSmallerStep();
+    std::string blowUpAdvice(double h) const;
     void settleHolds(double limit);
     enum class Trial { ClosedAgain, Kept, Undecided };
     Trial tryLettingGo(int j, double limit);

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 
 namespace jl {
@@ -181,6 +182,32 @@ bool Simulation::retryWithSmallerStep() {
     return true;
 }
 
+namespace {
+
+std::string gapText(double metres) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g m", metres);
+    return text;
+}
+
+}  // namespace
+
+// What to try after a step blew up. The scene's own step may be too long
+// for the integrator; the engine's own step, halved ten times already, is
+// not the cause: something the constraints cannot follow is (two held
+// blocks pulling the ladder apart, a load beyond the blocks' strength).
+std::string Simulation::blowUpAdvice(double h) const {
+    char step[32];
+    std::snprintf(step, sizeof step, "%.3g s", h);
+    if (scene_.solver.step > 0)
+        return std::string("the step ") + step +
+               " is too large for this integrator here (a fast vibration grows at every step); try a smaller step, "
+               "or leave the step to the engine, or the adaptive integrator";
+    return "it still does at a step of " + std::string(step) + ", halved " + std::to_string(stats_.stepHalvings) +
+           " times, so the step is not the cause: look for held blocks driven against each other or forces "
+           "the ladder cannot follow";
+}
+
 bool Simulation::takeStep(double limit) {
     if (!failure_.empty()) return false;
     const SolverSpec& solver = scene_.solver;
@@ -199,12 +226,9 @@ bool Simulation::takeStep(double limit) {
     MotionStep m = advanceAndProject(world_, dynamics_, stepper_, t_, h, ledger_, solver.projectionTolerance);
     if (!m.ok()) {
         if (retryWithSmallerStep()) return true;
-        fail(m.step.finite ? "the projection onto the pins did not converge (residual " +
-                                 std::to_string(m.projection.residual) + " m after " +
-                                 std::to_string(m.projection.iterations) +
-                                 " iterations): the motion is blowing up, the step " + std::to_string(h) +
-                                 " s is too large for this integrator here; try a smaller step"
-                           : "the step produced a non-finite state (the integrator is unstable at this step size)");
+        fail(m.step.finite ? "the projection onto the pins did not converge (gap " + gapText(m.projection.residual) +
+                                 " after " + std::to_string(m.projection.iterations) + " iterations): " + blowUpAdvice(chosen)
+                           : "the step produced a non-finite state: " + blowUpAdvice(chosen));
         return false;
     }
     double taken = m.step.taken;
@@ -213,9 +237,7 @@ bool Simulation::takeStep(double limit) {
         if (retryWithSmallerStep()) return true;
         restoreStepStart();
         world_.updateKinematics(t_);
-        fail("the energy no longer balances (the motion is blowing up): the step " + std::to_string(h) +
-             " s is too large for this integrator here (a fast vibration grows at every step); try a smaller "
-             "step, or the adaptive integrator, which finds one itself at a higher cost");
+        fail("the energy no longer balances (the motion is running away): " + blowUpAdvice(chosen));
         return false;
     }
     if (ladder_) {
