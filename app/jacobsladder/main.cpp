@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
     QApplication app(argc, argv);
     QApplication::setOrganizationName("JacobsLadderStudio");
     QApplication::setApplicationName("Jacob's Ladder Studio");
-    QApplication::setApplicationVersion("0.1.0");
+    QApplication::setApplicationVersion(JL_VERSION);
 
     QCommandLineParser parser;
     parser.setApplicationDescription("Build, simulate and teach with a virtual Jacob's ladder.");
