@@ -66,6 +66,24 @@ void syncDirectory(const std::string& dir) {
 
 }  // namespace
 
+std::string resolvedPath(const std::string& path) {
+    std::error_code ec;
+    fs::path p = fs::absolute(path, ec);
+    if (ec) p = path;
+    for (int links = 0; links < 40 && fs::is_symlink(p, ec); ++links) {
+        const fs::path to = fs::read_symlink(p, ec);
+        if (ec) break;
+        p = to.is_absolute() ? to : p.parent_path() / to;
+    }
+    const fs::path resolved = fs::weakly_canonical(p, ec);
+    return ec ? p.string() : resolved.string();
+}
+
+bool writtenDirectly(const std::string& path) {
+    struct stat st {};
+    return openDescriptor(path) || (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode));
+}
+
 OutputFile::OutputFile(OutputFile&& other) noexcept { *this = std::move(other); }
 
 OutputFile& OutputFile::operator=(OutputFile&& other) noexcept {
@@ -109,11 +127,7 @@ bool OutputFile::open(const std::string& path) {
     }
     // Replacing a symbolic link would turn it into a file: replace what it points to.
     struct stat link {};
-    if (::lstat(path.c_str(), &link) == 0 && S_ISLNK(link.st_mode)) {
-        std::error_code ec;
-        const fs::path resolved = fs::weakly_canonical(path, ec);
-        if (!ec) target_ = resolved.string();
-    }
+    if (::lstat(path.c_str(), &link) == 0 && S_ISLNK(link.st_mode)) target_ = resolvedPath(path);
     const std::string dir = directoryOf(target_);
     std::string temporary = (fs::path(dir) / (fs::path(target_).filename().string() + ".partial-XXXXXX")).string();
     fd_ = ::mkostemp(temporary.data(), O_CLOEXEC);

@@ -1,7 +1,9 @@
 // jladder export: run a scene and write its poses, energies and events.
 #include "app/jladder/commands.h"
 #include "app/jladder/options.h"
+#include "app/jladder/interruption.h"
 #include "app/jladder/recording.h"
+#include "app/jladder/run_outputs.h"
 #include "core/scene_io.h"
 
 #include <cstdio>
@@ -15,18 +17,27 @@ int exportFrames(const std::vector<std::string>& args) {
                    "                      [--events EVENTS.json]\n"
                    "Runs SCENE headless (to T, default the scene's duration) and writes block poses\n"
                    "(t,block,x,y,theta), energies (kinetic, potential, total, work by the hand and\n"
-                   "drags, losses, balance) every DT (default the scene's frame interval) and events.\n",
+                   "drags, losses, balance) every DT (default the scene's frame interval) and events.\n"
+                   "Files are written as the run goes and replace the old ones only when it\n"
+                   "completes; a run that fails or is interrupted leaves them as they were and\n"
+                   "what it computed in FILE.partial. No output may be the scene or another output.\n",
                    stdout);
         return 0;
     }
     if (o.error.empty() && o.positional.size() != 1) o.error = "give exactly one scene file";
+    RunOutputs outputs;
+    if (auto f = o.get("--csv")) outputs.add(RunOutputs::Table::Poses, "--csv", *f);
+    if (auto f = o.get("--energy")) outputs.add(RunOutputs::Table::Energy, "--energy", *f);
+    if (auto f = o.get("--events")) outputs.add(RunOutputs::Table::Events, "--events", *f);
     if (o.error.empty() && !o.get("--csv") && !o.get("--energy") && !o.get("--events"))
         o.error = "nothing to write: give --csv, --energy or --events";
+    if (o.error.empty()) o.error = outputs.clash(o.positional.front());
     if (!o.error.empty()) {
         std::fprintf(stderr, "jladder export: %s\n", o.error.c_str());
         return 2;
     }
-    SceneLoad load = loadScene(o.positional.front());
+    const std::string path = o.positional.front();
+    SceneLoad load = loadScene(path);
     for (const Diagnostic& d : load.errors) std::fprintf(stderr, "%s\n", d.format().c_str());
     if (!load.scene) return 1;
     const double until = o.get("--until") ? o.number("--until").value_or(0) : load.scene->duration;
@@ -36,17 +47,18 @@ int exportFrames(const std::vector<std::string>& args) {
         return 2;
     }
     Simulation::Built built = Simulation::build(*load.scene);
-    for (const std::string& e : built.errors) std::fprintf(stderr, "%s: %s\n", o.positional.front().c_str(), e.c_str());
+    for (const std::string& e : built.errors) std::fprintf(stderr, "%s: %s\n", path.c_str(), e.c_str());
     if (!built.simulation) return 1;
-    const Recording r = record(*built.simulation, until, every, true);
-    std::string error;
-    bool ok = r.failure.empty();
-    if (auto f = o.get("--csv")) ok = writePosesCsv(r, *f, error) && ok;
-    if (auto f = o.get("--energy")) ok = writeEnergyCsv(r, *f, error) && ok;
-    if (auto f = o.get("--events")) ok = writeEventsJson(r, *f, error) && ok;
-    if (!error.empty()) std::fprintf(stderr, "jladder export: %s\n", error.c_str());
-    if (!r.failure.empty()) std::fprintf(stderr, "the run failed %s\n", r.failure.c_str());
-    return ok ? 0 : 1;
+    if (!outputs.open()) {
+        std::fprintf(stderr, "jladder export: %s\n", outputs.error().c_str());
+        return 1;
+    }
+    catchInterruptions();
+    const Recording r = record(*built.simulation, until, every, &outputs);
+    const bool written = outputs.finish(r.complete(), "jladder export");
+    if (!r.failure.empty()) std::fprintf(stderr, "%s: the run failed %s\n", path.c_str(), r.failure.c_str());
+    if (r.interrupted) endByInterruption();
+    return r.complete() && written ? 0 : 1;
 }
 
 }  // namespace jl::cli

@@ -76,6 +76,13 @@ bool applySolverOptions(Options& o, SolverSpec& solver) {
     return o.error.empty();
 }
 
+std::string jsonNumber(double x) {
+    if (!std::isfinite(x)) return "null";
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.17g", x);
+    return buffer;
+}
+
 std::string jsonString(const std::string& s) {
     std::string out = "\"";
     for (char c : s) {

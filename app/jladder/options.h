@@ -32,5 +32,8 @@ Options parse(const std::vector<std::string>& args, const std::vector<std::strin
 bool applySolverOptions(Options& o, SolverSpec& solver);
 
 std::string jsonString(const std::string& s);
+// A number as JSON reads it back exactly; null when it is not finite (JSON
+// has no NaN or infinity, and a bare "nan" breaks every parser).
+std::string jsonNumber(double x);
 
 }  // namespace jl::cli

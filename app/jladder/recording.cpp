@@ -1,49 +1,58 @@
 #include "app/jladder/recording.h"
 
+#include "app/jladder/interruption.h"
 #include "app/jladder/options.h"
-#include "core/frame_csv.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <fstream>
+#include <csignal>
 #include <sstream>
 
 namespace jl::cli {
 
 namespace {
 
-void keep(Recording& r, Frame f, bool store) {
-    for (Event& e : f.events) r.events.push_back(std::move(e));
-    f.events.clear();
+void account(Recording& r, const Frame& f) {
     r.worstBalance = std::max(r.worstBalance, std::abs(f.energy.balance()));
     r.energyEnd = f.energy.total();
-    if (store) r.frames.push_back(std::move(f));
 }
 
-std::string number(double x) {
-    std::ostringstream s;
-    s.precision(17);
-    s << x;
-    return s.str();
-}
+// The first multiple of `every` after t (a step may pass several): computed,
+// not counted up to, so that a step far longer than `every` costs nothing.
+double nextMultiple(double t, double every) { return every * (std::floor((t + 1e-12) / every) + 1); }
 
 }  // namespace
 
-Recording record(Simulation& sim, double until, double every, bool keepFrames) {
+Recording record(Simulation& sim, double until, double every, RecordTarget* target) {
     Recording r;
-    Frame first = sim.frame();
+    const auto handOn = [&](const std::vector<Event>& events) {
+        for (const Event& e : events) {
+            ++r.events;
+            r.targetFailed = r.targetFailed || (target && !target->event(e));
+        }
+    };
+    const Frame first = sim.frame();
+    handOn(first.events);
     r.energyStart = first.energy.total();
-    keep(r, std::move(first), keepFrames);
+    account(r, first);
+    r.targetFailed = r.targetFailed || (target && !target->frame(first));
     double nextFrame = every;
     const auto start = std::chrono::steady_clock::now();
-    while (sim.time() < until && sim.failure().empty()) {
+    while (!r.targetFailed && sim.time() < until && sim.failure().empty()) {
+        if ((r.interrupted = interruption())) break;
         if (!sim.stepOnce()) break;
-        for (Event& e : sim.takeEvents()) r.events.push_back(std::move(e));
+        handOn(sim.takeEvents());
         r.worstResidual = std::max(r.worstResidual, sim.lastResidual());
         const bool due = every > 0 && sim.time() >= nextFrame - 1e-12;
-        if (due || sim.time() >= until) keep(r, sim.frame(), keepFrames && due);
-        while (every > 0 && nextFrame <= sim.time() + 1e-12) nextFrame += every;
+        if (!due && sim.time() < until) continue;
+        const Frame f = sim.frame();
+        handOn(f.events);
+        account(r, f);
+        if (due) {
+            r.targetFailed = r.targetFailed || (target && !target->frame(f));
+            nextFrame = nextMultiple(sim.time(), every);
+        }
     }
     const Frame last = sim.frame();
     r.failure = last.failure;
@@ -55,36 +64,7 @@ Recording record(Simulation& sim, double until, double every, bool keepFrames) {
     return r;
 }
 
-// The tables themselves are core's (core/frame_csv.h): the desktop program writes the same.
-bool writePosesCsv(const Recording& r, const std::string& path, std::string& error) {
-    std::ofstream out(path);
-    if (out) jl::writePosesCsv(out, r.frames);
-    if (!out) error = path + ": cannot write";
-    return bool(out);
-}
-
-bool writeEnergyCsv(const Recording& r, const std::string& path, std::string& error) {
-    std::ofstream out(path);
-    if (out) jl::writeEnergyCsv(out, r.frames);
-    if (!out) error = path + ": cannot write";
-    return bool(out);
-}
-
-bool writeEventsJson(const Recording& r, const std::string& path, std::string& error) {
-    std::ofstream out(path);
-    if (!out) {
-        error = path + ": cannot write";
-        return false;
-    }
-    out << "[";
-    for (size_t i = 0; i < r.events.size(); ++i) {
-        const Event& e = r.events[i];
-        out << (i ? ",\n " : "\n ") << "{\"t\":" << number(e.time) << ",\"hinge\":" << e.hinge << ",\"event\":\""
-            << toString(e.kind) << "\",\"corner\":" << e.corner << ",\"text\":" << jsonString(e.text) << "}";
-    }
-    out << "\n]\n";
-    return bool(out);
-}
+namespace {
 
 // What step the run took: the scene's, or the engine's choice (its range,
 // and how often a step that blew up made it halve the rest).
@@ -94,19 +74,30 @@ std::string stepJson(const SolverFrame& f) {
         s << "{\"chosen_by\":\"scene\"}";
         return s.str();
     }
-    s << "{\"chosen_by\":\"engine\",\"smallest\":" << number(f.smallestStep) << ",\"largest\":" << number(f.largestStep)
-      << ",\"halvings\":" << f.stepHalvings << "}";
+    s << "{\"chosen_by\":\"engine\",\"smallest\":" << jsonNumber(f.smallestStep)
+      << ",\"largest\":" << jsonNumber(f.largestStep) << ",\"halvings\":" << f.stepHalvings << "}";
     return s.str();
 }
 
+// Why the run ended before `until`, in words, or null.
+std::string failureJson(const Recording& r) {
+    if (!r.failure.empty()) return jsonString(r.failure);
+    if (r.interrupted)
+        return jsonString(std::string("interrupted by ") + (r.interrupted == SIGINT ? "SIGINT" : "SIGTERM") +
+                          " at t = " + std::to_string(r.time) + " s");
+    if (r.targetFailed) return jsonString("an output could not be written at t = " + std::to_string(r.time) + " s");
+    return "null";
+}
+
+}  // namespace
+
 std::string summaryJson(const Recording& r, const std::string& scenePath) {
     std::ostringstream s;
-    s << "{\"scene\":" << jsonString(scenePath) << ",\"time\":" << number(r.time) << ",\"steps\":" << r.steps
-      << ",\"evaluations\":" << r.evaluations << ",\"step\":" << stepJson(r.solver) << ",\"events\":" << r.events.size()
-      << ",\"energy_start\":" << number(r.energyStart) << ",\"energy_end\":" << number(r.energyEnd)
-      << ",\"worst_energy_balance\":" << number(r.worstBalance) << ",\"max_residual\":" << number(r.worstResidual)
-      << ",\"wall_seconds\":" << number(r.wallSeconds)
-      << ",\"failure\":" << (r.failure.empty() ? std::string("null") : jsonString(r.failure)) << "}";
+    s << "{\"scene\":" << jsonString(scenePath) << ",\"time\":" << jsonNumber(r.time) << ",\"steps\":" << r.steps
+      << ",\"evaluations\":" << r.evaluations << ",\"step\":" << stepJson(r.solver) << ",\"events\":" << r.events
+      << ",\"energy_start\":" << jsonNumber(r.energyStart) << ",\"energy_end\":" << jsonNumber(r.energyEnd)
+      << ",\"worst_energy_balance\":" << jsonNumber(r.worstBalance) << ",\"max_residual\":" << jsonNumber(r.worstResidual)
+      << ",\"wall_seconds\":" << jsonNumber(r.wallSeconds) << ",\"failure\":" << failureJson(r) << "}";
     return s.str();
 }
 

@@ -1,33 +1,43 @@
-// Runs a scene headless and records what the command-line tool writes:
-// block poses (CSV), energies (CSV), events (JSON) and a JSON summary.
+// Runs a scene headless and records what the command-line tool reports: a
+// JSON summary, and frames and events handed on as the run produces them
+// (app/jladder/run_outputs.h writes them), so that memory does not grow
+// with the length of the run.
 #pragma once
 
 #include "core/frame.h"
 #include "core/simulation.h"
 
 #include <string>
-#include <vector>
 
 namespace jl::cli {
 
-struct Recording {
-    std::vector<Frame> frames;     // at the requested interval (first step at or after each multiple)
-    std::vector<Event> events;     // every event of the run
-    double energyStart = 0, energyEnd = 0, worstBalance = 0, worstResidual = 0, wallSeconds = 0;
-    double time = 0;
-    long long steps = 0, evaluations = 0;
-    SolverFrame solver;            // the last frame's statistics (the step the engine chose among them)
-    std::string failure;
+// Where a recording's frames and events go as they come; false from either
+// stops the run (an output could not be written).
+class RecordTarget {
+public:
+    virtual ~RecordTarget() = default;
+    virtual bool frame(const Frame& f) = 0;
+    virtual bool event(const Event& e) = 0;
 };
 
-// Runs `sim` to `until`, collecting every event and the largest pin gap
-// after every step, and a frame (energy books checked) every `every`
-// seconds; the frames are kept if `keepFrames`.
-Recording record(Simulation& sim, double until, double every, bool keepFrames);
+struct Recording {
+    double energyStart = 0, energyEnd = 0, worstBalance = 0, worstResidual = 0, wallSeconds = 0;
+    double time = 0;
+    long long steps = 0, evaluations = 0, events = 0;
+    SolverFrame solver;            // the last frame's statistics (the step the engine chose among them)
+    std::string failure;           // the engine's
+    int interrupted = 0;           // the signal that ended the run early, or 0
+    bool targetFailed = false;     // the target refused a frame or an event
+    bool complete() const { return failure.empty() && interrupted == 0 && !targetFailed; }
+};
 
-bool writePosesCsv(const Recording& r, const std::string& path, std::string& error);
-bool writeEnergyCsv(const Recording& r, const std::string& path, std::string& error);
-bool writeEventsJson(const Recording& r, const std::string& path, std::string& error);
+// Runs `sim` to `until`, handing every event to `target` and a frame at t = 0
+// and then at the first step at or after each multiple of `every` seconds
+// (energy books checked on each), and keeping the largest pin gap after every
+// step. Ends early on a failure, a refusal of the target or an interruption
+// (app/jladder/interruption.h).
+Recording record(Simulation& sim, double until, double every, RecordTarget* target);
+
 std::string summaryJson(const Recording& r, const std::string& scenePath);
 
 }  // namespace jl::cli

@@ -1,10 +1,14 @@
 // jladder run: simulate a scene headless and report in JSON.
 #include "app/jladder/commands.h"
 #include "app/jladder/options.h"
+#include "app/jladder/interruption.h"
 #include "app/jladder/recording.h"
+#include "app/jladder/run_outputs.h"
 #include "core/scene_io.h"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
 
 namespace jl::cli {
@@ -26,7 +30,13 @@ const char* kRunHelp =
     "  --step DT            fixed step (s)\n"
     "  --tolerance TOL      adaptive integrator's tolerance\n"
     "  --event-policy P     located | end-of-step\n"
-    "exit status: 0 on success, 1 if the scene is invalid or the run failed, 2 on bad arguments\n";
+    "\n"
+    "Files are written as the run goes, through a temporary beside each, and replace\n"
+    "the old ones only when the run completes; a run that fails or is interrupted\n"
+    "(Ctrl-C) leaves them as they were and what it computed in FILE.partial. No\n"
+    "output may be the scene file or another output.\n"
+    "exit status: 0 on success, 1 if the scene is invalid, the run failed or an output\n"
+    "could not be written, 2 on bad arguments; killed by the signal if interrupted\n";
 
 }  // namespace
 
@@ -42,6 +52,10 @@ int run(const std::vector<std::string>& args) {
     const auto until = o.number("--until");
     if (o.error.empty() && o.positional.size() != 1) o.error = "give exactly one scene file";
     if (o.error.empty() && !until) o.error = "--until T is required";
+    RunOutputs outputs;
+    if (auto f = o.get("--events")) outputs.add(RunOutputs::Table::Events, "--events", *f);
+    if (auto f = o.get("--frames")) outputs.add(RunOutputs::Table::Poses, "--frames", *f);
+    if (o.error.empty()) o.error = outputs.clash(o.positional.front());
     if (!o.error.empty()) {
         std::fprintf(stderr, "jladder run: %s\n", o.error.c_str());
         return 2;
@@ -63,13 +77,20 @@ int run(const std::vector<std::string>& args) {
     for (const std::string& e : built.errors) std::fprintf(stderr, "%s: %s\n", path.c_str(), e.c_str());
     if (!built.simulation) return 1;
 
-    const Recording r = record(*built.simulation, *until, every, o.get("--frames").has_value());
-    std::string error;
-    if (auto f = o.get("--events"); f && !writeEventsJson(r, *f, error)) std::fprintf(stderr, "%s\n", error.c_str());
-    if (auto f = o.get("--frames"); f && !writePosesCsv(r, *f, error)) std::fprintf(stderr, "%s\n", error.c_str());
-    std::cout << summaryJson(r, path) << std::endl;
+    if (!outputs.open()) {
+        std::fprintf(stderr, "jladder run: %s\n", outputs.error().c_str());
+        return 1;
+    }
+    catchInterruptions();
+    const Recording r = record(*built.simulation, *until, every, &outputs);
+    const bool written = outputs.finish(r.complete(), "jladder run");
+    std::cout << summaryJson(r, path) << '\n';
+    std::cout.flush();
+    const bool summaryWritten = std::cout.good() && std::fflush(stdout) == 0;
+    if (!summaryWritten) std::fprintf(stderr, "jladder run: cannot write the summary: %s\n", std::strerror(errno));
     if (!r.failure.empty()) std::fprintf(stderr, "%s: the run failed %s\n", path.c_str(), r.failure.c_str());
-    return r.failure.empty() && error.empty() ? 0 : 1;
+    if (r.interrupted) endByInterruption();
+    return r.complete() && written && summaryWritten ? 0 : 1;
 }
 
 }  // namespace jl::cli

@@ -1,0 +1,129 @@
+#include "app/jladder/run_outputs.h"
+
+#include "app/jladder/options.h"
+#include "core/frame_csv.h"
+
+#include <cstdio>
+#include <filesystem>
+
+namespace jl::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Two names for one file: the same file (through links and hard links), or,
+// for files not made yet, the same name once links are followed.
+bool sameFile(const std::string& a, const std::string& b) {
+    std::error_code ec;
+    const bool aExists = fs::exists(a, ec), bExists = fs::exists(b, ec);
+    if (aExists && bExists) return fs::equivalent(a, b, ec) && !ec;
+    return !aExists && !bExists && resolvedPath(a) == resolvedPath(b);
+}
+
+std::string eventJson(const Event& e) {
+    return "{\"t\":" + jsonNumber(e.time) + ",\"hinge\":" + std::to_string(e.hinge) + ",\"event\":\"" +
+           toString(e.kind) + "\",\"corner\":" + std::to_string(e.corner) + ",\"text\":" + jsonString(e.text) + "}";
+}
+
+}  // namespace
+
+void RunOutputs::add(Table table, const std::string& option, const std::string& path) {
+    outputs_.push_back({table, option, path, {}, true});
+}
+
+std::string RunOutputs::clash(const std::string& input) const {
+    for (std::size_t i = 0; i < outputs_.size(); ++i) {
+        const Output& o = outputs_[i];
+        if (sameFile(o.path, input))
+            return o.option + " " + o.path + " is the scene file " + input + "; writing it would destroy the scene";
+        // Two outputs written straight into one device or pipe lose nothing;
+        // a rename of one over the other would.
+        for (std::size_t k = 0; k < i; ++k)
+            if (sameFile(o.path, outputs_[k].path) && !(writtenDirectly(o.path) && writtenDirectly(outputs_[k].path)))
+                return outputs_[k].option + " and " + o.option + " name the same file (" + o.path +
+                       "); one would overwrite the other, give each its own";
+    }
+    return {};
+}
+
+bool RunOutputs::open() {
+    for (Output& o : outputs_) {
+        if (!o.file.open(o.path)) {
+            error_ = o.path + ": " + o.file.error();
+            return false;
+        }
+        text_.str({});
+        switch (o.table) {
+            case Table::Poses: writePosesCsvHeader(text_); break;
+            case Table::Energy: writeEnergyCsvHeader(text_); break;
+            case Table::Events: text_ << "["; break;
+        }
+        if (!put(o, text_.str())) return false;
+    }
+    return true;
+}
+
+bool RunOutputs::wantsFrames() const {
+    for (const Output& o : outputs_)
+        if (o.table != Table::Events) return true;
+    return false;
+}
+
+// Every piece goes to the system at once: a killed run then leaves every
+// frame it wrote in the temporary.
+bool RunOutputs::put(Output& o, const std::string& text) {
+    if (o.file.write(text) && o.file.flush()) return true;
+    if (error_.empty()) error_ = o.path + ": " + o.file.error();
+    return false;
+}
+
+bool RunOutputs::frame(const Frame& f) {
+    bool ok = true;
+    for (Output& o : outputs_) {
+        if (o.table == Table::Events) continue;
+        text_.str({});
+        if (o.table == Table::Poses) writePosesCsvRows(text_, f);
+        else writeEnergyCsvRow(text_, f);
+        ok = put(o, text_.str()) && ok;
+    }
+    return ok;
+}
+
+bool RunOutputs::event(const Event& e) {
+    bool ok = true;
+    for (Output& o : outputs_) {
+        if (o.table != Table::Events) continue;
+        ok = put(o, (o.first ? "\n " : ",\n ") + eventJson(e)) && ok;
+        o.first = false;
+    }
+    return ok;
+}
+
+bool RunOutputs::finish(bool complete, const char* command) {
+    bool ok = true;
+    for (Output& o : outputs_) {
+        if (o.table == Table::Events && !o.file.failed()) put(o, "\n]\n");
+        if (complete && o.file.commit()) continue;
+        if (complete) {
+            if (error_.empty()) error_ = o.path + ": " + o.file.error();
+            ok = false;
+            continue;
+        }
+        if (o.file.direct()) continue;
+        const std::string partial = o.path + ".partial";
+        std::error_code ec;
+        const bool existed = fs::exists(o.path, ec);
+        if (o.file.keepAs(partial)) {
+            std::fprintf(stderr, "%s: the run did not complete: %s is %s; what the run wrote of it is in %s\n", command,
+                         o.path.c_str(), existed ? "left as it was" : "not made", partial.c_str());
+        } else {
+            if (error_.empty()) error_ = o.path + ": " + o.file.error();
+            ok = false;
+        }
+    }
+    if (!error_.empty()) std::fprintf(stderr, "%s: %s\n", command, error_.c_str());
+    return ok && error_.empty();
+}
+
+}  // namespace jl::cli

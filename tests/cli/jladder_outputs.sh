@@ -1,0 +1,126 @@
+#!/usr/bin/env bash
+# jladder run/export must never destroy an input or an earlier output, never
+# report success when something was not written, and keep what a run that
+# stopped early computed. Usage: jladder_outputs.sh JLADDER SOURCE_DIR WORK_DIR
+set -u
+jladder=$1
+source=$2
+work=$3
+rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
+failures=0
+
+fail() {
+    echo "FAIL: $*" >&2
+    failures=$((failures + 1))
+}
+
+# expect STATUS COMMAND...: runs the command, its stderr kept in err.txt.
+expect() {
+    local want=$1
+    shift
+    "$@" >out.txt 2>err.txt
+    local got=$?
+    [ "$got" = "$want" ] || fail "exit $got, wanted $want: $* ($(head -c 300 err.txt))"
+}
+
+expect_message() {
+    grep -q -- "$1" err.txt || fail "no message '$1' in: $(head -c 300 err.txt)"
+}
+
+same() {
+    cmp -s "$1" "$2" || fail "$1 changed"
+}
+
+cp "$source/examples/classic.yaml" scene.yaml
+cp scene.yaml pristine.yaml
+ln -s scene.yaml link.yaml
+ln scene.yaml hard.yaml
+
+# An output that is the scene, by name, link or hard link: refused, scene intact.
+for option in --frames --events; do
+    for name in scene.yaml ./scene.yaml link.yaml hard.yaml "$work/scene.yaml"; do
+        expect 2 "$jladder" run scene.yaml --until 0.5 "$option" "$name"
+        expect_message "is the scene file"
+        same scene.yaml pristine.yaml
+    done
+done
+expect 2 "$jladder" export scene.yaml --csv link.yaml
+expect_message "is the scene file"
+same scene.yaml pristine.yaml
+
+# Two outputs in one file: refused before anything is written.
+expect 2 "$jladder" run scene.yaml --until 0.5 --frames out.csv --events ./out.csv
+expect_message "name the same file"
+[ -e out.csv ] && fail "out.csv made by a refused run"
+echo old >old.csv
+ln -s old.csv old-link.csv
+expect 2 "$jladder" export scene.yaml --csv old.csv --energy old-link.csv
+expect_message "name the same file"
+[ "$(cat old.csv)" = old ] || fail "old.csv changed by a refused export"
+
+# A write that fails is a failure, said as such.
+expect 1 "$jladder" run scene.yaml --until 0.5 --events /dev/full
+expect_message "No space left"
+expect 1 "$jladder" export scene.yaml --until 0.5 --csv /dev/full
+expect_message "No space left"
+"$jladder" run scene.yaml --until 0.5 >/dev/full 2>err.txt
+[ $? = 1 ] || fail "a summary written to /dev/full is a success"
+expect_message "cannot write the summary"
+expect 1 "$jladder" run scene.yaml --until 0.5 --frames no/such/dir/frames.csv
+expect_message "no/such/dir"
+
+# A good run replaces the old files whole and leaves nothing else behind;
+# a link stays a link. Devices and the standard output are written directly.
+echo old >frames.csv
+echo old >events-target.json
+ln -s events-target.json events.json
+expect 0 "$jladder" run scene.yaml --until 0.5 --frames frames.csv --events events.json
+[ "$(head -1 frames.csv)" = "t,block,x,y,theta" ] || fail "frames.csv not replaced"
+[ -L events.json ] || fail "events.json is no longer a link"
+[ "$(tail -1 events-target.json)" = "]" ] || fail "events not written through the link"
+ls | grep -q partial && fail "temporaries left behind: $(ls | grep partial)"
+expect 0 "$jladder" run scene.yaml --until 0.5 --events /dev/stdout --frames /dev/null
+grep -q '"event":"lock"' out.txt || fail "events not written to the standard output"
+grep -q '"failure":null' out.txt || fail "no summary after the events on the standard output"
+
+# A run that fails leaves the old files and keeps what it computed beside them.
+echo old >frames.csv
+expect 1 "$jladder" run scene.yaml --until 2 --integrator explicit_euler --step 0.01 --frames frames.csv
+[ "$(cat frames.csv)" = old ] || fail "a failed run replaced frames.csv"
+[ "$(wc -l <frames.csv.partial)" -gt 10 ] || fail "a failed run kept nothing in frames.csv.partial"
+expect_message "frames.csv.partial"
+
+# Interrupted (kill's default signal) and killed runs, long enough to be
+# caught midway: the old file stays, what was computed is kept.
+long_run() {
+    "$jladder" run scene.yaml --until 100000 --frames frames.csv >out.txt 2>err.txt &
+    pid=$!
+    for _ in $(seq 100); do
+        sleep 0.1
+        [ "$(cat frames.csv.partial-* 2>/dev/null | wc -l)" -gt 100 ] && break
+    done
+}
+echo old >frames.csv
+rm -f frames.csv.partial*
+long_run
+kill -TERM $pid
+wait $pid
+status=$?
+[ $status = 143 ] || fail "an interrupted run exits $status, not by its signal (143)"
+[ "$(cat frames.csv)" = old ] || fail "an interrupted run replaced frames.csv"
+[ "$(wc -l <frames.csv.partial)" -gt 100 ] || fail "an interrupted run kept nothing in frames.csv.partial"
+grep -q '"failure":"interrupted by SIGTERM' out.txt || fail "the summary does not say the run was interrupted"
+ls | grep -q 'partial-' && fail "temporaries left behind by an interrupted run"
+
+rm -f frames.csv.partial*
+long_run
+kill -KILL $pid
+wait $pid 2>/dev/null
+[ "$(cat frames.csv)" = old ] || fail "a killed run replaced frames.csv"
+[ "$(cat frames.csv.partial-* | wc -l)" -gt 100 ] || fail "a killed run left nothing of what it computed"
+
+if [ $failures -gt 0 ]; then
+    echo "$failures failures" >&2
+    exit 1
+fi
+echo "all passed"
