@@ -52,7 +52,6 @@ std::string kindsOf(const std::vector<Event>& events) {
     return s.empty() ? "none" : s;
 }
 
-
 // A stretch of a run timed again and again from one snapshot: up to time
 // `until`, or `count` steps. The fastest repetition counts. From the second
 // repetition on, the steps that recorded events in the first are also
@@ -64,9 +63,9 @@ struct Stretch {
     long long count = 0;  // > 0: this many steps instead
     double best = INFINITY, meanStep = 0;
     long long steps = 0;
-    std::vector<Event> events;      // of the first repetition
-    std::vector<long long> eventful; // the steps (0-based) that recorded them
-    std::vector<double> eventfulCpu; // CPU s of each, the fastest repetition's
+    std::vector<Event> events;        // of the first repetition
+    std::vector<long long> eventful;  // the steps (0-based) that recorded them
+    std::vector<double> eventfulCpu;  // CPU s of each, the fastest repetition's
     int repetitions = 0;
     bool repeatable = true;
     std::string failure;
@@ -117,7 +116,8 @@ std::vector<EventCostRow> eventCostStudy(const BenchPlan& plan) {
     // blocks up; the 12-block ladder locks and unlocks lower hinges from
     // 0.41 s). The control: the turn before it, with no events.
     constexpr double kTurn = 0.2, kFrom = 0.4, kTo = 0.6;
-    const std::vector<int> sizes = plan.quick ? std::vector<int>{12, 200, 1000} : std::vector<int>{12, 200, 1000, 10000};
+    const std::vector<int> sizes =
+        plan.quick ? std::vector<int>{12, 200, 1000} : std::vector<int>{12, 200, 1000, 10000};
     const int leastRepetitions = plan.quick ? 3 : 5;
     std::vector<EventCostRow> rows;
     for (int blocks : sizes) {
@@ -165,7 +165,7 @@ std::vector<EventCostRow> eventCostStudy(const BenchPlan& plan) {
             spent += plain.once();
             if (!window.failure.empty() || !plain.failure.empty()) break;
         }
-        row.failure = !control.failure.empty() ? control.failure
+        row.failure = !control.failure.empty()  ? control.failure
                       : !window.failure.empty() ? window.failure
                       : !plain.failure.empty()  ? "hanging: " + plain.failure
                                                 : "";
@@ -210,10 +210,9 @@ std::vector<EventCostRow> eventCostStudy(const BenchPlan& plan) {
                      "event%s%s\n",
                      blocks, row.from, row.to, row.steps, row.meanStep, row.events, row.instants, row.kinds.c_str(),
                      row.runCpu, row.runRepetitions, row.repeatable ? "" : ", repetitions differ", row.plainStep,
-                     row.plainStepCpu, row.plainRepetitions, row.plainSteps,
-                     row.plainEvents ? ", with events!" : "", row.perEvent, 100 * row.eventShare, kTurn, kFrom,
-                     row.controlSteps, row.controlEvents, row.controlStepCpu, row.perEventControl,
-                     row.eventfulSteps, row.perEventInStep,
+                     row.plainStepCpu, row.plainRepetitions, row.plainSteps, row.plainEvents ? ", with events!" : "",
+                     row.perEvent, 100 * row.eventShare, kTurn, kFrom, row.controlSteps, row.controlEvents,
+                     row.controlStepCpu, row.perEventControl, row.eventfulSteps, row.perEventInStep,
                      row.failure.empty() ? "" : "; ", row.failure.c_str());
         rows.push_back(row);
     }

@@ -16,17 +16,17 @@ struct EventCostRow {
     double from = 0, to = 0;  // s, the measured window of the turned-over run
     // The turned-over ladder over the window (restored from one snapshot
     // for each repetition; the fastest repetition counts).
-    long long steps = 0;      // steps taken in the window
-    int events = 0;           // hinge events recorded in it (lock, unlock, fold, unfold, flip, bounce)
-    int instants = 0;         // distinct instants they happen at (one location and resolve each)
-    std::string kinds;        // e.g. "2 fold, 2 flip"
-    double meanStep = 0;      // s, (to - from) / steps
-    double runCpu = 0;        // CPU s of the window
+    long long steps = 0;  // steps taken in the window
+    int events = 0;       // hinge events recorded in it (lock, unlock, fold, unfold, flip, bounce)
+    int instants = 0;     // distinct instants they happen at (one location and resolve each)
+    std::string kinds;    // e.g. "2 fold, 2 flip"
+    double meanStep = 0;  // s, (to - from) / steps
+    double runCpu = 0;    // CPU s of the window
     int runRepetitions = 0;
-    bool repeatable = true;   // every repetition recorded the same events
+    bool repeatable = true;  // every repetition recorded the same events
     // The same ladder hanging at rest, the engine's automatic step, no events.
-    double plainStep = 0;     // s, the step the engine chose there
-    long long plainSteps = 0; // steps in one timed repetition
+    double plainStep = 0;      // s, the step the engine chose there
+    long long plainSteps = 0;  // steps in one timed repetition
     int plainRepetitions = 0;
     int plainEvents = 0;      // events in the plain run (0 expected)
     double plainStepCpu = 0;  // CPU s per step
@@ -44,7 +44,7 @@ struct EventCostRow {
     // per event. It leaves out what events make later steps cost.
     int eventfulSteps = 0;
     double eventfulCpu = 0, perEventInStep = 0;
-    double setupCpu = 0;      // CPU s of the whole measurement (untimed runs up to the window included)
+    double setupCpu = 0;  // CPU s of the whole measurement (untimed runs up to the window included)
     std::string failure;
 };
 
