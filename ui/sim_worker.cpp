@@ -140,6 +140,8 @@ void SimWorker::apply(const cmd::Load& c) {
     cursor_ = 0;
     shown_.reset();
     recorded_ = std::make_shared<const jl::Scene>(c.scene);
+    duration_ = c.scene.duration;
+    stoppedAtEnd_ = false;
     auto built = jl::Simulation::build(c.scene);
     sim_ = std::move(built.simulation);
     if (!sim_) {
@@ -175,6 +177,7 @@ void SimWorker::apply(const cmd::DragBegin& c) {
 
 void SimWorker::play() {
     if (!sim_ || !failure_.empty()) return;
+    if (cursor_ * history_.interval() < duration_ - 1e-9) stoppedAtEnd_ = false;  // it will stop there again
     playing_ = true;
     rebasePace();
 }
@@ -197,6 +200,13 @@ void SimWorker::advancePaced() {
     const double desired = paceSim_ + secondsBetween(paceWall_, start) * speed_;
     const double dt = history_.interval();
     while ((cursor_ + 1) * dt <= desired + 1e-9) {
+        // The scene's length: the lesson ends there (Play again goes on).
+        if (!stoppedAtEnd_ && duration_ > 0 && cursor_ * dt >= duration_ - 1e-9) {
+            stoppedAtEnd_ = true;
+            playing_ = false;
+            dirty_ = true;
+            return;
+        }
         if (cursor_ < history_.head()) showFrame(cursor_ + 1);
         else if (!simulateNextFrame()) return;
         if (Clock::now() - start > kWorkSlice) break;

@@ -93,6 +93,9 @@ private:
     FrameHistory history_;
     int cursor_ = 0;
     bool playing_ = false;
+    // Playing stops once at the scene's duration; Play from there goes on past it.
+    double duration_ = 0;  // s, 0: none
+    bool stoppedAtEnd_ = false;
     bool quit_ = false;
     bool dirty_ = true;
     double speed_ = 1.0;

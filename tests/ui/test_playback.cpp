@@ -190,6 +190,22 @@ private slots:
         QVERIFY(f.window.document()->isModified());
     }
 
+    // The scene's duration is the lesson's length: playing stops there (the
+    // classic cascade used to run on to 40 s), and Play goes on past it.
+    void playingStopsAtTheScenesDurationThenGoesOnWhenAsked() {
+        jl::Scene scene = jltest::swingingLadder();
+        scene.duration = 0.5;
+        Fixture f(scene);
+        f.window.setSpeed(4.0);
+        f.sim->play();
+        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return s.frame && s.frame->time > 0.1; }));
+        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return !s.playing; }));
+        const auto end = f.sim->status();
+        QVERIFY2(std::abs(end->frame->time - 0.5) <= end->interval, qPrintable(QString::number(end->frame->time)));
+        f.sim->play();
+        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return s.frame && s.frame->time > 0.6; }));
+    }
+
     void aFailedSolvePausesAndSaysWhyWithTheLastGoodFrame() {
         // Explicit Euler with 10 ms steps: the solver gives up within half a second.
         jl::Scene scene = jltest::swingingLadder();
