@@ -49,4 +49,23 @@ double heldFrameKinetic(const World& w) {
     return ke;
 }
 
+// The energy of a velocity jump in the mass metric, 1/2 sum m |dv|^2 +
+// I dw^2 over the parts the hand does not hold itself. A plastic impact is the
+// projection of the velocities onto the constraints in that metric, with the
+// held bodies' motion prescribed; what it dissipates is exactly this, with
+// any number of held bodies and pins to the world (the kinetic energy
+// relative to one held body gives the same number when there is one).
+double jumpEnergy(const World& w, const std::vector<Twist>& before) {
+    double e = 0;
+    for (PartId p = 1; p < w.partCount() && size_t(p) < before.size(); ++p) {
+        const Part& part = w.part(p);
+        if (part.drive || part.body == 0) continue;  // a part locked to a held one counts: it was stopped
+        const Twist v = w.partVelocity(p);
+        const Twist& b = before[size_t(p)];
+        e += 0.5 * part.mass * (v.linear - b.linear).squaredNorm() +
+             0.5 * part.inertia * (v.angular - b.angular) * (v.angular - b.angular);
+    }
+    return e;
+}
+
 }  // namespace jl

@@ -1,6 +1,10 @@
 // Mechanical energy of everything but the held blocks and the ground.
 #pragma once
 
+#include "core/geometry.h"
+
+#include <vector>
+
 namespace jl {
 
 class World;
@@ -17,5 +21,10 @@ Energy energy(const World& w);
 // else the plain kinetic energy: in that frame a plastic impact never
 // creates energy (docs/model.md section 12.3), so impacts book their loss by it.
 double heldFrameKinetic(const World& w);
+
+// The energy of the jump from the part velocities `before` to the world's,
+// in the mass metric (held parts left out): what a plastic impact
+// dissipates, whatever is held.
+double jumpEnergy(const World& w, const std::vector<Twist>& before);
 
 }  // namespace jl

@@ -154,7 +154,7 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
                                   double* heldWork, std::vector<int>* releasedNow) {
     std::vector<Event> events;
     const std::vector<Twist> before = w.partVelocities();
-    const double keBefore = energy(w).kinetic, relBefore = heldFrameKinetic(w);
+    const double keBefore = energy(w).kinetic;
     std::vector<double> approach(hits.size());
     for (size_t i = 0; i < hits.size(); ++i) {
         const int j = hits[i];
@@ -200,6 +200,8 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
         settled = !driven;
     }
     if (!settled) capped(t, "an impact's contacts");
+    const double plasticJump = jumpEnergy(w, before);
+    bool bouncedAtAll = false;
     // Restitution: phi_dot+ = -e phi_dot- for the hinges that were hit.
     const double e = spec_.hinges.restitution;
     if (e > 0) {
@@ -215,6 +217,7 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
             events.push_back({t, EventKind::Bounce, j, hinge(j).corner, {}});
             bounced = true;
         }
+        bouncedAtAll = bounced;
         if (bounced) {
             std::vector<Twist> bounce(before.size());
             for (size_t p = 0; p < before.size(); ++p)
@@ -224,7 +227,9 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
             projectVelocities(w, d.solver());
         }
     }
-    const double dissipated = relBefore - heldFrameKinetic(w);
+    // The plastic jump dissipates its own energy in the mass metric; a bounce
+    // v+ = v- + (1 + e) dv keeps e^2 of it (docs/model.md section 12.3).
+    const double dissipated = (bouncedAtAll ? 1 - e * e : 1.0) * plasticJump;
     *loss += dissipated;
     *heldWork += energy(w).kinetic - keBefore + dissipated;
     return events;

@@ -180,11 +180,12 @@ double Simulation::nextScheduledTime() const {
 // its own kinetic and potential energy leave them as the hand's work too.
 // The force tests follow (applyDueInputs runs them after any action).
 void Simulation::grab(PartId part) {
-    const double before = energy(world_).total(), relBefore = heldFrameKinetic(world_);
+    const double before = energy(world_).total();
+    const std::vector<Twist> velocities = world_.partVelocities();
     world_.hold(part, Drive(world_.partPose(part)));
     world_.updateKinematics(t_);
     projectVelocities(world_, dynamics_.solver());
-    const double dissipated = std::max(0.0, relBefore - heldFrameKinetic(world_));
+    const double dissipated = jumpEnergy(world_, velocities);
     impactLoss_ += dissipated;
     impactHeldWork_ += energy(world_).total() - before + dissipated;
     if (ladder_) ladder_->updateAngles(world_);
