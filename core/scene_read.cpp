@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/scalar_text.h"
+#include "core/scene_ranges.h"
 #include "core/scene_read_parts.h"
 #include "core/yaml_fields.h"
 
@@ -22,11 +23,11 @@ namespace {
 
 void readBlockSpec(const Fields& parent, BlockSpec& block) {
     Fields f(parent.problems(), parent.value("block"), {"length", "thickness", "width", "density", "mass", "color"});
-    f.number("length", block.length, Bound::positive());
-    f.number("thickness", block.thickness, Bound::positive());
-    f.number("width", block.width, Bound::positive());
-    f.number("density", block.density, Bound::positive());
-    f.number("mass", block.mass, Bound::positive());
+    f.number("length", block.length, range::size);
+    f.number("thickness", block.thickness, range::size);
+    f.number("width", block.width, range::size);
+    f.number("density", block.density, range::density);
+    f.number("mass", block.mass, range::mass);
     f.color("color", block.color);
 }
 
@@ -44,15 +45,15 @@ void readOverrides(const Fields& parent, LadderSpec& ladder) {
             f.errorAt("index", "block " + std::to_string(o.index) + " already has an override (" + seen[o.index] +
                                    "); merge them");
         std::optional<double> length;
-        f.number("length", length, Bound::positive());
+        f.number("length", length, range::size);
         if (length && *length != ladder.block.length)
             f.errorAt("length", formatNumber(*length) + " differs from the ladder's block length " +
                                     formatNumber(ladder.block.length) +
                                     "; all blocks of a ladder have the same length");
-        f.number("thickness", o.thickness, Bound::positive());
-        f.number("width", o.width, Bound::positive());
-        f.number("density", o.density, Bound::positive());
-        f.number("mass", o.mass, Bound::positive());
+        f.number("thickness", o.thickness, range::size);
+        f.number("width", o.width, range::size);
+        f.number("density", o.density, range::density);
+        f.number("mass", o.mass, range::mass);
         f.color("color", o.color);
         ladder.overrides.push_back(o);
     });
@@ -60,18 +61,18 @@ void readOverrides(const Fields& parent, LadderSpec& ladder) {
 
 void readRibbons(const Fields& parent, RibbonSpec& ribbons) {
     Fields f(parent.problems(), parent.value("ribbons"), {"width", "thickness", "inset", "color", "visible"});
-    f.number("width", ribbons.width, Bound::positive());
-    f.number("thickness", ribbons.thickness, Bound::positive());
-    f.number("inset", ribbons.inset, Bound::nonNegative());
+    f.number("width", ribbons.width, range::ribbonSize);
+    f.number("thickness", ribbons.thickness, range::ribbonSize);
+    f.number("inset", ribbons.inset, range::inset);
     f.color("color", ribbons.color);
     f.flag("visible", ribbons.visible);
 }
 
 void readHinges(const Fields& parent, HingeOptions& hinges) {
     Fields f(parent.problems(), parent.value("hinges"), {"damping", "restitution", "min_rebound_speed"});
-    f.number("damping", hinges.damping, Bound::nonNegative());
-    f.number("restitution", hinges.restitution, Bound::halfOpen(0, 1));
-    f.number("min_rebound_speed", hinges.minReboundSpeed, Bound::nonNegative());
+    f.number("damping", hinges.damping, range::angularDamping);
+    f.number("restitution", hinges.restitution, range::restitution);
+    f.number("min_rebound_speed", hinges.minReboundSpeed, range::reboundSpeed);
 }
 
 void readHeld(const Fields& parent, LadderSpec& ladder) {
@@ -136,8 +137,8 @@ void readFormat(Fields& f) {
 
 void readDamping(const Fields& parent, Scene& scene) {
     Fields f(parent.problems(), parent.value("damping"), {"linear", "angular"});
-    f.number("linear", scene.linearDamping, Bound::nonNegative());
-    f.number("angular", scene.angularDamping, Bound::nonNegative());
+    f.number("linear", scene.linearDamping, range::linearDamping);
+    f.number("angular", scene.angularDamping, range::angularDamping);
 }
 
 void readSolver(const Fields& parent, SolverSpec& solver) {
@@ -149,21 +150,21 @@ void readSolver(const Fields& parent, SolverSpec& solver) {
               {"symplectic_euler", Integrator::SymplecticEuler},
               {"rk4", Integrator::RK4},
               {"dormand_prince45", Integrator::DormandPrince45}});
-    f.number("step", solver.step, Bound::positive());
-    f.number("tolerance", solver.tolerance, Bound::positive());
-    f.number("projection_tolerance", solver.projectionTolerance, Bound::positive());
+    f.number("step", solver.step, range::step);
+    f.number("tolerance", solver.tolerance, range::tolerance);
+    f.number("projection_tolerance", solver.projectionTolerance, range::projectionTolerance);
     f.choice("events", solver.events, {{"located", EventPolicy::Located}, {"end_of_step", EventPolicy::EndOfStep}});
-    f.number("event_tolerance", solver.eventTolerance, Bound::positive());
-    f.number("frame_interval", solver.frameInterval, Bound::positive());
+    f.number("event_tolerance", solver.eventTolerance, range::eventTolerance);
+    f.number("frame_interval", solver.frameInterval, range::frameInterval);
     f.choice("rigid_pairs", solver.rigidPairs, {{"merge", RigidPairs::Merge}, {"weld", RigidPairs::Weld}});
 }
 
 void readView(const Fields& parent, ViewSpec& view) {
     Fields f(parent.problems(), parent.value("view"), {"target", "distance", "yaw", "pitch"});
-    f.point("target", view.target);
-    f.number("distance", view.distance, Bound::positive());
-    f.number("yaw", view.yaw, Bound::closed(-360, 360));
-    f.number("pitch", view.pitch, Bound::closed(-90, 90));
+    f.point("target", view.target, range::coordinate);
+    f.number("distance", view.distance, range::viewDistance);
+    f.number("yaw", view.yaw, range::yaw);
+    f.number("pitch", view.pitch, range::pitch);
 }
 
 }  // namespace
@@ -185,9 +186,9 @@ std::optional<Scene> readScene(const YAML::Node& root, const LoadLimits& limits,
     if (f.has("particles")) readParticles(f.value("particles"), problems, scene.particles, names);
     if (f.has("pins")) readPins(f.value("pins"), problems, blocks, names, scene.pins);
     if (f.has("springs")) readSprings(f.value("springs"), problems, blocks, names, scene.springs);
-    f.point("gravity", scene.gravity);
+    f.point("gravity", scene.gravity, range::gravity);
     if (f.has("damping")) readDamping(f, scene);
-    f.number("duration", scene.duration, Bound::positive());
+    f.number("duration", scene.duration, range::duration);
     if (f.has("solver")) readSolver(f, scene.solver);
     if (f.has("script")) readScript(f.value("script"), problems, blocks, scene.script);
     if (f.has("drags")) readDrags(f.value("drags"), problems, blocks, scene.drags);

@@ -5,6 +5,7 @@
 #include <charconv>
 #include <numbers>
 
+#include "core/scene_ranges.h"
 #include "core/scene_read_parts.h"
 
 namespace jl {
@@ -12,10 +13,10 @@ namespace jl {
 namespace {
 
 void readMotion(Fields& f, Point2& position, double& angle, Point2& velocity, double& angularVelocity) {
-    f.point("position", position);
-    f.angle("angle", angle);
-    f.point("velocity", velocity);
-    f.number("angular_velocity", angularVelocity);
+    f.point("position", position, range::coordinate);
+    f.angle("angle", angle, range::angle);
+    f.point("velocity", velocity, range::velocity);
+    f.number("angular_velocity", angularVelocity, range::angularVelocity);
 }
 
 BlockState readPose(const Located& item, Problems& problems, int blocks) {
@@ -107,12 +108,12 @@ void readBodies(const Located& at, Problems& problems, std::vector<BodySpec>& bo
         if (!f.isMap()) return;
         BodySpec body;
         readName(f, body.name, names);
-        f.number("length", body.length, Bound::positive());
-        f.number("thickness", body.thickness, Bound::positive());
-        f.number("width", body.width, Bound::positive());
-        f.number("density", body.density, Bound::positive());
-        f.number("mass", body.mass, Bound::positive());
-        f.number("inertia", body.inertia, Bound::positive());
+        f.number("length", body.length, range::size);
+        f.number("thickness", body.thickness, range::size);
+        f.number("width", body.width, range::size);
+        f.number("density", body.density, range::density);
+        f.number("mass", body.mass, range::mass);
+        f.number("inertia", body.inertia, range::inertia);
         readMotion(f, body.position, body.angle, body.velocity, body.angularVelocity);
         f.flag("held", body.held);
         f.color("color", body.color);
@@ -126,9 +127,9 @@ void readParticles(const Located& at, Problems& problems, std::vector<ParticleSp
         if (!f.isMap()) return;
         ParticleSpec particle;
         readName(f, particle.name, names);
-        f.number("mass", particle.mass, Bound::positive());
-        f.point("position", particle.position);
-        f.point("velocity", particle.velocity);
+        f.number("mass", particle.mass, range::mass);
+        f.point("position", particle.position, range::coordinate);
+        f.point("velocity", particle.velocity, range::velocity);
         particles.push_back(particle);
     });
 }
@@ -164,7 +165,7 @@ PointRef readPointRef(Fields& parent, std::string_view key, int blocks, const Na
         f.text("body", ref.on);
         checkReference(f, ref.on, blocks, names);
     }
-    f.point("local", ref.local);
+    f.point("local", ref.local, range::coordinate);
     return ref;
 }
 
@@ -191,9 +192,9 @@ void readSprings(const Located& at, Problems& problems, int blocks, const Names&
         SpringSpec spring;
         spring.a = readPointRef(f, "a", blocks, names);
         spring.b = readPointRef(f, "b", blocks, names);
-        f.number("stiffness", spring.stiffness, Bound::nonNegative());
-        f.number("rest_length", spring.restLength, Bound::nonNegative());
-        f.number("damping", spring.damping, Bound::nonNegative());
+        f.number("stiffness", spring.stiffness, range::stiffness);
+        f.number("rest_length", spring.restLength, range::restLength);
+        f.number("damping", spring.damping, range::springDamping);
         springs.push_back(spring);
     });
 }

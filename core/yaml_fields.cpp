@@ -14,28 +14,6 @@
 
 namespace jl {
 
-Bound Bound::any() {
-    const double inf = std::numeric_limits<double>::infinity();
-    return {-inf, inf, true, true};
-}
-Bound Bound::positive() { return {0, std::numeric_limits<double>::infinity(), true, true}; }
-Bound Bound::nonNegative() { return {0, std::numeric_limits<double>::infinity(), false, true}; }
-Bound Bound::halfOpen(double lo, double hi) { return {lo, hi, false, true}; }
-Bound Bound::closed(double lo, double hi) { return {lo, hi, false, false}; }
-
-bool Bound::contains(double x) const {
-    return (loOpen ? x > lo : x >= lo) && (hiOpen ? x < hi : x <= hi);
-}
-
-std::string Bound::describe() const {
-    const bool hasLo = std::isfinite(lo), hasHi = std::isfinite(hi);
-    if (!hasLo && !hasHi) return "a number";
-    if (!hasHi) return std::string("a number ") + (loOpen ? "> " : ">= ") + formatNumber(lo);
-    if (!hasLo) return std::string("a number ") + (hiOpen ? "< " : "<= ") + formatNumber(hi);
-    return "a number in " + std::string(loOpen ? "(" : "[") + formatNumber(lo) + ", " + formatNumber(hi) +
-           (hiOpen ? ")" : "]");
-}
-
 void report(Problems& problems, const YAML::Mark& mark, std::string message) {
     problems.add(mark.line + 1, mark.column + 1, std::move(message));
 }
@@ -128,13 +106,13 @@ std::optional<long long> readInteger(Problems& problems, const Located& at, long
     return value;
 }
 
-std::optional<Point2> readPoint(Problems& problems, const Located& at) {
+std::optional<Point2> readPoint(Problems& problems, const Located& at, Bound bound) {
     if (!at.node.IsSequence() || at.node.size() != 2) {
         fail(problems, at, "a point [x, y]");
         return std::nullopt;
     }
-    const auto x = readNumber(problems, locate(at.node[0], at.path + "[0]"), Bound::any());
-    const auto y = readNumber(problems, locate(at.node[1], at.path + "[1]"), Bound::any());
+    const auto x = readNumber(problems, locate(at.node[0], at.path + "[0]"), bound);
+    const auto y = readNumber(problems, locate(at.node[1], at.path + "[1]"), bound);
     if (!x || !y) return std::nullopt;
     return Point2{*x, *y};
 }
@@ -279,9 +257,9 @@ void Fields::angle(std::string_view key, double& out, Bound bound) {
         if (const auto v = readAngle(problems_, value(key), bound)) out = *v;
 }
 
-void Fields::point(std::string_view key, Point2& out) {
+void Fields::point(std::string_view key, Point2& out, Bound bound) {
     if (has(key))
-        if (const auto v = readPoint(problems_, value(key))) out = *v;
+        if (const auto v = readPoint(problems_, value(key), bound)) out = *v;
 }
 
 void Fields::color(std::string_view key, Color& out) {

@@ -10,23 +10,11 @@
 #include <utility>
 #include <vector>
 
+#include "core/bound.h"
 #include "core/problems.h"
 #include "core/scene.h"
 
 namespace jl {
-
-// The allowed range of a number, with the words that describe it.
-struct Bound {
-    double lo, hi;
-    bool loOpen, hiOpen;
-    static Bound any();
-    static Bound positive();     // > 0
-    static Bound nonNegative();  // >= 0
-    static Bound halfOpen(double lo, double hi);  // [lo, hi)
-    static Bound closed(double lo, double hi);    // [lo, hi]
-    bool contains(double x) const;
-    std::string describe() const;  // "a number > 0"
-};
 
 void report(Problems& problems, const YAML::Mark& mark, std::string message);
 
@@ -44,7 +32,7 @@ Located locate(const YAML::Node& node, std::string path);
 std::optional<double> readNumber(Problems&, const Located&, Bound bound);
 std::optional<long long> readInteger(Problems&, const Located&, long long lo, long long hi);
 std::optional<double> readAngle(Problems&, const Located&, Bound bound);
-std::optional<Point2> readPoint(Problems&, const Located&);
+std::optional<Point2> readPoint(Problems&, const Located&, Bound bound);  // each coordinate
 std::optional<Color> readColor(Problems&, const Located&);
 std::optional<bool> readFlag(Problems&, const Located&);
 std::optional<std::string> readText(Problems&, const Located&);
@@ -69,12 +57,13 @@ public:
     bool require(std::string_view key);
     void errorAt(std::string_view key, const std::string& message) const;  // "path: message" at the value
 
-    // Each leaves `out` untouched when the key is absent or wrong.
-    void number(std::string_view key, double& out, Bound bound = Bound::any());
-    void number(std::string_view key, std::optional<double>& out, Bound bound = Bound::any());
+    // Each leaves `out` untouched when the key is absent or wrong. Every
+    // number has a range (core/scene_ranges.h): none is left unbounded.
+    void number(std::string_view key, double& out, Bound bound);
+    void number(std::string_view key, std::optional<double>& out, Bound bound);
     void integer(std::string_view key, int& out, long long lo, long long hi);
-    void angle(std::string_view key, double& out, Bound bound = Bound::any());
-    void point(std::string_view key, Point2& out);
+    void angle(std::string_view key, double& out, Bound bound);
+    void point(std::string_view key, Point2& out, Bound bound);
     void color(std::string_view key, Color& out);
     void color(std::string_view key, std::optional<Color>& out);
     void flag(std::string_view key, bool& out);

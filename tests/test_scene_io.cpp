@@ -11,10 +11,12 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <numbers>
 #include <sstream>
 
 #include "core/output_file.h"
+#include "core/scalar_text.h"
 #include "core/scene_io.h"
 
 namespace fs = std::filesystem;
@@ -127,8 +129,8 @@ private slots:
         l.blocks = 4;
         l.initial.kind = InitialState::Kind::FoldAngles;
         l.initial.foldAngles = {0, std::atan(0.2), std::nextafter(std::numbers::pi, 0.0)};
-        l.initial.poses = {{0, {0.5, 0.25}, 0.1, {}, 0}};
-        l.block.density = 5e-324;  // the smallest double
+        l.initial.poses = {{0, {0.5, 5e-324}, 0.1, {}, 0}};  // the smallest double
+        l.block.density = std::nextafter(1.0, 2.0);        // just inside the range
         s.duration = std::nextafter(5.0, 6.0);
         const SceneLoad back = parseScene(sceneToYaml(s), "saved.yaml");
         QVERIFY2(back.scene, allErrors(back).c_str());
@@ -294,6 +296,39 @@ private slots:
         std::string many = "format: jacobs-ladder/1\nladder: {blocks: 6}\ngravity: [";
         for (int i = 0; i < 30; ++i) many += "1, ";
         expectOne(parseScene(many + "1]\n", "s.yaml", limits), "more than 20 YAML values");
+    }
+
+    // Both ends of a range are allowed and the next double beyond is not,
+    // so that docs/scene-format.md's "a .. b" means what it says.
+    void rangesIncludeTheirEnds_data() {
+        QTest::addColumn<QString>("key");
+        QTest::addColumn<double>("lo");
+        QTest::addColumn<double>("hi");
+        QTest::newRow("step") << "solver: {step: %1}" << 1e-6 << 0.1;
+        QTest::newRow("tolerance") << "solver: {tolerance: %1}" << 1e-14 << 0.1;
+        QTest::newRow("projection_tolerance") << "solver: {projection_tolerance: %1}" << 1e-15 << 1e-3;
+        QTest::newRow("event_tolerance") << "solver: {event_tolerance: %1}" << 1e-14 << 0.1;
+        QTest::newRow("frame_interval") << "solver: {frame_interval: %1}" << 1e-6 << 1e5;
+        QTest::newRow("block length") << "ladder: {block: {length: %1}}" << 1e-4 << 100.0;
+        QTest::newRow("block mass") << "ladder: {block: {mass: %1}}" << 1e-6 << 1e6;
+        QTest::newRow("gravity") << "gravity: [0, %1]" << -1e3 << 1e3;
+        QTest::newRow("at") << "script: [{at: %1, hold: {block: 1}}]" << 0.0 << 1e5;
+        QTest::newRow("stiffness") << "particles: [{name: p}]\nsprings: [{a: {body: world}, b: {body: p}, stiffness: %1}]"
+                                   << 0.0 << 1e7;
+    }
+
+    void rangesIncludeTheirEnds() {
+        QFETCH(QString, key);
+        QFETCH(double, lo);
+        QFETCH(double, hi);
+        const auto load = [&](double x) {
+            const std::string ladder = key.startsWith("ladder") ? "" : "ladder: {blocks: 6}\n";
+            const std::string value = key.arg(QString::fromStdString(formatNumber(x))).toStdString();
+            return parseScene("format: jacobs-ladder/1\n" + ladder + value + "\n", "s.yaml");
+        };
+        const double inf = std::numeric_limits<double>::infinity();
+        for (double x : {lo, hi}) QVERIFY2(load(x).scene, allErrors(load(x)).c_str());
+        for (double x : {std::nextafter(lo, -inf), std::nextafter(hi, inf)}) expectOne(load(x), "expected a number in");
     }
 
     void loadNeverHalfApplies() {

@@ -5,6 +5,7 @@
 #include "app/jladder/recording.h"
 #include "app/jladder/run_outputs.h"
 #include "core/scene_io.h"
+#include "core/scene_ranges.h"
 
 #include <cstdio>
 
@@ -40,8 +41,8 @@ int exportFrames(const std::vector<std::string>& args) {
     SceneLoad load = loadScene(path);
     for (const Diagnostic& d : load.errors) std::fprintf(stderr, "%s\n", d.format().c_str());
     if (!load.scene) return 1;
-    const double until = o.get("--until") ? o.number("--until").value_or(0) : load.scene->duration;
-    const double every = o.get("--every") ? o.number("--every").value_or(0) : load.scene->solver.frameInterval;
+    const double until = o.get("--until") ? o.number("--until", range::duration).value_or(0) : load.scene->duration;
+    const double every = o.get("--every") ? o.number("--every", range::frameInterval).value_or(0) : load.scene->solver.frameInterval;
     if (!o.error.empty()) {
         std::fprintf(stderr, "jladder export: %s\n", o.error.c_str());
         return 2;

@@ -1,5 +1,8 @@
 #include "app/jladder/options.h"
 
+#include "core/scalar_text.h"
+#include "core/scene_ranges.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -16,16 +19,12 @@ std::optional<std::string> Options::get(const std::string& name) const {
     return it->second;
 }
 
-std::optional<double> Options::number(const std::string& name) {
+std::optional<double> Options::number(const std::string& name, Bound bound) {
     const auto text = get(name);
     if (!text) return std::nullopt;
-    try {
-        size_t used = 0;
-        const double x = std::stod(*text, &used);
-        if (used == text->size() && std::isfinite(x) && x > 0) return x;
-    } catch (...) {
-    }
-    error = name + " needs a positive number, not '" + *text + "'";
+    const auto x = parseNumber(*text);
+    if (x && bound.contains(*x)) return x;
+    error = name + " needs " + bound.describe() + ", not '" + *text + "'";
     return std::nullopt;
 }
 
@@ -71,8 +70,8 @@ bool applySolverOptions(Options& o, SolverSpec& solver) {
             return false;
         }
     }
-    if (auto h = o.number("--step")) solver.step = *h;
-    if (auto tol = o.number("--tolerance")) solver.tolerance = *tol;
+    if (auto h = o.number("--step", range::step)) solver.step = *h;
+    if (auto tol = o.number("--tolerance", range::tolerance)) solver.tolerance = *tol;
     return o.error.empty();
 }
 

@@ -2,6 +2,7 @@
 // that run, export and bench share.
 #pragma once
 
+#include "core/bound.h"
 #include "core/scene.h"
 
 #include <map>
@@ -19,8 +20,9 @@ struct Options {
 
     bool has(const std::string& flag) const;
     std::optional<std::string> get(const std::string& name) const;
-    // A positive finite number, or an error message set and nullopt.
-    std::optional<double> number(const std::string& name);
+    // A number within `bound` (core/scene_ranges.h: the same as the scene
+    // file's), or an error message set and nullopt.
+    std::optional<double> number(const std::string& name, Bound bound);
 };
 
 // `valued` lists the options that take a value; anything else starting

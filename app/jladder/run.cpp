@@ -5,6 +5,7 @@
 #include "app/jladder/recording.h"
 #include "app/jladder/run_outputs.h"
 #include "core/scene_io.h"
+#include "core/scene_ranges.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -49,7 +50,7 @@ int run(const std::vector<std::string>& args) {
         std::fputs(kRunHelp, stdout);
         return 0;
     }
-    const auto until = o.number("--until");
+    const auto until = o.number("--until", range::duration);
     if (o.error.empty() && o.positional.size() != 1) o.error = "give exactly one scene file";
     if (o.error.empty() && !until) o.error = "--until T is required";
     RunOutputs outputs;
@@ -68,7 +69,7 @@ int run(const std::vector<std::string>& args) {
         std::fprintf(stderr, "jladder run: %s\n", o.error.c_str());
         return 2;
     }
-    const double every = o.get("--every") ? o.number("--every").value_or(0) : load.scene->solver.frameInterval;
+    const double every = o.get("--every") ? o.number("--every", range::frameInterval).value_or(0) : load.scene->solver.frameInterval;
     if (!o.error.empty()) {
         std::fprintf(stderr, "jladder run: %s\n", o.error.c_str());
         return 2;

@@ -69,6 +69,18 @@ expect_message "cannot write the summary"
 expect 1 "$jladder" run scene.yaml --until 0.5 --frames no/such/dir/frames.csv
 expect_message "no/such/dir"
 
+# Options that would hang a run or fill the memory are refused, as the
+# same values are in a scene file (docs/scene-format.md).
+for args in "run scene.yaml --until 1 --step 1e-300" "run scene.yaml --until 1 --every 1e-300" \
+            "run scene.yaml --until 1 --integrator dormand_prince45 --tolerance 1e-30" \
+            "run scene.yaml --until 1e300" "export scene.yaml --until 1e300 --csv huge.csv" \
+            "run scene.yaml --until 1 --step 0" "run scene.yaml --until nan" "run scene.yaml --until 1e999"; do
+    # shellcheck disable=SC2086
+    expect 2 timeout 20 "$jladder" $args
+    expect_message "needs a number"
+done
+[ -e huge.csv ] && fail "a refused export made huge.csv"
+
 # A good run replaces the old files whole and leaves nothing else behind;
 # a link stays a link. Devices and the standard output are written directly.
 echo old >frames.csv

@@ -1,6 +1,8 @@
 // A deterministic fuzz test of the scene loader: seeded mutations of the good
 // and bad scene files must each give a scene or errors, quickly, and a
-// loaded scene must survive a save and load unchanged.
+// loaded scene must survive a save and load unchanged, and run: every step
+// moves time on or the run stops with a reason (what the ranges of
+// docs/scene-format.md promise).
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -11,6 +13,7 @@
 #include <vector>
 
 #include "core/scene_io.h"
+#include "core/simulation.h"
 
 namespace fs = std::filesystem;
 
@@ -31,6 +34,7 @@ std::vector<std::string> seeds() {
 const std::vector<std::string> kPieces = {
     ":",  "-",  "[",     "]",     "{",           "}",      ",",   "#",   "&a ", "*a",  "!!str ", "'", "\"", "\n",
     "  ", "\t", "---\n", "? ",    "|",           ">",      "\\",  "%",   "@",   "\xc3", "\xff",  "\0", "~",  "null",
+    "1e-300", "1e300", "!!str ", "\r", "[[[[[[[[[[[[[[[[", "#c8a26b", "\\x01",
     "1e999", "-0", ".nan", ".inf", "99999999999999999999", "1000000000", "-1", "0", "180deg", "block:9", "\"#zz\"",
 };
 
@@ -64,6 +68,32 @@ std::string mutate(std::string text, std::mt19937_64& rng) {
     return text;
 }
 
+// A few steps of a small loaded scene: each moves time on, or the run
+// stops with a reason. (Large scenes are left out: building them is slow.)
+long scenesRun = 0;
+
+bool runs(const jl::Scene& scene, long iteration) {
+    const std::size_t parts = (scene.ladder ? std::size_t(scene.ladder->blocks) : 0) + scene.bodies.size() + scene.particles.size();
+    if (parts > 64) return true;
+    jl::Simulation::Built built = jl::Simulation::build(scene);
+    if (!built.simulation) return true;  // refused with errors: a reason
+    jl::Simulation& sim = *built.simulation;
+    ++scenesRun;
+    for (int i = 0; i < 20; ++i) {
+        const double before = sim.time();
+        if (!sim.stepOnce()) {
+            if (!sim.failure().empty()) return true;
+            std::fprintf(stderr, "iteration %ld: a step failed without a reason\n", iteration);
+            return false;
+        }
+        if (!(sim.time() > before)) {
+            std::fprintf(stderr, "iteration %ld: a step left time at %g s\n", iteration, before);
+            return false;
+        }
+    }
+    return true;
+}
+
 bool check(const std::string& text, long iteration) {
     const auto start = std::chrono::steady_clock::now();
     jl::SceneLoad load;
@@ -89,6 +119,7 @@ bool check(const std::string& text, long iteration) {
             std::fprintf(stderr, "iteration %ld: the loaded scene does not survive a save and load\n", iteration);
             ok = false;
         }
+        ok = runs(*load.scene, iteration) && ok;
     }
     if (!ok) std::fprintf(stderr, "---- input ----\n%s\n---------------\n", text.c_str());
     return ok;
@@ -110,6 +141,6 @@ int main() {
         const std::string& seed = texts[static_cast<std::size_t>(i) % texts.size()];
         if (!check(mutate(seed, rng), i)) ++failures;
     }
-    std::printf("%ld mutated scene files, %d failures\n", iterations, failures);
+    std::printf("%ld mutated scene files (%ld loaded and run), %d failures\n", iterations, scenesRun, failures);
     return failures == 0 ? 0 : 1;
 }
