@@ -157,6 +157,7 @@ private:
     void release(World& w, int j, EventKind kind, double t);
     void noteClose(int j, double t);
     void capped(double t, const std::string& what);
+    bool bothHeld(const World& w, int j) const;  // the blocks of hinge j, each in a held body
     HingeContact split(const World& w, int j, const Wrench& on) const;
     void snap(World& w, int j, double target);
     void join(World& w, int j, int k);     // combine the hinge's points at corner k

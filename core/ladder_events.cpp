@@ -34,6 +34,10 @@ bool Ladder::touchingLimit(const World& w, int j, bool folded, bool resting) con
     return resting && rate <= kResting && (folded ? -foldAcceleration(w, j) : foldAcceleration(w, j)) < 0;
 }
 
+bool Ladder::bothHeld(const World& w, int j) const {
+    return w.body(w.part(block(j - 1)).body).kinematic && w.body(w.part(block(j)).body).kinematic;
+}
+
 void Ladder::release(World& w, int j, EventKind kind, double t) {
     if (kind == EventKind::Unlock) unlock(w, j);
     if (kind == EventKind::FlipFlop) flipFlop(w, j);
@@ -159,6 +163,15 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
     for (size_t i = 0; i < hits.size(); ++i) {
         const int j = hits[i];
         const bool folding = hinge(j).foldAngle > kPi / 2;
+        if (bothHeld(w, j)) {
+            // The pair would be one rigid body driven by two hands whose
+            // motions need not agree, and its contact force is undetermined.
+            if (error_.empty())
+                error_ = "blocks " + std::to_string(j - 1) + " and " + std::to_string(j) + " are both held and meet at hinge " +
+                         std::to_string(j) + " (t = " + std::to_string(t) +
+                         " s): a lock between two hands is not modelled; let go of one of them first";
+            return events;
+        }
         approach[i] = std::abs(foldRate(w, j));
         if (folding) fold(w, j); else lock(w, j);
         noteClose(j, t);

@@ -187,6 +187,21 @@ private slots:
         QVERIFY(r.impactLossNeverFell);
     }
 
+    // Two hands, one on each block of a pair: when the turned block comes
+    // down on the other, the pair would be one rigid body with two drives
+    // (the first one won) and an undetermined contact force. The run stops
+    // and says so, naming the blocks, instead of following one hand.
+    void aLockBetweenTwoHeldBlocksStopsTheRunAndSaysWhy() {
+        auto sim = simulate("format: jacobs-ladder/1\n"
+                            "ladder: {blocks: 2, held: [0, 1], initial: {fold_angles: [1.2]}}\n"
+                            "script: [{at: 0.1, turn: {block: 1, by: 90deg, duration: 0.3}}]\n");
+        QVERIFY(sim);
+        const Run r = runUntil(*sim, 1.0);
+        QVERIFY(!r.failure.empty());
+        qInfo("%s", r.failure.c_str());
+        QVERIFY(r.failure.find("blocks 0 and 1 are both held") != std::string::npos);
+    }
+
     // Turned upright, the locked pair's contact unloads; when the hand stops
     // (its acceleration jumps to zero) the hanging block would need N = -m g/2:
     // it unlocks, then swings as a pendulum about the corner from phi = 0 at
