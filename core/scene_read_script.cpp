@@ -73,8 +73,29 @@ void readActionBody(Fields& f, ScriptAction& action, int blocks) {
     }
 }
 
+// What a teacher might write for an action, and the action it is.
+const KeyHelp kActionHelp{{{"rotate", "turn"},
+                           {"spin", "turn"},
+                           {"flip", "turn"},
+                           {"translate", "move"},
+                           {"shift", "move"},
+                           {"grab", "hold"},
+                           {"grip", "hold"},
+                           {"catch", "hold"},
+                           {"let_go", "release"},
+                           {"drop", "release"},
+                           {"kick", "push"},
+                           {"hit", "push"},
+                           {"impulse", "push"},
+                           {"split", "cut"},
+                           {"break", "cut"},
+                           {"connect", "join"},
+                           {"attach", "join"},
+                           {"pin", "join"}},
+                          "an entry is 'at' and one action: turn, move, hold, release, push, cut or join"};
+
 void readAction(const Located& item, Problems& problems, int blocks, std::vector<ScriptAction>& script) {
-    Fields f(problems, item, {"at", "turn", "move", "hold", "release", "push", "cut", "join"});
+    Fields f(problems, item, {"at", "turn", "move", "hold", "release", "push", "cut", "join"}, kActionHelp);
     if (!f.isMap()) return;
     ScriptAction action;
     if (f.require("at")) f.number("at", action.at, range::instant);
@@ -89,7 +110,8 @@ void readAction(const Located& item, Problems& problems, int blocks, std::vector
         Fields body(problems, f.value(word), actionKeys(kind));
         if (body.isMap()) readActionBody(body, action, blocks);
     }
-    if (found == 0)
+    // An unknown key has said what it should be already.
+    if (found == 0 && !f.hadUnknownKeys())
         report(problems, item.mark, item.path + ": expected an action: turn, move, hold, release, push, cut or join");
     script.push_back(action);
 }

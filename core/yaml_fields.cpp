@@ -184,7 +184,23 @@ std::optional<std::string_view> closestWord(std::string_view word, const std::ve
     return best;
 }
 
-Fields::Fields(Problems& problems, const Located& map, const std::vector<std::string_view>& known)
+namespace {
+
+// The known key that `word` most likely stands for, if any: a misspelling
+// first, then a word of the same meaning.
+std::optional<std::string_view> meantKey(std::string_view word, const std::vector<std::string_view>& known,
+                                         const KeyHelp& help) {
+    if (const auto guess = closestWord(word, known)) return guess;
+    const std::string w = normalised(word);
+    for (const auto& [other, key] : help.meanings)
+        if (normalised(other) == w) return key;
+    return std::nullopt;
+}
+
+}  // namespace
+
+Fields::Fields(Problems& problems, const Located& map, const std::vector<std::string_view>& known,
+               const KeyHelp& help)
     : problems_(problems), mark_(map.mark), path_(map.path), isMap_(map.node.IsMap()) {
     if (!isMap_) {
         fail(problems, map, "a mapping of keys (key: value)");
@@ -200,8 +216,10 @@ Fields::Fields(Problems& problems, const Located& map, const std::vector<std::st
         const std::string& name = key.Scalar();
         if (std::find(words.begin(), words.end(), name) == words.end()) {
             std::string message = "unknown key '" + name + "'" + (path_.empty() ? "" : " in " + path_);
-            if (const auto guess = closestWord(name, words)) message += "; did you mean '" + std::string(*guess) + "'?";
+            if (const auto guess = meantKey(name, words, help)) message += "; did you mean '" + std::string(*guess) + "'?";
+            else if (!help.keys.empty()) message += "; " + std::string(help.keys);
             report(problems, key.Mark(), std::move(message));
+            unknownKeys_ = true;
             continue;
         }
         if (find(name)) continue;  // a duplicate, already reported by the first pass

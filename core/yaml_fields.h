@@ -40,13 +40,23 @@ std::optional<std::string> readText(Problems&, const Located&);
 bool expectList(Problems&, const Located&);
 void fail(Problems&, const Located&, const std::string& expected);  // "path: expected X, got Y"
 
+// What the message of an unknown key adds beyond the closest known key:
+// words that are no key's misspelling but mean one ("rotate" for "turn"),
+// and what the keys of the mapping are, when no suggestion fits.
+struct KeyHelp {
+    std::vector<std::pair<std::string_view, std::string_view>> meanings;  // word -> key
+    std::string_view keys;  // "an entry is 'at' and one action: ..."
+};
+
 // One YAML mapping being read. Unknown keys are reported on construction,
 // with the closest known key as a suggestion.
 class Fields {
 public:
-    Fields(Problems& problems, const Located& map, const std::vector<std::string_view>& known);
+    Fields(Problems& problems, const Located& map, const std::vector<std::string_view>& known,
+           const KeyHelp& help = {});
 
     bool isMap() const { return isMap_; }
+    bool hadUnknownKeys() const { return unknownKeys_; }
     bool has(std::string_view key) const { return find(key) != nullptr; }
     Located value(std::string_view key) const;  // a null node at the mapping when absent
     const YAML::Mark& mark() const { return mark_; }
@@ -84,6 +94,7 @@ private:
     YAML::Mark mark_;
     std::string path_;
     bool isMap_ = false;
+    bool unknownKeys_ = false;
     std::vector<Entry> entries_;
 };
 
