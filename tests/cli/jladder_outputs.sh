@@ -95,12 +95,22 @@ expect 0 "$jladder" run scene.yaml --until 0.5 --events /dev/stdout --frames /de
 grep -q '"event":"lock"' out.txt || fail "events not written to the standard output"
 grep -q '"failure":null' out.txt || fail "no summary after the events on the standard output"
 
-# A run that fails leaves the old files and keeps what it computed beside them.
+# A run that fails leaves the old files and keeps what it computed beside
+# them; its summary and events are still JSON that a strict parser reads
+# (no bare nan or inf).
 echo old >frames.csv
-expect 1 "$jladder" run scene.yaml --until 2 --integrator explicit_euler --step 0.01 --frames frames.csv
+expect 1 "$jladder" run scene.yaml --until 2 --integrator explicit_euler --step 0.01 --frames frames.csv \
+    --events events.json
 [ "$(cat frames.csv)" = old ] || fail "a failed run replaced frames.csv"
 [ "$(wc -l <frames.csv.partial)" -gt 10 ] || fail "a failed run kept nothing in frames.csv.partial"
 expect_message "frames.csv.partial"
+if command -v python3 >/dev/null; then
+    strict='import json, sys
+def refuse(word): raise ValueError(word)
+for name in sys.argv[1:]:
+    json.load(open(name), parse_constant=refuse)'
+    python3 -c "$strict" out.txt events.json.partial || fail "the summary or the events are not strict JSON"
+fi
 
 # Interrupted (kill's default signal) and killed runs, long enough to be
 # caught midway: the old file stays, what was computed is kept.
