@@ -12,6 +12,8 @@
 #include <Qt3DRender/QCamera>
 #include <Qt3DRender/QRenderCapture>
 #include <Qt3DRender/QRenderSettings>
+#include <algorithm>
+#include <cmath>
 
 namespace jlui {
 
@@ -48,8 +50,14 @@ LadderView::LadderView() : Qt3DExtras::Qt3DWindow(nullptr, Qt3DRender::API::Open
 }
 
 void LadderView::setScene(const jl::Scene& scene, bool resetCamera) {
-    blocks_->setShapes(blockShapes(scene));
-    extent_ = ladderExtent(scene);
+    std::vector<BlockShape> shapes = blockShapes(scene);
+    const double extent = ladderExtent(scene);
+    // More or fewer blocks, or longer ones: the view that fitted no longer does.
+    auto sized = [](const BlockShape& a, const BlockShape& b) { return a.across == b.across && a.along == b.along && a.out == b.out; };
+    const bool resized = extent != extent_ || !std::equal(shapes.begin(), shapes.end(), shapes_.begin(), shapes_.end(), sized);
+    shapes_ = shapes;
+    blocks_->setShapes(std::move(shapes));
+    extent_ = extent;
     room_->fitTo(extent_);
     if (scene.ladder) {
         blockWidth_ = scene.ladder->block.width;
@@ -61,11 +69,22 @@ void LadderView::setScene(const jl::Scene& scene, bool resetCamera) {
         ribbons_->setColor(QColor(c.r, c.g, c.b));
     }
     view_ = scene.view;
-    if (resetCamera) resetView();
+    if (resetCamera) {
+        shownPoses_.clear();  // the old scene's blocks say nothing of the new one's
+        resetView();
+    } else if (resized) {
+        frameLadder();
+        frameOnNextFrame_ = true;
+    }
 }
 
 void LadderView::showFrame(const jl::Frame& frame) {
     if (!frame.dragging) grabbed_ = -1;
+    shownPoses_ = frame.blocks;
+    if (frameOnNextFrame_) {
+        frameOnNextFrame_ = false;
+        frameLadder();
+    }
     blocks_->showFrame(frame, frame.dragging ? grabbed_ : -1);
     // Ribbons are a few pixels wide at best when the whole of a long ladder is
     // in view, yet they cost more to draw than all the blocks: show them close up.
@@ -86,7 +105,39 @@ void LadderView::showFrame(const jl::Frame& frame) {
 
 void LadderView::resetView() {
     camera_.reset(view_, extent_);
+    // A scene that says where to look is looked at there; otherwise the
+    // whole ladder, now and again when its first frame is shown.
+    const jl::ViewSpec unsaid;
+    if (view_.target == unsaid.target && view_.distance == unsaid.distance) {
+        frameLadder();
+        frameOnNextFrame_ = true;
+    }
     updateCamera();
+}
+
+void LadderView::frameLadder() {
+    const std::vector<QVector3D> corners = ladderCorners();
+    camera_.frame(corners, height() > 0 ? float(width()) / float(height()) : 1.6f);
+    updateCamera();
+}
+
+std::vector<QVector3D> LadderView::ladderCorners() const {
+    std::vector<QVector3D> corners;
+    auto box = [&corners](float x, float y, float angle, float across, float along, float out) {
+        const float c = std::cos(angle), s = std::sin(angle);
+        for (const float u : {-across / 2, across / 2})
+            for (const float v : {-along / 2, along / 2})
+                for (const float w : {-out / 2, out / 2}) corners.emplace_back(x + c * u - s * v, y + s * u + c * v, w);
+    };
+    // As built: hanging straight down from the hand at the origin.
+    box(0, -float(extent_) / 2, 0, float(blockLength_), float(extent_), float(blockWidth_));
+    const size_t n = std::min(shownPoses_.size(), shapes_.size());
+    for (size_t i = 0; i < n; ++i) {
+        const jl::Pose& p = shownPoses_[i];
+        const BlockShape& s = shapes_[i];
+        box(float(p.position.x()), float(p.position.y()), float(p.angle), s.across, s.along, s.out);
+    }
+    return corners;
 }
 
 void LadderView::orbit(float yawDegrees, float pitchDegrees) {

@@ -4,6 +4,7 @@
 
 #include "core/frame.h"
 #include "core/scene.h"
+#include "ui/block_shapes.h"
 #include "ui/view_camera.h"
 
 #include <QElapsedTimer>
@@ -32,6 +33,9 @@ public:
     void setScene(const jl::Scene& scene, bool resetCamera);
     void showFrame(const jl::Frame& frame);
     void resetView();
+    // Keeps the direction of view and fits the whole ladder, as last shown, in the view.
+    void frameLadder();
+    const ViewCamera& viewCamera() const { return camera_; }
     // Turns the viewer about the target, as a right-button drag does.
     void orbit(float yawDegrees, float pitchDegrees);
     void setWalkMode(bool on);
@@ -64,6 +68,9 @@ protected:
 private:
     void updateCamera();
     void walkTick();
+    // The corners of every block as last shown, and of the ladder as built
+    // (for before the first frame): what framing must keep in view.
+    std::vector<QVector3D> ladderCorners() const;
 
     Qt3DCore::QEntity* root_;
     BlockInstances* blocks_;
@@ -73,6 +80,11 @@ private:
     Qt3DRender::QRenderCapture* capture_;
     ViewCamera camera_;
     jl::ViewSpec view_;
+    std::vector<BlockShape> shapes_;
+    std::vector<jl::Pose> shownPoses_;
+    // The ladder is framed again on the first frame after a load or a change
+    // of size: only a frame says where the blocks are.
+    bool frameOnNextFrame_ = false;
     double extent_ = 0.36;
     double blockWidth_ = 0.045, ribbonWidth_ = 0.008, ribbonInset_ = 0.006;
     double blockLength_ = 0.06;

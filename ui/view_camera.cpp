@@ -8,14 +8,17 @@
 namespace jlui {
 
 namespace {
-constexpr float kFieldOfView = 40.0f;  // degrees, vertical
+constexpr float kFieldOfView = ViewCamera::kFieldOfView;
+// The framed points fill this fraction of the view, each way: a margin
+// around the ladder, and room for the blocks to swing out a little.
+constexpr float kFramedFill = 0.85f;
 float radians(float deg) { return deg * std::numbers::pi_v<float> / 180.0f; }
 }  // namespace
 
 void ViewCamera::reset(const jl::ViewSpec& view, double extent) {
     target_ = QVector3D(float(view.target[0]), float(view.target[1]), 0);
     distance_ = float(view.distance);
-    yaw_ = float(view.yaw);
+    yaw_ = view.yaw == jl::ViewSpec{}.yaw ? kThreeQuarterYaw : float(view.yaw);
     pitch_ = float(view.pitch);
     // A default view on a ladder longer than it shows: frame the whole ladder.
     const float visible = 2 * distance_ * std::tan(radians(kFieldOfView / 2));
@@ -23,6 +26,33 @@ void ViewCamera::reset(const jl::ViewSpec& view, double extent) {
         distance_ = float(extent) * 1.15f / (2 * std::tan(radians(kFieldOfView / 2)));
         target_.setY(-float(extent) / 2);
     }
+}
+
+void ViewCamera::frame(std::span<const QVector3D> points, float aspect) {
+    if (points.empty()) return;
+    QVector3D lo = points.front(), hi = points.front();
+    for (const QVector3D& p : points) {
+        lo = QVector3D(std::min(lo.x(), p.x()), std::min(lo.y(), p.y()), std::min(lo.z(), p.z()));
+        hi = QVector3D(std::max(hi.x(), p.x()), std::max(hi.y(), p.y()), std::max(hi.z(), p.z()));
+    }
+    target_ = (lo + hi) / 2;
+    // In the camera's axes a point at `side` right, `rise` up and `depth`
+    // toward the viewer from the target is in view when its offset over its
+    // distance from the eye is within the half-angle's tangent: the nearest
+    // eye distance that holds for every point.
+    const QVector3D back = direction();
+    const QVector3D right = QVector3D::crossProduct(-back, {0, 1, 0}).normalized();
+    const QVector3D up = QVector3D::crossProduct(right, -back).normalized();
+    const float tanUp = std::tan(radians(kFieldOfView / 2)) * kFramedFill;
+    const float tanSide = tanUp * std::max(aspect, 0.1f);
+    float needed = 0.02f;
+    for (const QVector3D& p : points) {
+        const QVector3D d = p - target_;
+        const float depth = QVector3D::dotProduct(d, back);
+        needed = std::max(needed, depth + std::abs(QVector3D::dotProduct(d, right)) / tanSide);
+        needed = std::max(needed, depth + std::abs(QVector3D::dotProduct(d, up)) / tanUp);
+    }
+    distance_ = std::min(needed, 5000.0f);
 }
 
 QVector3D ViewCamera::direction() const {

@@ -6,6 +6,7 @@
 #include "core/scene.h"
 
 #include <QVector3D>
+#include <span>
 
 namespace Qt3DRender {
 class QCamera;
@@ -15,8 +16,19 @@ namespace jlui {
 
 class ViewCamera {
 public:
+    // Seen exactly edge-on (yaw 0) the blocks are a zig-zag of sticks with no
+    // faces and no ribbons, and the ribbons alternating on the faces are how
+    // one sees each block flip: a scene whose view leaves the yaw at its
+    // default (0) is seen from three-quarters instead. A file that wants the
+    // edge-on view says yaw: 360 (the scene cannot tell 0 written from 0 left out).
+    static constexpr float kThreeQuarterYaw = 35.0f;
+    static constexpr float kFieldOfView = 40.0f;  // degrees, vertical
+
     // From the scene's view, widened to show a ladder reaching `extent` below the hand.
     void reset(const jl::ViewSpec& view, double extent);
+    // Keeps the direction of view and moves the target and the distance so
+    // every point is in a view of width/height `aspect`, with a margin.
+    void frame(std::span<const QVector3D> points, float aspect);
     void orbit(float dyawDeg, float dpitchDeg);
     void lookAround(float dyawDeg, float dpitchDeg);  // turns about the eye (walk mode)
     void zoom(float steps);                           // wheel notches; > 0 closer
@@ -25,6 +37,7 @@ public:
     void apply(Qt3DRender::QCamera* camera) const;
     QVector3D eye() const;
     float distance() const { return distance_; }
+    float yaw() const { return yaw_; }
 
 private:
     QVector3D direction() const;  // from the target toward the eye
