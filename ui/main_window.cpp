@@ -56,7 +56,7 @@ MainWindow::MainWindow(Options options) : options_(options) {
     viewContainer_->setObjectName("ladderView");
     viewContainer_->setFocusPolicy(Qt::StrongFocus);
     viewContainer_->setMinimumSize(320, 240);
-    viewContainer_->setToolTip(tr("Left-drag a block to push it; right-drag to orbit; wheel to zoom; middle-drag to pan; Home resets the view."));
+    viewContainer_->setToolTip(tr("Left-drag a block to push it; right-drag to orbit; wheel to zoom; middle-drag to pan; Home resets the view; F frames the ladder."));
     timeline_ = new Timeline(this);
     auto* centre = new QWidget(this);
     auto* box = new QVBoxLayout(centre);
@@ -121,6 +121,7 @@ void MainWindow::createActions() {
     backAct_ = make(tr("Step &back"), {Qt::Key_Left, Qt::Key_Comma}, QStyle::SP_MediaSeekBackward, tr("One frame back"));
     restartAct_ = make(tr("&Restart"), {QKeySequence(Qt::CTRL | Qt::Key_R)}, QStyle::SP_MediaSkipBackward, tr("Back to the start"));
     resetViewAct_ = make(tr("Reset &view"), {Qt::Key_Home}, QStyle::SP_CustomBase, tr("Look at the whole ladder again"));
+    frameAct_ = make(tr("&Frame the ladder"), {Qt::Key_F}, QStyle::SP_CustomBase, tr("Fit the whole ladder in the view, seen from where you are"));
     walkAct_ = make(tr("&Walk mode"), {Qt::Key_V}, QStyle::SP_CustomBase, tr("Walk around the room: W A S D to move, Q E down and up, drag to look, Esc to stop"));
     walkAct_->setCheckable(true);
 
@@ -135,6 +136,7 @@ void MainWindow::createActions() {
     connect(backAct_, &QAction::triggered, sim_, &SimController::stepBack);
     connect(restartAct_, &QAction::triggered, sim_, &SimController::restart);
     connect(resetViewAct_, &QAction::triggered, this, [this] { view_->resetView(); });
+    connect(frameAct_, &QAction::triggered, this, [this] { view_->frameLadder(); });
     connect(walkAct_, &QAction::toggled, this, [this](bool on) { view_->setWalkMode(on); });
     connect(view_, &LadderView::walkModeChanged, walkAct_, &QAction::setChecked);
 }
@@ -152,7 +154,7 @@ void MainWindow::createMenus() {
     QMenu* sim = menuBar()->addMenu(tr("&Simulation"));
     sim->addActions({playAct_, stepAct_, backAct_, restartAct_});
     viewMenu_ = menuBar()->addMenu(tr("&View"));
-    viewMenu_->addActions({resetViewAct_, walkAct_});
+    viewMenu_->addActions({resetViewAct_, frameAct_, walkAct_});
     viewMenu_->addSeparator();
     for (QDockWidget* d : findChildren<QDockWidget*>()) viewMenu_->addAction(d->toggleViewAction());
     QMenu* help = menuBar()->addMenu(tr("&Help"));

@@ -115,6 +115,7 @@ private:
     QAction* backAct_;
     QAction* restartAct_;
     QAction* resetViewAct_;
+    QAction* frameAct_;
     QAction* walkAct_;
 };
 
