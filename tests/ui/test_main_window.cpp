@@ -29,6 +29,10 @@ bool woodColoured(QColor c, QColor wood) {
 }
 
 
+// The blocks' centres show their wood seen edge-on (yaw 0): from the default
+// three-quarter view the centre of a block is on a shaded face or a ribbon.
+void turnEdgeOn(MainWindow& w) { w.ladderView()->orbit(-w.ladderView()->viewCamera().yaw(), 0); }
+
 // Shows the window on the classic scene with its first frame simulated.
 bool showClassic(MainWindow& w) {
     w.resize(1400, 900);
@@ -50,6 +54,7 @@ private slots:
         QCOMPARE(w.document()->scene().title, std::string("The classic cascade"));
         const auto status = w.controller()->status();
         QCOMPARE(int(status->frame->blocks.size()), 6);
+        turnEdgeOn(w);
         QTest::qWait(300);  // a few rendered frames with the poses in place
 
         const QImage image = jltest::captureView(w.ladderView());
@@ -70,6 +75,7 @@ private slots:
     void ribbonsAreDrawnOverTheFacesAndHideWhenAsked() {
         MainWindow w(jltest::quietWindow());
         QVERIFY(showClassic(w));
+        turnEdgeOn(w);
         w.ladderView()->orbit(35, 0);  // from the front the ribbons are edge on
         QTest::qWait(300);
         const QColor ribbon(40, 60, 140);  // the default ribbon colour
@@ -157,6 +163,7 @@ private slots:
         QVERIFY(jltest::waitForStatus(w.controller(), [](const SimStatus& s) {
             return s.recorded && s.recorded->ladder->overrides.size() == 1 && s.recorded->ladder->overrides[0].thickness && s.frame;
         }));
+        turnEdgeOn(w);
         QTest::qWait(300);
         const QImage image = jltest::captureView(w.ladderView());
         const double scale = double(image.width()) / w.ladderView()->width();

@@ -1,20 +1,94 @@
 // labels: ui
 // The viewer's camera: framing a long ladder, orbiting about the target,
-// walking (eye and target together) and looking around from the eye.
+// walking (eye and target together) and looking around from the eye; in the
+// window, a three-quarter view that frames the whole ladder on load, after
+// an edit that makes it longer and on F.
 #include "ui/view_camera.h"
 
+#include "ui_test_support.h"
+#include "ui/block_shapes.h"
+
+#include <QSpinBox>
+#include <QTemporaryDir>
+#include <Qt3DRender/QCamera>
 #include <QtTest>
 #include <cmath>
 #include <numbers>
 
 using namespace jlui;
 
+namespace {
+const QString kClassic = QStringLiteral(JL_SOURCE_DIR "/examples/classic.yaml");
+
+// A scene file of `blocks` blocks with no view of its own.
+QString ladderFile(const QTemporaryDir& dir, int blocks) {
+    const QString path = dir.filePath(QString("ladder-%1.yaml").arg(blocks));
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly)) return {};
+    f.write(QString("format: jacobs-ladder/1\ntitle: framed\nladder:\n  blocks: %1\n  held: [0]\nduration: 1\n").arg(blocks).toUtf8());
+    return path;
+}
+
+bool showScene(MainWindow& w, const QString& path) {
+    w.resize(1400, 900);
+    w.show();
+    if (!QTest::qWaitForWindowExposed(&w)) return false;
+    const auto before = jltest::loadsSoFar(w.controller());
+    if (!w.openFile(path) || !jltest::loadedAfter(w.controller(), before)) return false;
+    QTest::qWait(200);  // the first frame reaches the view
+    return true;
+}
+
+// Empty when every corner of every block shown projects inside the 3-D
+// view, and the ladder fills a fair part of it (framing is not just far away).
+QString framingProblem(MainWindow& w) {
+    LadderView* view = w.ladderView();
+    const auto status = w.controller()->status();
+    if (!status->frame) return "no frame";
+    const std::vector<BlockShape> shapes = blockShapes(w.document()->scene());
+    const QMatrix4x4 viewProjection = view->camera()->projectionMatrix() * view->camera()->viewMatrix();
+    float lo[2] = {1e9f, 1e9f}, hi[2] = {-1e9f, -1e9f};
+    for (size_t i = 0; i < status->frame->blocks.size(); ++i) {
+        const jl::Pose& p = status->frame->blocks[i];
+        const BlockShape& s = shapes[i];
+        const float c = float(std::cos(p.angle)), sn = float(std::sin(p.angle));
+        for (const float u : {-s.across / 2, s.across / 2})
+            for (const float v : {-s.along / 2, s.along / 2})
+                for (const float z : {-s.out / 2, s.out / 2}) {
+                    const QVector4D clip = viewProjection * QVector4D(float(p.position.x()) + c * u - sn * v,
+                                                                      float(p.position.y()) + sn * u + c * v, z, 1);
+                    if (clip.w() <= 0) return QString("block %1 is behind the eye").arg(i);
+                    const float x = clip.x() / clip.w(), y = clip.y() / clip.w();
+                    if (std::abs(x) > 1 || std::abs(y) > 1)
+                        return QString("a corner of block %1 is out of view at %2, %3").arg(i).arg(x).arg(y);
+                    lo[0] = std::min(lo[0], x), hi[0] = std::max(hi[0], x);
+                    lo[1] = std::min(lo[1], y), hi[1] = std::max(hi[1], y);
+                }
+    }
+    // Normalised coordinates span 2 each way: the ladder spans half the view at least one way.
+    if (std::max(hi[0] - lo[0], hi[1] - lo[1]) < 1.0f)
+        return QString("the ladder is small in the view: %1 by %2").arg(hi[0] - lo[0]).arg(hi[1] - lo[1]);
+    return {};
+}
+}  // namespace
+
 class ViewCameraTest : public QObject {
     Q_OBJECT
 private slots:
+    void initTestCase() { jltest::isolateSettings(); }
+
+    void aSceneThatLeavesTheYawIsSeenFromThreeQuarters() {
+        ViewCamera c;
+        c.reset(jl::ViewSpec{}, 0.36);
+        QVERIFY(c.yaw() != 0);
+        // Both the faces (x) and the edges (z) of the blocks face the eye.
+        QVERIFY(c.eye().x() > 0.3f && c.eye().z() > 0.3f);
+    }
+
     void aShortLadderKeepsTheScenesView() {
         ViewCamera c;
-        jl::ViewSpec v;  // target (0, -0.15), distance 0.8, yaw 0, pitch 10
+        jl::ViewSpec v;  // target (0, -0.15), distance 0.8, pitch 10
+        v.yaw = 360;     // edge-on, as the file asks
         c.reset(v, 0.36);
         QCOMPARE(c.distance(), 0.8f);
         const QVector3D eye = c.eye();
@@ -45,7 +119,9 @@ private slots:
 
     void walkingMovesTheEyeLevelAndLookingAroundKeepsIt() {
         ViewCamera c;
-        c.reset(jl::ViewSpec{}, 0.36);
+        jl::ViewSpec v;
+        v.yaw = 360;  // looking along -z
+        c.reset(v, 0.36);
         const QVector3D before = c.eye();
         c.walk(1.0f, 0, 0);  // a metre forward, toward the ladder (-z), level
         const QVector3D after = c.eye();
@@ -53,6 +129,56 @@ private slots:
         QVERIFY(qFuzzyCompare(after.y(), before.y()));
         c.lookAround(45, 0);
         QVERIFY((c.eye() - after).length() < 1e-5f);
+    }
+
+    void theWholeLadderIsFramedOnLoadAndOnF_data() {
+        QTest::addColumn<int>("blocks");
+        QTest::newRow("6 blocks") << 6;
+        QTest::newRow("200 blocks") << 200;
+    }
+
+    void theWholeLadderIsFramedOnLoadAndOnF() {
+        QFETCH(int, blocks);
+        QTemporaryDir dir;
+        MainWindow w(jltest::quietWindow());
+        QVERIFY(showScene(w, ladderFile(dir, blocks)));
+        QVERIFY(w.ladderView()->viewCamera().yaw() != 0);
+        QString problem = framingProblem(w);
+        QVERIFY2(problem.isEmpty(), qPrintable("after load: " + problem));
+
+        // Turned, moved off and zoomed right in: F brings the whole ladder back, seen from there.
+        w.ladderView()->orbit(70, 25);
+        QWheelEvent wheel(QPointF(100, 100), QPointF(100, 100), {}, QPoint(0, 120 * 12), Qt::NoButton, Qt::NoModifier,
+                          Qt::NoScrollPhase, false);
+        QCoreApplication::sendEvent(w.ladderView(), &wheel);
+        QVERIFY(!framingProblem(w).isEmpty());
+        const float yaw = w.ladderView()->viewCamera().yaw();
+        QTest::keyClick(w.ladderView(), Qt::Key_F);
+        QCOMPARE(w.ladderView()->viewCamera().yaw(), yaw);
+        problem = framingProblem(w);
+        QVERIFY2(problem.isEmpty(), qPrintable("after F: " + problem));
+    }
+
+    void theClassicExampleIsSeenFromThreeQuartersAndWhole() {
+        MainWindow w(jltest::quietWindow());
+        QVERIFY(showScene(w, kClassic));
+        QVERIFY(w.ladderView()->viewCamera().yaw() != 0);
+        const QString problem = framingProblem(w);
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
+    }
+
+    void aLongerLadderIsFramedAgain() {
+        MainWindow w(jltest::quietWindow());
+        QVERIFY(showScene(w, kClassic));
+        auto* blocks = w.findChild<QSpinBox*>("blocks");
+        QVERIFY(blocks);
+        const auto before = jltest::loadsSoFar(w.controller());
+        blocks->setValue(60);
+        QVERIFY(jltest::loadedAfter(w.controller(), before));
+        QTest::qWait(200);
+        QCOMPARE(int(w.controller()->status()->frame->blocks.size()), 60);
+        const QString problem = framingProblem(w);
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
     }
 };
 
