@@ -1,9 +1,9 @@
 #include "core/bound.h"
 
+#include "core/scalar_text.h"
+
 #include <charconv>
 #include <cmath>
-
-#include "core/scalar_text.h"
 
 namespace jl {
 
@@ -30,9 +30,7 @@ std::string limitText(double x) {
 
 }  // namespace
 
-bool Bound::contains(double x) const {
-    return (loOpen ? x > lo : x >= lo) && (hiOpen ? x < hi : x <= hi);
-}
+bool Bound::contains(double x) const { return (loOpen ? x > lo : x >= lo) && (hiOpen ? x < hi : x <= hi); }
 
 std::string Bound::describe() const {
     const bool hasLo = std::isfinite(lo), hasHi = std::isfinite(hi);

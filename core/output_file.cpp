@@ -2,15 +2,14 @@
 // system, so the temporary lives in the directory of the file it replaces.
 #include "core/output_file.h"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <cerrno>
 #include <charconv>
 #include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <optional>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <utility>
 
 namespace jl {
@@ -184,7 +183,8 @@ bool OutputFile::keepAs(const std::string& other) {
     if (direct_ || temporary_.empty()) return closed;
     // Whatever happens, the temporary is not removed: it holds the result.
     const std::string temporary = std::exchange(temporary_, {});
-    if (::rename(temporary.c_str(), other.c_str()) != 0) return fail("cannot rename " + temporary + " to " + other, errno);
+    if (::rename(temporary.c_str(), other.c_str()) != 0)
+        return fail("cannot rename " + temporary + " to " + other, errno);
     return closed;
 }
 

@@ -37,12 +37,12 @@ inline constexpr Bound mass = Bound::closed(1e-6, 1e6);
 inline constexpr Bound inertia = Bound::closed(1e-15, 1e9);
 
 // Where things are and how they move: each coordinate of a point.
-inline constexpr Bound coordinate = Bound::symmetric(1e4);      // m
-inline constexpr Bound velocity = Bound::symmetric(1e4);        // m/s
-inline constexpr Bound angle = Bound::symmetric(1e4);           // rad
-inline constexpr Bound angularVelocity = Bound::symmetric(1e4); // rad/s
-inline constexpr Bound gravity = Bound::symmetric(1e3);         // m/s^2, about 100 g
-inline constexpr Bound impulse = Bound::symmetric(1e4);         // N s
+inline constexpr Bound coordinate = Bound::symmetric(1e4);       // m
+inline constexpr Bound velocity = Bound::symmetric(1e4);         // m/s
+inline constexpr Bound angle = Bound::symmetric(1e4);            // rad
+inline constexpr Bound angularVelocity = Bound::symmetric(1e4);  // rad/s
+inline constexpr Bound gravity = Bound::symmetric(1e3);          // m/s^2, about 100 g
+inline constexpr Bound impulse = Bound::symmetric(1e4);          // N s
 
 // Springs, dampers and impacts.
 inline constexpr Bound stiffness = Bound::closed(0, 1e7);       // N/m
@@ -51,11 +51,11 @@ inline constexpr Bound springDamping = Bound::closed(0, 1e4);   // N s/m
 inline constexpr Bound linearDamping = Bound::closed(0, 1e3);   // N s/m
 inline constexpr Bound angularDamping = Bound::closed(0, 1e3);  // N m s, air and hinges
 inline constexpr Bound restitution = Bound::halfOpen(0, 1);
-inline constexpr Bound reboundSpeed = Bound::closed(0, 1e3);    // rad/s
+inline constexpr Bound reboundSpeed = Bound::closed(0, 1e3);  // rad/s
 
 // The camera.
-inline constexpr Bound viewDistance = Bound::closed(1e-3, 1e4); // m
-inline constexpr Bound yaw = Bound::closed(-360, 360);          // degrees
-inline constexpr Bound pitch = Bound::closed(-90, 90);          // degrees
+inline constexpr Bound viewDistance = Bound::closed(1e-3, 1e4);  // m
+inline constexpr Bound yaw = Bound::closed(-360, 360);           // degrees
+inline constexpr Bound pitch = Bound::closed(-90, 90);           // degrees
 
 }  // namespace jl::range

@@ -96,8 +96,9 @@ std::string summaryJson(const Recording& r, const std::string& scenePath) {
     s << "{\"scene\":" << jsonString(scenePath) << ",\"time\":" << jsonNumber(r.time) << ",\"steps\":" << r.steps
       << ",\"evaluations\":" << r.evaluations << ",\"step\":" << stepJson(r.solver) << ",\"events\":" << r.events
       << ",\"energy_start\":" << jsonNumber(r.energyStart) << ",\"energy_end\":" << jsonNumber(r.energyEnd)
-      << ",\"worst_energy_balance\":" << jsonNumber(r.worstBalance) << ",\"max_residual\":" << jsonNumber(r.worstResidual)
-      << ",\"wall_seconds\":" << jsonNumber(r.wallSeconds) << ",\"failure\":" << failureJson(r) << "}";
+      << ",\"worst_energy_balance\":" << jsonNumber(r.worstBalance)
+      << ",\"max_residual\":" << jsonNumber(r.worstResidual) << ",\"wall_seconds\":" << jsonNumber(r.wallSeconds)
+      << ",\"failure\":" << failureJson(r) << "}";
     return s.str();
 }
 

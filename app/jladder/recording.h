@@ -24,10 +24,10 @@ struct Recording {
     double energyStart = 0, energyEnd = 0, worstBalance = 0, worstResidual = 0, wallSeconds = 0;
     double time = 0;
     long long steps = 0, evaluations = 0, events = 0;
-    SolverFrame solver;            // the last frame's statistics (the step the engine chose among them)
-    std::string failure;           // the engine's
-    int interrupted = 0;           // the signal that ended the run early, or 0
-    bool targetFailed = false;     // the target refused a frame or an event
+    SolverFrame solver;         // the last frame's statistics (the step the engine chose among them)
+    std::string failure;        // the engine's
+    int interrupted = 0;        // the signal that ended the run early, or 0
+    bool targetFailed = false;  // the target refused a frame or an event
     bool complete() const { return failure.empty() && interrupted == 0 && !targetFailed; }
 };
 

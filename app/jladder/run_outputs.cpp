@@ -55,9 +55,15 @@ bool RunOutputs::open() {
         }
         text_.str({});
         switch (o.table) {
-            case Table::Poses: writePosesCsvHeader(text_); break;
-            case Table::Energy: writeEnergyCsvHeader(text_); break;
-            case Table::Events: text_ << "["; break;
+            case Table::Poses:
+                writePosesCsvHeader(text_);
+                break;
+            case Table::Energy:
+                writeEnergyCsvHeader(text_);
+                break;
+            case Table::Events:
+                text_ << "[";
+                break;
         }
         if (!put(o, text_.str())) return false;
     }
@@ -83,8 +89,10 @@ bool RunOutputs::frame(const Frame& f) {
     for (Output& o : outputs_) {
         if (o.table == Table::Events) continue;
         text_.str({});
-        if (o.table == Table::Poses) writePosesCsvRows(text_, f);
-        else writeEnergyCsvRow(text_, f);
+        if (o.table == Table::Poses)
+            writePosesCsvRows(text_, f);
+        else
+            writeEnergyCsvRow(text_, f);
         ok = put(o, text_.str()) && ok;
     }
     return ok;
