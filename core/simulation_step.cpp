@@ -173,7 +173,11 @@ double Simulation::fixedStep() {
 // that fails with a diagnostic instead.
 bool Simulation::retryWithSmallerStep() {
     constexpr int kMostHalvings = 10;
-    if (scene_.solver.step > 0 || stats_.stepHalvings >= kMostHalvings) return false;
+    // The adaptive integrator chooses its own steps (by its tolerance): a
+    // shorter first try would change nothing.
+    if (scene_.solver.step > 0 || scene_.solver.integrator == Integrator::DormandPrince45 ||
+        stats_.stepHalvings >= kMostHalvings)
+        return false;
     restoreStepStart();
     world_.updateKinematics(t_);
     dynamics_.evaluate(world_, t_);
@@ -199,6 +203,12 @@ std::string gapText(double metres) {
 std::string Simulation::blowUpAdvice(double h) const {
     char step[32];
     std::snprintf(step, sizeof step, "%.3g s", h);
+    if (scene_.solver.integrator == Integrator::DormandPrince45) {
+        char tolerance[32];
+        std::snprintf(tolerance, sizeof tolerance, "%.3g", scene_.solver.tolerance);
+        return std::string("the adaptive integrator's tolerance ") + tolerance +
+               " lets too much error through here; try a tighter tolerance";
+    }
     if (scene_.solver.step > 0)
         return std::string("the step ") + step +
                " is too large for this integrator here (a fast vibration grows at every step); try a smaller step, "
