@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <map>
@@ -111,6 +112,17 @@ std::optional<std::string> Simulation::buildWorld() {
     for (const PinSpec& pin : scene_.pins) {
         const auto a = particleAt(pin.a), b = particleAt(pin.b);
         if (!a || !b) return "a pin refers to '" + (a ? pin.b.on : pin.a.on) + "', which does not exist";
+        // A pin joins two points that coincide. Points apart at the start would
+        // be frozen where they stand (combine makes a rigid joint of what it
+        // finds), with no gap left to measure: refuse, and say how far apart.
+        constexpr double kAssembled = 1e-6;  // m: coordinates written to the micrometre
+        const double apart = (world_.particlePosition(*a) - world_.particlePosition(*b)).norm();
+        if (!(apart <= kAssembled)) {
+            char text[160];
+            std::snprintf(text, sizeof text, "pin between '%s' and '%s': its two points are %.6g m apart at the start; "
+                          "place them where they meet", pin.a.on.c_str(), pin.b.on.c_str(), apart);
+            return std::string(text);
+        }
         if (auto e = world_.combine(*a, *b)) return "pin between '" + pin.a.on + "' and '" + pin.b.on + "': " + e->message;
     }
     for (const SpringSpec& s : scene_.springs) {

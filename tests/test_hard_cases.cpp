@@ -258,6 +258,26 @@ private slots:
         QVERIFY2(o.failure.find("tolerance") != std::string::npos, o.failure.c_str());
     }
 
+    // A particle pinned to a world point 0.5 m away was frozen where it
+    // stood (combine made a rigid joint of what it found) and the run
+    // reported a residual of 0, having no pin left to measure. Refused now,
+    // with the distance.
+    void aPinWhosePointsAreApartIsRefused() {
+        Scene s;
+        ParticleSpec p;
+        p.name = "p1";
+        p.mass = 0.02;
+        s.particles.push_back(p);
+        s.pins.push_back(PinSpec{PointRef{"world", {0.5, 0}}, PointRef{"p1", {0, 0}}});
+        Simulation::Built built = Simulation::build(s);
+        QVERIFY(!built.simulation);
+        QVERIFY(!built.errors.empty());
+        qInfo("%s", built.errors.front().c_str());
+        QVERIFY(built.errors.front().find("0.5 m apart") != std::string::npos);
+        s.pins.front().a.local = {0, 0};  // where the particle is: a proper pin
+        QVERIFY(Simulation::build(s).simulation);
+    }
+
     void violentDragTenMetresAwayForOneSecond() {
         Scene s = ladderScene(6);
         DragRecord d;

@@ -5,6 +5,7 @@
 
 #include "app/jladder/commands.h"
 #include "core/scene_io.h"
+#include "core/simulation.h"
 
 namespace jl::cli {
 
@@ -14,8 +15,9 @@ void usage(std::FILE* out) {
     std::fputs(
         "usage: jladder validate SCENE...\n"
         "\n"
-        "Checks each scene file against the format (docs/scene-format.md) without\n"
-        "running it. Every problem is printed on stderr as file:line:column: message.\n"
+        "Checks each scene file against the format (docs/scene-format.md) and builds\n"
+        "its world, without running it. Every problem is printed on stderr as\n"
+        "file:line:column: message (or file: message, for what the engine finds).\n"
         "Exit status: 0 if every file is valid, 1 if any is not, 2 on a usage error.\n",
         out);
 }
@@ -44,7 +46,15 @@ int validate(const std::vector<std::string>& args) {
     for (const std::string& file : files) {
         const SceneLoad load = loadScene(file);
         for (const Diagnostic& d : load.errors) std::fprintf(stderr, "%s\n", d.format().c_str());
-        if (!load.scene) ++invalid;
+        if (!load.scene) {
+            ++invalid;
+            continue;
+        }
+        // What only the engine can tell (a pin whose points are apart at the
+        // start, a ladder it cannot place): build the world, without running it.
+        const Simulation::Built built = Simulation::build(*load.scene);
+        for (const std::string& e : built.errors) std::fprintf(stderr, "%s: %s\n", file.c_str(), e.c_str());
+        if (!built.simulation) ++invalid;
     }
     if (files.size() > 1)
         std::fprintf(invalid ? stderr : stdout, "%zu of %zu files valid\n", files.size() - invalid, files.size());
