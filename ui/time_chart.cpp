@@ -42,7 +42,7 @@ void setNiceRange(QValueAxis* axis, double lo, double hi, int intervals = 5) {
 TimeChart::TimeChart(const QString& title, const QString& unit, QWidget* parent) : QChartView(new QChart, parent) {
     setRenderHint(QPainter::Antialiasing);
     setRubberBand(QChartView::NoRubberBand);
-    setMinimumHeight(120);
+    setMinimumSize(kMinimumSize);
     chart()->setTitle(title);
     chart()->setMargins(QMargins(4, 2, 4, 2));
     chart()->legend()->setAlignment(Qt::AlignRight);
@@ -163,6 +163,10 @@ void TimeChart::setLarge(bool large) {
         pen.setWidthF(large ? pen.widthF() * 2 : pen.widthF() / 2);
         s->setPen(pen);
     }
+    // QChartView raises its minimum size to the chart's on every resize and
+    // never lowers it: the large type's minimum would outlast presentation
+    // mode and hold the window taller than the screen.
+    setMinimumSize(kMinimumSize);
 }
 
 QPointF TimeChart::viewPointOf(double t, double value) const {

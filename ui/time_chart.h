@@ -55,6 +55,7 @@ protected:
     void mouseMoveEvent(QMouseEvent* e) override;
 
 private:
+    static constexpr QSize kMinimumSize{0, 120};  // a chart still readable in a low dock
     void seekAt(const QPointF& viewPoint);
 
     QValueAxis* timeAxis_;
