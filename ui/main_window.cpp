@@ -4,6 +4,7 @@
 #include "ui/events_panel.h"
 #include "ui/ladder_panel.h"
 #include "ui/ladder_view.h"
+#include "ui/screen_fit.h"
 #include "ui/script_panel.h"
 #include "ui/shader_material.h"
 #include "ui/sim_controller.h"
@@ -346,6 +347,7 @@ void MainWindow::syncRecordedDrags(const SimStatus& s) {
 void MainWindow::readSettings() {
     QSettings settings;
     if (!restoreGeometry(settings.value("window/geometry").toByteArray())) resize(1440, 900);
+    fitToScreen(this);  // saved on a larger screen, or the default on a small one
     restoreState(settings.value("window/state").toByteArray());
     setSpeed(settings.value("simulation/speed", 1.0).toDouble());
     const int budgetMb = settings.value("simulation/historyMegabytes", 512).toInt();

@@ -1,10 +1,13 @@
 #include "ui/presentation_mode.h"
 
+#include "ui/screen_fit.h"
+
 #include <QAction>
 #include <QDockWidget>
 #include <QMainWindow>
 #include <QMenuBar>
 #include <QStatusBar>
+#include <QTimer>
 #include <QToolBar>
 
 namespace jlui {
@@ -57,11 +60,17 @@ void PresentationMode::leave() {
     window_->removeAction(escape_);
     for (QAction* a : lifted_) window_->removeAction(a);
     lifted_.clear();
+    // Normal type before the chrome comes back: the chrome laid out in large
+    // type needs more height than the screen has, and a layout grows its
+    // window to its minimum but never shrinks it back.
+    window_->setFont(font_);
     for (const QPointer<QWidget>& w : hidden_)
         if (w) w->show();
     hidden_.clear();
-    window_->setFont(font_);
     window_->setWindowState(windowState_);
+    // Once the layout has settled in normal type and the window is back to
+    // its normal state, it must be within the screen again.
+    QTimer::singleShot(0, window_, [w = window_] { fitToScreen(w); });
 }
 
 }  // namespace jlui
