@@ -1,6 +1,7 @@
 // labels: ui
 // The desktop window: it opens a scene and draws it, edits undo exactly,
-// saves and opens, and refuses a bad file without touching the open scene.
+// saves and opens, refuses a bad file without touching the open scene, and
+// stays within the screen (restored, and after presentation mode).
 #include "ui_test_support.h"
 
 #include "core/scene_io.h"
@@ -12,6 +13,8 @@
 #include <QPushButton>
 #include <QTableWidget>
 #include <QRegularExpression>
+#include <QScreen>
+#include <QSettings>
 #include <QSpinBox>
 #include <QTemporaryDir>
 #include <Qt3DRender/QRenderCapture>
@@ -219,6 +222,54 @@ private slots:
         QCOMPARE(dialog->errorCount(), int(expected.size()));
         const QRegularExpression located("negative-length\\.yaml:\\d+:\\d+: \\S");
         for (const QString& line : dialog->lines()) QVERIFY2(located.match(line).hasMatch(), qPrintable(line));
+    }
+
+    // Filling a 1440 x 900 screen, the window came back from presentation
+    // mode taller than the screen, the plots and the status bar off it.
+    void leavingPresentationModeKeepsTheWindowOnTheScreen() {
+        MainWindow w(jltest::quietWindow());
+        QVERIFY(showClassic(w));
+        const QRect screen = w.screen()->availableGeometry();
+        w.setGeometry(screen);
+        w.activateWindow();
+        QTest::qWait(200);
+        const QRect before = w.geometry();
+        const QSize smallest = w.minimumSizeHint();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QTest::keyClick(&w, Qt::Key_F5);
+        QTRY_VERIFY(w.isFullScreen());
+        QTest::qWait(300);  // laid out in large type
+        QTest::keyClick(&w, Qt::Key_Escape);
+        QTRY_VERIFY(!w.isFullScreen());
+        QTest::qWait(500);
+        const QRect g = w.frameGeometry();
+        QVERIFY2(screen.contains(g), qPrintable(QString("the window %1x%2 at %3,%4 is not within the screen's %5x%6")
+                                                    .arg(g.width()).arg(g.height()).arg(g.x()).arg(g.y())
+                                                    .arg(screen.width()).arg(screen.height())));
+        // On a taller screen too the window comes back as it was, and the
+        // large type's minimum sizes do not outlast presentation mode.
+        QCOMPARE(w.geometry(), before);
+        QCOMPARE(w.minimumSizeHint(), smallest);
+    }
+
+    // A geometry saved on a larger screen (or before presentation mode was
+    // fixed) is fitted to the screen the window opens on.
+    void aRestoredWindowTallerThanTheScreenIsFittedToIt() {
+        const QRect screen = QGuiApplication::primaryScreen()->availableGeometry();
+        {
+            MainWindow big(jltest::quietWindow());
+            big.setGeometry(screen.x() + 40, screen.y() + 30, screen.width() + 200, screen.height() + 400);
+            QSettings().setValue("window/geometry", big.saveGeometry());
+        }
+        MainWindow w(jltest::quietWindow());
+        QSettings().remove("window/geometry");
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QTest::qWait(300);
+        const QRect g = w.frameGeometry();
+        QVERIFY2(screen.contains(g), qPrintable(QString("the window %1x%2 at %3,%4 is not within the screen's %5x%6")
+                                                    .arg(g.width()).arg(g.height()).arg(g.x()).arg(g.y())
+                                                    .arg(screen.width()).arg(screen.height())));
     }
 };
 
