@@ -4,6 +4,7 @@
 #include "app/jladder/bench_cases.h"
 #include "app/jladder/bench_chart.h"
 #include "app/jladder/bench_events.h"
+#include "app/jladder/bench_examples.h"
 #include "app/jladder/bench_models.h"
 #include "app/jladder/bench_peers.h"
 #include "app/jladder/bench_report.h"
@@ -22,7 +23,8 @@ namespace jl::cli {
 namespace {
 
 const char* kHelp =
-    "usage: jladder bench [--quick] [--out DIR] [--report FILE] [--only stability|models|events]\n"
+    "usage: jladder bench [--quick] [--out DIR] [--report FILE] [--examples DIR]\n"
+    "                     [--only stability|models|events|examples]\n"
     "Measures cost (CPU seconds per simulated second) against error for every\n"
     "integrator and event policy on the physical pendulum, the falling chain\n"
     "(N = 10, 100, 1,000; against an independent reduced-coordinate reference)\n"
@@ -31,12 +33,16 @@ const char* kHelp =
     "hanging ladder, the step limit it predicts, the largest RK4 step that\n"
     "runs); cascades with locked pairs merged into one body against welded\n"
     "pairs; the CPU cost of an event on ladders of 12 .. 10,000 thin blocks;\n"
+    "every scene of --examples DIR (default: examples, relative to the current\n"
+    "directory) at its own settings for 3 s (quick: 1 s), and long-ladder.yaml\n"
+    "with 1,000 blocks (not in --quick);\n"
     "and, if built with -DJL_BENCH_PEERS=ON, MuJoCo, Box2D and\n"
     "Bullet on the same chains. Writes DIR/*.csv, DIR/*.svg, DIR/*.png\n"
     "(default DIR: docs/bench) and FILE (default docs/performance.md).\n"
     "--quick: fewer sizes and steps; fits in CI (under a minute).\n"
-    "--only stability|models|events: that study alone; FILE (default\n"
-    "DIR/stability.md, DIR/models.md or DIR/events.md) gets its section only.\n";
+    "--only stability|models|events|examples: that study alone; FILE (default\n"
+    "DIR/stability.md, DIR/models.md, DIR/events.md or DIR/examples.md) gets\n"
+    "its section only.\n";
 
 bool writeCsv(const std::vector<BenchRow>& rows, const std::filesystem::path& path) {
     std::ofstream f(path);
@@ -64,6 +70,20 @@ bool writeEventCostCsv(const std::vector<EventCostRow>& rows, const std::filesys
           << r.perEvent << ',' << r.perInstant << ',' << r.eventShare << ',' << r.perEvent / r.plainStepCpu << ','
           << r.controlSteps << ',' << r.controlEvents << ',' << r.controlStepCpu << ',' << r.perEventControl << ','
           << r.eventfulSteps << ',' << r.eventfulCpu << ',' << r.perEventInStep << ",\"" << r.failure << "\"\n";
+    return bool(f);
+}
+
+bool writeExamplesCsv(const ExamplesStudy& s, const std::filesystem::path& path) {
+    std::ofstream f(path);
+    f << "scene,blocks,asked_s,simulated_s,cpu_s,cpu_s_per_sim_s,faster_than_real_time,steps,integrator,adaptive,"
+         "tolerance,automatic_step,smallest_step_s,largest_step_s,step_halvings,hinge_events,failure\n";
+    f.precision(6);
+    for (const ExampleRow& r : s.rows)
+        f << '"' << r.scene << "\"," << r.blocks << ',' << r.asked << ',' << r.simulated << ',' << r.cpu << ','
+          << r.perSimulated() << ',' << (r.simulated > 0 && r.perSimulated() <= 1 ? 1 : 0) << ',' << r.steps << ",\""
+          << r.integrator << "\"," << (r.adaptive ? 1 : 0) << ',' << r.tolerance << ',' << (r.automaticStep ? 1 : 0)
+          << ',' << r.smallestStep << ',' << r.largestStep << ',' << r.stepHalvings << ',' << r.hingeEvents << ",\""
+          << r.failure << "\"\n";
     return bool(f);
 }
 
@@ -104,19 +124,22 @@ Chart workPrecision(const std::string& title, const std::string& errorLabel, con
 }  // namespace
 
 int bench(const std::vector<std::string>& args) {
-    Options o = parse(args, {"--out", "--report", "--only"}, {"--quick", "--help"});
+    Options o = parse(args, {"--out", "--report", "--only", "--examples"}, {"--quick", "--help"});
     if (o.has("--help")) {
         std::fputs(kHelp, stdout);
         return 0;
     }
     const std::string only = o.get("--only").value_or("");
-    if (o.error.empty() && !only.empty() && only != "stability" && only != "models" && only != "events")
-        o.error = "--only takes 'stability', 'models' or 'events', not '" + only + "'";
+    if (o.error.empty() && !only.empty() && only != "stability" && only != "models" && only != "events" &&
+        only != "examples")
+        o.error = "--only takes 'stability', 'models', 'events' or 'examples', not '" + only + "'";
     if (!o.error.empty()) {
         std::fprintf(stderr, "jladder bench: %s\n", o.error.c_str());
         return 2;
     }
     const bool onlyStability = only == "stability", onlyModels = only == "models", onlyEvents = only == "events";
+    const bool onlyExamples = only == "examples";
+    const std::filesystem::path examplesDir = o.get("--examples").value_or("examples");
     BenchPlan plan;
     plan.quick = o.has("--quick");
     plan.minSeconds = plan.quick ? 0.005 : 0.05;
@@ -153,6 +176,13 @@ int bench(const std::vector<std::string>& args) {
         return finish(writeEventCostCsv(rows, out / "events.csv") && writeEventCostReport(rows, plan.quick, report));
     }
 
+    if (onlyExamples) {
+        std::fprintf(stderr, "examples at default settings\n");
+        const ExamplesStudy study = examplesStudy(plan, examplesDir);
+        return finish(writeExamplesCsv(study, out / "examples.csv") && writeExamplesReport(study, plan.quick, report) &&
+                      study.error.empty());
+    }
+
     BenchResults results;
     results.quick = plan.quick;
     std::fprintf(stderr, "pendulum\n");
@@ -179,12 +209,15 @@ int bench(const std::vector<std::string>& args) {
     results.models = rigidPairModelStudy(plan);
     std::fprintf(stderr, "cost of an event\n");
     results.eventCost = eventCostStudy(plan);
+    std::fprintf(stderr, "examples at default settings\n");
+    results.examples = examplesStudy(plan, examplesDir);
     results.peers = peerVersions();
 
     bool ok = writeCsv(results.pendulum, out / "pendulum.csv") && writeCsv(results.ladder, out / "ladder.csv") &&
               writeCsv(results.scaling, out / "scaling.csv") && writeCsv(results.longLadder, out / "long_ladder.csv") &&
               writeStabilityCsv(results.stability, out / "stability.csv") && writeCsv(results.models, out / "models.csv") &&
-              writeEventCostCsv(results.eventCost, out / "events.csv");
+              writeEventCostCsv(results.eventCost, out / "events.csv") &&
+              writeExamplesCsv(results.examples, out / "examples.csv");
     ok = writeChart(workPrecision("Physical pendulum, one exact period (theta0 = 2 rad)", "error (rad)", results.pendulum),
                     out, "pendulum") && ok;
     for (const auto& [n, rows] : results.chains) {

@@ -349,6 +349,93 @@ void eventCost(std::ostream& md, const std::vector<EventCostRow>& rows, bool qui
        << kEventProfile << "\n\n";
 }
 
+// The example that the targets name; its 1,000-block row is this name
+// followed by " x 1,000 blocks".
+constexpr const char* kLongExample = "long-ladder.yaml";
+
+std::string exampleStep(const ExampleRow& r) {
+    const std::string who = r.automaticStep ? "engine: " : "scene: ";
+    std::string step;
+    if (r.adaptive)
+        step = "adaptive, tolerance " + sig(r.tolerance, 3) + ", mean " +
+               ms(r.simulated / double(std::max(r.steps, 1LL)));
+    else if (r.smallestStep == r.largestStep)
+        step = who + ms(r.smallestStep);
+    else
+        step = who + ms(r.smallestStep) + " .. " + ms(r.largestStep);
+    if (r.stepHalvings > 0) step += ", halved " + std::to_string(r.stepHalvings) + "x";
+    return step + " (" + r.integrator + ")";
+}
+
+// A CPU budget for 3 s of simulated time, scaled to the time run (quick: 1 s).
+void exampleBudget(std::ostream& md, const ExampleRow* r, const std::string& what, double cpuFor3s) {
+    if (!r) {
+        md << "- " << what << ": not measured.\n";
+        return;
+    }
+    const double limit = cpuFor3s * r->asked / 3.0;
+    const bool met = r->failure.empty() && r->simulated >= r->asked - 1e-9 && r->cpu <= limit;
+    md << "- " << what << " for " << sig(r->asked, 3) << " s in at most " << sig(limit, 3) << " CPU s"
+       << (r->asked < 3 ? " (" + sig(cpuFor3s, 3) + " CPU s for 3 s, scaled)" : std::string()) << ": "
+       << sig(r->cpu, 3) << " CPU s — **" << (met ? "met" : "missed") << "**"
+       << (r->failure.empty() ? "" : " (failed: " + r->failure + ")") << ".\n";
+}
+
+void examplesSection(std::ostream& md, const ExamplesStudy& s, bool quick) {
+    const double horizon = quick ? 1.0 : 3.0;
+    md << "## Examples at default settings\n\n"
+       << "Every scene of `" << s.dir.generic_string() << "` (read from `--examples DIR`, default `examples` "
+       << "relative to the current directory: run from the source tree), loaded and run headless with "
+       << "`jl::Simulation` at the scene's own settings for " << sig(horizon, 1)
+       << " s of simulated time (the scene's duration if shorter)"
+       << (quick ? "" : ", plus the long-ladder design with 1,000 blocks") << ". CPU is the thread's CPU time "
+       << "(`CLOCK_THREAD_CPUTIME_ID`) of one run, building the scene included. The step: the scene's own, or "
+       << "chosen by the engine (smallest .. largest it used; halvings after a step that blew up); Dormand-Prince "
+       << "adapts its step to its tolerance (its mean step shown). Run alone with `jladder bench --only examples"
+       << (quick ? " --quick" : "") << "`."
+       << (quick ? " **Quick run**: 1 s of simulated time instead of 3, and no 1,000-block row; the CPU budgets "
+                   "below are scaled to 1 s."
+                 : "")
+       << "\n\n";
+    if (!s.error.empty()) {
+        md << "Not measured: " << s.error << ".\n\n";
+        return;
+    }
+    md << "| scene | blocks | simulated s | CPU s | CPU s per simulated s | steps | step | hinge events | failure |\n"
+       << "|---|---:|---:|---:|---:|---:|---|---:|---|\n";
+    for (const ExampleRow& r : s.rows) {
+        const double per = r.perSimulated();
+        md << "| " << r.scene << " | " << r.blocks << " | " << sig(r.simulated, 3) << " | " << sig(r.cpu, 3)
+           << " | " << sig(per, 3)
+           << (r.simulated > 0 ? (per <= 1 ? " (faster than real time)" : " (slower than real time)") : "") << " | "
+           << r.steps << " | " << exampleStep(r) << " | " << r.hingeEvents << " | " << r.failure << " |\n";
+    }
+    md << "\nTargets:\n\n";
+    auto find = [&](const std::string& name) -> const ExampleRow* {
+        for (const ExampleRow& r : s.rows)
+            if (r.scene == name) return &r;
+        return nullptr;
+    };
+    exampleBudget(md, find(kLongExample), std::string("`") + kLongExample + "`", 1.5);
+    if (quick)
+        md << "- The same design with 1,000 blocks for 3 s in at most 3 CPU s: not run in the quick form.\n";
+    else
+        exampleBudget(md, find(std::string(kLongExample) + " x 1,000 blocks"), "The same design with 1,000 blocks",
+                      3.0);
+    const ExampleRow* worst = nullptr;
+    int slow = 0;
+    for (const ExampleRow& r : s.rows) {
+        if (r.scene.find(" x ") != std::string::npos) continue;  // the 1,000-block design is not an example
+        if (!r.failure.empty() || r.simulated <= 0 || r.perSimulated() > 1) ++slow;
+        if (!worst || r.perSimulated() > worst->perSimulated()) worst = &r;
+    }
+    md << "- Every example at most 1 CPU s per simulated second (it can play at 1x): the slowest is "
+       << (worst ? worst->scene + " at " + sig(worst->perSimulated(), 3) : std::string("none")) << "; " << slow
+       << " over or failed — **" << (slow == 0 && worst ? "met" : "missed") << "**.\n\n"
+       << "The desktop program also draws every frame, so its real-time factor is measured separately (the status "
+          "bar shows it).\n\n";
+}
+
 void targets(std::ostream& md, const BenchResults& r) {
     md << "## Targets of docs/model.md section 16.2, checked against the numbers above\n\n";
     // 1. N = 100: at every peer's cost, an error 100x below.
@@ -469,6 +556,7 @@ bool writeReport(const BenchResults& r, const std::filesystem::path& plots, cons
     stability(md, r.stability, r.quick);
     models(md, r.models, r.quick);
     eventCost(md, r.eventCost, r.quick);
+    examplesSection(md, r.examples, r.quick);
     targets(md, r);
     return bool(md);
 }
@@ -489,6 +577,10 @@ bool writeModelsReport(const std::vector<BenchRow>& rows, bool quick, const std:
 
 bool writeEventCostReport(const std::vector<EventCostRow>& rows, bool quick, const std::filesystem::path& report) {
     return writeSection("events", quick, report, [&](std::ostream& md) { eventCost(md, rows, quick); });
+}
+
+bool writeExamplesReport(const ExamplesStudy& s, bool quick, const std::filesystem::path& report) {
+    return writeSection("examples", quick, report, [&](std::ostream& md) { examplesSection(md, s, quick); });
 }
 
 bool writeStabilityReport(const StabilityStudy& s, bool quick, const std::filesystem::path& report) {

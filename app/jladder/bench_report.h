@@ -5,6 +5,7 @@
 
 #include "app/jladder/bench_cases.h"
 #include "app/jladder/bench_events.h"
+#include "app/jladder/bench_examples.h"
 #include "app/jladder/bench_stability.h"
 
 #include <filesystem>
@@ -22,6 +23,7 @@ struct BenchResults {
     StabilityStudy stability;
     std::vector<BenchRow> models;  // rigidPairModelStudy
     std::vector<EventCostRow> eventCost;
+    ExamplesStudy examples;
 };
 
 bool writeReport(const BenchResults& r, const std::filesystem::path& plots, const std::filesystem::path& report);
@@ -31,5 +33,7 @@ bool writeStabilityReport(const StabilityStudy& s, bool quick, const std::filesy
 bool writeModelsReport(const std::vector<BenchRow>& rows, bool quick, const std::filesystem::path& report);
 // The section "Cost of an event" alone (jladder bench --only events).
 bool writeEventCostReport(const std::vector<EventCostRow>& rows, bool quick, const std::filesystem::path& report);
+// The section "Examples at default settings" alone (jladder bench --only examples).
+bool writeExamplesReport(const ExamplesStudy& s, bool quick, const std::filesystem::path& report);
 
 }  // namespace jl::cli

@@ -1,0 +1,113 @@
+#include "app/jladder/bench_examples.h"
+
+#include "app/jladder/bench_clock.h"
+#include "core/scene_io.h"
+#include "core/simulation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace jl::cli {
+
+namespace {
+
+constexpr const char* kLong = "long-ladder.yaml";
+constexpr int kLongBlocks = 1000;
+
+const char* integratorName(Integrator i) {
+    switch (i) {
+        case Integrator::ExplicitEuler:
+            return "explicit Euler";
+        case Integrator::SymplecticEuler:
+            return "symplectic Euler";
+        case Integrator::RK4:
+            return "RK4";
+        case Integrator::DormandPrince45:
+            return "Dormand-Prince 4(5)";
+    }
+    return "?";
+}
+
+// One scene for `horizon` s of simulated time (its duration if shorter).
+ExampleRow runScene(const std::string& name, Scene scene, double horizon) {
+    ExampleRow row;
+    row.scene = name;
+    row.asked = std::min(horizon, scene.duration);
+    row.integrator = integratorName(scene.solver.integrator);
+    row.adaptive = scene.solver.integrator == Integrator::DormandPrince45;
+    row.tolerance = scene.solver.tolerance;
+    row.blocks = scene.ladder ? scene.ladder->blocks : int(scene.bodies.size() + scene.particles.size());
+    const double t0 = threadSeconds();
+    Simulation::Built built = Simulation::build(scene);
+    if (!built.simulation) {
+        row.cpu = threadSeconds() - t0;
+        row.failure = built.errors.empty() ? "not built" : built.errors.front();
+        return row;
+    }
+    Simulation& sim = *built.simulation;
+    // The hinge events counted every tenth of a simulated second, so that
+    // a long run does not keep them all (advanceTo never cuts a step).
+    int events = 0;
+    const double slice = 0.1;  // s, how often the pending events are counted
+    for (double t = std::min(slice, row.asked);; t = std::min(t + slice, row.asked)) {
+        const bool ok = sim.advanceTo(t);
+        for (const Event& e : sim.takeEvents())
+            if (e.hinge > 0) ++events;
+        if (!ok || t >= row.asked) break;
+    }
+    row.cpu = threadSeconds() - t0;
+    row.simulated = sim.time();
+    row.hingeEvents = events;
+    row.failure = sim.failure();
+    const SolverFrame f = sim.frame().solver;
+    row.steps = f.steps;
+    row.automaticStep = f.automaticStep;
+    row.smallestStep = f.smallestStep;
+    row.largestStep = f.largestStep;
+    row.stepHalvings = f.stepHalvings;
+    std::fprintf(stderr,
+                 "  example %-34s %5d blocks: %.2f of %.2f s in %.3f CPU s (%.3f per simulated s), %lld steps%s\n",
+                 row.scene.c_str(), row.blocks, row.simulated, row.asked, row.cpu, row.perSimulated(), row.steps,
+                 row.failure.empty() ? "" : (", failed: " + row.failure).c_str());
+    return row;
+}
+
+}  // namespace
+
+ExamplesStudy examplesStudy(const BenchPlan& plan, const std::filesystem::path& dir) {
+    ExamplesStudy s;
+    s.dir = dir;
+    const double horizon = plan.quick ? 1.0 : 3.0;
+    std::vector<std::filesystem::path> files;
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
+        if (entry.path().extension() == ".yaml") files.push_back(entry.path());
+    if (ec || files.empty()) {
+        s.error = "no scenes in " + dir.string() + (ec ? ": " + ec.message() : "") +
+                  " (run from the source tree or pass --examples DIR)";
+        std::fprintf(stderr, "  %s\n", s.error.c_str());
+        return s;
+    }
+    std::sort(files.begin(), files.end());
+    for (const std::filesystem::path& file : files) {
+        const std::string name = file.filename().string();
+        const SceneLoad load = loadScene(file.string());
+        if (!load.scene) {
+            ExampleRow row;
+            row.scene = name;
+            row.failure = load.errors.empty() ? "not loaded" : load.errors.front().message;
+            s.rows.push_back(row);
+            continue;
+        }
+        s.rows.push_back(runScene(name, *load.scene, horizon));
+        if (name == kLong && !plan.quick && load.scene->ladder) {
+            Scene longer = *load.scene;
+            longer.ladder->blocks = kLongBlocks;
+            s.rows.push_back(runScene(name + " x 1,000 blocks", longer, horizon));
+        }
+    }
+    return s;
+}
+
+}  // namespace jl::cli
