@@ -53,8 +53,11 @@ void LadderView::setScene(const jl::Scene& scene, bool resetCamera) {
     std::vector<BlockShape> shapes = blockShapes(scene);
     const double extent = ladderExtent(scene);
     // More or fewer blocks, or longer ones: the view that fitted no longer does.
-    auto sized = [](const BlockShape& a, const BlockShape& b) { return a.across == b.across && a.along == b.along && a.out == b.out; };
-    const bool resized = extent != extent_ || !std::equal(shapes.begin(), shapes.end(), shapes_.begin(), shapes_.end(), sized);
+    auto sized = [](const BlockShape& a, const BlockShape& b) {
+        return a.across == b.across && a.along == b.along && a.out == b.out;
+    };
+    const bool resized =
+        extent != extent_ || !std::equal(shapes.begin(), shapes.end(), shapes_.begin(), shapes_.end(), sized);
     shapes_ = shapes;
     blocks_->setShapes(std::move(shapes));
     extent_ = extent;
