@@ -61,6 +61,9 @@ public:
     }
     // One internal step (or up to the next scripted instant).
     bool stepOnce();
+    // The same, but never past `limit`: the last step of a run that must end
+    // at exactly that time is shortened to land on it.
+    bool stepOnceUpTo(double limit) { return takeStep(limit); }
     // Runs until an event happens or `limit` is reached; true if one happened.
     bool advanceToNextEvent(double limit);
     const std::string& failure() const { return failure_; }

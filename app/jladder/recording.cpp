@@ -41,7 +41,7 @@ Recording record(Simulation& sim, double until, double every, RecordTarget* targ
     const auto start = std::chrono::steady_clock::now();
     while (!r.targetFailed && sim.time() < until && sim.failure().empty()) {
         if ((r.interrupted = interruption())) break;
-        if (!sim.stepOnce()) break;
+        if (!sim.stepOnceUpTo(until)) break;  // the run ends at exactly `until`
         handOn(sim.takeEvents());
         r.worstResidual = std::max(r.worstResidual, sim.lastResidual());
         const bool due = every > 0 && sim.time() >= nextFrame - 1e-12;

@@ -141,6 +141,13 @@ wait $pid 2>/dev/null
 [ "$(cat frames.csv)" = old ] || fail "a killed run replaced frames.csv"
 [ "$(cat frames.csv.partial-* | wc -l)" -gt 100 ] || fail "a killed run left nothing of what it computed"
 
+# A run ends at exactly the time asked for, whatever the integrator: the
+# adaptive one used to stop a step past it (0.50008 s for --until 0.5).
+for scene in "$source/examples/pendulum.yaml" scene.yaml; do
+    expect 0 "$jladder" run "$scene" --until 0.5
+    grep -q '"time":0.5,' out.txt || fail "a run to 0.5 s ended at $(grep -o '"time":[^,]*' out.txt) ($scene)"
+done
+
 if [ $failures -gt 0 ]; then
     echo "$failures failures" >&2
     exit 1
