@@ -5,6 +5,7 @@
 #include "ui/document.h"
 
 #include <QUndoCommand>
+#include <chrono>
 #include <functional>
 
 namespace jlui {
@@ -22,14 +23,24 @@ template <typename T>
 class ChangeValue : public QUndoCommand {
 public:
     ChangeValue(Document* doc, SceneField<T> field, T value, const QString& text)
-        : QUndoCommand(text), doc_(doc), field_(std::move(field)), old_(field_.get(doc->scene())), new_(std::move(value)) {}
+        : QUndoCommand(text),
+          doc_(doc),
+          field_(std::move(field)),
+          old_(field_.get(doc->scene())),
+          new_(std::move(value)),
+          last_(std::chrono::steady_clock::now()) {}
 
     void redo() override { apply(new_); }
     void undo() override { apply(old_); }
     int id() const override { return int(field_.id); }
+    // One gesture (arrow clicks, a slider or a mouse drag) sends its values
+    // within a fraction of a second of each other and is one step of the
+    // history; an edit of the same field a moment later is a step of its own.
+    static constexpr std::chrono::milliseconds kGesture{800};
     bool mergeWith(const QUndoCommand* other) override {
         const auto* o = dynamic_cast<const ChangeValue*>(other);
-        if (!o || o->field_.key != field_.key) return false;
+        if (!o || o->field_.key != field_.key || o->last_ - last_ > kGesture) return false;
+        last_ = o->last_;
         new_ = o->new_;
         setObsolete(new_ == old_);
         return true;
@@ -43,6 +54,7 @@ private:
     Document* doc_;
     SceneField<T> field_;
     T old_, new_;
+    std::chrono::steady_clock::time_point last_;  // when the last value of the gesture came
 };
 
 // Pushes a change unless it changes nothing.

@@ -140,6 +140,16 @@ private slots:
         thickness->setValue(t0);
         QCOMPARE(w.document()->undoStack()->count(), 0);
         QVERIFY(w.document()->scene() == original);
+
+        // Two edits of the same field a moment apart are two steps: undo
+        // goes back to the middle value (6 -> 12, later 12 -> 200 used to
+        // merge, and one undo went back to 6).
+        blocks->setValue(12);
+        QTest::qWait(1000);
+        blocks->setValue(200);
+        QCOMPARE(w.document()->undoStack()->count(), 2);
+        w.document()->undoStack()->undo();
+        QCOMPARE(w.document()->scene().ladder->blocks, 12);
     }
 
     void aBlockOverrideChangesThatBlockAloneAndUndoes() {
