@@ -3,6 +3,7 @@
 #include <QDoubleSpinBox>
 #include <QDoubleValidator>
 #include <QFormLayout>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
 #include <QSignalBlocker>
@@ -18,6 +19,7 @@ ValueForm::ValueForm(Document* doc, std::vector<NumberField> fields, QWidget* pa
         QWidget* editor = makeEditor(f);
         editor->setObjectName(f.key);
         editor->setToolTip(f.tip);
+        editor->installEventFilter(this);
         auto* label = new QLabel(f.label, this);
         label->setToolTip(f.tip);
         label->setBuddy(editor);
@@ -59,6 +61,20 @@ QWidget* ValueForm::makeEditor(const NumberField& f) {
     spin->setKeyboardTracking(false);
     connect(spin, &QDoubleSpinBox::valueChanged, this, [this, f](double v) { changeNumber(doc_, f, v / f.scale); });
     return spin;
+}
+
+// Ctrl+Z in a number field undoes the document's last edit, as it does
+// anywhere else in the window: a field's own text undo would claim the key
+// first (and, with its value committed already, do nothing).
+bool ValueForm::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() == QEvent::ShortcutOverride) {
+        const auto* key = static_cast<QKeyEvent*>(event);
+        if (key->matches(QKeySequence::Undo) || key->matches(QKeySequence::Redo)) {
+            event->ignore();
+            return true;
+        }
+    }
+    return QWidget::eventFilter(watched, event);
 }
 
 void ValueForm::refresh() {

@@ -19,6 +19,9 @@ public:
     // Reads every value from the document's scene again.
     void refresh();
 
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
 private:
     QWidget* makeEditor(const NumberField& f);
 

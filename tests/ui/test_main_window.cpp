@@ -148,8 +148,14 @@ private slots:
         QTest::qWait(1000);
         blocks->setValue(200);
         QCOMPARE(w.document()->undoStack()->count(), 2);
-        w.document()->undoStack()->undo();
+        // Ctrl+Z with the field still focused undoes the document, not the field's text.
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        blocks->setFocus();
+        QTRY_VERIFY(blocks->hasFocus());
+        QTest::keyClick(blocks, Qt::Key_Z, Qt::ControlModifier);
         QCOMPARE(w.document()->scene().ladder->blocks, 12);
+        QCOMPARE(blocks->value(), 12);
     }
 
     void aBlockOverrideChangesThatBlockAloneAndUndoes() {
