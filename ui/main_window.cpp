@@ -117,6 +117,10 @@ void MainWindow::createActions() {
     undoAct_->setShortcuts(QKeySequence::Undo);
     redoAct_ = doc_->undoStack()->createRedoAction(this, tr("&Redo"));
     redoAct_->setShortcuts(QKeySequence::Redo);
+    // Icons on the toolbar: its buttons would otherwise carry the changing
+    // text ("Undo Change blocks") and every button after them would shift.
+    undoAct_->setIcon(QIcon::fromTheme("edit-undo", style()->standardIcon(QStyle::SP_ArrowBack)));
+    redoAct_->setIcon(QIcon::fromTheme("edit-redo", style()->standardIcon(QStyle::SP_ArrowForward)));
     playAct_ = make(tr("&Play"), {Qt::Key_Space}, QStyle::SP_MediaPlay, tr("Play or pause the simulation"));
     stepAct_ = make(tr("Step &forward"), {Qt::Key_Right, Qt::Key_Period}, QStyle::SP_MediaSeekForward, tr("One frame forward"));
     backAct_ = make(tr("Step &back"), {Qt::Key_Left, Qt::Key_Comma}, QStyle::SP_MediaSeekBackward, tr("One frame back"));

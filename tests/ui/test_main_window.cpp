@@ -18,6 +18,7 @@
 #include <QSpinBox>
 #include <QTemporaryDir>
 #include <Qt3DRender/QRenderCapture>
+#include <QToolBar>
 #include <QtTest>
 
 using namespace jlui;
@@ -113,6 +114,11 @@ private slots:
         auto* blocks = w.findChild<QSpinBox*>("blocks");
         QVERIFY(blocks);
         QCOMPARE(blocks->value(), 6);
+        // The toolbar stays put while the Undo text changes.
+        auto* bar = w.findChild<QToolBar*>("mainToolBar");
+        QVERIFY(bar);
+        QWidget* play = bar->widgetForAction(bar->actions().at(bar->actions().size() - 1));
+        const int before = play->mapTo(&w, QPoint()).x();
         // Arrow clicks on the spin box: three changes, one undo step.
         blocks->stepUp();
         blocks->stepUp();
@@ -120,6 +126,8 @@ private slots:
         QCOMPARE(w.document()->scene().ladder->blocks, 9);
         QCOMPARE(w.document()->undoStack()->count(), 1);
         QVERIFY(w.document()->isModified());
+        QApplication::processEvents();
+        QCOMPARE(play->mapTo(&w, QPoint()).x(), before);
         const jl::Scene nine = w.document()->scene();
         QVERIFY(jltest::waitForStatus(w.controller(), [](const SimStatus& s) { return s.frame && s.frame->blocks.size() == 9; }));
 
