@@ -411,7 +411,22 @@ void Simulation::moveDrag(const Vec2& target) {
 
 void Simulation::endDrag() {
     if (liveDrag_ < 0) return;
-    scene_.drags[size_t(liveDrag_)].end = t_;
+    DragRecord& d = scene_.drags[size_t(liveDrag_)];
+    d.end = t_;
+    // A drag of a free block while no time passed (the run was paused) did
+    // nothing: it is not kept, so it is neither replayed nor saved. (A drag
+    // of a held block moves the hand over the next 0.2 s: that one stays.)
+    const PartId part = blockPart(d.block);
+    if (d.end <= d.samples.front().t && !world_.isHeld(part)) {
+        auto& drags = world_.drags();
+        drags.erase(std::remove_if(drags.begin(), drags.end(),
+                                   [&](const UserDrag& g) { return g.part == part && g.local == vec(d.point); }),
+                    drags.end());
+        scene_.drags.erase(scene_.drags.begin() + liveDrag_);
+        nextDragSample_.erase(nextDragSample_.begin() + liveDrag_);
+        liveDrag_ = -1;
+        return;
+    }
     liveDrag_ = -1;
     applyDueInputs();
 }

@@ -71,6 +71,24 @@ private slots:
         const Vec2 a = undisturbed->frame().blocks[4].position, b = live->frame().blocks[4].position;
         QVERIFY2((a - b).norm() > 1e-3, qPrintable(QString::number((a - b).norm())));
     }
+
+    // A drag while paused (no simulated time between press and release)
+    // moves nothing: it leaves no record to replay or save, and the run
+    // carries on exactly as if it had not happened.
+    void aDragWhileNoTimePassesLeavesNothing() {
+        auto sim = simulateFile(kClassic);
+        sim->advanceTo(0.6);
+        sim->beginDrag(4, Vec2(0, 0.02), Vec2(0.1, -0.25));
+        sim->moveDrag(Vec2(0.15, -0.2));
+        sim->endDrag();
+        QVERIFY(sim->scene().drags.empty());
+        QVERIFY(sim->world().drags().empty());
+        sim->advanceTo(1.4);
+        auto undisturbed = simulateFile(kClassic);
+        undisturbed->advanceTo(0.6);
+        undisturbed->advanceTo(1.4);
+        QCOMPARE(sim->stateHash(), undisturbed->stateHash());
+    }
 };
 
 QTEST_GUILESS_MAIN(DeterminismTest)
