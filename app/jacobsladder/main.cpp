@@ -1,5 +1,6 @@
 // The desktop program: jacobsladder [scene.yaml]
 #include "ui/ladder_view.h"
+#include "ui/lessons.h"
 #include "ui/main_window.h"
 #include "ui/sim_controller.h"
 
@@ -7,6 +8,7 @@
 #include <QCommandLineParser>
 #include <QScreen>
 #include <QTimer>
+#include <cstdio>
 
 namespace {
 
@@ -41,9 +43,15 @@ int main(int argc, char** argv) {
     QCommandLineOption play("play", "Start playing at once.");
     QCommandLineOption seek("seek", "Simulate up to SECONDS and show that moment.", "SECONDS");
     QCommandLineOption orbit("orbit", "Turn the view by DEGREES about the ladder.", "DEGREES");
-    for (QCommandLineOption* o : {&screenshot, &after, &seek, &orbit}) o->setFlags(QCommandLineOption::HiddenFromHelp);
-    parser.addOptions({screenshot, after, play, seek, orbit});
+    QCommandLineOption lessons("lessons-directory", "Print where the lessons (the examples) are found, then quit.");
+    for (QCommandLineOption* o : {&screenshot, &after, &seek, &orbit, &lessons})
+        o->setFlags(QCommandLineOption::HiddenFromHelp);
+    parser.addOptions({screenshot, after, play, seek, orbit, lessons});
     parser.process(app);
+    if (parser.isSet(lessons)) {
+        std::printf("%s\n", qPrintable(jlui::lessonsDirectory()));
+        return jlui::lessonsDirectory().isEmpty() ? 1 : 0;
+    }
 
     jlui::MainWindow window;
     window.show();
