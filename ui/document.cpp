@@ -40,7 +40,9 @@ jl::Scene Document::newScene() {
     turn.kind = jl::ScriptAction::Kind::Turn;
     turn.at = 0.2;
     turn.block = 0;
-    turn.angle = -std::numbers::pi;
+    // Counter-clockwise, as in the classic cascade: the way that folds hinge 1
+    // and sends the ripple down (the other way only throws the ladder about).
+    turn.angle = std::numbers::pi;
     turn.duration = 0.3;
     s.script.push_back(turn);
     s.duration = 2.5;

@@ -4,6 +4,7 @@
 #include "ui_test_support.h"
 
 #include "core/scene_io.h"
+#include "core/simulation.h"
 
 #include <QFile>
 #include <QMessageBox>
@@ -64,6 +65,19 @@ class DocumentFilesTest : public QObject {
 private slots:
     void initTestCase() { jltest::isolateSettings(); }
     void init() { Document::removeRecovery(); }
+
+    // A new scene plays the classic trick: its turn sends a ripple down (it
+    // turned the other way, which only throws the ladder about).
+    void aNewSceneRipplesWhenPlayed() {
+        auto sim = jl::Simulation::build(Document::newScene()).simulation;
+        QVERIFY(sim);
+        std::vector<int> flips;
+        while (sim->time() < 1.0 && sim->stepOnce())
+            for (const jl::Event& e : sim->takeEvents())
+                if (e.kind == jl::EventKind::FlipFlop && (flips.empty() || flips.back() < e.hinge)) flips.push_back(e.hinge);
+        QVERIFY(sim->failure().empty());
+        QVERIFY2(flips.size() >= 3 && flips[0] == 1 && flips[1] == 2 && flips[2] == 3, qPrintable(QString::number(flips.size())));
+    }
 
     void theRecoveryCopyHoldsTheUnsavedSceneAndGoesAwayOnSave() {
         QTemporaryDir dir;
