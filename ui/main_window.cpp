@@ -26,6 +26,7 @@
 #include <QStyle>
 #include <QToolBar>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 
 namespace jlui {
@@ -163,12 +164,44 @@ void MainWindow::createMenus() {
     viewMenu_->addSeparator();
     for (QDockWidget* d : findChildren<QDockWidget*>()) viewMenu_->addAction(d->toggleViewAction());
     QMenu* help = menuBar()->addMenu(tr("&Help"));
+    QAction* controls = help->addAction(tr("&Controls"), this, &MainWindow::showControls);
+    controls->setShortcut(QKeySequence::HelpContents);
     help->addAction(tr("&About"), this, [this] {
         QMessageBox::about(this, tr("About Jacob's Ladder Studio"),
                            tr("<b>Jacob's Ladder Studio</b> %1<p>Build, simulate and teach with a virtual Jacob's ladder.</p>")
                                .arg(QApplication::applicationVersion()));
     });
     updateRecentMenu();
+}
+
+// The mouse and the keys in one page. The keys are read from the actions
+// themselves, so the page cannot drift from what the program does.
+void MainWindow::showControls() {
+    QString keys;
+    std::vector<std::pair<QString, QString>> rows;
+    for (QAction* a : findChildren<QAction*>()) {
+        if (a->shortcut().isEmpty() || a->text().isEmpty()) continue;
+        rows.emplace_back(a->text().remove('&'), a->shortcut().toString(QKeySequence::NativeText));
+    }
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    for (const auto& [what, key] : rows) keys += QString("<tr><td><b>%1</b></td><td>%2</td></tr>").arg(key.toHtmlEscaped(), what.toHtmlEscaped());
+    const QString mouse = tr(
+        "<tr><td><b>Left-drag a block</b></td><td>push it with a spring (a held block: move the hand); recorded, so a replay repeats it</td></tr>"
+        "<tr><td><b>Right-drag</b></td><td>orbit the camera about the ladder</td></tr>"
+        "<tr><td><b>Middle-drag</b></td><td>pan</td></tr>"
+        "<tr><td><b>Wheel</b></td><td>zoom</td></tr>"
+        "<tr><td><b>Walk mode</b></td><td>W A S D to move, Q E down and up, drag to look, Esc to stop</td></tr>"
+        "<tr><td><b>Timeline, plots</b></td><td>click or drag to see that moment</td></tr>");
+    auto* box = findChild<QMessageBox*>("controlsHelp");
+    if (!box) {
+        box = new QMessageBox(QMessageBox::Information, tr("Controls"), {}, QMessageBox::Close, this);
+        box->setObjectName("controlsHelp");
+        box->setModal(false);
+        box->setTextFormat(Qt::RichText);
+    }
+    box->setText(tr("<h3>Mouse</h3><table cellspacing=4>%1</table><h3>Keys</h3><table cellspacing=4>%2</table>").arg(mouse, keys));
+    box->show();
 }
 
 void MainWindow::createToolBar() {

@@ -58,6 +58,7 @@ private:
     void createStatusBar();
     void connectView();
     void showFailure(const QString& failure);
+    void showControls();
     void readSettings();
     void writeSettings() const;
 

@@ -10,6 +10,7 @@
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QRegularExpression>
@@ -164,6 +165,21 @@ private slots:
         QTest::keyClick(blocks, Qt::Key_Z, Qt::ControlModifier);
         QCOMPARE(w.document()->scene().ladder->blocks, 12);
         QCOMPARE(blocks->value(), 12);
+    }
+
+    // Help > Controls lists the mouse and every key, read from the actions.
+    void helpControlsListsTheMouseAndTheKeys() {
+        MainWindow w(jltest::quietWindow());
+        w.show();
+        QAction* controls = nullptr;
+        for (QAction* a : w.findChildren<QAction*>())
+            if (a->text() == "&Controls") controls = a;
+        QVERIFY(controls);
+        controls->trigger();
+        auto* box = w.findChild<QMessageBox*>("controlsHelp");
+        QVERIFY(box && box->isVisible() && !box->isModal());
+        for (const char* words : {"Right-drag", "Wheel", "Frame the ladder", "Presentation mode", "Play", "Undo"})
+            QVERIFY2(box->text().contains(words), words);
     }
 
     void aBlockOverrideChangesThatBlockAloneAndUndoes() {
