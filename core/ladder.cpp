@@ -344,7 +344,7 @@ double Ladder::eventFunctions(const World& w, const Dynamics& d, std::vector<dou
     double smallestForce = std::numeric_limits<double>::infinity();
     for (int j = 1; j < blockCount(); ++j) {
         double* g = &out[2 * size_t(j - 1)];
-        if (hinge(j).held) continue;  // let go by trackHolds, not by a sign change
+        if (hinge(j).held) continue;  // let go after a trial (Simulation::settleHolds), not by a sign change
         switch (hinge(j).mode) {
         case HingeMode::Free:
         case HingeMode::Cut: continue;

@@ -70,10 +70,10 @@ public:
     // negative value is an event (located inside the step by the simulation).
     // A limit is an event where the fold angle crosses it: kAngleTolerance
     // is only the rounding of phi (computed from two body angles that may
-    // have turned many times), never an overshoot that the physics sees. It
-    // is half the band within which resolve() treats a hinge as touching, so
-    // a located crossing always lands where resolve() acts on it. A hinge
-    // just released measures its limit from where the release left it.
+    // have turned many times), never an overshoot that the physics sees. A
+    // located crossing lands well inside kTouchBand, where resolve() acts on
+    // it. A hinge just released measures its limit from where the release
+    // left it.
     static constexpr double kAngleTolerance = 1e-12;  // rad
     // Fold angles of bodies just projected onto their pins carry the
     // projection's noise (1e-10 m over a 1 mm block): a hinge within this

@@ -186,9 +186,8 @@ double Simulation::nextScheduledTime() const {
 
 // The hand takes hold of a block where it is. A moving block stops dead:
 // an impact on everything joined to it (a held block has infinite mass),
-// taken up by the pins' impulses and booked like the ladder's impacts: what
-// the held frame's kinetic energy lost is dissipated, the rest is the hand's
-// work. A held block is outside the books (its energy is the hand's), so
+// taken up by the pins' impulses and booked like the ladder's impacts: the
+// energy of the velocity jump is dissipated, the rest is the hand's work. A held block is outside the books (its energy is the hand's), so
 // its own kinetic and potential energy leave them as the hand's work too.
 // The force tests follow (applyDueInputs runs them after any action).
 void Simulation::grab(PartId part) {
@@ -369,13 +368,7 @@ void Simulation::applyDueInputs() {
         const DragRecord& d = scene_.drags[i];
         while (nextDragSample_[i] < d.samples.size() && d.samples[nextDragSample_[i]].t <= t_ + eps)
             applyDragSample(d, d.samples[nextDragSample_[i]++]);
-        if (d.end <= t_ + eps && d.block >= 0 && d.block < blockCount()) {
-            auto& drags = world_.drags();
-            const PartId part = blockPart(d.block);
-            drags.erase(std::remove_if(drags.begin(), drags.end(),
-                                       [&](const UserDrag& g) { return g.part == part && g.local == vec(d.point); }),
-                        drags.end());
-        }
+        if (d.end <= t_ + eps) removeMouseSpring(d);
     }
     if (changed) {
         // Held blocks' accelerations may jump here: test the contacts.
@@ -409,6 +402,16 @@ void Simulation::moveDrag(const Vec2& target) {
     applyDragSample(d, d.samples.back());
 }
 
+// The world's spring of a recorded drag, gone once the drag has ended.
+void Simulation::removeMouseSpring(const DragRecord& d) {
+    if (d.block < 0 || d.block >= blockCount()) return;
+    const PartId part = blockPart(d.block);
+    auto& drags = world_.drags();
+    drags.erase(std::remove_if(drags.begin(), drags.end(),
+                               [&](const UserDrag& g) { return g.part == part && g.local == vec(d.point); }),
+                drags.end());
+}
+
 void Simulation::endDrag() {
     if (liveDrag_ < 0) return;
     DragRecord& d = scene_.drags[size_t(liveDrag_)];
@@ -416,12 +419,8 @@ void Simulation::endDrag() {
     // A drag of a free block while no time passed (the run was paused) did
     // nothing: it is not kept, so it is neither replayed nor saved. (A drag
     // of a held block moves the hand over the next 0.2 s: that one stays.)
-    const PartId part = blockPart(d.block);
-    if (d.end <= d.samples.front().t && !world_.isHeld(part)) {
-        auto& drags = world_.drags();
-        drags.erase(std::remove_if(drags.begin(), drags.end(),
-                                   [&](const UserDrag& g) { return g.part == part && g.local == vec(d.point); }),
-                    drags.end());
+    if (d.end <= d.samples.front().t && !world_.isHeld(blockPart(d.block))) {
+        removeMouseSpring(d);
         scene_.drags.erase(scene_.drags.begin() + liveDrag_);
         nextDragSample_.erase(nextDragSample_.begin() + liveDrag_);
         liveDrag_ = -1;

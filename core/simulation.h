@@ -100,6 +100,7 @@ private:
     // A scripted join; the reason if refused (the world unchanged then).
     std::optional<std::string> join(const ScriptAction& a);
     void applyDragSample(const DragRecord& d, const DragRecord::Sample& s);
+    void removeMouseSpring(const DragRecord& d);
     // Stepping (simulation_step.cpp).
     bool takeStep(double limit);
     bool locateEvent(double& taken, double fEnd, double forcesAtEnd);
@@ -108,6 +109,7 @@ private:
     bool rerunStep(double h);
     void record(const Event& e);
     bool booksDiverged() const;
+    double booksImbalance(double total) const;
     double fixedStep();
     bool retryWithSmallerStep();
     std::string blowUpAdvice(double h) const;
@@ -138,6 +140,7 @@ private:
     SolverFrame stats_;
     double lastResidual_ = 0;
     double stepScale_ = 1;  // automatic step: halved after each step that blew up
+    double imbalanceBase_ = 0;  // J, the books' imbalance at the last halving (the check watches growth past it)
     bool trial_ = false;  // inside tryLettingGo: holds are not settled
     // Kept from step to step so that stepping allocates nothing.
     Eigen::VectorXd stepStartQ_, stepStartV_;  // the state the step started from

@@ -31,8 +31,7 @@ double energyScale(const Simulation& sim) {
     return mass * 9.81 * (l ? l->blocks * l->block.length : 1.0);
 }
 
-// Runs an example to its own duration (or `until`), every step; `scale`
-// gets its energy scale.
+// Runs an example to its own duration, every step.
 Run runExample(const char* name, double* scale) {
     auto sim = simulateFile(std::string("examples/") + name);
     if (!sim) return Run{{}, 0, 0, 0, true, "not built"};
@@ -64,6 +63,15 @@ void requireSoundRun(const Run& r, double scale) {
     QVERIFY2(r.worstBalance < 1e-4 * scale, qPrintable(QString("%1 J of %2 J").arg(r.worstBalance).arg(scale)));
     const Chatter c = chatter(r.events);
     QVERIFY2(c.longest <= 3, qPrintable(QString("%1 quick cycles of one hinge in a row").arg(c.longest)));
+}
+
+// An example run to its own duration that must be sound; the caller returns
+// when it is not (QTest::currentTestFailed()), before reading its events.
+Run soundRun(const char* name) {
+    double scale = 0;
+    const Run r = runExample(name, &scale);
+    requireSoundRun(r, scale);
+    return r;
 }
 
 }  // namespace
@@ -106,9 +114,8 @@ private slots:
     // then hinge 4 waits about 0.4 s for block 3 to swing back, and hinge 5
     // follows 0.13 s later."
     void classicFlipsEveryHingeInOrder() {
-        double scale = 0;
-        const Run r = runExample("classic.yaml", &scale);
-        requireSoundRun(r, scale);
+        const Run r = soundRun("classic.yaml");
+        if (QTest::currentTestFailed()) return;
         const auto first = firstFlips(r.events);
         QCOMPARE(reach(first), 5);
         for (int j : {1, 2}) QVERIFY2(std::abs(first.at(j + 1) - first.at(j) - 0.14) < 0.015, qPrintable(QString::number(j)));
@@ -119,9 +126,8 @@ private slots:
     // "The second ripple runs down the same way as the first": hinges 1 to 5
     // flip in order after each turn (at 0.2 s and 1.7 s).
     void backAndForthSendsTwoRipplesDown() {
-        double scale = 0;
-        const Run r = runExample("back-and-forth.yaml", &scale);
-        requireSoundRun(r, scale);
+        const Run r = soundRun("back-and-forth.yaml");
+        if (QTest::currentTestFailed()) return;
         const auto first = firstFlips(r.events);
         QCOMPARE(reach(first), 5);
         QVERIFY(first.at(5) < 1.7);
@@ -132,9 +138,8 @@ private slots:
     // turn ... Hinge 1 never flips ... a few lower hinges flip out of order
     // (hinge 5 before hinge 3)."
     void wrongWayLocksHingeOneAndNeverFlipsIt() {
-        double scale = 0;
-        const Run r = runExample("wrong-way.yaml", &scale);
-        requireSoundRun(r, scale);
+        const Run r = soundRun("wrong-way.yaml");
+        if (QTest::currentTestFailed()) return;
         QVERIFY(!r.events.empty());
         QCOMPARE(r.events[0].kind, EventKind::Lock);
         QCOMPARE(r.events[0].hinge, 1);
@@ -148,9 +153,8 @@ private slots:
     // heavy block than above it. Then ... the light blocks below it flip back
     // and forth many times."
     void heavyMiddleRippleGetsPastTheHeavyBlock() {
-        double scale = 0;
-        const Run r = runExample("heavy-middle.yaml", &scale);
-        requireSoundRun(r, scale);
+        const Run r = soundRun("heavy-middle.yaml");
+        if (QTest::currentTestFailed()) return;
         const auto first = firstFlips(r.events);
         QCOMPARE(reach(first), 5);
         QVERIFY(first.at(5) < 1.0);
@@ -166,9 +170,8 @@ private slots:
     // ripple stops ... The same blocks in a ladder of 25 carry the ripple
     // about 20 hinges down."
     void longLadderStallsAfterTheFirstHinge() {
-        double scale = 0;
-        const Run r = runExample("long-ladder.yaml", &scale);
-        requireSoundRun(r, scale);
+        const Run r = soundRun("long-ladder.yaml");
+        if (QTest::currentTestFailed()) return;
         const auto first = firstFlips(r.events);
         QCOMPARE(reach(first), 1);
         QVERIFY2(std::abs(first.at(1) - 0.5) < 0.05, qPrintable(QString::number(first.at(1))));
@@ -225,6 +228,17 @@ private slots:
         QVERIFY(sim->failure().empty());
         qInfo("the tip ran up to %.3f m ahead of free fall", ahead);
         QVERIFY(ahead > 0.01);
+    }
+
+    // Played on past its 2 s at the engine's step, the chain's whips cost
+    // RK4 at 1 ms 1e-3 of the energy by 2.6 s: the step is halved and the
+    // run goes on (it used to stop there blaming held blocks it has none of).
+    void fallingChainPlaysOnPastItsDuration() {
+        auto sim = simulateFile("examples/falling-chain.yaml");
+        QVERIFY(sim);
+        const Run r = runUntil(*sim, 6.0);
+        QVERIFY2(r.failure.empty(), r.failure.c_str());
+        QVERIFY(sim->frame().solver.stepHalvings >= 1);
     }
 
     // "Everything starts at rest, but not where it would hang, so the chain
