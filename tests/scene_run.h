@@ -1,9 +1,9 @@
 // Test support: build a scene from YAML text, run it, collect events and contacts.
 #pragma once
 
-#include "core/scene_io.h"
-#include "core/projection.h"
-#include "core/simulation.h"
+#include "jl/engine/projection.h"
+#include "jl/scene/scene_io.h"
+#include "jl/sim/simulation.h"
 
 #include <QtTest>
 #include <functional>

@@ -2,8 +2,8 @@
 // Locating an event inside a step: the step's quintic Hermite interpolant
 // against motions with known answers, and the bracket narrowing on the shape
 // of a grazing contact that closes again just after a release.
-#include "core/event_bracket.h"
-#include "core/step_interpolant.h"
+#include "jl/engine/step_interpolant.h"
+#include "jl/sim/event_bracket.h"
 
 #include <QtTest>
 #include <cmath>

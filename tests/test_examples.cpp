@@ -3,7 +3,7 @@
 // without a failure, with its energy books balanced, its pins closed and no
 // hinge chattering. An example's description is a claim: each claim it makes
 // about what the engine does is checked here, at the scene's own settings.
-#include "core/elliptic.h"
+#include "jl/reference/elliptic.h"
 #include "tests/scene_run.h"
 
 #include <QtTest>

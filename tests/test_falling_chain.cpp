@@ -2,9 +2,9 @@
 // The falling chain (N boxes pinned end to end, hung at one end, let fall):
 // it stays assembled, and in this conservative scene the energy error
 // shrinks at each integrator's order as the step shrinks.
-#include "core/energy.h"
-#include "core/falling_chain.h"
-#include "core/motion.h"
+#include "jl/engine/energy.h"
+#include "jl/engine/motion.h"
+#include "jl/reference/falling_chain.h"
 
 #include <QtTest>
 #include <cmath>

@@ -4,10 +4,10 @@
 // residual in bounds, or stop with a clear diagnostic while keeping the last
 // good state.
 // Short forms by default (CI); JL_SOAK=1 runs the long forms.
-#include "core/falling_chain.h"
-#include "core/motion.h"
-#include "core/projection.h"
-#include "core/simulation.h"
+#include "jl/engine/motion.h"
+#include "jl/engine/projection.h"
+#include "jl/reference/falling_chain.h"
+#include "jl/sim/simulation.h"
 
 #include <QtTest>
 #include <cmath>

@@ -2,8 +2,8 @@
 // Two- and three-block cases worked by hand for each event type (docs/model.md
 // section 14.5): the mode sequence, the hinge corner and the sign and size of
 // the reactions. Blocks are 60 x 12 x 45 mm, density 600 (m = 19.44 g).
-#include "core/dynamics.h"
-#include "core/energy.h"
+#include "jl/engine/dynamics.h"
+#include "jl/engine/energy.h"
 #include "tests/scene_run.h"
 
 #include <QtTest>

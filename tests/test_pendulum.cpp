@@ -2,9 +2,9 @@
 // A block swinging from a corner pin against the exact physical-pendulum
 // period (docs/model.md section 14.1), and each integrator's order of
 // convergence.
-#include "core/elliptic.h"
-#include "core/motion.h"
-#include "core/world.h"
+#include "jl/engine/motion.h"
+#include "jl/engine/world.h"
+#include "jl/reference/elliptic.h"
 
 #include <QtTest>
 #include <cmath>

@@ -1,10 +1,10 @@
 // labels: physics;reference
 // The benchmark's independent reference (reduced-coordinate chain) checked
 // against the exact pendulum period, its own energy, and the engine.
-#include "core/elliptic.h"
-#include "core/falling_chain.h"
-#include "core/motion.h"
-#include "core/reference_chain.h"
+#include "jl/engine/motion.h"
+#include "jl/reference/elliptic.h"
+#include "jl/reference/falling_chain.h"
+#include "jl/reference/reference_chain.h"
 
 #include <QtTest>
 #include <cmath>

@@ -1,11 +1,11 @@
 // labels: physics;engine
 // combine/separate: momentum is conserved, structure follows the paper's
 // meaning, and thousands of random restructures leave a valid world.
-#include "core/drive.h"
-#include "core/dynamics.h"
-#include "core/energy.h"
-#include "core/projection.h"
-#include "core/world.h"
+#include "jl/engine/drive.h"
+#include "jl/engine/dynamics.h"
+#include "jl/engine/energy.h"
+#include "jl/engine/projection.h"
+#include "jl/engine/world.h"
 
 #include <QtTest>
 #include <cmath>

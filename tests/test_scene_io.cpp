@@ -15,9 +15,9 @@
 #include <numbers>
 #include <sstream>
 
-#include "core/output_file.h"
-#include "core/scalar_text.h"
-#include "core/scene_io.h"
+#include "jl/base/output_file.h"
+#include "jl/scene/scalar_text.h"
+#include "jl/scene/scene_io.h"
 
 namespace fs = std::filesystem;
 using namespace jl;

@@ -2,7 +2,7 @@
 // per-instance buffer of pose, size and colour, rewritten each frame.
 #pragma once
 
-#include "core/frame.h"
+#include "jl/sim/frame.h"
 #include "ui/block_shapes.h"
 
 #include <Qt3DCore/QEntity>

@@ -2,7 +2,7 @@
 // Frame::blocks, read once from the scene (frames carry only poses).
 #pragma once
 
-#include "core/scene.h"
+#include "jl/scene/scene.h"
 
 #include <QColor>
 #include <vector>

@@ -1,6 +1,6 @@
 #include "ui/document.h"
 
-#include "core/scene_io.h"
+#include "jl/scene/scene_io.h"
 
 #include <QDir>
 #include <QFileInfo>

@@ -2,8 +2,8 @@
 // saves atomically and keeps a recovery copy while there are unsaved edits.
 #pragma once
 
-#include "core/diagnostic.h"
-#include "core/scene.h"
+#include "jl/base/diagnostic.h"
+#include "jl/scene/scene.h"
 #include "ui/scene_change.h"
 
 #include <QObject>

@@ -1,7 +1,7 @@
 // One colour per kind of event, shared by every view that marks events in time.
 #pragma once
 
-#include "core/frame.h"
+#include "jl/sim/frame.h"
 
 #include <QColor>
 

@@ -1,7 +1,7 @@
 // The Events dock: the event log in words; choosing an event seeks there.
 #pragma once
 
-#include "core/frame.h"
+#include "jl/sim/frame.h"
 
 #include <QWidget>
 #include <map>

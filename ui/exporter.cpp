@@ -1,8 +1,8 @@
 #include "ui/exporter.h"
 
-#include "core/event_csv.h"
-#include "core/frame_csv.h"
-#include "core/simulation.h"
+#include "jl/sim/event_csv.h"
+#include "jl/sim/frame_csv.h"
+#include "jl/sim/simulation.h"
 
 #include <QDir>
 #include <QFileInfo>

@@ -2,8 +2,8 @@
 // frames over a time range, a video made from them by ffmpeg, the event log as CSV.
 #pragma once
 
-#include "core/frame.h"
-#include "core/scene.h"
+#include "jl/scene/scene.h"
+#include "jl/sim/frame.h"
 #include "ui/side_view.h"
 
 #include <QImage>
@@ -50,10 +50,10 @@ public:
     // screen, deterministically) without a display and saves each picture.
     static ExportResult imageSequence(const jl::Scene& scene, const SequenceRequest& request);
 
-    // The event log as CSV (core/event_csv.h), written atomically.
+    // The event log as CSV (jl/sim/event_csv.h), written atomically.
     static ExportResult eventsCsv(const std::vector<jl::Event>& events, const QString& path);
     // Re-runs the scene and writes poses.csv, energy.csv and events.csv
-    // (core/frame_csv.h, core/event_csv.h) into `directory`: a frame at
+    // (jl/sim/frame_csv.h, jl/sim/event_csv.h) into `directory`: a frame at
     // `from` and every `every` seconds up to `to`, the events in between.
     static ExportResult tables(const jl::Scene& scene, double from, double to, double every, const QString& directory);
 

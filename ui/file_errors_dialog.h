@@ -1,7 +1,7 @@
 // Why a scene file could not be opened: every problem with file, line and column.
 #pragma once
 
-#include "core/diagnostic.h"
+#include "jl/base/diagnostic.h"
 
 #include <QDialog>
 #include <vector>

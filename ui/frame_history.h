@@ -2,8 +2,8 @@
 // keyframes (full simulation snapshots) from which evicted frames are re-simulated.
 #pragma once
 
-#include "core/frame.h"
-#include "core/simulation.h"
+#include "jl/sim/frame.h"
+#include "jl/sim/simulation.h"
 
 #include <cstddef>
 #include <memory>

@@ -2,8 +2,8 @@
 // room; orbit and walk camera; a press on a block starts a drag.
 #pragma once
 
-#include "core/frame.h"
-#include "core/scene.h"
+#include "jl/scene/scene.h"
+#include "jl/sim/frame.h"
 #include "ui/block_shapes.h"
 #include "ui/view_camera.h"
 

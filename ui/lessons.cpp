@@ -1,6 +1,6 @@
 #include "ui/lessons.h"
 
-#include "core/scene_io.h"
+#include "jl/scene/scene_io.h"
 
 #include <QCoreApplication>
 #include <QDir>

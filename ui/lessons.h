@@ -2,7 +2,7 @@
 // that opens them, and a panel that shows the open scene's description.
 #pragma once
 
-#include "core/scene.h"
+#include "jl/scene/scene.h"
 
 #include <QMenu>
 #include <QString>

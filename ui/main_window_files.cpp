@@ -2,7 +2,7 @@
 // save, recent files, revert, the unsaved-changes prompt and crash recovery.
 #include "ui/main_window.h"
 
-#include "core/scene_io.h"
+#include "jl/scene/scene_io.h"
 #include "ui/file_errors_dialog.h"
 #include "ui/sim_controller.h"
 

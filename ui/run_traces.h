@@ -2,7 +2,7 @@
 // the energy books, fold angles of every hinge, angles of every block.
 #pragma once
 
-#include "core/frame.h"
+#include "jl/sim/frame.h"
 
 #include <QPointF>
 #include <QString>

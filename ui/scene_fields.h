@@ -2,7 +2,7 @@
 // the metadata that drives the generic value forms of the Ladder and Simulation docks.
 #pragma once
 
-#include "core/scene.h"
+#include "jl/scene/scene.h"
 #include "ui/change_value.h"
 
 #include <QString>

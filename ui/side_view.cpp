@@ -1,7 +1,7 @@
 #include "ui/side_view.h"
 
-#include "core/ladder.h"
-#include "core/world.h"
+#include "jl/engine/world.h"
+#include "jl/ladder/ladder.h"
 
 #include <QPainter>
 #include <QPainterPath>

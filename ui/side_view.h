@@ -3,8 +3,8 @@
 // line), painted with QPainter so it works without OpenGL and offscreen.
 #pragma once
 
-#include "core/frame.h"
-#include "core/scene.h"
+#include "jl/scene/scene.h"
+#include "jl/sim/frame.h"
 #include "ui/block_shapes.h"
 
 #include <QImage>

@@ -2,8 +2,8 @@
 // thread and, on a ~60 Hz timer, picks up the newest published status.
 #pragma once
 
-#include "core/geometry.h"
-#include "core/scene.h"
+#include "jl/base/geometry.h"
+#include "jl/scene/scene.h"
 #include "ui/sim_status.h"
 
 #include <QObject>

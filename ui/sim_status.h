@@ -2,8 +2,8 @@
 // the run, swapped whole, so the UI reads it without ever waiting on a step.
 #pragma once
 
-#include "core/frame.h"
-#include "core/scene.h"
+#include "jl/scene/scene.h"
+#include "jl/sim/frame.h"
 
 #include <cstdint>
 #include <memory>

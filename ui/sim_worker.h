@@ -2,8 +2,8 @@
 // paces the run to real time, records frames and publishes the newest status.
 #pragma once
 
-#include "core/scene.h"
-#include "core/simulation.h"
+#include "jl/scene/scene.h"
+#include "jl/sim/simulation.h"
 #include "ui/frame_history.h"
 #include "ui/sim_status.h"
 

@@ -2,7 +2,7 @@
 // block faces, and the line of the mouse spring.
 #pragma once
 
-#include "core/frame.h"
+#include "jl/sim/frame.h"
 
 #include <QColor>
 #include <QVector3D>

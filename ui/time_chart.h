@@ -2,7 +2,7 @@
 // cursor at the frame on screen; a click in the plot asks to see that moment.
 #pragma once
 
-#include "core/frame.h"
+#include "jl/sim/frame.h"
 
 #include <QChartView>
 #include <QFont>

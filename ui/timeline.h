@@ -2,7 +2,7 @@
 // marks; pressing or dragging on it scrubs.
 #pragma once
 
-#include "core/frame.h"
+#include "jl/sim/frame.h"
 
 #include <QWidget>
 #include <memory>

@@ -3,7 +3,7 @@
 // from the eye.
 #pragma once
 
-#include "core/scene.h"
+#include "jl/scene/scene.h"
 
 #include <QVector3D>
 #include <span>

@@ -1,11 +1,11 @@
 #include "app/jladder/bench_cases.h"
 
 #include "app/jladder/bench_clock.h"
-#include "core/elliptic.h"
-#include "core/falling_chain.h"
-#include "core/motion.h"
-#include "core/reference_chain.h"
-#include "core/simulation.h"
+#include "jl/engine/motion.h"
+#include "jl/reference/elliptic.h"
+#include "jl/reference/falling_chain.h"
+#include "jl/reference/reference_chain.h"
+#include "jl/sim/simulation.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
 // The measurements of jladder bench: each returns rows of cost against error.
 #pragma once
 
-#include "core/geometry.h"
-#include "core/scene.h"
+#include "jl/base/geometry.h"
+#include "jl/scene/scene.h"
 
 #include <string>
 #include <vector>

@@ -1,8 +1,8 @@
 #include "app/jladder/bench_examples.h"
 
 #include "app/jladder/bench_clock.h"
-#include "core/scene_io.h"
-#include "core/simulation.h"
+#include "jl/scene/scene_io.h"
+#include "jl/sim/simulation.h"
 
 #include <algorithm>
 #include <cmath>

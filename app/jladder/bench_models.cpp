@@ -1,7 +1,7 @@
 #include "app/jladder/bench_models.h"
 
 #include "app/jladder/bench_clock.h"
-#include "core/simulation.h"
+#include "jl/sim/simulation.h"
 
 #include <algorithm>
 #include <cmath>

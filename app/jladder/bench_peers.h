@@ -2,7 +2,7 @@
 // Box2D, Bullet's Featherstone multibody), built when JL_BENCH_PEERS is on.
 #pragma once
 
-#include "core/geometry.h"
+#include "jl/base/geometry.h"
 
 #include <string>
 #include <vector>

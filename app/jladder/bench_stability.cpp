@@ -1,8 +1,8 @@
 #include "app/jladder/bench_stability.h"
 
 #include "app/jladder/bench_clock.h"
-#include "core/projection.h"
-#include "core/simulation.h"
+#include "jl/engine/projection.h"
+#include "jl/sim/simulation.h"
 
 #include <Eigen/Eigenvalues>
 

@@ -1,11 +1,11 @@
 // jladder export: run a scene and write its poses, energies and events.
 #include "app/jladder/commands.h"
-#include "app/jladder/options.h"
 #include "app/jladder/interruption.h"
+#include "app/jladder/options.h"
 #include "app/jladder/recording.h"
 #include "app/jladder/run_outputs.h"
-#include "core/scene_io.h"
-#include "core/scene_ranges.h"
+#include "jl/scene/scene_io.h"
+#include "jl/scene/scene_ranges.h"
 
 #include <cstdio>
 

@@ -1,7 +1,7 @@
 #include "app/jladder/options.h"
 
-#include "core/scalar_text.h"
-#include "core/scene_ranges.h"
+#include "jl/scene/scalar_text.h"
+#include "jl/scene/scene_ranges.h"
 
 #include <algorithm>
 #include <cmath>

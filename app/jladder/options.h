@@ -2,8 +2,8 @@
 // that run, export and bench share.
 #pragma once
 
-#include "core/bound.h"
-#include "core/scene.h"
+#include "jl/scene/bound.h"
+#include "jl/scene/scene.h"
 
 #include <map>
 #include <optional>
@@ -20,7 +20,7 @@ struct Options {
 
     bool has(const std::string& flag) const;
     std::optional<std::string> get(const std::string& name) const;
-    // A number within `bound` (core/scene_ranges.h: the same as the scene
+    // A number within `bound` (jl/scene/scene_ranges.h: the same as the scene
     // file's), or an error message set and nullopt.
     std::optional<double> number(const std::string& name, Bound bound);
 };

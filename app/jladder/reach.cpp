@@ -2,7 +2,7 @@
 // lengths and block thicknesses (docs/model.md section 15), as a Markdown table.
 #include "app/jladder/commands.h"
 #include "app/jladder/options.h"
-#include "core/simulation.h"
+#include "jl/sim/simulation.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -4,8 +4,8 @@
 // with the length of the run.
 #pragma once
 
-#include "core/frame.h"
-#include "core/simulation.h"
+#include "jl/sim/frame.h"
+#include "jl/sim/simulation.h"
 
 #include <string>
 

@@ -1,11 +1,11 @@
 // jladder run: simulate a scene headless and report in JSON.
 #include "app/jladder/commands.h"
-#include "app/jladder/options.h"
 #include "app/jladder/interruption.h"
+#include "app/jladder/options.h"
 #include "app/jladder/recording.h"
 #include "app/jladder/run_outputs.h"
-#include "core/scene_io.h"
-#include "core/scene_ranges.h"
+#include "jl/scene/scene_io.h"
+#include "jl/scene/scene_ranges.h"
 
 #include <cerrno>
 #include <cstdio>

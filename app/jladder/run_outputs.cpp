@@ -1,7 +1,7 @@
 #include "app/jladder/run_outputs.h"
 
 #include "app/jladder/options.h"
-#include "core/frame_csv.h"
+#include "jl/sim/frame_csv.h"
 
 #include <cstdio>
 #include <filesystem>

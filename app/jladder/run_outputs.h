@@ -1,12 +1,12 @@
 // The files a headless run writes (block poses, energies, events), written
-// as the run goes, each through a temporary (core/output_file.h): a run that
+// as the run goes, each through a temporary (jl/base/output_file.h): a run that
 // completes replaces the files; one that fails or is interrupted leaves them
 // as they were and keeps what it computed beside them in FILE.partial; one
 // that is killed leaves it in FILE.partial-XXXXXX.
 #pragma once
 
 #include "app/jladder/recording.h"
-#include "core/output_file.h"
+#include "jl/base/output_file.h"
 
 #include <sstream>
 #include <string>

@@ -4,8 +4,8 @@
 #include <vector>
 
 #include "app/jladder/commands.h"
-#include "core/scene_io.h"
-#include "core/simulation.h"
+#include "jl/scene/scene_io.h"
+#include "jl/sim/simulation.h"
 
 namespace jl::cli {
 

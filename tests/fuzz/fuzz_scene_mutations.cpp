@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "core/scene_io.h"
-#include "core/simulation.h"
+#include "jl/scene/scene_io.h"
+#include "jl/sim/simulation.h"
 
 namespace fs = std::filesystem;
 

@@ -3,8 +3,8 @@
 // unsaved edits and removed once saved, and a scene dropped on the window.
 #include "ui_test_support.h"
 
-#include "core/scene_io.h"
-#include "core/simulation.h"
+#include "jl/scene/scene_io.h"
+#include "jl/sim/simulation.h"
 
 #include <QFile>
 #include <QMessageBox>

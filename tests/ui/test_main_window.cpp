@@ -4,7 +4,7 @@
 // stays within the screen (restored, and after presentation mode).
 #include "ui_test_support.h"
 
-#include "core/scene_io.h"
+#include "jl/scene/scene_io.h"
 #include "ui/file_errors_dialog.h"
 #include "ui/ladder_view.h"
 

@@ -4,7 +4,7 @@
 // responsive while a long ladder simulates flat out.
 #include "ui_test_support.h"
 
-#include "core/simulation.h"
+#include "jl/sim/simulation.h"
 #include "ui/ladder_view.h"
 
 #include <QDoubleSpinBox>

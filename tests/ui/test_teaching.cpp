@@ -4,7 +4,7 @@
 // says they are, exports write what they promise, lessons list the examples.
 #include "ui_test_support.h"
 
-#include "core/simulation.h"
+#include "jl/sim/simulation.h"
 #include "ui/events_panel.h"
 #include "ui/exporter.h"
 #include "ui/lessons.h"

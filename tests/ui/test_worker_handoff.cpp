@@ -2,7 +2,7 @@
 // The hand-off between the UI thread and the simulation thread, built to run
 // under ThreadSanitizer: the UI thread posts a storm of commands while reading
 // the published status; it never waits on a step, and what it reads is whole.
-#include "core/scene_io.h"
+#include "jl/scene/scene_io.h"
 #include "ui/sim_controller.h"
 
 #include <QCoreApplication>

@@ -2,7 +2,7 @@
 // simulation thread's published status without blocking the event loop.
 #pragma once
 
-#include "core/scene_io.h"
+#include "jl/scene/scene_io.h"
 #include "ui/ladder_view.h"
 #include "ui/main_window.h"
 #include "ui/sim_controller.h"

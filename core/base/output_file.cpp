@@ -1,0 +1,197 @@
+// Only a rename replaces a file in one piece, and only within one file
+// system, so the temporary lives in the directory of the file it replaces.
+#include "jl/base/output_file.h"
+
+#include <cerrno>
+#include <charconv>
+#include <cstring>
+#include <fcntl.h>
+#include <filesystem>
+#include <optional>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <utility>
+
+namespace jl {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::size_t kBufferBytes = 1u << 20;
+
+// The descriptor a name stands for when it is one of the process's own open
+// files: opening /dev/stdout anew would start at offset 0 of a redirected
+// file and write over what the shell's descriptor writes.
+std::optional<int> openDescriptor(std::string_view path) {
+    if (path == "/dev/stdout") return 1;
+    if (path == "/dev/stderr") return 2;
+    for (std::string_view prefix : {"/dev/fd/", "/proc/self/fd/"}) {
+        if (!path.starts_with(prefix)) continue;
+        const std::string_view digits = path.substr(prefix.size());
+        int fd = -1;
+        const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), fd);
+        if (error == std::errc{} && end == digits.data() + digits.size() && fd >= 0) return fd;
+    }
+    return std::nullopt;
+}
+
+bool writeAll(int fd, std::string_view text) {
+    while (!text.empty()) {
+        const ssize_t n = ::write(fd, text.data(), text.size());
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            if (n == 0) errno = EIO;
+            return false;
+        }
+        text.remove_prefix(static_cast<std::size_t>(n));
+    }
+    return true;
+}
+
+std::string directoryOf(const std::string& path) {
+    const fs::path p(path);
+    return p.has_parent_path() ? p.parent_path().string() : std::string(".");
+}
+
+// The directory entry of the rename must reach the disk too, or a crash
+// could bring back the old file after success was reported.
+void syncDirectory(const std::string& dir) {
+    const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0) return;
+    ::fsync(fd);
+    ::close(fd);
+}
+
+}  // namespace
+
+std::string resolvedPath(const std::string& path) {
+    std::error_code ec;
+    fs::path p = fs::absolute(path, ec);
+    if (ec) p = path;
+    for (int links = 0; links < 40 && fs::is_symlink(p, ec); ++links) {
+        const fs::path to = fs::read_symlink(p, ec);
+        if (ec) break;
+        p = to.is_absolute() ? to : p.parent_path() / to;
+    }
+    const fs::path resolved = fs::weakly_canonical(p, ec);
+    return ec ? p.string() : resolved.string();
+}
+
+bool writtenDirectly(const std::string& path) {
+    struct stat st {};
+    return openDescriptor(path) || (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode));
+}
+
+OutputFile::OutputFile(OutputFile&& other) noexcept { *this = std::move(other); }
+
+OutputFile& OutputFile::operator=(OutputFile&& other) noexcept {
+    if (this == &other) return *this;
+    discard();
+    path_ = std::move(other.path_);
+    target_ = std::move(other.target_);
+    temporary_ = std::exchange(other.temporary_, {});
+    buffer_ = std::move(other.buffer_);
+    error_ = std::move(other.error_);
+    fd_ = std::exchange(other.fd_, -1);
+    direct_ = other.direct_;
+    return *this;
+}
+
+OutputFile::~OutputFile() { discard(); }
+
+bool OutputFile::fail(const std::string& what, int error) {
+    if (error_.empty()) error_ = what + ": " + std::strerror(error);
+    return false;
+}
+
+bool OutputFile::open(const std::string& path) {
+    discard();
+    path_ = target_ = path;
+    error_.clear();
+    buffer_.clear();
+    direct_ = false;
+    if (const auto fd = openDescriptor(path)) {
+        direct_ = true;
+        fd_ = ::fcntl(*fd, F_DUPFD_CLOEXEC, 3);
+        return fd_ >= 0 || fail("cannot write to it", errno);
+    }
+    struct stat st {};
+    const bool exists = ::stat(path.c_str(), &st) == 0;
+    if (exists && S_ISDIR(st.st_mode)) return fail("cannot write the file", EISDIR);
+    if (exists && !S_ISREG(st.st_mode)) {
+        direct_ = true;
+        fd_ = ::open(path.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
+        return fd_ >= 0 || fail("cannot open it", errno);
+    }
+    // Replacing a symbolic link would turn it into a file: replace what it points to.
+    struct stat link {};
+    if (::lstat(path.c_str(), &link) == 0 && S_ISLNK(link.st_mode)) target_ = resolvedPath(path);
+    const std::string dir = directoryOf(target_);
+    std::string temporary = (fs::path(dir) / (fs::path(target_).filename().string() + ".partial-XXXXXX")).string();
+    fd_ = ::mkostemp(temporary.data(), O_CLOEXEC);
+    if (fd_ < 0) return fail("cannot create a temporary file in " + dir, errno);
+    temporary_ = std::move(temporary);
+    // Keep the permissions of the file being replaced; new files get 0644.
+    ::fchmod(fd_, exists ? (st.st_mode & 07777) : 0644);
+    return true;
+}
+
+bool OutputFile::write(std::string_view text) {
+    if (failed()) return false;
+    if (fd_ < 0) return fail("cannot write the file", EBADF);
+    buffer_.append(text);
+    return buffer_.size() < kBufferBytes || flush();
+}
+
+bool OutputFile::flush() {
+    if (failed()) return false;
+    if (fd_ < 0) return fail("cannot write the file", EBADF);
+    const bool written = writeAll(fd_, buffer_);
+    buffer_.clear();
+    return written || fail("cannot write the file", errno);
+}
+
+bool OutputFile::close() {
+    if (fd_ < 0) return true;
+    const int closed = ::close(std::exchange(fd_, -1));
+    // Linux releases the descriptor even when close is interrupted.
+    return closed == 0 || errno == EINTR || fail("cannot write the file", errno);
+}
+
+bool OutputFile::commit() {
+    bool ok = flush();
+    if (ok && !direct_ && ::fsync(fd_) != 0) ok = fail("cannot write the file", errno);
+    ok = close() && ok;
+    if (direct_ || !ok) {
+        if (!ok) discard();
+        return ok;
+    }
+    if (::rename(temporary_.c_str(), target_.c_str()) != 0) {
+        fail("cannot replace the file", errno);
+        discard();
+        return false;
+    }
+    temporary_.clear();
+    syncDirectory(directoryOf(target_));
+    return true;
+}
+
+bool OutputFile::keepAs(const std::string& other) {
+    flush();  // a failed write still leaves what came before it
+    const bool closed = close();
+    if (direct_ || temporary_.empty()) return closed;
+    // Whatever happens, the temporary is not removed: it holds the result.
+    const std::string temporary = std::exchange(temporary_, {});
+    if (::rename(temporary.c_str(), other.c_str()) != 0)
+        return fail("cannot rename " + temporary + " to " + other, errno);
+    return closed;
+}
+
+void OutputFile::discard() {
+    if (fd_ >= 0) ::close(std::exchange(fd_, -1));
+    if (!temporary_.empty()) ::unlink(std::exchange(temporary_, {}).c_str());
+    buffer_.clear();
+}
+
+}  // namespace jl

@@ -1,0 +1,78 @@
+#include "jl/engine/dynamics.h"
+
+#include "jl/engine/world.h"
+
+namespace jl {
+
+Powers Dynamics::evaluate(World& w, double t) {
+    ++evaluations_;
+    w.updateKinematics(t);
+    Powers powers;
+    accumulateForces(w, force_, powers);
+    solver_.assemble(w);
+
+    // Pin acceleration: J a + sum(sigma * -omega^2 r) = 0. Kinematic bodies
+    // already hold their prescribed a; dynamic ones start from a = W f.
+    const std::vector<Pin>& pins = w.pins();
+    for (int b = 0; b < w.bodyCount(); ++b)
+        if (!w.body(b).kinematic) w.a.segment<3>(3 * b) = w.invMassDiag.segment<3>(3 * b).cwiseProduct(force_.segment<3>(3 * b));
+    solver_.multiplyJ(w.a, rhs_);
+    for (size_t i = 0; i < pins.size(); ++i) {
+        const double wa = w.v[3 * pins[i].bodyA + 2], wb = w.v[3 * pins[i].bodyB + 2];
+        rhs_.segment<2>(2 * Eigen::Index(i)) =
+            wa * wa * solver_.armA(int(i)) - wb * wb * solver_.armB(int(i)) - rhs_.segment<2>(2 * Eigen::Index(i));
+    }
+    // Welds fix a relative angle, a linear constraint: no velocity term.
+    const Eigen::Index weldRows = 2 * Eigen::Index(pins.size());
+    rhs_.tail(rhs_.size() - weldRows) *= -1.0;
+    solver_.solve(rhs_, lambda_);
+
+    // a = W (f + J^T lambda) for dynamic bodies; kinematic ones keep theirs.
+    jv_ = force_;
+    solver_.addJTranspose(lambda_, jv_);
+    for (int b = 0; b < w.bodyCount(); ++b)
+        if (!w.body(b).kinematic) w.a.segment<3>(3 * b) = w.invMassDiag.segment<3>(3 * b).cwiseProduct(jv_.segment<3>(3 * b));
+
+    // Power of the pins at held bodies: force on the free side times the
+    // velocity of the (shared) point.
+    for (size_t i = 0; i < pins.size(); ++i) {
+        const Pin& p = pins[i];
+        const bool ka = w.body(p.bodyA).kinematic, kb = w.body(p.bodyB).kinematic;
+        if (ka == kb) continue;
+        const Vec2 l = lambda_.segment<2>(2 * Eigen::Index(i));
+        if (ka) {
+            const Vec2 vp = w.v.segment<2>(3 * p.bodyA) + w.v[3 * p.bodyA + 2] * perp(solver_.armA(int(i)));
+            powers.held += (-l).dot(vp);
+        } else {
+            const Vec2 vp = w.v.segment<2>(3 * p.bodyB) + w.v[3 * p.bodyB + 2] * perp(solver_.armB(int(i)));
+            powers.held += l.dot(vp);
+        }
+    }
+    // The moment of a weld to a held body, times the held body's spin.
+    const std::vector<Weld>& welds = w.welds();
+    for (size_t i = 0; i < welds.size(); ++i) {
+        const Pin& p = pins[size_t(welds[i].pin)];
+        const bool ka = w.body(p.bodyA).kinematic, kb = w.body(p.bodyB).kinematic;
+        if (ka == kb) continue;
+        const double moment = welds[i].arm * lambda_[weldRows + Eigen::Index(i)];  // on A; -moment on B
+        powers.held += ka ? -moment * w.v[3 * p.bodyA + 2] : moment * w.v[3 * p.bodyB + 2];
+    }
+    // Blocks locked to a held block move with it: the hand supplies the rate
+    // of change of their kinetic and potential energy.
+    for (int b = 1; b < w.bodyCount(); ++b) {
+        const Body& body = w.body(b);
+        if (!body.alive || !body.kinematic) continue;
+        const double omega = w.v[3 * b + 2], alpha = w.a[3 * b + 2];
+        for (PartId id : body.parts) {
+            const Part& part = w.part(id);
+            if (part.drive) continue;
+            const Vec2 r = rotate(w.q[3 * b + 2], part.inBody.position);
+            const Vec2 vel = w.v.segment<2>(3 * b) + omega * perp(r);
+            const Vec2 acc = w.a.segment<2>(3 * b) + alpha * perp(r) - omega * omega * r;
+            powers.held += part.mass * (acc - w.gravity).dot(vel) + part.inertia * alpha * omega;
+        }
+    }
+    return powers;
+}
+
+}  // namespace jl

@@ -1,0 +1,286 @@
+#include "jl/engine/pin_solver.h"
+
+#include "jl/engine/world.h"
+
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <cmath>
+
+namespace jl {
+
+namespace {
+
+// A tiny diagonal shift for singular pivots (redundant pins): it picks one
+// of the equal solutions instead of dividing by zero.
+constexpr double kRegularisation = 1e-12;
+
+Eigen::Matrix2d safeInverse(Eigen::Matrix2d m) {
+    const double scale = m.cwiseAbs().maxCoeff();
+    double det = m(0, 0) * m(1, 1) - m(0, 1) * m(1, 0);
+    if (!(std::abs(det) > 1e-13 * scale * scale)) {
+        m.diagonal().array() += kRegularisation * (scale > 0 ? scale : 1.0);
+        det = m(0, 0) * m(1, 1) - m(0, 1) * m(1, 0);
+    }
+    Eigen::Matrix2d inv;
+    inv << m(1, 1), -m(0, 1), -m(1, 0), m(0, 0);
+    return inv / det;
+}
+
+// W-weighted coupling of two points r1, r2 of a body with inverse mass and
+// inertia (im, ii): im * 1 + ii * perp(r1) perp(r2)^T, written out.
+inline Eigen::Matrix2d couplingOf(double im, double ii, const Vec2& r1, const Vec2& r2) {
+    Eigen::Matrix2d m;
+    m << im + ii * r1.y() * r2.y(), -ii * r1.y() * r2.x(), -ii * r1.x() * r2.y(), im + ii * r1.x() * r2.x();
+    return m;
+}
+
+}  // namespace
+
+// W-weighted coupling of two points r1, r2 of one body: J1 W J2^T.
+Eigen::Matrix2d PinSolver::coupling(const World& w, int body, const Vec2& r1, const Vec2& r2) const {
+    const Body& b = w.body(body);
+    return couplingOf(b.invMass, b.invInertia, r1, r2);
+}
+
+void PinSolver::order(const World& w) {
+    const std::vector<Pin>& pins = w.pins();
+    const int n = int(pins.size());
+    pins_.resize(size_t(n));
+    // The first two pins on each dynamic body, and how many it has: more
+    // than two anywhere means a branch. Flat buffers kept from call to call,
+    // as the ladder re-orders at every lock and unlock.
+    pinsOfBody_.assign(size_t(w.bodyCount()), {-1, -1});
+    pinCountOfBody_.assign(size_t(w.bodyCount()), 0);
+    for (int i = 0; i < n; ++i) {
+        for (int b : {pins[size_t(i)].bodyA, pins[size_t(i)].bodyB}) {
+            if (w.body(b).kinematic) continue;
+            int& count = pinCountOfBody_[size_t(b)];
+            if (count < 2) pinsOfBody_[size_t(b)][size_t(count)] = i;
+            ++count;
+        }
+    }
+    welds_.resize(w.welds().size());
+    chain_ = w.welds().empty() && !forceSparse_;
+    for (int count : pinCountOfBody_)
+        if (count > 2) chain_ = false;
+    sequence_.clear();
+    pathStart_.clear();
+    links_.clear();
+    if (chain_) {
+        auto neighbour = [&](int pin, int body) {
+            for (int k = 0; k < pinCountOfBody_[size_t(body)]; ++k)
+                if (const int other = pinsOfBody_[size_t(body)][size_t(k)]; other != pin) return other;
+            return -1;
+        };
+        visited_.assign(size_t(n), 0);
+        auto degree = [&](int i) {
+            int d = 0;
+            for (int b : {pins[size_t(i)].bodyA, pins[size_t(i)].bodyB})
+                if (!w.body(b).kinematic && neighbour(i, b) >= 0) ++d;
+            return d;
+        };
+        for (int start = 0; start < n; ++start) {
+            if (visited_[size_t(start)] || degree(start) > 1) continue;
+            pathStart_.push_back(int(sequence_.size()));
+            int pin = start, from = -1;
+            while (pin >= 0) {
+                visited_[size_t(pin)] = 1;
+                sequence_.push_back(pin);
+                int next = -1;
+                for (int b : {pins[size_t(pin)].bodyA, pins[size_t(pin)].bodyB}) {
+                    if (w.body(b).kinematic) continue;
+                    const int o = neighbour(pin, b);
+                    if (o >= 0 && o != from && !visited_[size_t(o)]) {
+                        next = o;
+                        links_.push_back({b, pins[size_t(pin)].bodyA == b ? 1.0 : -1.0,
+                                          pins[size_t(o)].bodyA == b ? 1.0 : -1.0});
+                        break;
+                    }
+                }
+                if (next < 0) links_.push_back({-1, 0, 0});
+                from = pin;
+                pin = next;
+            }
+        }
+        if (int(sequence_.size()) != n) chain_ = false;  // a loop of bodies
+        pathStart_.push_back(int(sequence_.size()));
+    }
+    analysed_ = false;
+    version_ = w.structureVersion();
+}
+
+void PinSolver::updateRotations(const World& w) {
+    rotation_.resize(size_t(w.bodyCount()));
+    for (int b = 0; b < w.bodyCount(); ++b) {
+        const double angle = w.q[3 * b + 2];
+        rotation_[size_t(b)] = {std::cos(angle), std::sin(angle)};
+    }
+}
+
+void PinSolver::assemble(const World& w) {
+    if (version_ != w.structureVersion()) order(w);
+    updateRotations(w);
+    auto turn = [&](int body, const Vec2& r) {
+        const Eigen::Vector2d& cs = rotation_[size_t(body)];
+        return Vec2(cs[0] * r.x() - cs[1] * r.y(), cs[1] * r.x() + cs[0] * r.y());
+    };
+    const std::vector<Pin>& pins = w.pins();
+    for (size_t i = 0; i < pins.size(); ++i) {
+        const Pin& p = pins[i];
+        PinRow& row = pins_[i];
+        row.bodyA = p.bodyA;
+        row.bodyB = p.bodyB;
+        row.dynA = !w.body(p.bodyA).kinematic;
+        row.dynB = !w.body(p.bodyB).kinematic;
+        row.rA = turn(p.bodyA, p.localA);
+        row.rB = turn(p.bodyB, p.localB);
+    }
+    const std::vector<Weld>& welds = w.welds();
+    for (size_t i = 0; i < welds.size(); ++i) {
+        const PinRow& p = pins_[size_t(welds[i].pin)];
+        welds_[i] = {p.bodyA, p.bodyB, p.dynA, p.dynB, welds[i].arm};
+    }
+    if (chain_)
+        factorChain(w);
+    else
+        factorSparse(w);
+}
+
+void PinSolver::factorChain(const World& w) {
+    const size_t n = sequence_.size();
+    invPivot_.resize(n);
+    lower_.resize(n);
+    upper_.resize(n);
+    for (size_t path = 0; path + 1 < pathStart_.size(); ++path) {
+        const size_t begin = size_t(pathStart_[path]), end = size_t(pathStart_[path + 1]);
+        for (size_t i = begin; i < end; ++i) {
+            const PinRow& p = pins_[size_t(sequence_[i])];
+            Eigen::Matrix2d d = Eigen::Matrix2d::Zero();
+            if (p.dynA) d += coupling(w, p.bodyA, p.rA, p.rA);
+            if (p.dynB) d += coupling(w, p.bodyB, p.rB, p.rB);
+            if (i > begin) {
+                // Eliminate the previous pin: S_i = D_i - B^T S_{i-1}^{-1} B.
+                lower_[i] = upper_[i - 1].transpose() * invPivot_[i - 1];
+                d -= lower_[i] * upper_[i - 1];
+            }
+            invPivot_[i] = safeInverse(d);
+            if (i + 1 < end) {
+                const Link& l = links_[i];
+                const PinRow& next = pins_[size_t(sequence_[i + 1])];
+                const Vec2& r1 = p.bodyA == l.body ? p.rA : p.rB;
+                const Vec2& r2 = next.bodyA == l.body ? next.rA : next.rB;
+                upper_[i] = l.signPrev * l.signNext * coupling(w, l.body, r1, r2);
+            }
+        }
+    }
+}
+
+// Every constraint row r acts on a body b through a 3-vector g (force x,
+// force y, moment per unit multiplier); the matrix entry of rows r, s is the
+// sum over their shared bodies of g_r^T W_b g_s.
+void PinSolver::factorSparse(const World& w) {
+    struct Entry {
+        int row;
+        Eigen::Vector3d g;
+    };
+    std::vector<std::vector<Entry>> byBody(size_t(w.bodyCount()));
+    for (size_t i = 0; i < pins_.size(); ++i) {
+        const PinRow& p = pins_[i];
+        const int row = 2 * int(i);
+        if (p.dynA) {
+            byBody[size_t(p.bodyA)].push_back({row, {1, 0, -p.rA.y()}});
+            byBody[size_t(p.bodyA)].push_back({row + 1, {0, 1, p.rA.x()}});
+        }
+        if (p.dynB) {
+            byBody[size_t(p.bodyB)].push_back({row, {-1, 0, p.rB.y()}});
+            byBody[size_t(p.bodyB)].push_back({row + 1, {0, -1, -p.rB.x()}});
+        }
+    }
+    for (size_t i = 0; i < welds_.size(); ++i) {
+        const WeldRow& wr = welds_[i];
+        const int row = int(2 * pins_.size() + i);
+        if (wr.dynA) byBody[size_t(wr.bodyA)].push_back({row, {0, 0, wr.arm}});
+        if (wr.dynB) byBody[size_t(wr.bodyB)].push_back({row, {0, 0, -wr.arm}});
+    }
+    const int n = rowCount();
+    std::vector<Eigen::Triplet<double>> t;
+    t.reserve(size_t(n) * 8);
+    double scale = 0;
+    for (int b = 0; b < w.bodyCount(); ++b) {
+        const Body& body = w.body(b);
+        const Eigen::Vector3d inverse(body.invMass, body.invMass, body.invInertia);
+        for (const Entry& r : byBody[size_t(b)])
+            for (const Entry& c : byBody[size_t(b)]) {
+                const double m = r.g.dot(inverse.cwiseProduct(c.g));
+                if (r.row == c.row) scale = std::max(scale, std::abs(m));
+                t.emplace_back(r.row, c.row, m);
+            }
+    }
+    for (int i = 0; i < n; ++i) t.emplace_back(i, i, kRegularisation * (scale > 0 ? scale : 1.0));
+    matrix_.resize(n, n);
+    matrix_.setFromTriplets(t.begin(), t.end());
+    if (!analysed_) {
+        ldlt_.analyzePattern(matrix_);
+        analysed_ = true;
+    }
+    ldlt_.factorize(matrix_);
+}
+
+void PinSolver::solve(const Eigen::VectorXd& r, Eigen::VectorXd& x) const {
+    x.resize(r.size());
+    if (!chain_) {
+        x = ldlt_.solve(r);
+        return;
+    }
+    for (size_t path = 0; path + 1 < pathStart_.size(); ++path) {
+        const size_t begin = size_t(pathStart_[path]), end = size_t(pathStart_[path + 1]);
+        if (begin == end) continue;
+        // Forward: y_i = r_i - L_i y_{i-1}, kept in x.
+        for (size_t i = begin; i < end; ++i) {
+            Vec2 y = r.segment<2>(2 * sequence_[i]);
+            if (i > begin) y -= lower_[i] * x.segment<2>(2 * sequence_[i - 1]);
+            x.segment<2>(2 * sequence_[i]) = y;
+        }
+        // Back: x_i = S_i^{-1} (y_i - B_i x_{i+1}).
+        for (size_t i = end; i-- > begin;) {
+            Vec2 y = x.segment<2>(2 * sequence_[i]);
+            if (i + 1 < end) y -= upper_[i] * x.segment<2>(2 * sequence_[i + 1]);
+            x.segment<2>(2 * sequence_[i]) = invPivot_[i] * y;
+        }
+    }
+}
+
+void PinSolver::multiplyJ(const Eigen::VectorXd& u, Eigen::VectorXd& out) const {
+    out.resize(rowCount());
+    for (size_t i = 0; i < pins_.size(); ++i) {
+        const PinRow& p = pins_[i];
+        const Vec2 ua = u.segment<2>(3 * p.bodyA) + u[3 * p.bodyA + 2] * perp(p.rA);
+        const Vec2 ub = u.segment<2>(3 * p.bodyB) + u[3 * p.bodyB + 2] * perp(p.rB);
+        out.segment<2>(2 * Eigen::Index(i)) = ua - ub;
+    }
+    for (size_t i = 0; i < welds_.size(); ++i) {
+        const WeldRow& wr = welds_[i];
+        out[Eigen::Index(2 * pins_.size() + i)] = wr.arm * (u[3 * wr.bodyA + 2] - u[3 * wr.bodyB + 2]);
+    }
+}
+
+void PinSolver::addJTranspose(const Eigen::VectorXd& x, Eigen::VectorXd& f) const {
+    for (size_t i = 0; i < pins_.size(); ++i) {
+        const PinRow& p = pins_[i];
+        const Vec2 l = x.segment<2>(2 * Eigen::Index(i));
+        f.segment<2>(3 * p.bodyA) += l;
+        f[3 * p.bodyA + 2] += cross(p.rA, l);
+        f.segment<2>(3 * p.bodyB) -= l;
+        f[3 * p.bodyB + 2] -= cross(p.rB, l);
+    }
+    for (size_t i = 0; i < welds_.size(); ++i) {
+        const WeldRow& wr = welds_[i];
+        const double moment = wr.arm * x[Eigen::Index(2 * pins_.size() + i)];
+        f[3 * wr.bodyA + 2] += moment;
+        f[3 * wr.bodyB + 2] -= moment;
+    }
+}
+
+}  // namespace jl
+

@@ -1,0 +1,128 @@
+#include "jl/engine/projection.h"
+
+#include "jl/engine/world.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace jl {
+
+namespace {
+
+// Gap of every pin (2 per pin): point on A minus point on B. One sincos
+// per body (kept in `rotation`) rather than two per pin.
+void pinGaps(const World& w, Eigen::VectorXd& gap, std::vector<Eigen::Vector2d>& rotation) {
+    rotation.resize(size_t(w.bodyCount()));
+    for (int b = 0; b < w.bodyCount(); ++b) rotation[size_t(b)] = {std::cos(w.q[3 * b + 2]), std::sin(w.q[3 * b + 2])};
+    auto point = [&](int body, const Vec2& r) {
+        const Eigen::Vector2d& cs = rotation[size_t(body)];
+        return Vec2(w.q[3 * body] + cs[0] * r.x() - cs[1] * r.y(), w.q[3 * body + 1] + cs[1] * r.x() + cs[0] * r.y());
+    };
+    const std::vector<Pin>& pins = w.pins();
+    const std::vector<Weld>& welds = w.welds();
+    const Eigen::Index weldRows = 2 * Eigen::Index(pins.size());
+    gap.resize(weldRows + Eigen::Index(welds.size()));
+    for (size_t i = 0; i < pins.size(); ++i) {
+        const Pin& p = pins[i];
+        gap.segment<2>(2 * Eigen::Index(i)) = point(p.bodyA, p.localA) - point(p.bodyB, p.localB);
+    }
+    // A weld's gap: how far its second shared point is off, arm * angle.
+    for (size_t i = 0; i < welds.size(); ++i) {
+        const Pin& p = pins[size_t(welds[i].pin)];
+        gap[weldRows + Eigen::Index(i)] = welds[i].arm * (w.q[3 * p.bodyA + 2] - w.q[3 * p.bodyB + 2] - welds[i].angle);
+    }
+}
+
+// The largest gap: a pin's two rows are one distance, a weld's row another.
+double largestGap(const World& w, const Eigen::VectorXd& x) {
+    const Eigen::Index weldRows = 2 * Eigen::Index(w.pins().size());
+    double m = 0;
+    for (Eigen::Index i = 0; i + 1 < weldRows; i += 2) m = std::max(m, std::hypot(x[i], x[i + 1]));
+    for (Eigen::Index i = weldRows; i < x.size(); ++i) m = std::max(m, std::abs(x[i]));
+    return m;
+}
+
+}  // namespace
+
+double pinResidual(const World& w) {
+    Eigen::VectorXd gap;
+    std::vector<Eigen::Vector2d> rotation;
+    pinGaps(w, gap, rotation);
+    return largestGap(w, gap);
+}
+
+double pinVelocityResidual(const World& w, PinSolver& solver) {
+    solver.assemble(w);
+    Eigen::VectorXd jv;
+    solver.multiplyJ(w.v, jv);
+    return largestGap(w, jv);
+}
+
+ProjectionResult projectPositions(World& w, PinSolver& solver, double tolerance, int maxIterations) {
+    ProjectionResult r;
+    PinSolver::Scratch& s = solver.scratch;
+    Eigen::VectorXd &gap = s.gap, &x = s.x, &dq = s.dq, &q0 = s.q0;
+    pinGaps(w, gap, s.rotation);
+    double size = gap.norm();
+    r.residual = largestGap(w, gap);
+    while (r.residual > tolerance) {
+        if (r.iterations == maxIterations) {
+            r.converged = false;
+            return r;
+        }
+        ++r.iterations;
+        // Newton step: J dq = -C with dq = W J^T x.
+        solver.assemble(w);
+        gap = -gap;
+        solver.solve(gap, x);
+        dq.setZero(w.q.size());
+        solver.addJTranspose(x, dq);
+        dq.array() *= w.invMassDiag.array();
+        q0 = w.q;
+        // Backtrack until the gap shrinks; the full step nearly always does.
+        double step = 1.0;
+        for (int halving = 0;; ++halving) {
+            w.q = q0 + step * dq;
+            pinGaps(w, gap, s.rotation);
+            const double trial = gap.norm();
+            if (trial < size || halving == 30) {
+                if (!(trial < size)) {
+                    w.q = q0;
+                    r.converged = false;
+                    return r;
+                }
+                size = trial;
+                break;
+            }
+            step *= 0.5;
+        }
+        r.residual = largestGap(w, gap);
+    }
+    return r;
+}
+
+void projectVelocities(World& w, PinSolver& solver, Eigen::VectorXd* impulses) {
+    PinSolver::Scratch& s = solver.scratch;
+    Eigen::VectorXd &jv = s.jv, &x = s.x, &dv = s.dq;
+    solver.assemble(w);
+    solver.multiplyJ(w.v, jv);
+    jv = -jv;
+    solver.solve(jv, x);
+    dv.setZero(w.v.size());
+    solver.addJTranspose(x, dv);
+    w.v.array() += dv.array() * w.invMassDiag.array();
+    if (impulses) *impulses = x;
+}
+
+ProjectionResult makeConsistent(World& w, double tolerance) {
+    // Scratch kept per thread so that a restructure allocates nothing once
+    // warmed up; reset, so that nothing but capacity carries from one world
+    // (or one call) to the next.
+    thread_local PinSolver solver;
+    solver.reset();
+    ProjectionResult r = projectPositions(w, solver, tolerance);
+    projectVelocities(w, solver);
+    return r;
+}
+
+}  // namespace jl

@@ -1,0 +1,52 @@
+#include "jl/engine/stable_step.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace jl {
+
+double fastestVibration(const World& w, const Eigen::VectorXd& pinForces) {
+    const std::vector<Pin>& pins = w.pins();
+    if (pinForces.size() < 2 * Eigen::Index(pins.size())) return 0;
+    // Sum of |F| |r| per body, then the largest ratio to the inertia.
+    thread_local std::vector<double> pull;
+    pull.assign(size_t(w.bodyCount()), 0.0);
+    for (size_t i = 0; i < pins.size(); ++i) {
+        const Pin& p = pins[i];
+        const double f = pinForces.segment<2>(2 * Eigen::Index(i)).norm();
+        if (p.bodyA >= 0) pull[size_t(p.bodyA)] += f * p.localA.norm();
+        if (p.bodyB >= 0) pull[size_t(p.bodyB)] += f * p.localB.norm();
+    }
+    double omega2 = 0;
+    for (int b = 0; b < w.bodyCount(); ++b) {
+        const Body& body = w.body(b);
+        if (!body.alive || body.kinematic || !(body.inertia > 0)) continue;
+        omega2 = std::max(omega2, pull[size_t(b)] / body.inertia);
+    }
+    return std::sqrt(omega2);
+}
+
+double fastestTurn(const World& w) {
+    double omega = 0;
+    for (int b = 0; b < w.bodyCount(); ++b)
+        if (w.body(b).alive) omega = std::max(omega, std::abs(w.v[3 * b + 2]));
+    return omega;
+}
+
+double imaginaryStabilityLimit(Integrator integrator) {
+    switch (integrator) {
+    case Integrator::RK4: return 2 * std::sqrt(2.0);
+    case Integrator::DormandPrince45: return 0.9972;
+    case Integrator::ExplicitEuler:
+    case Integrator::SymplecticEuler: return 2.0;
+    }
+    return 2.0;
+}
+
+double automaticStep(Integrator integrator, double omega, double cap) {
+    constexpr double kSafety = 0.6;
+    if (!(omega > 0)) return cap;
+    return std::min(cap, kSafety * imaginaryStabilityLimit(integrator) / omega);
+}
+
+}  // namespace jl

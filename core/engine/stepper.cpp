@@ -1,0 +1,171 @@
+#include "jl/engine/stepper.h"
+
+#include "jl/engine/world.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace jl {
+
+namespace {
+
+Eigen::Vector3d rates(const Powers& p) { return {p.held, p.user, p.damping}; }
+
+}  // namespace
+
+Stepper::Stepper(Integrator kind, double tolerance) : kind_(kind), tolerance_(tolerance) {
+    switch (kind) {
+    case Integrator::ExplicitEuler:
+    case Integrator::SymplecticEuler:
+        tableau_ = {{0}, {1}, {}, {{}}};
+        break;
+    case Integrator::RK4:
+        tableau_ = {{0, 0.5, 0.5, 1},
+                    {1.0 / 6, 1.0 / 3, 1.0 / 3, 1.0 / 6},
+                    {},
+                    {{}, {0.5}, {0, 0.5}, {0, 0, 1}}};
+        break;
+    case Integrator::DormandPrince45:
+        tableau_ = {{0, 1.0 / 5, 3.0 / 10, 4.0 / 5, 8.0 / 9, 1, 1},
+                    {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84, 0},
+                    {71.0 / 57600, 0, -71.0 / 16695, 71.0 / 1920, -17253.0 / 339200, 22.0 / 525, -1.0 / 40},
+                    {{},
+                     {1.0 / 5},
+                     {3.0 / 40, 9.0 / 40},
+                     {44.0 / 45, -56.0 / 15, 32.0 / 9},
+                     {19372.0 / 6561, -25360.0 / 2187, 64448.0 / 6561, -212.0 / 729},
+                     {9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656},
+                     {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84}}};
+        break;
+    }
+    const size_t s = tableau_.c.size();
+    kq_.resize(s);
+    kv_.resize(s);
+    kl_.resize(s);
+}
+
+int Stepper::order() const {
+    switch (kind_) {
+    case Integrator::ExplicitEuler:
+    case Integrator::SymplecticEuler: return 1;
+    case Integrator::RK4: return 4;
+    case Integrator::DormandPrince45: return 5;
+    }
+    return 1;
+}
+
+// One explicit Runge-Kutta step of size h from the state in w (which must be
+// saved in q0_, v0_). Leaves the new state in w; returns the error norm
+// (adaptive) or 0.
+double Stepper::attempt(World& w, Dynamics& d, double t, double h, Ledger& ledger) {
+    const size_t stages = tableau_.c.size();
+    for (size_t i = 0; i < stages; ++i) {
+        if (i > 0) {
+            w.q = q0_;
+            w.v = v0_;
+            for (size_t j = 0; j < i; ++j) {
+                const double aij = tableau_.a[i][j];
+                if (aij == 0) continue;
+                w.q.noalias() += (h * aij) * kq_[j];
+                w.v.noalias() += (h * aij) * kv_[j];
+            }
+        }
+        kl_[i] = rates(d.evaluate(w, t + tableau_.c[i] * h));
+        kq_[i] = w.v;
+        kv_[i] = w.a;
+    }
+    w.q = q0_;
+    w.v = v0_;
+    Eigen::Vector3d dl = Eigen::Vector3d::Zero();
+    for (size_t i = 0; i < stages; ++i) {
+        const double bi = tableau_.b[i];
+        if (bi == 0) continue;
+        w.q.noalias() += (h * bi) * kq_[i];
+        w.v.noalias() += (h * bi) * kv_[i];
+        dl += (h * bi) * kl_[i];
+    }
+    ledger.held += dl[0];
+    ledger.user += dl[1];
+    ledger.damping += dl[2];
+    if (tableau_.e.empty()) return 0;
+    errQ_.setZero(w.q.size());
+    errV_.setZero(w.v.size());
+    for (size_t i = 0; i < stages; ++i) {
+        const double ei = tableau_.e[i];
+        if (ei == 0) continue;
+        errQ_.noalias() += (h * ei) * kq_[i];
+        errV_.noalias() += (h * ei) * kv_[i];
+    }
+    return errorNorm(w);
+}
+
+// RMS of the local error over dynamic coordinates, scaled by atol + rtol |y|.
+double Stepper::errorNorm(const World& w) const {
+    double sum = 0;
+    Eigen::Index n = 0;
+    for (Eigen::Index i = 0; i < w.q.size(); ++i) {
+        if (w.invMassDiag[i] == 0) continue;
+        const double sq = tolerance_ * (1 + std::max(std::abs(q0_[i]), std::abs(w.q[i])));
+        const double sv = tolerance_ * (1 + std::max(std::abs(v0_[i]), std::abs(w.v[i])));
+        sum += (errQ_[i] / sq) * (errQ_[i] / sq) + (errV_[i] / sv) * (errV_[i] / sv);
+        n += 2;
+    }
+    return n > 0 ? std::sqrt(sum / double(n)) : 0.0;
+}
+
+void Stepper::symplecticEuler(World& w, Dynamics& d, double t, double h, Ledger& ledger) {
+    const Eigen::Vector3d r = rates(d.evaluate(w, t));
+    w.v.noalias() += h * w.a;
+    w.q.noalias() += h * w.v;
+    ledger.held += h * r[0];
+    ledger.user += h * r[1];
+    ledger.damping += h * r[2];
+}
+
+StepOutcome Stepper::advance(World& w, Dynamics& d, double t, double h, Ledger& ledger, bool exact) {
+    StepOutcome out;
+    q0_ = w.q;
+    v0_ = w.v;
+    const Ledger start = ledger;
+    if (kind_ == Integrator::SymplecticEuler) {
+        symplecticEuler(w, d, t, h, ledger);
+        out.taken = h;
+    } else if (kind_ != Integrator::DormandPrince45 || exact) {
+        attempt(w, d, t, h, ledger);
+        out.taken = h;
+    } else {
+        double trial = next_ > 0 ? std::min(next_, h) : h;
+        for (;;) {
+            // A rejected trial left its end state in w; the first stage of
+            // the next trial must be evaluated at the start of the step.
+            w.q = q0_;
+            w.v = v0_;
+            ledger = start;
+            const double err = attempt(w, d, t, trial, ledger);
+            if (!std::isfinite(err) && trial > 1e-12) {  // diverged inside the step: much smaller
+                ++out.rejected;
+                trial *= 0.1;
+                continue;
+            }
+            const double grow = err > 0 ? 0.9 * std::pow(err, -0.2) : 5.0;
+            if (err <= 1.0 || trial < 1e-12) {
+                out.taken = trial;
+                next_ = trial * std::clamp(grow, 0.2, 5.0);
+                break;
+            }
+            ++out.rejected;
+            trial *= std::clamp(grow, 0.1, 0.9);
+        }
+    }
+    w.updateKinematics(t + out.taken);
+    if (!w.q.allFinite() || !w.v.allFinite()) {
+        w.q = q0_;
+        w.v = v0_;
+        ledger = start;
+        w.updateKinematics(t);
+        out.finite = false;
+    }
+    return out;
+}
+
+}  // namespace jl

@@ -1,0 +1,482 @@
+#include "jl/engine/world.h"
+
+#include "jl/engine/projection.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <numeric>
+
+namespace jl {
+
+World::World() {
+    // Part 0 is the ground: held still forever, alone in kinematic body 0.
+    Part g;
+    g.body = 0;
+    g.drive = Drive(Pose{});
+    parts_.push_back(g);
+    particlesOfPart_.emplace_back();
+    Body b;
+    b.alive = true;
+    b.kinematic = true;
+    b.parts = {ground};
+    bodies_.push_back(b);
+    q = v = a = invMassDiag = Eigen::VectorXd::Zero(3);
+}
+
+PartId World::addBox(double mass, const Vec2& size, double width, const Pose& pose, const Twist& velocity,
+                     std::optional<double> inertia) {
+    Part p;
+    p.mass = mass;
+    p.inertia = inertia ? *inertia : mass * size.squaredNorm() / 12.0;
+    p.halfSize = size / 2;
+    p.width = width;
+    parts_.push_back(p);
+    particlesOfPart_.emplace_back();
+    const PartId id = PartId(parts_.size()) - 1;
+    makeBody({id}, {pose}, {velocity});
+    pinsStale_ = true;
+    return id;
+}
+
+PartId World::addPoint(double mass, const Vec2& position, const Vec2& velocity) {
+    Part p;
+    p.mass = mass;
+    p.isPoint = true;
+    parts_.push_back(p);
+    particlesOfPart_.emplace_back();
+    const PartId id = PartId(parts_.size()) - 1;
+    makeBody({id}, {Pose{position, 0}}, {Twist{velocity, 0}});
+    addParticle(id, Vec2::Zero());
+    return id;
+}
+
+ParticleId World::addParticle(PartId part, const Vec2& local) {
+    Particle p;
+    p.at.push_back({part, local});
+    particles_.push_back(p);
+    const ParticleId id = ParticleId(particles_.size()) - 1;
+    particlesOfPart_[part].push_back(id);
+    return id;
+}
+
+ParticleId World::anchor(const Vec2& worldPoint) { return addParticle(ground, worldPoint); }
+
+int World::addSpring(const Spring& s) {
+    springs_.push_back(s);
+    return int(springs_.size()) - 1;
+}
+
+int World::addRotaryDamper(const RotaryDamper& d) {
+    dampers_.push_back(d);
+    return int(dampers_.size()) - 1;
+}
+
+bool World::isLive(ParticleId p) const { return validParticle(p) && particles_[p].mergedInto < 0; }
+
+std::optional<WorldError> World::checkParticle(ParticleId p) const {
+    if (!validParticle(p)) return WorldError{"particle " + std::to_string(p) + " does not exist"};
+    if (!isLive(p))
+        return WorldError{"particle " + std::to_string(p) + " was combined into particle " +
+                          std::to_string(particles_[p].mergedInto)};
+    return std::nullopt;
+}
+
+std::optional<WorldError> World::combine(ParticleId p, ParticleId q, bool consistent) {
+    if (auto e = checkParticle(p)) return e;
+    if (auto e = checkParticle(q)) return e;
+    if (p == q) return WorldError{"cannot combine a particle with itself"};
+    for (const Attachment& x : particles_[p].at)
+        for (const Attachment& y : particles_[q].at)
+            if (x.part == y.part)
+                return WorldError{"cannot combine two points of the same part " + std::to_string(x.part)};
+
+    std::vector<int> touched;
+    for (const Attachment& x : particles_[p].at) touched.push_back(parts_[x.part].body);
+    for (const Attachment& y : particles_[q].at) touched.push_back(parts_[y.part].body);
+
+    Particle& pp = particles_[p];
+    for (const Attachment& y : particles_[q].at) {
+        pp.at.push_back(y);
+        auto& list = particlesOfPart_[y.part];
+        if (std::find(list.begin(), list.end(), p) == list.end()) list.push_back(p);
+    }
+    pp.absorbed.push_back(q);
+    particles_[q].mergedInto = p;
+    regroup(touched);
+    if (consistent) return closePins("combine");
+    return std::nullopt;
+}
+
+// After a change of structure: the pins closed and the velocities made
+// consistent. The projection aims at 1e-12 m; a gap left beyond 1e-9 m (ten
+// times the default tolerance of a step's projection) is a projection that
+// failed, said in words. The structure has changed by then: a caller that
+// gets this error stops (the simulation keeps its last good frame).
+std::optional<WorldError> World::closePins(const char* operation) {
+    constexpr double kFailedGap = 1e-9;  // m
+    const ProjectionResult r = makeConsistent(*this);
+    if (r.converged || r.residual <= kFailedGap) return std::nullopt;
+    return WorldError{std::string(operation) + ": the pins could not be closed after the change of structure (gap " +
+                      std::to_string(r.residual) + " m after " + std::to_string(r.iterations) + " iterations)"};
+}
+
+std::optional<WorldError> World::separate(ParticleId p, bool consistent) {
+    if (auto e = checkParticle(p)) return e;
+    Particle& pp = particles_[p];
+    if (pp.absorbed.empty())
+        return WorldError{"particle " + std::to_string(p) + " has nothing combined into it"};
+    std::vector<int> touched;
+    for (const Attachment& x : pp.at) touched.push_back(parts_[x.part].body);
+
+    const ParticleId q = pp.absorbed.back();
+    pp.absorbed.pop_back();
+    pp.at.resize(pp.at.size() - particles_[q].at.size());  // combine appended q's last
+    particles_[q].mergedInto = -1;
+    regroup(touched);
+    if (consistent) return closePins("separate");
+    return std::nullopt;
+}
+
+void World::hold(PartId part, const Drive& d) {
+    parts_[part].drive = d;
+    regroup({parts_[part].body});
+    makeConsistent(*this);
+}
+
+void World::release(PartId part) {
+    if (part == ground || !parts_[part].drive) return;
+    parts_[part].drive.reset();
+    regroup({parts_[part].body});
+}
+
+void World::updateKinematics(double t) {
+    for (int b = 0; b < bodyCount(); ++b) {
+        const Body& body = bodies_[b];
+        if (!body.alive || !body.kinematic) continue;
+        const PartId lead = *std::find_if(body.parts.begin(), body.parts.end(),
+                                          [&](PartId p) { return parts_[p].drive.has_value(); });
+        const Part& part = parts_[lead];
+        const DriveSample s = part.drive->at(t);
+        const Pose pose = s.pose.compose(part.inBody.inverse());
+        const Vec2 r = pose.position - s.pose.position;  // lead centre to body origin
+        const double w = s.velocity.angular, alpha = s.acceleration.angular;
+        q.segment<2>(3 * b) = pose.position;
+        q[3 * b + 2] = pose.angle;
+        v.segment<2>(3 * b) = s.velocity.linear + w * perp(r);
+        v[3 * b + 2] = w;
+        a.segment<2>(3 * b) = s.acceleration.linear + alpha * perp(r) - w * w * r;
+        a[3 * b + 2] = alpha;
+    }
+}
+
+// A part alone in its body sits at the body's origin: its pose and velocity
+// need no rotation (bit for bit the same as the general formula, as
+// rotating a zero offset gives zero; the books and frames ask for them for
+// every block at every step).
+Pose World::partPose(PartId p) const {
+    const Part& part = parts_[p];
+    if (part.inBody.position.isZero()) return {q.segment<2>(3 * part.body), q[3 * part.body + 2] + part.inBody.angle};
+    return bodyPose(part.body).compose(part.inBody);
+}
+
+Twist World::partVelocity(PartId p) const {
+    const int b = parts_[p].body;
+    if (parts_[p].inBody.position.isZero()) return bodyVelocity(b);
+    const Twist bv = bodyVelocity(b);
+    const Vec2 r = rotate(q[3 * b + 2], parts_[p].inBody.position);
+    return {bv.linear + bv.angular * perp(r), bv.angular};
+}
+
+Vec2 World::pointPosition(PartId p, const Vec2& local) const { return partPose(p).apply(local); }
+
+Vec2 World::pointVelocity(PartId p, const Vec2& local) const {
+    const int b = parts_[p].body;
+    const Twist bv = bodyVelocity(b);
+    return bv.linear + bv.angular * perp(pointPosition(p, local) - q.segment<2>(3 * b));
+}
+
+Vec2 World::particlePosition(ParticleId p) const {
+    const Attachment& x = particles_[p].at.front();
+    return pointPosition(x.part, x.local);
+}
+
+Vec2 World::particleVelocity(ParticleId p) const {
+    const Attachment& x = particles_[p].at.front();
+    return pointVelocity(x.part, x.local);
+}
+
+void World::setPartState(PartId p, const Pose& pose, const Twist& velocity) {
+    const int b = parts_[p].body;
+    const Pose bp = pose.compose(parts_[p].inBody.inverse());
+    const Vec2 r = bp.position - pose.position;
+    q.segment<2>(3 * b) = bp.position;
+    q[3 * b + 2] = bp.angle;
+    v.segment<2>(3 * b) = velocity.linear + velocity.angular * perp(r);
+    v[3 * b + 2] = velocity.angular;
+}
+
+std::vector<Twist> World::partVelocities() const {
+    std::vector<Twist> out(parts_.size());
+    for (PartId p = 0; p < partCount(); ++p) out[size_t(p)] = partVelocity(p);
+    return out;
+}
+
+void World::setPartVelocities(const std::vector<Twist>& velocities) {
+    for (int b = 1; b < bodyCount(); ++b) {
+        const Body& body = bodies_[b];
+        if (!body.alive || body.kinematic) continue;
+        Vec2 momentum = Vec2::Zero();
+        for (PartId p : body.parts) momentum += parts_[p].mass * velocities[size_t(p)].linear;
+        const Vec2 vel = body.mass > 0 ? Vec2(momentum / body.mass) : Vec2::Zero();
+        double spin = 0;
+        for (PartId p : body.parts) {
+            const Vec2 r = partPose(p).position - q.segment<2>(3 * b);
+            spin += parts_[p].inertia * velocities[size_t(p)].angular +
+                    parts_[p].mass * cross(r, velocities[size_t(p)].linear - vel);
+        }
+        v.segment<2>(3 * b) = vel;
+        v[3 * b + 2] = body.inertia > 0 ? spin / body.inertia : 0.0;
+    }
+}
+
+// ---- grouping parts into bodies ----
+
+std::vector<std::vector<PartId>> World::rigidGroups(const std::vector<PartId>& parts) const {
+    std::map<PartId, int> index;
+    for (int i = 0; i < int(parts.size()); ++i) index[parts[i]] = i;
+    std::vector<int> root(parts.size());
+    std::iota(root.begin(), root.end(), 0);
+    auto find = [&](int i) {
+        while (root[i] != i) i = root[i] = root[root[i]];
+        return i;
+    };
+    auto unite = [&](int i, int j) { root[find(i)] = find(j); };
+
+    // Two extended parts sharing two distinct particles are rigid together;
+    // a point part is rigid with anything it shares a particle with.
+    std::vector<ParticleId> seen;
+    for (PartId part : parts)
+        for (ParticleId id : particlesOfPart_[part])
+            if (isLive(id)) seen.push_back(id);
+    std::sort(seen.begin(), seen.end());
+    seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
+    std::map<std::pair<int, int>, int> shared;
+    for (ParticleId id : seen) {
+        std::vector<int> members;
+        for (const Attachment& x : particles_[id].at) {
+            auto it = index.find(x.part);
+            if (it != index.end()) members.push_back(it->second);
+        }
+        std::sort(members.begin(), members.end());
+        members.erase(std::unique(members.begin(), members.end()), members.end());
+        for (size_t i = 0; i < members.size(); ++i)
+            for (size_t j = i + 1; j < members.size(); ++j) {
+                const int x = members[i], y = members[j];
+                // In weld mode two extended parts stay apart: a weld holds them.
+                if (parts_[parts[x]].isPoint || parts_[parts[y]].isPoint ||
+                    (++shared[{x, y}] >= 2 && !weldRigidPairs_))
+                    unite(x, y);
+            }
+    }
+    std::map<int, std::vector<PartId>> groups;
+    for (int i = 0; i < int(parts.size()); ++i) groups[find(i)].push_back(parts[i]);
+    std::vector<std::vector<PartId>> out;
+    for (auto& [r, g] : groups) {
+        std::sort(g.begin(), g.end());
+        out.push_back(std::move(g));
+    }
+    return out;
+}
+
+void World::regroup(const std::vector<int>& touchedBodies) {
+    std::vector<int> olds = touchedBodies;
+    std::sort(olds.begin(), olds.end());
+    olds.erase(std::unique(olds.begin(), olds.end()), olds.end());
+    std::vector<PartId> parts;
+    for (int b : olds) parts.insert(parts.end(), bodies_[b].parts.begin(), bodies_[b].parts.end());
+    std::vector<Pose> poses;
+    std::vector<Twist> velocities;
+    for (PartId p : parts) {
+        poses.push_back(partPose(p));
+        velocities.push_back(partVelocity(p));
+    }
+    for (int b : olds) {
+        bodies_[b] = Body{};
+        if (b != 0) freeBodies_.push_back(b);
+    }
+    for (const std::vector<PartId>& g : rigidGroups(parts)) {
+        std::vector<Pose> gp;
+        std::vector<Twist> gv;
+        for (PartId p : g) {
+            const size_t i = size_t(std::find(parts.begin(), parts.end(), p) - parts.begin());
+            gp.push_back(poses[i]);
+            gv.push_back(velocities[i]);
+        }
+        makeBody(g, gp, gv);
+    }
+    pinsStale_ = true;
+}
+
+int World::allocateBody() {
+    if (!freeBodies_.empty()) {
+        std::sort(freeBodies_.begin(), freeBodies_.end(), std::greater<>());
+        const int b = freeBodies_.back();
+        freeBodies_.pop_back();
+        return b;
+    }
+    bodies_.emplace_back();
+    const Eigen::Index n = 3 * Eigen::Index(bodies_.size());
+    if (q.size() < n) {  // grow geometrically: building N bodies stays O(N)
+        const Eigen::Index old = q.size(), grown = std::max(n, 2 * old);
+        for (Eigen::VectorXd* x : {&q, &v, &a, &invMassDiag}) {
+            x->conservativeResize(grown);
+            x->tail(grown - old).setZero();
+        }
+    }
+    return int(bodies_.size()) - 1;
+}
+
+// Makes one body of the parts at the given poses; the body's velocity keeps
+// the parts' linear and angular momentum (a merge is a plastic impact among
+// them, a split of a rigid body changes nothing). Held parts make it
+// kinematic: it then moves as its first held part does.
+int World::makeBody(const std::vector<PartId>& g, const std::vector<Pose>& poses,
+                    const std::vector<Twist>& velocities) {
+    const bool hasGround = g.front() == ground;
+    int b;
+    if (hasGround) {
+        b = 0;
+    } else {
+        b = allocateBody();
+    }
+    Body& body = bodies_[b];
+    body = Body{};
+    body.alive = true;
+    body.parts = g;
+    int lead = -1;
+    double m = 0;
+    Vec2 c = Vec2::Zero(), momentum = Vec2::Zero();
+    for (size_t i = 0; i < g.size(); ++i) {
+        const Part& part = parts_[g[i]];
+        if (part.drive && lead < 0) lead = int(i);
+        m += part.mass;
+        c += part.mass * poses[i].position;
+        momentum += part.mass * velocities[i].linear;
+    }
+    body.kinematic = lead >= 0;
+    const Pose& first = poses[lead >= 0 ? size_t(lead) : 0];
+    // A lone part keeps its own frame exactly: rounding in c / m would give a
+    // point particle a spurious ~1e-35 inertia (and a huge spin).
+    Pose frame{m > 0 && !hasGround && g.size() > 1 ? Vec2(c / m) : first.position, first.angle};
+    if (hasGround) frame = Pose{};
+    double inertia = 0, spin = 0;
+    const Vec2 vel = m > 0 ? Vec2(momentum / m) : Vec2::Zero();
+    for (size_t i = 0; i < g.size(); ++i) {
+        Part& part = parts_[g[i]];
+        const Vec2 r = poses[i].position - frame.position;
+        inertia += part.inertia + part.mass * r.squaredNorm();
+        spin += part.inertia * velocities[i].angular + part.mass * cross(r, velocities[i].linear - vel);
+        part.body = b;
+        part.inBody = frame.inverse().compose(poses[i]);
+    }
+    // Points that coincide (combined free particles) have no orientation.
+    const bool allPoints = std::all_of(g.begin(), g.end(), [&](PartId p) { return parts_[p].isPoint; });
+    if (allPoints && inertia <= 1e-12 * m * 1e-6) inertia = 0;
+    body.mass = m;
+    body.inertia = inertia;
+    q.segment<2>(3 * b) = frame.position;
+    q[3 * b + 2] = frame.angle;
+    if (body.kinematic) {
+        const Twist& lv = velocities[size_t(lead)];
+        const Vec2 r = frame.position - poses[size_t(lead)].position;
+        v.segment<2>(3 * b) = lv.linear + lv.angular * perp(r);
+        v[3 * b + 2] = lv.angular;
+        invMassDiag.segment<3>(3 * b).setZero();
+    } else {
+        body.invMass = m > 0 ? 1.0 / m : 0.0;
+        body.invInertia = inertia > 0 ? 1.0 / inertia : 0.0;
+        v.segment<2>(3 * b) = vel;
+        v[3 * b + 2] = inertia > 0 ? spin / inertia : 0.0;
+        invMassDiag.segment<3>(3 * b) << body.invMass, body.invMass, body.invInertia;
+    }
+    a.segment<3>(3 * b).setZero();
+    ++structureVersion_;
+    return b;
+}
+
+void World::shrinkToFit() {
+    const Eigen::Index n = 3 * Eigen::Index(bodies_.size());
+    for (Eigen::VectorXd* x : {&q, &v, &a, &invMassDiag}) x->conservativeResize(n);
+}
+
+const std::vector<Pin>& World::pins() const {
+    if (pinsStale_) rebuildPins();
+    return pins_;
+}
+
+const std::vector<Weld>& World::welds() const {
+    if (pinsStale_) rebuildPins();
+    return welds_;
+}
+
+// Pins are derived lazily: a builder making many combines pays once.
+void World::rebuildPins() const {
+    pinsStale_ = false;
+    pins_.clear();
+    for (ParticleId id = 0; id < particleCount(); ++id) {
+        const Particle& p = particles_[id];
+        if (p.mergedInto >= 0 || p.at.size() < 2) continue;
+        const Attachment& first = p.at.front();
+        const int ba = parts_[first.part].body;
+        std::vector<int> done{ba};
+        for (size_t i = 1; i < p.at.size(); ++i) {
+            const int bb = parts_[p.at[i].part].body;
+            if (std::find(done.begin(), done.end(), bb) != done.end()) continue;
+            done.push_back(bb);
+            if (bodies_[ba].kinematic && bodies_[bb].kinematic) continue;
+            pins_.push_back({ba, bb, first.part, p.at[i].part, parts_[first.part].inBody.apply(first.local),
+                             parts_[p.at[i].part].inBody.apply(p.at[i].local), id});
+        }
+    }
+    welds_.clear();
+    if (weldRigidPairs_) weldSharedPairs();
+}
+
+// Weld mode: of the pins between one pair of bodies (two bodies that share
+// two particles), the first stays a pin and the second becomes a weld of
+// their relative angle, taken from where the two shared points lie on each
+// body; any further pin is redundant and dropped.
+void World::weldSharedPairs() const {
+    std::map<std::pair<int, int>, int> firstPin;
+    std::vector<Pin> kept;
+    std::vector<char> welded;
+    kept.reserve(pins_.size());
+    for (const Pin& p : pins_) {
+        const std::pair<int, int> key{std::min(p.bodyA, p.bodyB), std::max(p.bodyA, p.bodyB)};
+        auto it = firstPin.find(key);
+        if (it == firstPin.end()) {
+            firstPin[key] = int(kept.size());
+            kept.push_back(p);
+            welded.push_back(0);
+            continue;
+        }
+        const int index = it->second;
+        if (welded[size_t(index)]) continue;
+        const Pin& first = kept[size_t(index)];
+        const bool same = p.bodyA == first.bodyA;
+        const Vec2 dA = (same ? p.localA : p.localB) - first.localA;
+        const Vec2 dB = (same ? p.localB : p.localA) - first.localB;
+        const double arm = dA.norm();
+        if (!(arm > 1e-12)) continue;  // the same point twice: the pin holds it
+        const double base = std::atan2(dB.y(), dB.x()) - std::atan2(dA.y(), dA.x());
+        const double now = q[3 * first.bodyA + 2] - q[3 * first.bodyB + 2];
+        const double turns = std::round((now - base) / (2 * std::numbers::pi));
+        welds_.push_back({index, arm, base + turns * 2 * std::numbers::pi});
+        welded[size_t(index)] = 1;
+    }
+    pins_ = std::move(kept);
+}
+
+}  // namespace jl

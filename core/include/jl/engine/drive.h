@@ -1,0 +1,42 @@
+// The prescribed path of a held block: a base pose plus smooth timed moves.
+#pragma once
+
+#include "jl/base/geometry.h"
+
+#include <vector>
+
+namespace jl {
+
+// A move of the held block's centre by `offset` and a turn about its centre by
+// `turn`, from t0 over `duration`, along the smooth profile (1 - cos(pi s))/2
+// of docs/model.md section 10: velocity is continuous, acceleration jumps only at
+// the ends (where the force tests run).
+struct DriveMove {
+    double t0 = 0;
+    double duration = 0;
+    Vec2 offset = Vec2::Zero();
+    double turn = 0;
+};
+
+struct DriveSample {
+    Pose pose;
+    Twist velocity;
+    Twist acceleration;
+};
+
+class Drive {
+public:
+    Drive() = default;
+    explicit Drive(const Pose& base) : base_(base) {}
+
+    void add(const DriveMove& m) { moves_.push_back(m); }
+    DriveSample at(double t) const;
+    const std::vector<DriveMove>& moves() const { return moves_; }
+    const Pose& base() const { return base_; }
+
+private:
+    Pose base_;
+    std::vector<DriveMove> moves_;
+};
+
+}  // namespace jl

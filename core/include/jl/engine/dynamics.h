@@ -1,0 +1,54 @@
+// Forward dynamics: forces, then accelerations from M a = f + J^T lambda with
+// J a = -Jdot v, and the powers that the energy balance integrates.
+#pragma once
+
+#include "jl/base/geometry.h"
+#include "jl/engine/pin_solver.h"
+
+#include <Eigen/Core>
+
+namespace jl {
+
+class World;
+
+// Rates of the energy ledger (W): work by held blocks and by the user's
+// drags flow in, viscous damping flows out (dissipation >= 0).
+struct Powers {
+    double held = 0, user = 0, damping = 0;
+};
+
+class Dynamics {
+public:
+    // Sets kinematic bodies to their path at time t, then computes w.a for
+    // the dynamic bodies from w.q and w.v. Allocation-free once warmed up.
+    Powers evaluate(World& w, double t);
+
+    // Pin forces of the last evaluation (2 per pin, force on body A), then
+    // one multiplier per weld (World::Weld).
+    const Eigen::VectorXd& pinForces() const { return lambda_; }
+    // Applied (non-constraint) forces of the last evaluation, 3 per body.
+    const Eigen::VectorXd& appliedForces() const { return force_; }
+    PinSolver& solver() { return solver_; }
+    long long evaluations() const { return evaluations_; }
+
+private:
+    PinSolver solver_;
+    Eigen::VectorXd force_, rhs_, lambda_, jv_;
+    long long evaluations_ = 0;
+};
+
+// Applied forces on every body (3 per body: fx, fy, torque about the body's
+// origin) and the held, user and damping powers of those forces.
+void accumulateForces(const World& w, Eigen::VectorXd& force, Powers& powers);
+
+// The applied forces on one part alone (gravity, air damping, springs,
+// loads, the mouse; not the rotary dampers, which act between parts), as a
+// force and a moment about the point `about`: one side of a locked pair is
+// held by its contact against these (Ladder's contact forces).
+struct AppliedWrench {
+    Vec2 force = Vec2::Zero();
+    double moment = 0;
+};
+AppliedWrench appliedOnPart(const World& w, int part, const Vec2& about);  // part: a PartId
+
+}  // namespace jl

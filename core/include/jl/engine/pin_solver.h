@@ -1,0 +1,99 @@
+// The pins' equations (J W J^T) x = r: O(N) block-tridiagonal elimination
+// along chains of bodies, Eigen's sparse LDLT for branched or looped graphs.
+#pragma once
+
+#include "jl/base/geometry.h"
+
+#include <Eigen/Core>
+#include <Eigen/SparseCholesky>
+#include <array>
+#include <vector>
+
+namespace jl {
+
+class World;
+
+class PinSolver {
+public:
+    // Arms and matrix at the world's current positions, then factorise.
+    // Re-derives the pin ordering only when the world's structure changed.
+    void assemble(const World& w);
+    // Solves (J W J^T) x = r; r and x hold 2 entries per pin, in w.pins()
+    // order, then 1 per weld (w.welds()).
+    void solve(const Eigen::VectorXd& r, Eigen::VectorXd& x) const;
+    // out = J u: the relative velocity (or acceleration part) of every pin
+    // for body vector u (3 per body, kinematic bodies included).
+    void multiplyJ(const Eigen::VectorXd& u, Eigen::VectorXd& out) const;
+    // f += J^T x: pin forces (or impulses) x applied to the bodies.
+    void addJTranspose(const Eigen::VectorXd& x, Eigen::VectorXd& f) const;
+
+    // Forget the cached ordering (the world was replaced, e.g. by a snapshot).
+    void reset() {
+        version_ = -1;
+        analysed_ = false;
+    }
+    int pinCount() const { return int(pins_.size()); }
+    int rowCount() const { return int(2 * pins_.size() + welds_.size()); }
+    // The O(N) chain elimination handles pins only: welds (and branched or
+    // looped graphs) take the sparse factorisation. `forceSparse` takes it
+    // for everything, so the two models of a rigid pair can be compared on
+    // the same solver.
+    void setForceSparse(bool on) {
+        forceSparse_ = on;
+        version_ = -1;
+    }
+    // World-frame arm from body A's (B's) origin to pin i.
+    const Vec2& armA(int i) const { return pins_[size_t(i)].rA; }
+    const Vec2& armB(int i) const { return pins_[size_t(i)].rB; }
+
+    // Work vectors of the projection (projection.cpp), kept here so that a
+    // step allocates nothing once the sizes have settled.
+    struct Scratch {
+        Eigen::VectorXd gap, x, dq, q0, jv;
+        std::vector<Eigen::Vector2d> rotation;  // (cos, sin) of each body's angle
+    };
+    Scratch scratch;
+
+private:
+    struct PinRow {
+        int bodyA, bodyB;
+        bool dynA, dynB;   // has finite mass
+        Vec2 rA, rB;       // world arms
+    };
+    struct WeldRow {
+        int bodyA, bodyB;
+        bool dynA, dynB;
+        double arm;
+    };
+    // Consecutive pins of a chain share one dynamic body.
+    struct Link {
+        int body;
+        double signPrev, signNext;  // +1 if the body is the pin's A side
+    };
+    void order(const World& w);
+    void updateRotations(const World& w);
+    Eigen::Matrix2d coupling(const World& w, int body, const Vec2& r1, const Vec2& r2) const;
+    void factorChain(const World& w);
+    void factorSparse(const World& w);
+
+    long long version_ = -1;
+    bool chain_ = true;
+    std::vector<PinRow> pins_;
+    std::vector<WeldRow> welds_;
+    bool forceSparse_ = false;
+    std::vector<Eigen::Vector2d> rotation_;  // (cos, sin) per body: one sincos per body, not per pin end
+    // Chain mode: pins in path order, path starts, and links between neighbours.
+    std::vector<std::array<int, 2>> pinsOfBody_;  // order(): the first two pins of each body
+    std::vector<int> pinCountOfBody_;
+    std::vector<char> visited_;
+    std::vector<int> sequence_;
+    std::vector<int> pathStart_;   // index into sequence_, plus a final end marker
+    std::vector<Link> links_;      // links_[i] joins sequence_[i] and sequence_[i+1]
+    std::vector<Eigen::Matrix2d> invPivot_, lower_, upper_;
+    // Sparse mode.
+    Eigen::SparseMatrix<double> matrix_;
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
+    bool analysed_ = false;
+};
+
+}  // namespace jl

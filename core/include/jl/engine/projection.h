@@ -1,0 +1,36 @@
+// Removes drift: mass-weighted projection of positions (Newton-Raphson with
+// line backtracking, the paper's solver) and of velocities onto the pins.
+#pragma once
+
+#include "jl/engine/pin_solver.h"
+
+#include <Eigen/Core>
+
+namespace jl {
+
+class World;
+
+struct ProjectionResult {
+    bool converged = true;
+    int iterations = 0;
+    double residual = 0;  // m, largest pin gap after the projection
+};
+
+// Largest distance between the two sides of any pin, or by which a weld's
+// second shared point is off (m).
+double pinResidual(const World& w);
+// Largest relative velocity across any pin (m/s).
+double pinVelocityResidual(const World& w, PinSolver& solver);
+
+// Moves dynamic bodies the least (in the mass metric) so every pin closes.
+ProjectionResult projectPositions(World& w, PinSolver& solver, double tolerance, int maxIterations = 25);
+
+// The plastic impulse: v+ = v- + W J^T P with J v+ = 0. Held bodies have
+// infinite mass. If `impulses` is given it receives P (2 per pin, on body A, then one
+// per weld).
+void projectVelocities(World& w, PinSolver& solver, Eigen::VectorXd* impulses = nullptr);
+
+// Both, after a change of structure (combine, separate, hold).
+ProjectionResult makeConsistent(World& w, double tolerance = 1e-12);
+
+}  // namespace jl

@@ -1,0 +1,63 @@
+// Time integration of a world's bodies and energy ledger: explicit Euler (the
+// paper's), symplectic Euler, classical RK4 and adaptive Dormand-Prince 5(4).
+#pragma once
+
+#include "jl/engine/dynamics.h"
+#include "jl/engine/integrator.h"
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace jl {
+
+class World;
+
+// Energy that entered or left through held blocks, drags and damping (J),
+// integrated with the same method as the motion so the balance holds to its order.
+struct Ledger {
+    double held = 0, user = 0, damping = 0;
+};
+
+struct StepOutcome {
+    double taken = 0;      // s, the step actually made (adaptive: <= asked)
+    int rejected = 0;      // adaptive trials thrown away
+    bool finite = true;    // false: a NaN or inf appeared; the world was restored
+};
+
+class Stepper {
+public:
+    explicit Stepper(Integrator kind = Integrator::RK4, double tolerance = 1e-8);
+
+    // Advances w from time t. Fixed-step methods take exactly h; the adaptive
+    // method takes at most h, choosing its own step to meet the tolerance.
+    // `exact`: the adaptive method takes exactly h too (to re-run part of an
+    // accepted step when locating an event).
+    StepOutcome advance(World& w, Dynamics& d, double t, double h, Ledger& ledger, bool exact = false);
+
+    Integrator kind() const { return kind_; }
+    int order() const;
+    double nextStep() const { return next_; }  // adaptive: its next trial step
+    // The state at the start of the last advance, to undo a step without a copy.
+    const Eigen::VectorXd& startPositions() const { return q0_; }
+    const Eigen::VectorXd& startVelocities() const { return v0_; }
+    void setNextStep(double h) { next_ = h; }
+
+private:
+    struct Tableau {
+        std::vector<double> c, b, e;           // e = b - b_embedded (adaptive only)
+        std::vector<std::vector<double>> a;    // lower triangle
+    };
+    double attempt(World& w, Dynamics& d, double t, double h, Ledger& ledger);
+    void symplecticEuler(World& w, Dynamics& d, double t, double h, Ledger& ledger);
+    double errorNorm(const World& w) const;
+
+    Integrator kind_;
+    double tolerance_;
+    double next_ = 0;
+    Tableau tableau_;
+    std::vector<Eigen::VectorXd> kq_, kv_;   // stage velocities and accelerations
+    std::vector<Eigen::Vector3d> kl_;        // stage ledger rates
+    Eigen::VectorXd q0_, v0_, errQ_, errV_;
+};
+
+}  // namespace jl

@@ -1,0 +1,243 @@
+// The simulated world: parts, the bodies they form, particles, and the
+// restructuring operations combine/separate of the paper.
+#pragma once
+
+#include "jl/base/geometry.h"
+#include "jl/engine/drive.h"
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace jl {
+
+using PartId = int;
+using ParticleId = int;
+
+// An original rigid piece: a box (a block), a point mass, or the ground.
+// Parts are never deleted, so a PartId stays valid for the world's lifetime.
+// Each part belongs to exactly one body, the unit the solver moves.
+struct Part {
+    double mass = 0;         // kg
+    double inertia = 0;      // kg m^2 about the part's centre (0 for a point)
+    Vec2 halfSize = Vec2::Zero(); // m, half length and half thickness (drawing)
+    double width = 0;        // m, out of the plane (drawing)
+    bool isPoint = false;    // a free particle: no orientation of its own
+    double linearDamping = 0;   // N s/m, air drag at the centre
+    double angularDamping = 0;  // N m s
+    int body = -1;           // current body
+    Pose inBody;             // this part's centre and angle in its body's frame
+    std::optional<Drive> drive; // held: the part follows this path
+};
+
+// A solver unit: one or more parts moving as one rigid body. The body's frame
+// has its origin at the centre of mass. Held and ground bodies are kinematic
+// (infinite mass, prescribed motion).
+struct Body {
+    bool alive = false;
+    bool kinematic = false;
+    double mass = 0, inertia = 0;
+    double invMass = 0, invInertia = 0;
+    std::vector<PartId> parts;
+};
+
+// A point on a part, in the part's frame.
+struct Attachment {
+    PartId part = 0;
+    Vec2 local = Vec2::Zero();
+};
+
+// A particle of the paper: a point on one part, or shared by several parts
+// (a hinge), or absorbed into another particle by combine.
+struct Particle {
+    std::vector<Attachment> at;      // where it is; all attachments coincide
+    ParticleId mergedInto = -1;      // >= 0 while absorbed by combine
+    std::vector<ParticleId> absorbed; // stack of combined particles, for separate
+};
+
+// A pin: the same point on two bodies (derived from shared particles).
+struct Pin {
+    int bodyA = 0, bodyB = 0;
+    PartId partA = 0, partB = 0;  // the parts the shared point is on
+    Vec2 localA = Vec2::Zero(), localB = Vec2::Zero(); // in the body frames
+    ParticleId particle = -1;
+};
+
+// In weld mode (World::setWeldRigidPairs), two bodies that share two or more
+// particles are not merged: they keep one pin (at `pin`) and this weld
+// closes their relative angle, theta_A - theta_B = angle. Its row is scaled
+// by `arm` (the distance between the two shared points) so that its gap is
+// a length and its multiplier a force: the gap is arm * (theta_A - theta_B -
+// angle), its multiplier times arm a moment on A (minus that on B).
+struct Weld {
+    int pin = -1;      // index into World::pins(): the same two bodies
+    double arm = 0;    // m
+    double angle = 0;  // rad
+};
+
+// A linear spring-damper between two particles.
+struct Spring {
+    ParticleId a = -1, b = -1;
+    double stiffness = 0;   // N/m
+    double restLength = 0;  // m
+    double damping = 0;     // N s/m
+};
+
+// A viscous torque between two parts, -c (omega_b - omega_a) on b, while they
+// are separate bodies (inside one body it is internal and vanishes).
+struct RotaryDamper {
+    PartId a = -1, b = -1;
+    double damping = 0;  // N m s
+};
+
+// A constant applied force at a point of a part (world directions) and a
+// torque: the engine's "external forces". Their work is booked as the user's.
+struct AppliedLoad {
+    PartId part = -1;
+    Vec2 local = Vec2::Zero();  // where, in the part's frame (m)
+    Vec2 force = Vec2::Zero();  // N
+    double torque = 0;          // N m
+};
+
+// The mouse spring of docs/model.md section 11.3, pulling a point of a part.
+struct UserDrag {
+    PartId part = -1;
+    Vec2 local = Vec2::Zero();
+    Vec2 target = Vec2::Zero();
+    double stiffness = 0, damping = 0, maxForce = 0;
+};
+
+// A failure of an operation, in words, with no state changed.
+struct WorldError {
+    std::string message;
+};
+
+class World {
+public:
+    World();
+
+    // ---- building ----
+    // A box of in-plane size `size` (extent along its local x and y) and
+    // out-of-plane `width`; inertia from the box unless given.
+    PartId addBox(double mass, const Vec2& size, double width, const Pose& pose,
+                  const Twist& velocity = {}, std::optional<double> inertia = {});
+    PartId addPoint(double mass, const Vec2& position, const Vec2& velocity = Vec2::Zero());
+    ParticleId addParticle(PartId part, const Vec2& local);  // a point on a part
+    ParticleId anchor(const Vec2& worldPoint);               // a point on the ground
+    int addSpring(const Spring& s);
+    int addRotaryDamper(const RotaryDamper& d);
+    void setRotaryDamping(int id, double damping) { dampers_[size_t(id)].damping = damping; }
+    std::vector<AppliedLoad>& loads() { return loads_; }
+    const std::vector<AppliedLoad>& loads() const { return loads_; }
+    static constexpr PartId ground = 0;
+
+    // ---- restructuring (the paper's combine and separate) ----
+    // combine(p, q): q is absorbed into p. Two points of different bodies
+    // become a hinge; a second shared point between the same two bodies
+    // makes them one rigid body (at their current relative pose); a point
+    // part joins whatever it is combined with. Velocities are made
+    // consistent by a momentum-conserving impulse.
+    // `consistent = false` defers that (a builder joining many points calls
+    // makeConsistent once at the end instead of once per combine).
+    std::optional<WorldError> combine(ParticleId p, ParticleId q, bool consistent = true);
+    // separate(p): undoes the last combine into p.
+    // Both also return an error, in words, if the projection after the
+    // change could not close the pins; the structure has changed then.
+    std::optional<WorldError> separate(ParticleId p, bool consistent = true);
+    bool isLive(ParticleId p) const;
+    bool validParticle(ParticleId p) const { return p >= 0 && p < int(particles_.size()); }
+    bool validPart(PartId p) const { return p >= 0 && p < int(parts_.size()); }
+
+    void setDamping(PartId p, double linear, double angular) {
+        parts_[p].linearDamping = linear;
+        parts_[p].angularDamping = angular;
+    }
+
+    // ---- holding ----
+    void hold(PartId part, const Drive& drive);  // the part follows the path
+    void release(PartId part);                   // keeps its current velocity
+    // Poses, velocities and accelerations of kinematic bodies at time t.
+    void updateKinematics(double t);
+    bool isHeld(PartId part) const { return parts_[part].drive.has_value(); }
+    Drive* drive(PartId part) { return parts_[part].drive ? &*parts_[part].drive : nullptr; }
+
+    // ---- state ----
+    int bodyCount() const { return int(bodies_.size()); }
+    int partCount() const { return int(parts_.size()); }
+    int particleCount() const { return int(particles_.size()); }
+    const Body& body(int b) const { return bodies_[b]; }
+    const Part& part(PartId p) const { return parts_[p]; }
+    const Particle& particle(ParticleId p) const { return particles_[p]; }
+    const std::vector<Pin>& pins() const;  // re-derived after a change of structure
+    const std::vector<Weld>& welds() const; // empty unless weld mode; with pins()
+    // Constraint rows: 2 per pin, then 1 per weld.
+    int constraintRows() const { return int(2 * pins().size() + welds().size()); }
+
+    // Model choice for rigid pairs (the benchmark's "model only what a scene
+    // needs"): false (default) merges parts that share two particles into
+    // one body; true keeps every extended part its own body and holds such
+    // pairs together with a pin and a weld instead. Set before building.
+    void setWeldRigidPairs(bool on) { weldRigidPairs_ = on; }
+    bool weldsRigidPairs() const { return weldRigidPairs_; }
+    const std::vector<Spring>& springs() const { return springs_; }
+    const std::vector<RotaryDamper>& rotaryDampers() const { return dampers_; }
+    std::vector<UserDrag>& drags() { return drags_; }
+    const std::vector<UserDrag>& drags() const { return drags_; }
+
+    Pose bodyPose(int b) const { return {q.segment<2>(3 * b), q[3 * b + 2]}; }
+    Twist bodyVelocity(int b) const { return {v.segment<2>(3 * b), v[3 * b + 2]}; }
+    Pose partPose(PartId p) const;
+    Twist partVelocity(PartId p) const;  // of the part's centre
+    Vec2 pointPosition(PartId p, const Vec2& local) const;
+    Vec2 pointVelocity(PartId p, const Vec2& local) const;
+    Vec2 particlePosition(ParticleId p) const;
+    Vec2 particleVelocity(ParticleId p) const;
+    void setPartState(PartId p, const Pose& pose, const Twist& velocity); // moves its body
+    // Gives every dynamic body the momentum of its parts at these velocities
+    // (one per part; the ground's ignored): a plastic merge of each body.
+    void setPartVelocities(const std::vector<Twist>& velocities);
+    std::vector<Twist> partVelocities() const;
+
+    // Generalised coordinates and velocities (x, y, angle per body) and the
+    // accelerations of the last evaluation; the integrators work on these.
+    // They may be longer than 3 * bodyCount() (zero padding, grown
+    // geometrically while building); shrinkToFit() trims them.
+    Eigen::VectorXd q, v, a;
+    Eigen::VectorXd invMassDiag;  // 3 per body; 0 for kinematic and dead bodies
+    Vec2 gravity{0, -9.81};
+
+    void shrinkToFit();
+
+    // Bumped by every change of structure (bodies or pins).
+    long long structureVersion() const { return structureVersion_; }
+
+private:
+    std::optional<WorldError> closePins(const char* operation);
+    std::optional<WorldError> checkParticle(ParticleId p) const;
+    void regroup(const std::vector<int>& touchedBodies);
+    std::vector<std::vector<PartId>> rigidGroups(const std::vector<PartId>& parts) const;
+    int makeBody(const std::vector<PartId>& parts, const std::vector<Pose>& partPoses,
+                 const std::vector<Twist>& partVelocities);
+    int allocateBody();
+    void rebuildPins() const;
+    void weldSharedPairs() const;
+
+    std::vector<Part> parts_;
+    std::vector<Body> bodies_;
+    std::vector<Particle> particles_;
+    std::vector<std::vector<ParticleId>> particlesOfPart_;  // every particle ever on the part
+    mutable std::vector<Pin> pins_;
+    mutable std::vector<Weld> welds_;
+    mutable bool pinsStale_ = false;
+    std::vector<Spring> springs_;
+    std::vector<RotaryDamper> dampers_;
+    std::vector<UserDrag> drags_;
+    std::vector<AppliedLoad> loads_;
+    std::vector<int> freeBodies_;
+    long long structureVersion_ = 0;
+    bool weldRigidPairs_ = false;
+
+};
+
+}  // namespace jl

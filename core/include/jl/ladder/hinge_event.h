@@ -1,0 +1,41 @@
+// What the ladder reports: each hinge's mode and state, the events that
+// change them, and the ribbons to draw. The ladder's own vocabulary; a
+// frame (jl/sim/frame.h) carries it to the views and recordings.
+#pragma once
+
+#include "jl/base/geometry.h"
+
+#include <string>
+#include <vector>
+
+namespace jl {
+
+enum class HingeMode { Free, OpenLocked, Folded, Cut };
+enum class EventKind { Lock, Unlock, Fold, Unfold, FlipFlop, Bounce, Cut, Join, Script };
+
+const char* toString(HingeMode m);
+const char* toString(EventKind k);  // "lock", "unlock", "fold", "unfold", "flip", ...
+
+// Something that happened, at its located time.
+struct Event {
+    double time = 0;       // s
+    EventKind kind = EventKind::Lock;
+    int hinge = -1;        // ladder hinge j (between blocks j-1 and j), or -1
+    int corner = -1;       // the hinge corner after the event
+    std::string text;      // in words, for the event log
+};
+
+struct HingeFrame {
+    HingeMode mode = HingeMode::Free;
+    int corner = 0;         // k, the same number on both blocks
+    double foldAngle = 0;   // rad, phi of docs/model.md section 7
+    Vec2 position = Vec2::Zero();  // m, the hinge point in the plane
+};
+
+// A ribbon drawn over the block faces: a polyline in the ladder's plane.
+struct RibbonFrame {
+    std::vector<Vec2> points;
+    bool visible = true;
+};
+
+}  // namespace jl

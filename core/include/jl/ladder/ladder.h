@@ -1,0 +1,188 @@
+// The Jacob's ladder on the engine: blocks with xor-numbered corners, the
+// hinge state machine of docs/model.md section 8 (free, open-locked, folded) and
+// its events, written on World::combine/separate; which ribbons show.
+#pragma once
+
+#include "jl/engine/dynamics.h"
+#include "jl/engine/world.h"
+#include "jl/ladder/hinge_event.h"
+#include "jl/scene/scene.h"
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace jl {
+
+struct Hinge {
+    HingeMode mode = HingeMode::Free;
+    int corner = 0;        // k: the same corner number on both blocks
+    double foldAngle = 0;  // phi, tracked continuously
+    // The accumulation point of a Zeno sequence (docs/model.md, "No
+    // chattering"): a contact that closed again within the Zeno time of its
+    // last release is held closed until its contact force has pulled for a
+    // whole Zeno time and letting it go would not close it again at once.
+    double releasedAt = -1e300;  // s, the last release
+    bool held = false;
+    double releaseGap = 0;       // rad, <= 0: how far past the limit it left the pair read (projection noise)
+    double pullingSince = -1;    // s, when the held contact's force turned to pull (-1: it pushes)
+    int renewals = 0;            // trials in a row that kept it held: each doubles the wait for the next (8x at most)
+    // The hinge's own particles at each corner k of the upper (side 0) and
+    // lower (side 1) block: a block's corner can be a hinge point of both
+    // its hinges at once (after a flip both sit at one end), so no two
+    // hinges may restructure through the same particle.
+    std::array<ParticleId, 8> own{-1, -1, -1, -1, -1, -1, -1, -1};
+};
+
+// Contact forces of a locked or folded hinge (docs/model.md section 8.3), N,
+// positive = pushing block j away from block j-1.
+struct HingeContact {
+    double normal = 0;  // OPEN-LOCKED: N at corner k^2
+    double nearEnd = 0; // FOLDED: N_near at corner k (with the pin at k^1)
+    double farEnd = 0;  // FOLDED: N_far at corner k^1 (with the pin at k)
+};
+
+class Ladder {
+public:
+    // Adds the blocks to the world, pins hinge j at corner 0 (j odd) or 3
+    // (j even), places them (hanging equilibrium, explicit poses or fold
+    // angles) and holds the held blocks. Errors in words; world untouched then.
+    static std::optional<std::string> validate(const LadderSpec& spec);
+    Ladder(World& w, const LadderSpec& spec);
+
+    int blockCount() const { return int(blocks_.size()); }
+    int hingeCount() const { return int(hinges_.size()); }  // N-1
+    PartId block(int i) const { return blocks_[size_t(i)]; }
+    const Hinge& hinge(int j) const { return hinges_[size_t(j - 1)]; }
+
+    // Where corner k of block i is, in the block's frame. The one place that
+    // says where a hinge attaches to a block (a ribbon model would change it).
+    Vec2 cornerLocal(int i, int k) const;
+    Vec2 cornerWorld(const World& w, int i, int k) const;
+    // The particle at corner k of block i (for scripted joins; hinges use their own).
+    ParticleId particle(int i, int k) const { return corners_[size_t(i)][size_t(k)]; }
+    // phi of hinge j at its current corner, continuous near the last value.
+    double foldAngle(const World& w, int j) const;
+    double foldRate(const World& w, int j) const;  // d phi / dt
+
+    // Event functions: each is >= 0 while its hinge may stay in its mode; a
+    // negative value is an event (located inside the step by the simulation).
+    // A limit is an event where the fold angle crosses it: kAngleTolerance
+    // is only the rounding of phi (computed from two body angles that may
+    // have turned many times), never an overshoot that the physics sees. A
+    // located crossing lands well inside kTouchBand, where resolve() acts on
+    // it. A hinge just released measures its limit from where the release
+    // left it.
+    static constexpr double kAngleTolerance = 1e-12;  // rad
+    // Fold angles of bodies just projected onto their pins carry the
+    // projection's noise (1e-10 m over a 1 mm block): a hinge within this
+    // band of a limit touches it, and one past it by more is past it.
+    static constexpr double kTouchBand = 1e-7;  // rad
+    static constexpr double kForceTolerance = 1e-9;   // N (N s for impulses)
+    // Needs the accelerations of the state (Dynamics::evaluate done).
+    // Returns the smallest of the contact-force functions (+inf if none).
+    double eventFunctions(const World& w, const Dynamics& d, std::vector<double>& out) const;
+    // Only the fold-angle functions of free hinges (the others 1, no event): they
+    // need positions alone, no evaluation of the dynamics.
+    void angleEventFunctions(const World& w, std::vector<double>& out) const;
+
+    // Applies whatever events the state calls for (limits crossed, contacts
+    // pulling), impacts included, until none remains. Returns what happened.
+    std::vector<Event> resolve(World& w, Dynamics& d, double t, double* impactLoss, double* heldWork);
+
+    // An impulse P at a point (block frame) of block i that the hand does not
+    // hold itself, taken up like an impact: with every constraint active; a
+    // locked or folded contact it would pull is released (most negative
+    // first, rule 6 included) and P taken up again. Returns the releases.
+    std::vector<Event> push(World& w, Dynamics& d, double t, int i, const Vec2& local, const Vec2& impulse);
+
+    // Contact forces of hinge j in the state last evaluated by d.
+    HingeContact contact(const World& w, const Dynamics& d, int j) const;
+
+    // Scripted structural changes.
+    std::optional<std::string> cut(World& w, int j);
+    // A scripted join of corner k of two neighbouring blocks whose hinge is
+    // cut, k on the hinge's side (k or k^1 of where it was): that joins the
+    // hinge again. Its number, or nothing if the join is not that. The
+    // caller combines hinge(j).own[k] with own[4 + k] (not the blocks'
+    // corner particles, so that locks and flips work on it as before) and
+    // then calls rehinged.
+    std::optional<int> cutHingeJoinedBy(int blockA, int cornerA, int blockB, int cornerB) const;
+    // The hinge is FREE at corner k again, phi taken from the poses (past
+    // a limit if the join left it there: the next resolve settles it).
+    void rehinged(World& w, int j, int k);
+    // A restructuring the world refused (a bug, reported rather than ignored).
+    const std::string& error() const { return error_; }
+    void updateAngles(const World& w);  // track phi continuously after a step
+    // After a step (the dynamics evaluated at its end, time t): the held
+    // contacts whose force has pulled for a whole Zeno time. The caller
+    // either lets each go (then resolve() at t releases it) or renews its
+    // hold, if letting go would only make it close again at once.
+    std::vector<int> expiredHolds(const World& w, const Dynamics& d, double t);
+    void letGo(int j);
+    void renewHold(int j, double t);
+    // s: open intervals shorter than this are the chatter of a contact that
+    // has reached its Zeno limit (a small fraction of the ladder's own time
+    // scale sqrt(L/g), about 1 ms for 60 mm blocks).
+    double zenoTime() const { return zenoTime_; }
+
+    std::vector<HingeFrame> hingeFrames(const World& w) const;
+    std::vector<RibbonFrame> ribbons(const World& w) const;
+
+private:
+    struct Wrench {
+        Vec2 force = Vec2::Zero();
+        double moment = 0;  // about the hinge point
+    };
+    void place(World& w);
+    void placeHanging(World& w);
+    bool up(int i) const { return i % 2 == 0; }
+    // An impact's velocity jump: part velocities before it and pin impulses.
+    struct Impact {
+        const std::vector<Twist>* before = nullptr;
+        const Eigen::VectorXd* pinImpulses = nullptr;
+    };
+    Wrench internalWrench(const World& w, const Dynamics& d, int j, const Impact* impact) const;
+    Wrench weldWrench(const World& w, const Dynamics& d, int j, const Impact* impact) const;
+    double foldAcceleration(const World& w, int j) const;
+    double foldSense(const World& w, int j) const;
+    double blockAngle(const World& w, int i) const;
+    bool touchingLimit(const World& w, int j, bool folded, bool resting) const;
+    std::vector<Event> impact(World& w, Dynamics& d, double t, const std::vector<int>& hits, double* loss,
+                              double* heldWork, std::vector<int>* releasedNow);
+    std::optional<std::pair<int, EventKind>> pullingContact(const World& w, const Dynamics& d, const Impact* impact,
+                                                            const std::vector<int>& keep = {}) const;
+    bool wouldChatter(const World& w, double t, int j, EventKind kind, const std::vector<Twist>& before) const;
+    void release(World& w, int j, EventKind kind, double t);
+    void noteClose(int j, double t);
+    void capped(double t, const std::string& what);
+    bool bothHeld(const World& w, int j) const;  // the blocks of hinge j, each in a held body
+    HingeContact split(const World& w, int j, const Wrench& on) const;
+    void snap(World& w, int j, double target);
+    void join(World& w, int j, int k);     // combine the hinge's points at corner k
+    void part(World& w, int j, int k);     // separate them
+    void lock(World& w, int j);
+    void fold(World& w, int j);
+    void unlock(World& w, int j);
+    void flipFlop(World& w, int j);
+    void unfold(World& w, int j);
+    std::string words(EventKind kind, int j) const;
+
+    LadderSpec spec_;
+    std::vector<PartId> blocks_;
+    std::vector<double> thickness_;
+    std::vector<std::array<ParticleId, 4>> corners_;
+    std::vector<Hinge> hinges_;
+    std::vector<int> dampers_;
+    double length_ = 0;
+    double zenoTime_ = 1e-3;
+    // phi = sense * (theta_j - theta_{j-1} + offset), per hinge and corner.
+    struct FoldLinear {
+        double sense = 1, offset = 0;
+    };
+    std::vector<std::array<FoldLinear, 4>> foldLinear_;
+    std::string error_;
+};
+
+}  // namespace jl

@@ -1,0 +1,48 @@
+// Loading, validating and saving scene files (YAML, docs/scene-format.md); errors are values.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "jl/base/diagnostic.h"
+#include "jl/scene/scene.h"
+
+namespace jl {
+
+// The version this program reads and writes, the value of the `format` key.
+inline constexpr std::string_view kSceneFormat = "jacobs-ladder/1";
+
+// What a scene file may ask for before it is refused outright; the checks run
+// before anything of that size is allocated.
+struct LoadLimits {
+    int maxBlocks = 100000;                  // ladder.blocks
+    std::size_t maxFileBytes = 64u << 20;    // 64 MiB
+    std::size_t maxNodes = 2'000'000;        // YAML values in the file (a tree costs ~0.3 kB each)
+    std::size_t maxErrors = 500;             // problems listed before giving up
+};
+
+// Either a whole scene (and no errors) or errors (and no scene): a load
+// never half-applies.
+struct SceneLoad {
+    std::optional<Scene> scene;
+    std::vector<Diagnostic> errors;  // in file order, file:line:column
+};
+
+SceneLoad loadScene(const std::string& path, const LoadLimits& limits = {});
+// `fileNameForMessages` is what the diagnostics call the text.
+SceneLoad parseScene(std::string_view text, const std::string& fileNameForMessages, const LoadLimits& limits = {});
+
+// The file text: stable key order, only values that differ from the
+// defaults (always `format`), numbers that read back bit for bit.
+std::string sceneToYaml(const Scene& scene);
+
+// Writes atomically (jl/base/output_file.h): a temporary file in the same
+// directory, synced to disk, then renamed over `path` (a symbolic link stays
+// a link to the new file). On failure the old file is untouched and the
+// returned diagnostic says why.
+std::optional<Diagnostic> saveScene(const Scene& scene, const std::string& path);
+
+}  // namespace jl

@@ -1,0 +1,152 @@
+// A running scene: advances a world step by step, applies the script and the
+// user's drags at their times, handles the ladder's events, produces frames.
+// Deterministic: the same scene and drags give bit-identical states whatever
+// the caller's frame rate (steps are never cut to suit the caller).
+#pragma once
+
+#include "jl/engine/dynamics.h"
+#include "jl/engine/step_interpolant.h"
+#include "jl/engine/stepper.h"
+#include "jl/engine/world.h"
+#include "jl/ladder/ladder.h"
+#include "jl/scene/scene.h"
+#include "jl/sim/frame.h"
+
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace jl {
+
+// The full state at one instant, enough to carry on bit-identically.
+struct Snapshot;
+
+class Simulation {
+public:
+    struct Built {
+        std::unique_ptr<Simulation> simulation;
+        std::vector<std::string> errors;  // empty when built
+    };
+    // Builds the world of a scene (already validated by the loader).
+    static Built build(const Scene& scene);
+
+    double time() const { return t_; }
+    const Scene& scene() const { return scene_; }  // the recorded drags included
+    const World& world() const { return world_; }
+    const Ladder* ladder() const { return ladder_ ? &*ladder_ : nullptr; }
+    int blockCount() const { return int(blocks_.size()); }
+    PartId blockPart(int block) const { return blocks_[size_t(block)]; }
+
+    // The current state as a frame; events since the previous call move into it.
+    Frame frame();
+    // Just the events since the previous call (a frame costs O(N) trig: a
+    // recorder that needs every event but not every frame takes these).
+    std::vector<Event> takeEvents() { return std::exchange(pending_, {}); }
+    double lastResidual() const { return lastResidual_; }  // m, after the last step
+
+    // Steps until time() >= t (possibly a little past it: the last step is not
+    // shortened). Returns false, keeping the last good state, on failure.
+    bool advanceTo(double t);
+    // Steps until time() == t exactly, the last step shortened to land on
+    // it: for measurements at a given instant (the benchmark's errors). The
+    // views use advanceTo, so their frame times never shape the trajectory.
+    bool advanceExactlyTo(double t) {
+        while (t_ < t && failure_.empty())
+            if (!takeStep(t)) break;
+        return failure_.empty();
+    }
+    // One internal step (or up to the next scripted instant).
+    bool stepOnce();
+    // The same, but never past `limit`: the last step of a run that must end
+    // at exactly that time is shortened to land on it.
+    bool stepOnceUpTo(double limit) { return takeStep(limit); }
+    // Runs until an event happens or `limit` is reached; true if one happened.
+    bool advanceToNextEvent(double limit);
+    const std::string& failure() const { return failure_; }
+
+    // The mouse spring of docs/model.md section 11.3 on block `block`, grabbed at
+    // `local` (block frame), pulled toward `target` (plane). Recorded into
+    // scene().drags with the time each sample takes effect, so a replay of
+    // the scene reproduces it exactly.
+    void beginDrag(int block, const Vec2& local, const Vec2& target);
+    void moveDrag(const Vec2& target);
+    void endDrag();
+    bool dragging() const { return liveDrag_ >= 0; }
+
+    // Which block is under a point of the plane, and where on it (block frame).
+    std::optional<std::pair<int, Vec2>> pick(const Vec2& point) const;
+
+    // Solve every step's constraints with the sparse factorisation, even a
+    // plain chain the O(N) elimination would take: so the benchmark can
+    // compare the two models of a rigid pair (solver.rigid_pairs) on one solver.
+    void useSparseSolver(bool on) { dynamics_.solver().setForceSparse(on); }
+
+    std::shared_ptr<const Snapshot> snapshot() const;
+    void restore(const Snapshot& s);
+    // FNV-1a over the bits of every block pose and velocity and the hinge modes.
+    std::uint64_t stateHash() const;
+
+private:
+    explicit Simulation(const Scene& scene);
+    std::optional<std::string> buildWorld();
+    double nextScheduledTime() const;
+    void applyDueInputs();
+    void applyScriptAction(const ScriptAction& a);
+    void grab(PartId part);
+    // A scripted join; the reason if refused (the world unchanged then).
+    std::optional<std::string> join(const ScriptAction& a);
+    void applyDragSample(const DragRecord& d, const DragRecord::Sample& s);
+    void removeMouseSpring(const DragRecord& d);
+    // Stepping (simulation_step.cpp).
+    bool takeStep(double limit);
+    bool locateEvent(double& taken, double fEnd, double forcesAtEnd);
+    double smallestEventFunction(double t, double* forces = nullptr);
+    void restoreStepStart();
+    bool rerunStep(double h);
+    void record(const Event& e);
+    bool booksDiverged() const;
+    double booksImbalance(double total) const;
+    double fixedStep();
+    bool retryWithSmallerStep();
+    std::string blowUpAdvice(double h) const;
+    void settleHolds(double limit);
+    enum class Trial { ClosedAgain, Kept, Undecided };
+    Trial tryLettingGo(int j, double limit);
+    void fail(const std::string& why);
+
+    static constexpr double kOpenEnd = std::numeric_limits<double>::max();  // no time limit
+
+    Scene scene_;
+    World world_;
+    Dynamics dynamics_;
+    Stepper stepper_;
+    Ledger ledger_;
+    std::optional<Ladder> ladder_;
+    std::vector<PartId> blocks_;
+    double t_ = 0;
+    double initialEnergy_ = 0;
+    double initialKinetic_ = 0, initialPotential_ = 0;  // after the inputs at t = 0
+    double energyFloor_ = 0;  // J, the least energy scale of the blow-up check
+    double impactLoss_ = 0, impactHeldWork_ = 0;
+    size_t nextAction_ = 0;
+    std::vector<size_t> nextDragSample_;
+    int liveDrag_ = -1;
+    std::vector<Event> pending_;
+    std::string failure_;
+    SolverFrame stats_;
+    double lastResidual_ = 0;
+    double stepScale_ = 1;  // automatic step: halved after each step that blew up
+    double imbalanceBase_ = 0;  // J, the books' imbalance at the last halving (the check watches growth past it)
+    bool trial_ = false;  // inside tryLettingGo: holds are not settled
+    // Kept from step to step so that stepping allocates nothing.
+    Eigen::VectorXd stepStartQ_, stepStartV_;  // the state the step started from
+    Ledger stepStartLedger_;
+    std::vector<double> eventValues_;
+    StepInterpolant interpolant_;
+};
+
+}  // namespace jl

@@ -1,0 +1,362 @@
+// The ladder's events: impacts at the limits of the fold angle and releases
+// of contacts that would pull (docs/model.md section 8), as a deterministic
+// active set.
+#include "jl/engine/energy.h"
+#include "jl/engine/projection.h"
+#include "jl/ladder/ladder.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace jl {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kTouch = Ladder::kTouchBand;  // rad: this close to a limit touches it
+constexpr double kResting = 1e-9;   // rad/s: slower than this is at rest
+
+}  // namespace
+
+// A free hinge at a limit (within kTouch, either side: the located time
+// leaves it a hair past) that it is moving into, or resting on with its
+// acceleration pushing into it. A hinge deeper past the limit (end-of-step
+// events) is hit whatever its motion. One just released sits at the limit
+// moving away: not hit, whatever the sign of the rounding in phi.
+bool Ladder::touchingLimit(const World& w, int j, bool folded, bool resting) const {
+    const double phi = hinge(j).foldAngle;
+    const double gap = folded ? kPi - phi : phi;           // >= 0 admissible
+    const double rate = folded ? -foldRate(w, j) : foldRate(w, j);  // < 0 closing
+    if (gap < -kTouch) return true;
+    if (gap > kTouch) return false;
+    if (rate < -kResting) return true;
+    return resting && rate <= kResting && (folded ? -foldAcceleration(w, j) : foldAcceleration(w, j)) < 0;
+}
+
+bool Ladder::bothHeld(const World& w, int j) const {
+    return w.body(w.part(block(j - 1)).body).kinematic && w.body(w.part(block(j)).body).kinematic;
+}
+
+void Ladder::release(World& w, int j, EventKind kind, double t) {
+    if (kind == EventKind::Unlock) unlock(w, j);
+    if (kind == EventKind::FlipFlop) flipFlop(w, j);
+    if (kind == EventKind::Unfold) unfold(w, j);
+    Hinge& h = hinges_[size_t(j - 1)];
+    h.releasedAt = t;
+    h.held = false;
+    h.pullingSince = -1;
+    h.renewals = 0;
+    // The parted bodies were projected onto their pins: phi may read a hair
+    // past the limit it leaves. That is its zero until it moves clear.
+    const double phi = foldAngle(w, j);
+    h.releaseGap = std::min(0.0, h.foldAngle < kPi / 2 ? phi : kPi - phi);
+}
+
+// A contact closed at t within the Zeno time of its release: it closed
+// again at once, and is held (docs/model.md section 8.6, "No chattering").
+void Ladder::noteClose(int j, double t) {
+    Hinge& h = hinges_[size_t(j - 1)];
+    if (t - h.releasedAt <= zenoTime_) h.held = true;
+}
+
+std::vector<int> Ladder::expiredHolds(const World& w, const Dynamics& d, double t) {
+    std::vector<int> out;
+    for (int j = 1; j < blockCount(); ++j) {
+        Hinge& h = hinges_[size_t(j - 1)];
+        if (!h.held) continue;
+        if (h.mode != HingeMode::OpenLocked && h.mode != HingeMode::Folded) {
+            h.held = false;
+            continue;
+        }
+        const HingeContact c = contact(w, d, j);
+        const bool pulls = h.mode == HingeMode::OpenLocked ? c.normal < 0 : std::min(c.nearEnd, c.farEnd) < 0;
+        if (!pulls) h.pullingSince = -1, h.renewals = 0;
+        else if (h.pullingSince < 0) h.pullingSince = t;
+        if (pulls && t - h.pullingSince >= zenoTime_ * double(1 << std::min(h.renewals, 3))) out.push_back(j);
+    }
+    return out;
+}
+
+void Ladder::letGo(int j) {
+    hinges_[size_t(j - 1)].held = false;
+    hinges_[size_t(j - 1)].pullingSince = -1;
+}
+
+void Ladder::renewHold(int j, double t) {
+    hinges_[size_t(j - 1)].pullingSince = t;
+    ++hinges_[size_t(j - 1)].renewals;
+}
+
+// The most negative contact force (or impulse) among locked and folded
+// hinges, and what releasing it means: unlock, flip-flop or unfold.
+std::optional<std::pair<int, EventKind>> Ladder::pullingContact(const World& w, const Dynamics& d, const Impact* impact,
+                                                                const std::vector<int>& keep) const {
+    std::optional<std::pair<int, EventKind>> worst;
+    double most = -kForceTolerance;
+    for (int j = 1; j < blockCount(); ++j) {
+        const HingeMode mode = hinge(j).mode;
+        if (mode != HingeMode::OpenLocked && mode != HingeMode::Folded) continue;
+        if (hinge(j).held || std::find(keep.begin(), keep.end(), j) != keep.end()) continue;
+        const HingeContact c = split(w, j, internalWrench(w, d, j, impact));
+        if (mode == HingeMode::OpenLocked && c.normal < most) {
+            most = c.normal;
+            worst = {j, EventKind::Unlock};
+        }
+        if (mode == HingeMode::Folded) {
+            // A pair that can tip over both ends carries on over the far one.
+            if (c.nearEnd < most) {
+                most = c.nearEnd;
+                worst = {j, EventKind::FlipFlop};
+            } else if (c.farEnd < most && c.nearEnd >= -kForceTolerance) {
+                most = c.farEnd;
+                worst = {j, EventKind::Unfold};
+            }
+        }
+    }
+    return worst;
+}
+
+// Rule 6 (docs/model.md section 8.6, "No chattering"): releasing hinge j at this impact would
+// part the pair slower than v_min while its free acceleration turns it back
+// into the limit, so it would only close again at once: it stays locked and
+// the force test decides afterwards. Tried on a copy of the world, kept per
+// thread so that its buffers are reused (grazing hinges ask at every impact);
+// the solvers are reset, so nothing but capacity carries from call to call.
+bool Ladder::wouldChatter(const World& w, double t, int j, EventKind kind, const std::vector<Twist>& before) const {
+    struct Trial {
+        World world;
+        std::optional<Ladder> ladder;
+        Dynamics dynamics;
+    };
+    thread_local Trial scratch;
+    World& trial = scratch.world;
+    trial = w;
+    if (scratch.ladder) *scratch.ladder = *this;
+    else scratch.ladder.emplace(*this);
+    Ladder& after = *scratch.ladder;
+    Dynamics& d = scratch.dynamics;
+    d.solver().reset();
+    after.release(trial, j, kind, t);
+    trial.setPartVelocities(before);
+    projectVelocities(trial, d.solver());
+    d.evaluate(trial, t);
+    // Away from the limit: phi grows from 0 after an unlock, falls from pi
+    // after an unfold or a flip (measured at the new corner).
+    const double away = kind == EventKind::Unlock ? 1.0 : -1.0;
+    const double speed = away * after.foldRate(trial, j);
+    const double accel = away * after.foldAcceleration(trial, j);
+    return speed < spec_.hinges.minReboundSpeed && accel < 0;
+}
+
+// A perfectly plastic impact at the hinges `hits` with every other
+// constraint active: combine at the limit, then repeat the same impact while
+// a contact impulse would pull (release it) or a free hinge would be driven
+// through a limit (lock it too). Restitution turns the plastic result into
+// a bounce while the rebound is faster than v_min.
+std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::vector<int>& hits, double* loss,
+                                  double* heldWork, std::vector<int>* releasedNow) {
+    std::vector<Event> events;
+    const std::vector<Twist> before = w.partVelocities();
+    const double keBefore = energy(w).kinetic;
+    std::vector<double> approach(hits.size());
+    for (size_t i = 0; i < hits.size(); ++i) {
+        const int j = hits[i];
+        const bool folding = hinge(j).foldAngle > kPi / 2;
+        if (bothHeld(w, j)) {
+            // The pair would be one rigid body driven by two hands whose
+            // motions need not agree, and its contact force is undetermined.
+            if (error_.empty())
+                error_ = "blocks " + std::to_string(j - 1) + " and " + std::to_string(j) + " are both held and meet at hinge " +
+                         std::to_string(j) + " (t = " + std::to_string(t) +
+                         " s): a lock between two hands is not modelled; let go of one of them first";
+            return events;
+        }
+        approach[i] = std::abs(foldRate(w, j));
+        if (folding) fold(w, j); else lock(w, j);
+        noteClose(j, t);
+        events.push_back({t, folding ? EventKind::Fold : EventKind::Lock, j, hinge(j).corner, {}});
+    }
+    Eigen::VectorXd impulses;
+    const Impact im{&before, &impulses};
+    // A hinge released in this impact stays free in it, even at its limit
+    // (docs/model.md section 8.4): the next step decides whether it closes again.
+    std::vector<int>& released = *releasedNow;
+    std::vector<int> kept;  // rule 6: stays locked through this impact
+    bool settled = false;
+    for (int guard = 0; guard < 4 * blockCount() + 4 && !settled; ++guard) {
+        w.setPartVelocities(before);
+        projectVelocities(w, d.solver(), &impulses);
+        updateAngles(w);
+        if (auto pull = pullingContact(w, d, &im, kept)) {
+            if (wouldChatter(w, t, pull->first, pull->second, before)) {
+                kept.push_back(pull->first);
+                continue;
+            }
+            release(w, pull->first, pull->second, t);
+            released.push_back(pull->first);
+            events.push_back({t, pull->second, pull->first, hinge(pull->first).corner, {}});
+            continue;
+        }
+        bool driven = false;
+        for (int j = 1; j < blockCount() && !driven; ++j) {
+            if (hinge(j).mode != HingeMode::Free || std::find(released.begin(), released.end(), j) != released.end())
+                continue;
+            for (bool folded : {false, true})
+                if (!driven && touchingLimit(w, j, folded, false)) {
+                    if (folded) fold(w, j); else lock(w, j);
+                    noteClose(j, t);
+                    events.push_back({t, folded ? EventKind::Fold : EventKind::Lock, j, hinge(j).corner, {}});
+                    driven = true;
+                }
+        }
+        settled = !driven;
+    }
+    if (!settled) capped(t, "an impact's contacts");
+    const double plasticJump = jumpEnergy(w, before);
+    bool bouncedAtAll = false;
+    // Restitution: phi_dot+ = -e phi_dot- for the hinges that were hit.
+    const double e = spec_.hinges.restitution;
+    if (e > 0) {
+        const std::vector<Twist> plastic = w.partVelocities();
+        bool bounced = false;
+        for (size_t i = 0; i < hits.size(); ++i) {
+            const int j = hits[i];
+            const HingeMode mode = hinge(j).mode;
+            if ((mode != HingeMode::OpenLocked && mode != HingeMode::Folded) || hinge(j).held ||
+                e * approach[i] <= spec_.hinges.minReboundSpeed)
+                continue;
+            release(w, j, mode == HingeMode::OpenLocked ? EventKind::Unlock : EventKind::Unfold, t);
+            events.push_back({t, EventKind::Bounce, j, hinge(j).corner, {}});
+            bounced = true;
+        }
+        bouncedAtAll = bounced;
+        if (bounced) {
+            std::vector<Twist> bounce(before.size());
+            for (size_t p = 0; p < before.size(); ++p)
+                bounce[p] = {before[p].linear + (1 + e) * (plastic[p].linear - before[p].linear),
+                             before[p].angular + (1 + e) * (plastic[p].angular - before[p].angular)};
+            w.setPartVelocities(bounce);
+            projectVelocities(w, d.solver());
+        }
+    }
+    // The plastic jump dissipates its own energy in the mass metric; a bounce
+    // v+ = v- + (1 + e) dv keeps e^2 of it (docs/model.md section 12.3).
+    const double dissipated = (bouncedAtAll ? 1 - e * e : 1.0) * plasticJump;
+    *loss += dissipated;
+    *heldWork += energy(w).kinetic - keBefore + dissipated;
+    return events;
+}
+
+std::vector<Event> Ladder::push(World& w, Dynamics& d, double t, int i, const Vec2& local, const Vec2& impulse) {
+    std::vector<Event> events;
+    const PartId p = block(i);
+    const Part& part = w.part(p);
+    // The velocities the impulse gives the block on its own: a block locked
+    // to others (or to the hand) takes it through their contacts, which the
+    // loop below tests as it tests an impact's.
+    std::vector<Twist> before = w.partVelocities();
+    const Vec2 arm = w.pointPosition(p, local) - w.partPose(p).position;
+    before[size_t(p)].linear += impulse / part.mass;
+    if (part.inertia > 0) before[size_t(p)].angular += cross(arm, impulse) / part.inertia;
+    Eigen::VectorXd impulses;
+    const Impact im{&before, &impulses};
+    std::vector<int> kept;
+    bool settled = false;
+    for (int guard = 0; guard < 4 * blockCount() + 4 && !settled; ++guard) {
+        w.setPartVelocities(before);
+        projectVelocities(w, d.solver(), &impulses);
+        updateAngles(w);
+        const auto pull = pullingContact(w, d, &im, kept);
+        if ((settled = !pull)) break;
+        if (wouldChatter(w, t, pull->first, pull->second, before)) {
+            kept.push_back(pull->first);
+            continue;
+        }
+        release(w, pull->first, pull->second, t);
+        events.push_back({t, pull->second, pull->first, hinge(pull->first).corner, words(pull->second, pull->first)});
+    }
+    if (!settled) capped(t, "a push's contacts");
+    return events;
+}
+
+// An active-set loop that ran out of passes: a bug or a case the rules do
+// not settle, said in the run's diagnostics rather than left half done.
+void Ladder::capped(double t, const std::string& what) {
+    if (error_.empty()) error_ = what + " at t = " + std::to_string(t) + " s could not be settled";
+}
+
+std::vector<Event> Ladder::resolve(World& w, Dynamics& d, double t, double* loss, double* heldWork) {
+    std::vector<Event> events;
+    std::vector<int> released;  // in this pass: free even at a limit
+    bool unsettled = true;
+    for (int guard = 0; guard < 8 * blockCount() + 8; ++guard) {
+        d.evaluate(w, t);
+        updateAngles(w);
+        std::vector<int> hits;
+        for (int j = 1; j < blockCount(); ++j)
+            if (hinge(j).mode == HingeMode::Free && std::find(released.begin(), released.end(), j) == released.end() &&
+                (touchingLimit(w, j, false, true) || touchingLimit(w, j, true, true)))
+                hits.push_back(j);
+        if (!hits.empty()) {
+            for (Event& e : impact(w, d, t, hits, loss, heldWork, &released)) events.push_back(std::move(e));
+            continue;
+        }
+        if (auto pull = pullingContact(w, d, nullptr)) {
+            released.push_back(pull->first);
+            release(w, pull->first, pull->second, t);
+            events.push_back({t, pull->second, pull->first, hinge(pull->first).corner, {}});
+            continue;
+        }
+        unsettled = false;
+        break;
+    }
+    if (unsettled) capped(t, "the contacts (" + std::to_string(events.size()) + " events at one instant)");
+    d.evaluate(w, t);
+    updateAngles(w);
+    for (Event& e : events) e.text = words(e.kind, e.hinge);
+    return events;
+}
+
+// ---- what the views draw ----
+
+std::vector<HingeFrame> Ladder::hingeFrames(const World& w) const {
+    std::vector<HingeFrame> out(hinges_.size());
+    for (int j = 1; j < blockCount(); ++j) {
+        const Hinge& h = hinge(j);
+        out[size_t(j - 1)] = {h.mode, h.corner, h.foldAngle, cornerWorld(w, j - 1, h.corner)};
+    }
+    return out;
+}
+
+// Two ribbons per hinge, one at each end where the hinge can sit (corner k
+// and k^1); the one at the current hinge corner shows. Each runs along the
+// hinge-side face of the upper block to the hinge and back along the lower
+// block's face, just outside the faces.
+std::vector<RibbonFrame> Ladder::ribbons(const World& w) const {
+    std::vector<RibbonFrame> out;
+    out.reserve(2 * hinges_.size());
+    const double lift = spec_.ribbons.thickness / 2;
+    for (int j = 1; j < blockCount(); ++j) {
+        const Hinge& h = hinge(j);
+        for (int k : {h.corner, h.corner ^ 1}) {
+            RibbonFrame r;
+            r.visible = spec_.ribbons.visible && h.mode != HingeMode::Cut && k == h.corner;
+            for (int i : {j - 1, j}) {
+                const Vec2 out_a = (cornerWorld(w, i, k) - cornerWorld(w, i, k ^ 2)).normalized() * lift;
+                const Vec2 far = cornerWorld(w, i, k ^ 1) + out_a, near = cornerWorld(w, i, k) + out_a;
+                if (i == j - 1) {
+                    r.points.push_back(far);
+                    r.points.push_back(near);
+                } else {
+                    r.points.push_back(near);
+                    r.points.push_back(far);
+                }
+            }
+            out.push_back(std::move(r));
+        }
+    }
+    return out;
+}
+
+}  // namespace jl

@@ -1,0 +1,202 @@
+// Reading the parts of a scene that are bodies and the links between them:
+// the ladder's initial state, free bodies, particles, pins and springs.
+#include <yaml-cpp/yaml.h>
+
+#include <charconv>
+#include <numbers>
+
+#include "jl/scene/scene_ranges.h"
+#include "scene_read_parts.h"
+
+namespace jl {
+
+namespace {
+
+void readMotion(Fields& f, Point2& position, double& angle, Point2& velocity, double& angularVelocity) {
+    f.point("position", position, range::coordinate);
+    f.angle("angle", angle, range::angle);
+    f.point("velocity", velocity, range::velocity);
+    f.number("angular_velocity", angularVelocity, range::angularVelocity);
+}
+
+BlockState readPose(const Located& item, Problems& problems, int blocks) {
+    Fields f(problems, item, {"block", "position", "angle", "velocity", "angular_velocity"});
+    BlockState pose;
+    pose.block = -1;
+    if (f.require("block")) readBlockIndex(f, "block", pose.block, blocks);
+    readMotion(f, pose.position, pose.angle, pose.velocity, pose.angularVelocity);
+    return pose;
+}
+
+// Poses: one per block, each block once.
+void checkPoses(const Fields& f, const std::vector<Located>& items, const LadderSpec& ladder) {
+    std::vector<bool> seen(static_cast<std::size_t>(ladder.blocks), false);
+    const auto& poses = ladder.initial.poses;
+    for (std::size_t i = 0; i < poses.size(); ++i) {
+        const int b = poses[i].block;
+        if (b < 0) continue;
+        if (seen[static_cast<std::size_t>(b)])
+            report(f.problems(), items[i].mark, items[i].path + ": block " + std::to_string(b) + " has a pose already");
+        seen[static_cast<std::size_t>(b)] = true;
+    }
+    if (poses.size() != static_cast<std::size_t>(ladder.blocks))
+        f.errorAt("poses", "gives " + std::to_string(poses.size()) + " poses; the ladder has " +
+                               std::to_string(ladder.blocks) + " blocks, give one per block");
+}
+
+void checkFoldAngles(const Fields& f, const LadderSpec& ladder) {
+    const auto& initial = ladder.initial;
+    const std::size_t given = f.value("fold_angles").node.size();
+    if (given + 1 != static_cast<std::size_t>(ladder.blocks))
+        f.errorAt("fold_angles", "gives " + std::to_string(given) + " angles; a ladder of " +
+                                     std::to_string(ladder.blocks) + " blocks has " +
+                                     std::to_string(ladder.blocks - 1) + " hinges, give one per hinge");
+    if (initial.poses.size() > 1 || (initial.poses.size() == 1 && initial.poses[0].block != 0))
+        f.errorAt("poses", "with fold angles, only block 0's pose may be given (it places the ladder)");
+}
+
+}  // namespace
+
+void readInitial(const Located& at, Problems& problems, LadderSpec& ladder) {
+    using Kind = InitialState::Kind;
+    Fields f(problems, at, {"kind", "poses", "fold_angles"});
+    if (!f.isMap()) return;
+    InitialState& initial = ladder.initial;
+    // The kind may be left out when the lists say it.
+    initial.kind = f.has("fold_angles") ? Kind::FoldAngles : f.has("poses") ? Kind::Poses : Kind::Equilibrium;
+    f.choice("kind", initial.kind,
+             {{"equilibrium", Kind::Equilibrium}, {"poses", Kind::Poses}, {"fold_angles", Kind::FoldAngles}});
+    std::vector<Located> poseItems;
+    if (f.has("poses"))
+        forEachItem(problems, f.value("poses"), [&](const Located& item) {
+            poseItems.push_back(item);
+            initial.poses.push_back(readPose(item, problems, ladder.blocks));
+        });
+    if (f.has("fold_angles"))
+        forEachItem(problems, f.value("fold_angles"), [&](const Located& item) {
+            if (const auto phi = readAngle(problems, item, Bound::closed(0, std::numbers::pi)))
+                initial.foldAngles.push_back(*phi);
+        });
+    if (initial.kind == Kind::Poses) checkPoses(f, poseItems, ladder);
+    if (initial.kind == Kind::FoldAngles) checkFoldAngles(f, ladder);
+    if (initial.kind == Kind::Equilibrium && f.has("poses"))
+        f.errorAt("poses", "is not used when kind is equilibrium; remove it or set kind: poses");
+    if (initial.kind != Kind::FoldAngles && f.has("fold_angles"))
+        f.errorAt("fold_angles", "is not used unless kind is fold_angles");
+}
+
+namespace {
+
+// Names are how pins and springs find things, so they must be unique and
+// must not look like the built-in references.
+void readName(Fields& f, std::string& name, Names& names) {
+    f.text("name", name);
+    if (name.empty()) return;
+    if (name == "world" || name.starts_with("block:"))
+        f.errorAt("name", "'" + name + "' is reserved ('world' and 'block:N' are built-in references)");
+    else if (!names.insert(name).second)
+        f.errorAt("name", "'" + name + "' is already the name of another body or particle");
+}
+
+}  // namespace
+
+void readBodies(const Located& at, Problems& problems, std::vector<BodySpec>& bodies, Names& names) {
+    forEachItem(problems, at, [&](const Located& item) {
+        Fields f(problems, item,
+                 {"name", "length", "thickness", "width", "density", "mass", "inertia", "position", "angle",
+                  "velocity", "angular_velocity", "held", "color"});
+        if (!f.isMap()) return;
+        BodySpec body;
+        readName(f, body.name, names);
+        f.number("length", body.length, range::size);
+        f.number("thickness", body.thickness, range::size);
+        f.number("width", body.width, range::size);
+        f.number("density", body.density, range::density);
+        f.number("mass", body.mass, range::mass);
+        f.number("inertia", body.inertia, range::inertia);
+        readMotion(f, body.position, body.angle, body.velocity, body.angularVelocity);
+        f.flag("held", body.held);
+        f.color("color", body.color);
+        bodies.push_back(body);
+    });
+}
+
+void readParticles(const Located& at, Problems& problems, std::vector<ParticleSpec>& particles, Names& names) {
+    forEachItem(problems, at, [&](const Located& item) {
+        Fields f(problems, item, {"name", "mass", "position", "velocity"});
+        if (!f.isMap()) return;
+        ParticleSpec particle;
+        readName(f, particle.name, names);
+        f.number("mass", particle.mass, range::mass);
+        f.point("position", particle.position, range::coordinate);
+        f.point("velocity", particle.velocity, range::velocity);
+        particles.push_back(particle);
+    });
+}
+
+namespace {
+
+void checkReference(Fields& f, const std::string& body, int blocks, const Names& names) {
+    if (body == "world") return;
+    if (body.starts_with("block:")) {
+        const std::string_view digits = std::string_view(body).substr(6);
+        int index = -1;
+        const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), index);
+        if (blocks == 0)
+            f.errorAt("body", "'" + body + "' refers to a ladder block but the scene has no ladder");
+        else if (error != std::errc{} || end != digits.data() + digits.size() || index < 0 || index >= blocks)
+            f.errorAt("body", "'" + body + "' is not a block of the ladder (block:0 to block:" +
+                                  std::to_string(blocks - 1) + ")");
+        return;
+    }
+    if (names.count(body)) return;
+    std::vector<std::string_view> known(names.begin(), names.end());
+    known.push_back("world");
+    std::string message = "no body or particle is named '" + body + "'";
+    if (const auto guess = closestWord(body, known)) message += "; did you mean '" + std::string(*guess) + "'?";
+    f.errorAt("body", message);
+}
+
+PointRef readPointRef(Fields& parent, std::string_view key, int blocks, const Names& names) {
+    PointRef ref;
+    if (!parent.require(key)) return ref;
+    Fields f(parent.problems(), parent.value(key), {"body", "local"});
+    if (f.require("body")) {
+        f.text("body", ref.on);
+        checkReference(f, ref.on, blocks, names);
+    }
+    f.point("local", ref.local, range::coordinate);
+    return ref;
+}
+
+}  // namespace
+
+void readPins(const Located& at, Problems& problems, int blocks, const Names& names, std::vector<PinSpec>& pins) {
+    forEachItem(problems, at, [&](const Located& item) {
+        Fields f(problems, item, {"a", "b"});
+        if (!f.isMap()) return;
+        PinSpec pin;
+        pin.a = readPointRef(f, "a", blocks, names);
+        pin.b = readPointRef(f, "b", blocks, names);
+        if (!pin.a.on.empty() && pin.a.on == pin.b.on)
+            report(problems, item.mark, item.path + ": pins '" + pin.a.on + "' to itself");
+        pins.push_back(pin);
+    });
+}
+
+void readSprings(const Located& at, Problems& problems, int blocks, const Names& names,
+                 std::vector<SpringSpec>& springs) {
+    forEachItem(problems, at, [&](const Located& item) {
+        Fields f(problems, item, {"a", "b", "stiffness", "rest_length", "damping"});
+        if (!f.isMap()) return;
+        SpringSpec spring;
+        spring.a = readPointRef(f, "a", blocks, names);
+        spring.b = readPointRef(f, "b", blocks, names);
+        f.number("stiffness", spring.stiffness, range::stiffness);
+        f.number("rest_length", spring.restLength, range::restLength);
+        f.number("damping", spring.damping, range::springDamping);
+        springs.push_back(spring);
+    });
+}
+
+}  // namespace jl

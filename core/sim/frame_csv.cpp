@@ -1,0 +1,37 @@
+#include "jl/sim/frame_csv.h"
+
+namespace jl {
+
+void writePosesCsvHeader(std::ostream& out) { out << "t,block,x,y,theta\n"; }
+
+void writePosesCsvRows(std::ostream& out, const Frame& f) {
+    const auto precision = out.precision(17);
+    for (size_t i = 0; i < f.blocks.size(); ++i)
+        out << f.time << ',' << i << ',' << f.blocks[i].position.x() << ',' << f.blocks[i].position.y() << ','
+            << f.blocks[i].angle << '\n';
+    out.precision(precision);
+}
+
+void writeEnergyCsvHeader(std::ostream& out) {
+    out << "t,kinetic,potential,total,held_work,user_work,impact_loss,damping_loss,balance\n";
+}
+
+void writeEnergyCsvRow(std::ostream& out, const Frame& f) {
+    const auto precision = out.precision(17);
+    const EnergyFrame& e = f.energy;
+    out << f.time << ',' << e.kinetic << ',' << e.potential << ',' << e.total() << ',' << e.heldWork << ','
+        << e.userWork << ',' << e.impactLoss << ',' << e.dampingLoss << ',' << e.balance() << '\n';
+    out.precision(precision);
+}
+
+void writePosesCsv(std::ostream& out, const std::vector<Frame>& frames) {
+    writePosesCsvHeader(out);
+    for (const Frame& f : frames) writePosesCsvRows(out, f);
+}
+
+void writeEnergyCsv(std::ostream& out, const std::vector<Frame>& frames) {
+    writeEnergyCsvHeader(out);
+    for (const Frame& f : frames) writeEnergyCsvRow(out, f);
+}
+
+}  // namespace jl

@@ -1,0 +1,320 @@
+// Stepping a simulation: one step of the integrator, the check that the
+// motion has not blown up, and the ladder's events located inside the step
+// and resolved at their instant.
+#include "jl/sim/simulation.h"
+
+#include "jl/engine/energy.h"
+#include "jl/engine/motion.h"
+#include "jl/engine/stable_step.h"
+#include "jl/sim/event_bracket.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cmath>
+
+namespace jl {
+
+void Simulation::record(const Event& e) { pending_.push_back(e); }
+
+// An unstable integrator makes energy from nothing long before a NaN or a
+// failed projection shows it: compare E with E0 + work - losses, against the
+// size of every term of the books.
+bool Simulation::booksDiverged() const {
+    // RK4 and Dormand-Prince keep the books to 1e-5 of this scale or better
+    // wherever their step is stable (the heavy-middle example at 1 ms: 3e-5);
+    // a thousandth is a motion running away. The Euler methods drift by O(h)
+    // even when stable: for them only a twentieth is.
+    const Integrator method = scene_.solver.integrator;
+    const bool euler = method == Integrator::ExplicitEuler || method == Integrator::SymplecticEuler;
+    const double kDivergence = euler ? 0.05 : 1e-3;
+    const double held = ledger_.held + impactHeldWork_;
+    const Energy e = energy(world_);
+    // What "large" means: the energy that has flowed, none of it measured
+    // from the arbitrary zero of the potential (a 10,000-block ladder has
+    // -5.8e5 J of it, which would hide any blow-up).
+    const double scale = energyFloor_ + initialKinetic_ + std::abs(e.potential - initialPotential_) +
+                         std::abs(held) + std::abs(ledger_.user) + impactLoss_ + ledger_.damping + 1e-9;
+    return !(std::abs(booksImbalance(e.total()) - imbalanceBase_) <= kDivergence * scale);
+}
+
+// E - (E0 + W_held + W_user - D_impacts - D_damping), E = `total`: zero when the books balance.
+double Simulation::booksImbalance(double total) const {
+    return total - (initialEnergy_ + ledger_.held + impactHeldWork_ + ledger_.user - impactLoss_ - ledger_.damping);
+}
+
+void Simulation::fail(const std::string& why) {
+    failure_ = "at t = " + std::to_string(t_) + " s: " + why;
+}
+
+void Simulation::restoreStepStart() {
+    world_.q = stepStartQ_;
+    world_.v = stepStartV_;
+    ledger_ = stepStartLedger_;
+}
+
+bool Simulation::rerunStep(double h) {
+    restoreStepStart();
+    return advanceAndProject(world_, dynamics_, stepper_, t_, h, ledger_, scene_.solver.projectionTolerance, true).ok();
+}
+
+// The smallest event function in the state the world holds, at time t (an
+// event function is negative when its event has happened); `forces` gets
+// the smallest of the contact-force ones.
+double Simulation::smallestEventFunction(double t, double* forces) {
+    dynamics_.evaluate(world_, t);
+    const double f = ladder_->eventFunctions(world_, dynamics_, eventValues_);
+    if (forces) *forces = f;
+    return eventValues_.empty() ? 1.0 : *std::min_element(eventValues_.begin(), eventValues_.end());
+}
+
+// The first instant inside the step just taken (length `taken`, event
+// function fEnd < 0 at its end) at which an event function turns negative,
+// to within the event tolerance; leaves the world there and `taken` set to it.
+//
+// First narrowed on the step's interpolant, at one evaluation per trial
+// instead of a whole step; when no contact force pulls at either end, the
+// event is a hinge reaching a limit, which positions alone tell, and a trial
+// needs no dynamics at all. Then both ends of that bracket are checked by
+// re-running the step from its start, and where the interpolant was wrong
+// the bracket is narrowed again with a re-run for every trial: the instant
+// is the integrator's own, as if every trial had been re-run.
+bool Simulation::locateEvent(double& taken, double fEnd, double forcesAtEnd) {
+    const double tolerance = scene_.solver.eventTolerance;
+    interpolant_.setEnd(world_.q, world_.v, world_.a);
+    restoreStepStart();
+    double forcesAtStart = 0;
+    const double fStart = smallestEventFunction(t_, &forcesAtStart);
+    interpolant_.setStart(taken, stepStartQ_, stepStartV_, world_.a);
+    const bool anglesOnly = forcesAtStart >= 0 && forcesAtEnd >= 0;
+
+    EventBracket b{0, fStart, taken, fEnd};
+    narrow(b, tolerance, [&](double h) {
+        interpolant_.at(h, world_.q, world_.v);
+        if (!anglesOnly) return smallestEventFunction(t_ + h);
+        world_.updateKinematics(t_ + h);
+        ladder_->angleEventFunctions(world_, eventValues_);
+        return eventValues_.empty() ? 1.0 : *std::min_element(eventValues_.begin(), eventValues_.end());
+    });
+
+    double held = -1;  // the length of the re-run step whose end the world holds
+    auto stepped = [&](double h) {
+        held = h;
+        return rerunStep(h) ? smallestEventFunction(t_ + h) : -1.0;
+    };
+    // The interpolant's low end is not checked: where the integrator's own
+    // solution crossed a hair earlier (by the interpolant's O(h^6) error),
+    // the event lands that hair late, still within the touching band.
+    if (b.hi < taken) b.fhi = stepped(b.hi);
+    if (b.fhi >= 0) b = {b.hi, b.fhi, taken, fEnd};
+    narrow(b, tolerance, stepped);
+    if (held != b.hi && !rerunStep(b.hi)) {
+        fail("an event could not be located: a step to it failed");
+        return false;
+    }
+    taken = b.hi;
+    return true;
+}
+
+// After a step (the dynamics evaluated at its end, time t_): a held contact
+// that has pulled for long enough is let go, unless a trial shows that it
+// would close again within a Zeno time (the pull is the chatter of a contact
+// at its Zeno limit, not a parting). A trial that lets it go is kept as the
+// run's own continuation (the same code would compute the same steps again),
+// so only the renewals cost extra; `limit` as for takeStep.
+void Simulation::settleHolds(double limit) {
+    for (int j : ladder_->expiredHolds(world_, dynamics_, t_)) {
+        const Trial trial = tryLettingGo(j, limit);
+        if (trial == Trial::Kept) return;  // the state has moved on: the other holds wait for the next step
+        if (trial == Trial::ClosedAgain) ladder_->renewHold(j, t_);
+    }
+}
+
+// Lets held hinge j go at t_ and runs on for a Zeno time (or to `limit`).
+// If j closed again, or the run did not get a whole Zeno time, everything is
+// put back; otherwise the run carries on from where the trial got to.
+Simulation::Trial Simulation::tryLettingGo(int j, double limit) {
+    const std::shared_ptr<const Snapshot> before = snapshot();
+    std::vector<Event> pending = std::exchange(pending_, {});
+    const int drag = liveDrag_;
+    trial_ = true;
+    ladder_->letGo(j);
+    bool closed = false;
+    for (Event& e : ladder_->resolve(world_, dynamics_, t_, &impactLoss_, &impactHeldWork_)) record(e);
+    const double until = t_ + ladder_->zenoTime();
+    while (!closed && t_ < until && t_ < limit && failure_.empty() && takeStep(limit))
+        for (const Event& e : pending_)
+            closed = closed || (e.hinge == j && (e.kind == EventKind::Lock || e.kind == EventKind::Fold));
+    trial_ = false;
+    if (!closed && t_ >= until && failure_.empty()) {
+        pending.insert(pending.end(), pending_.begin(), pending_.end());
+        pending_ = std::move(pending);
+        return Trial::Kept;
+    }
+    restore(*before);
+    pending_ = std::move(pending);
+    liveDrag_ = drag;
+    return closed ? Trial::ClosedAgain : Trial::Undecided;
+}
+
+// The scene's step, or the engine's: 1 ms at most, and within the stability
+// limit of the fastest vibration the pin forces of the last evaluation allow.
+double Simulation::fixedStep() {
+    constexpr double kLargestAutomaticStep = 1e-3;  // s
+    if (scene_.solver.step > 0) return scene_.solver.step;
+    // 8 x the fastest turn: a turn of at most 0.2 rad per RK4 step.
+    const double omega = std::max(fastestVibration(world_, dynamics_.pinForces()), 8 * fastestTurn(world_));
+    const double h = stepScale_ * automaticStep(scene_.solver.integrator, omega, kLargestAutomaticStep);
+    stats_.automaticStep = true;
+    stats_.smallestStep = stats_.smallestStep > 0 ? std::min(stats_.smallestStep, h) : h;
+    stats_.largestStep = std::max(stats_.largestStep, h);
+    return h;
+}
+
+// A step that blew up with the engine's own step: back to its start, and
+// every later step half as long (a tension the bound did not foresee, such
+// as a block whipping round). The scene's own step is the user's choice:
+// that fails with a diagnostic instead.
+bool Simulation::retryWithSmallerStep() {
+    constexpr int kMostHalvings = 10;
+    // The adaptive integrator chooses its own steps (by its tolerance): a
+    // shorter first try would change nothing.
+    if (scene_.solver.step > 0 || scene_.solver.integrator == Integrator::DormandPrince45 ||
+        stats_.stepHalvings >= kMostHalvings)
+        return false;
+    restoreStepStart();
+    world_.updateKinematics(t_);
+    dynamics_.evaluate(world_, t_);
+    stepScale_ *= 0.5;
+    ++stats_.stepHalvings;
+    // What the longer steps lost so far stays in the books (the frames show
+    // it); from here the check watches whether the shorter ones run away,
+    // else a whip's integration error, once past the threshold, would use up
+    // every halving and blame something else.
+    imbalanceBase_ = booksImbalance(energy(world_).total());
+    return true;
+}
+
+namespace {
+
+std::string gapText(double metres) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g m", metres);
+    return text;
+}
+
+}  // namespace
+
+// What to try after a step blew up. The scene's own step may be too long
+// for the integrator; the engine's own step, halved ten times already, is
+// not the cause: something the constraints cannot follow is (two held
+// blocks pulling the ladder apart, a load beyond the blocks' strength).
+std::string Simulation::blowUpAdvice(double h) const {
+    char step[32];
+    std::snprintf(step, sizeof step, "%.3g s", h);
+    if (scene_.solver.integrator == Integrator::DormandPrince45) {
+        char tolerance[32];
+        std::snprintf(tolerance, sizeof tolerance, "%.3g", scene_.solver.tolerance);
+        return std::string("the adaptive integrator's tolerance ") + tolerance +
+               " lets too much error through here; try a tighter tolerance";
+    }
+    if (scene_.solver.step > 0)
+        return std::string("the step ") + step +
+               " is too large for this integrator here (a fast vibration grows at every step); try a smaller step, "
+               "or leave the step to the engine, or the adaptive integrator";
+    return "it still does at a step of " + std::string(step) + ", halved " + std::to_string(stats_.stepHalvings) +
+           " times, so the step is not the cause: look for held blocks driven against each other or forces "
+           "the ladder cannot follow";
+}
+
+bool Simulation::takeStep(double limit) {
+    if (!failure_.empty()) return false;
+    const SolverSpec& solver = scene_.solver;
+    const bool adaptive = solver.integrator == Integrator::DormandPrince45;
+    double h = adaptive && stepper_.nextStep() > 0 ? stepper_.nextStep() : fixedStep();
+    const double chosen = h;
+    const double scheduled = std::min(nextScheduledTime(), limit);
+    const bool lands = t_ + h >= scheduled - 1e-12;
+    if (lands) h = scheduled - t_;
+    if (h <= 0) return true;
+
+    stepStartQ_ = world_.q;
+    stepStartV_ = world_.v;
+    stepStartLedger_ = ledger_;
+    const double next0 = stepper_.nextStep();
+    MotionStep m = advanceAndProject(world_, dynamics_, stepper_, t_, h, ledger_, solver.projectionTolerance);
+    if (!m.ok()) {
+        if (retryWithSmallerStep()) return true;
+        fail(m.step.finite ? "the projection onto the pins did not converge (gap " + gapText(m.projection.residual) +
+                                 " after " + std::to_string(m.projection.iterations) + " iterations): " + blowUpAdvice(chosen)
+                           : "the step produced a non-finite state: " + blowUpAdvice(chosen));
+        return false;
+    }
+    double taken = m.step.taken;
+    stats_.rejected += m.step.rejected;
+    if (booksDiverged()) {
+        if (retryWithSmallerStep()) return true;
+        restoreStepStart();
+        world_.updateKinematics(t_);
+        fail("the energy no longer balances (the motion is running away): " + blowUpAdvice(chosen));
+        return false;
+    }
+    if (ladder_) {
+        double forces = 0;
+        const double fEnd = smallestEventFunction(t_ + taken, &forces);
+        if (fEnd < 0) {
+            if (solver.events == EventPolicy::Located && taken > solver.eventTolerance) {
+                if (!locateEvent(taken, fEnd, forces)) return false;
+                stepper_.setNextStep(next0 > 0 ? next0 : chosen);
+            }
+            std::vector<Event> happened = ladder_->resolve(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
+            if (happened.empty() && taken < m.step.taken) {
+                // The located instant asked for nothing after all (a function
+                // within rounding of its threshold): take the whole step, so
+                // time can never stall on it.
+                restoreStepStart();
+                m = advanceAndProject(world_, dynamics_, stepper_, t_, m.step.taken, ledger_, solver.projectionTolerance, true);
+                taken = m.step.taken;
+                ++stats_.spuriousEvents;
+                happened = ladder_->resolve(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
+            }
+            for (Event& e : happened) record(e);
+            if (!ladder_->error().empty()) {
+                fail(ladder_->error());
+                return false;
+            }
+            if (!world_.q.allFinite() || !world_.v.allFinite()) {
+                restoreStepStart();
+                fail("an impact produced a non-finite state");
+                return false;
+            }
+        }
+        ladder_->updateAngles(world_);
+    }
+    t_ = (lands && taken == h) ? scheduled : t_ + taken;
+    ++stats_.steps;
+    stats_.lastStep = taken;
+    lastResidual_ = m.projection.residual;
+    applyDueInputs();
+    if (ladder_ && !trial_) settleHolds(limit);
+    return true;
+}
+
+bool Simulation::stepOnce() { return takeStep(kOpenEnd); }
+
+bool Simulation::advanceTo(double t) {
+    const auto start = std::chrono::steady_clock::now();
+    while (t_ < t && failure_.empty())
+        if (!takeStep(kOpenEnd)) break;
+    stats_.wallSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return failure_.empty();
+}
+
+bool Simulation::advanceToNextEvent(double limit) {
+    const size_t before = pending_.size();
+    while (t_ < limit && failure_.empty() && pending_.size() == before)
+        if (!takeStep(kOpenEnd)) break;
+    return pending_.size() > before;
+}
+
+}  // namespace jl
