@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "jl/scene/scene.h"
-#include "jl/scene/scene_io.h"
+#include "jl/scene/load_limits.h"
 #include "problems.h"
 
 namespace jl {

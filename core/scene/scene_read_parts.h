@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "jl/scene/scene.h"
-#include "jl/scene/scene_io.h"
+#include "jl/scene/load_limits.h"
 #include "problems.h"
 #include "yaml_fields.h"
 

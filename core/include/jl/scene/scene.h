@@ -7,9 +7,13 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace jl {
+
+// The version this program reads and writes, the value of the `format` key.
+inline constexpr std::string_view kSceneFormat = "jacobs-ladder/1";
 
 // Colours are kept as the user wrote them would be lossy; store the value.
 struct Color {

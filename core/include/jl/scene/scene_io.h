@@ -8,21 +8,10 @@
 #include <vector>
 
 #include "jl/base/diagnostic.h"
+#include "jl/scene/load_limits.h"
 #include "jl/scene/scene.h"
 
 namespace jl {
-
-// The version this program reads and writes, the value of the `format` key.
-inline constexpr std::string_view kSceneFormat = "jacobs-ladder/1";
-
-// What a scene file may ask for before it is refused outright; the checks run
-// before anything of that size is allocated.
-struct LoadLimits {
-    int maxBlocks = 100000;                  // ladder.blocks
-    std::size_t maxFileBytes = 64u << 20;    // 64 MiB
-    std::size_t maxNodes = 2'000'000;        // YAML values in the file (a tree costs ~0.3 kB each)
-    std::size_t maxErrors = 500;             // problems listed before giving up
-};
 
 // Either a whole scene (and no errors) or errors (and no scene): a load
 // never half-applies.
