@@ -114,11 +114,7 @@ void projectVelocities(World& w, PinSolver& solver, Eigen::VectorXd* impulses) {
     if (impulses) *impulses = x;
 }
 
-ProjectionResult makeConsistent(World& w, double tolerance) {
-    // Scratch kept per thread so that a restructure allocates nothing once
-    // warmed up; reset, so that nothing but capacity carries from one world
-    // (or one call) to the next.
-    thread_local PinSolver solver;
+ProjectionResult makeConsistent(World& w, PinSolver& solver, double tolerance) {
     solver.reset();
     ProjectionResult r = projectPositions(w, solver, tolerance);
     projectVelocities(w, solver);

@@ -110,13 +110,13 @@ std::optional<WorldError> World::combine(ParticleId p, ParticleId q, bool consis
 }
 
 // After a change of structure: the pins closed and the velocities made
-// consistent. The projection aims at 1e-12 m; a gap left beyond 1e-9 m (ten
+// consistent. The projection aims at restructureTolerance; a gap left beyond 1e-9 m (ten
 // times the default tolerance of a step's projection) is a projection that
 // failed, said in words. The structure has changed by then: a caller that
 // gets this error stops (the simulation keeps its last good frame).
 std::optional<WorldError> World::closePins(const char* operation) {
     constexpr double kFailedGap = 1e-9;  // m
-    const ProjectionResult r = makeConsistent(*this);
+    const ProjectionResult r = makeConsistent(*this, restructure_.solver, restructureTolerance);
     if (r.converged || r.residual <= kFailedGap) return std::nullopt;
     return WorldError{std::string(operation) + ": the pins could not be closed after the change of structure (gap " +
                       std::to_string(r.residual) + " m after " + std::to_string(r.iterations) + " iterations)"};
@@ -142,7 +142,7 @@ std::optional<WorldError> World::separate(ParticleId p, bool consistent) {
 void World::hold(PartId part, const Drive& d) {
     parts_[part].drive = d;
     regroup({parts_[part].body});
-    makeConsistent(*this);
+    makeConsistent(*this, restructure_.solver, restructureTolerance);
 }
 
 void World::release(PartId part) {

@@ -20,7 +20,8 @@ std::vector<PartId> buildFallingChain(World& w, int n, const FallingChain& spec)
         previous = w.addParticle(parts[size_t(i)], Vec2(0, half));
     }
     w.shrinkToFit();
-    makeConsistent(w);
+    PinSolver scratch;
+    makeConsistent(w, scratch, w.restructureTolerance);
     return parts;
 }
 

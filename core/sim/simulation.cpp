@@ -139,7 +139,8 @@ std::optional<std::string> Simulation::buildWorld() {
                      [](const ScriptAction& a, const ScriptAction& b) { return a.at < b.at; });
     nextDragSample_.assign(scene_.drags.size(), 0);
     world_.shrinkToFit();
-    makeConsistent(world_, scene_.solver.projectionTolerance);
+    PinSolver scratch;
+    makeConsistent(world_, scratch, scene_.solver.projectionTolerance);
     dynamics_.evaluate(world_, 0);
     // Force tests at t = 0 (docs/model.md section 8.7), then the books open.
     applyDueInputs();

@@ -30,7 +30,8 @@ ProjectionResult projectPositions(World& w, PinSolver& solver, double tolerance,
 // per weld).
 void projectVelocities(World& w, PinSolver& solver, Eigen::VectorXd* impulses = nullptr);
 
-// Both, after a change of structure (combine, separate, hold).
-ProjectionResult makeConsistent(World& w, double tolerance = 1e-12);
+// Both, after a change of structure (combine, separate, hold), with the
+// caller's solver: reset first, so nothing but its capacity carries over.
+ProjectionResult makeConsistent(World& w, PinSolver& solver, double tolerance);
 
 }  // namespace jl

@@ -4,6 +4,7 @@
 
 #include "jl/base/geometry.h"
 #include "jl/engine/drive.h"
+#include "jl/engine/pin_solver.h"
 
 #include <Eigen/Core>
 #include <optional>
@@ -212,7 +213,23 @@ public:
     // Bumped by every change of structure (bodies or pins).
     long long structureVersion() const { return structureVersion_; }
 
+    // How closely combine, separate and hold close the pins (m): to
+    // rounding, tighter than a step's projection, so that a lock or a grab
+    // leaves no gap for the next step to see (docs/model.md section 3.4).
+    double restructureTolerance = 1e-12;
+
 private:
+    // The solver a restructure closes the pins with. Scratch only (reset
+    // before each use): a copy of the world, as an event's trial run makes,
+    // starts with an empty one instead of copying it.
+    struct RestructureSolver {
+        PinSolver solver;
+        RestructureSolver() = default;
+        RestructureSolver(const RestructureSolver&) {}
+        RestructureSolver& operator=(const RestructureSolver&) { return *this; }
+    };
+    RestructureSolver restructure_;
+
     std::optional<WorldError> closePins(const char* operation);
     std::optional<WorldError> checkParticle(ParticleId p) const;
     void regroup(const std::vector<int>& touchedBodies);
