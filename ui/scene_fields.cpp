@@ -1,5 +1,7 @@
 #include "ui/scene_fields.h"
 
+#include "jl/scene/scene_ranges.h"
+
 #include <QCoreApplication>
 #include <algorithm>
 
@@ -9,13 +11,20 @@ namespace {
 
 QString tr(const char* s) { return QCoreApplication::translate("SceneFields", s); }
 
+// The scene files' range of a number (jl/scene/scene_ranges.h), in the
+// form's shown units: the form accepts exactly what a file may hold.
+struct Shown {
+    double min, max;
+};
+Shown within(jl::Bound b, double scale) { return {b.lo * scale, b.hi * scale}; }
+
 // A field of the ladder spec, read as 0 when the scene has no ladder.
-NumberField ladderNumber(QString key, QString label, QString unit, QString tip, double min, double max,
+NumberField ladderNumber(QString key, QString label, QString unit, QString tip, Shown range,
                          double scale, int decimals, std::function<double(const jl::LadderSpec&)> get,
                          std::function<void(jl::LadderSpec&, double)> set) {
     NumberField f;
     f.key = std::move(key), f.label = std::move(label), f.unit = std::move(unit), f.tip = std::move(tip);
-    f.min = min, f.max = max, f.scale = scale, f.decimals = decimals;
+    f.min = range.min, f.max = range.max, f.scale = scale, f.decimals = decimals;
     f.change = SceneChange::Ladder;
     f.get = [get](const jl::Scene& s) { return s.ladder ? get(*s.ladder) : 0.0; };
     f.set = [set](jl::Scene& s, double v) {
@@ -24,11 +33,11 @@ NumberField ladderNumber(QString key, QString label, QString unit, QString tip, 
     return f;
 }
 
-NumberField solverNumber(QString key, QString label, QString unit, QString tip, double min, double max,
+NumberField solverNumber(QString key, QString label, QString unit, QString tip, Shown range,
                          double scale, int decimals, bool scientific, double jl::SolverSpec::*member) {
     NumberField f;
     f.key = std::move(key), f.label = std::move(label), f.unit = std::move(unit), f.tip = std::move(tip);
-    f.min = min, f.max = max, f.scale = scale, f.decimals = decimals, f.scientific = scientific;
+    f.min = range.min, f.max = range.max, f.scale = scale, f.decimals = decimals, f.scientific = scientific;
     f.change = SceneChange::Solver;
     f.get = [member](const jl::Scene& s) { return s.solver.*member; };
     f.set = [member](jl::Scene& s, double v) { s.solver.*member = v; };
@@ -40,7 +49,7 @@ NumberField solverNumber(QString key, QString label, QString unit, QString tip, 
 NumberField blockMassField() {
     using L = jl::LadderSpec;
     NumberField f = ladderNumber("mass", tr("Block mass"), "g", tr("Mass of every block; 0 means computed from the density."),
-                                 0, 100000, 1000, 2, [](const L& l) { return l.block.mass.value_or(0.0); },
+                                 {0, jl::range::mass.hi * 1000}, 1000, 2, [](const L& l) { return l.block.mass.value_or(0.0); },
                                  [](L& l, double v) { l.block.mass = v > 0 ? std::optional<double>(v) : std::nullopt; });
     f.unset = [](const jl::Scene& s) {
         if (!s.ladder) return QString();
@@ -56,7 +65,7 @@ NumberField automaticStepField() {
     NumberField f = solverNumber("step", tr("Time step"), "ms",
                                  tr("Fixed step of the integrator (the first try of the adaptive one); 0: the engine "
                                     "chooses it, at most 1 ms and short enough to stay stable on long ladders."),
-                                 0, 100, 1000, 3, false, &jl::SolverSpec::step);
+                                 {0, jl::range::step.hi * 1000}, 1000, 3, false, &jl::SolverSpec::step);
     f.unset = [](const jl::Scene&) { return tr("automatic"); };
     return f;
 }
@@ -75,23 +84,23 @@ std::vector<NumberField> ladderNumberFields() {
     using L = jl::LadderSpec;
     return {
         ladderNumber("blocks", tr("Blocks"), "", tr("How many blocks hang in the ladder; changing it rebuilds the ladder."),
-                     2, 10000, 1, 0, [](const L& l) { return double(l.blocks); },
+                     {jl::range::kFewestBlocks, jl::range::kMostBlocks}, 1, 0, [](const L& l) { return double(l.blocks); },
                      [](L& l, double v) { setBlockCount(l, int(v)); }),
         ladderNumber("length", tr("Block length"), "mm", tr("Along the ladder; every block shares it, so the far corners meet when folded."),
-                     1, 1000, 1000, 1, [](const L& l) { return l.block.length; }, [](L& l, double v) { l.block.length = v; }),
+                     within(jl::range::size, 1000), 1000, 1, [](const L& l) { return l.block.length; }, [](L& l, double v) { l.block.length = v; }),
         ladderNumber("thickness", tr("Block thickness"), "mm", tr("Across the ladder, in its plane; thin blocks carry the ripple further."),
-                     0.1, 500, 1000, 2, [](const L& l) { return l.block.thickness; }, [](L& l, double v) { l.block.thickness = v; }),
+                     within(jl::range::size, 1000), 1000, 2, [](const L& l) { return l.block.thickness; }, [](L& l, double v) { l.block.thickness = v; }),
         ladderNumber("width", tr("Block width"), "mm", tr("Out of the ladder's plane; changes only the mass and the drawing."),
-                     1, 1000, 1000, 1, [](const L& l) { return l.block.width; }, [](L& l, double v) { l.block.width = v; }),
+                     within(jl::range::size, 1000), 1000, 1, [](const L& l) { return l.block.width; }, [](L& l, double v) { l.block.width = v; }),
         ladderNumber("density", tr("Density"), "kg/m³", tr("Of the wood; gives each block's mass unless a mass is set."),
-                     1, 20000, 1, 0, [](const L& l) { return l.block.density; }, [](L& l, double v) { l.block.density = v; }),
+                     within(jl::range::density, 1), 1, 0, [](const L& l) { return l.block.density; }, [](L& l, double v) { l.block.density = v; }),
         blockMassField(),
         ladderNumber("ribbonWidth", tr("Ribbon width"), "mm", tr("Width of the ribbons across the block faces (drawing only)."),
-                     0.1, 100, 1000, 1, [](const L& l) { return l.ribbons.width; }, [](L& l, double v) { l.ribbons.width = v; }),
+                     within(jl::range::ribbonSize, 1000), 1000, 1, [](const L& l) { return l.ribbons.width; }, [](L& l, double v) { l.ribbons.width = v; }),
         ladderNumber("damping", tr("Hinge damping"), "N·m·s", tr("Viscous torque in free hinges; above about 1e-5 it stops long ripples."),
-                     0, 1, 1, 7, [](const L& l) { return l.hinges.damping; }, [](L& l, double v) { l.hinges.damping = v; }),
+                     within(jl::range::angularDamping, 1), 1, 7, [](const L& l) { return l.hinges.damping; }, [](L& l, double v) { l.hinges.damping = v; }),
         ladderNumber("restitution", tr("Restitution"), "", tr("Bounce at a lock or fold, 0 (plastic) to just under 1."),
-                     0, 0.99, 1, 3, [](const L& l) { return l.hinges.restitution; }, [](L& l, double v) { l.hinges.restitution = v; }),
+                     within(jl::range::restitution, 1), 1, 3, [](const L& l) { return l.hinges.restitution; }, [](L& l, double v) { l.hinges.restitution = v; }),
     };
 }
 
@@ -100,13 +109,13 @@ std::vector<NumberField> solverNumberFields() {
     return {
         automaticStepField(),
         solverNumber("tolerance", tr("Error tolerance"), "", tr("Local error allowed per step by the adaptive integrator."),
-                     1e-14, 1e-2, 1, 0, true, &S::tolerance),
+                     within(jl::range::tolerance, 1), 1, 0, true, &S::tolerance),
         solverNumber("projectionTolerance", tr("Pin tolerance"), "m", tr("Largest gap left in a pin after the constraint projection."),
-                     1e-15, 1e-3, 1, 0, true, &S::projectionTolerance),
+                     within(jl::range::projectionTolerance, 1), 1, 0, true, &S::projectionTolerance),
         solverNumber("eventTolerance", tr("Event tolerance"), "s", tr("How precisely the time of a lock, fold or flip is located."),
-                     1e-14, 1e-3, 1, 0, true, &S::eventTolerance),
+                     within(jl::range::eventTolerance, 1), 1, 0, true, &S::eventTolerance),
         solverNumber("frameInterval", tr("Frame interval"), "ms", tr("Simulated time between recorded frames (the timeline's resolution)."),
-                     1, 1000, 1000, 2, false, &S::frameInterval),
+                     within(jl::range::frameInterval, 1000), 1000, 2, false, &S::frameInterval),
     };
 }
 

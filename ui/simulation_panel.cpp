@@ -1,9 +1,11 @@
 #include "ui/simulation_panel.h"
 
+#include "jl/scene/scene_fields.h"
 #include "ui/scene_fields.h"
 #include "ui/value_form.h"
 
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QFormLayout>
 #include <QLabel>
 #include <QSignalBlocker>
@@ -12,6 +14,18 @@
 
 namespace jlui {
 
+namespace {
+
+// A choice of the scene files' table (jl/scene/scene_fields.h): its labels,
+// each item carrying its value, so no list here depends on the enum's order.
+template <class E>
+void addWords(QComboBox* box, std::span<const jl::Word<E>> words) {
+    for (const jl::Word<E>& w : words)
+        box->addItem(QCoreApplication::translate("SceneFields", std::string(w.label).c_str()), int(w.value));
+}
+
+}  // namespace
+
 SimulationPanel::SimulationPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
     auto* box = new QVBoxLayout(this);
     form_ = new ValueForm(doc, solverNumberFields(), this);
@@ -19,9 +33,7 @@ SimulationPanel::SimulationPanel(Document* doc, QWidget* parent) : QWidget(paren
 
     integrator_ = new QComboBox(this);
     integrator_->setObjectName("integrator");
-    // Same order as jl::Integrator.
-    integrator_->addItems({tr("Explicit Euler (the paper's)"), tr("Symplectic Euler"), tr("Runge-Kutta 4"),
-                           tr("Dormand-Prince 5(4), adaptive")});
+    addWords<jl::Integrator>(integrator_, jl::kIntegrators);
     const QString integratorTip = tr("How the motion is integrated between events; the adaptive one follows the tolerance.");
     integrator_->setToolTip(integratorTip);
     auto* il = new QLabel(tr("Integrator"));
@@ -29,13 +41,13 @@ SimulationPanel::SimulationPanel(Document* doc, QWidget* parent) : QWidget(paren
     form_->layout()->insertRow(0, il, integrator_);
     connect(integrator_, &QComboBox::activated, this, [this](int i) {
         jl::SolverSpec s = doc_->scene().solver;
-        s.integrator = jl::Integrator(i);
+        s.integrator = jl::Integrator(integrator_->itemData(i).toInt());
         changeScene(doc_, solverField("integrator"), s, tr("Change integrator"));
     });
 
     events_ = new QComboBox(this);
     events_->setObjectName("eventPolicy");
-    events_->addItems({tr("Located inside the step"), tr("At the end of the step (the paper's)")});
+    addWords<jl::EventPolicy>(events_, jl::kEventPolicies);
     const QString eventsTip = tr("Where locks, folds and flips happen: at their exact time, or after the step that crossed them.");
     events_->setToolTip(eventsTip);
     auto* el = new QLabel(tr("Events"));
@@ -43,7 +55,7 @@ SimulationPanel::SimulationPanel(Document* doc, QWidget* parent) : QWidget(paren
     form_->layout()->addRow(el, events_);
     connect(events_, &QComboBox::activated, this, [this](int i) {
         jl::SolverSpec s = doc_->scene().solver;
-        s.events = jl::EventPolicy(i);
+        s.events = jl::EventPolicy(events_->itemData(i).toInt());
         changeScene(doc_, solverField("events"), s, tr("Change event policy"));
     });
     // Not part of the scene: how much of this computer's memory the timeline may use.
@@ -72,8 +84,8 @@ void SimulationPanel::setHistoryMegabytes(int mb) {
 void SimulationPanel::refresh() {
     form_->refresh();
     const QSignalBlocker b1(integrator_), b2(events_);
-    integrator_->setCurrentIndex(int(doc_->scene().solver.integrator));
-    events_->setCurrentIndex(int(doc_->scene().solver.events));
+    integrator_->setCurrentIndex(integrator_->findData(int(doc_->scene().solver.integrator)));
+    events_->setCurrentIndex(events_->findData(int(doc_->scene().solver.events)));
 }
 
 }  // namespace jlui

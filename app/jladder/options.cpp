@@ -1,6 +1,7 @@
 #include "app/jladder/options.h"
 
 #include "jl/scene/scalar_text.h"
+#include "jl/scene/scene_fields.h"
 #include "jl/scene/scene_ranges.h"
 
 #include <algorithm>
@@ -51,25 +52,29 @@ Options parse(const std::vector<std::string>& args, const std::vector<std::strin
     return o;
 }
 
+namespace {
+
+// A word of the scene files' table (jl/scene/scene_fields.h); on the
+// command line a dash may stand for an underscore (end-of-step).
+template <class E>
+bool chooseWord(Options& o, const char* option, const char* what, std::span<const Word<E>> words, E& out) {
+    auto given = o.get(option);
+    if (!given) return true;
+    std::string word = *given;
+    std::replace(word.begin(), word.end(), '-', '_');
+    if (auto value = valueOf(words, word)) {
+        out = *value;
+        return true;
+    }
+    o.error = std::string("unknown ") + what + " '" + *given + "' (" + wordList(words) + ")";
+    return false;
+}
+
+}  // namespace
+
 bool applySolverOptions(Options& o, SolverSpec& solver) {
-    if (auto name = o.get("--integrator")) {
-        if (*name == "explicit_euler" || *name == "euler") solver.integrator = Integrator::ExplicitEuler;
-        else if (*name == "symplectic_euler") solver.integrator = Integrator::SymplecticEuler;
-        else if (*name == "rk4") solver.integrator = Integrator::RK4;
-        else if (*name == "dormand_prince45" || *name == "dopri") solver.integrator = Integrator::DormandPrince45;
-        else {
-            o.error = "unknown integrator '" + *name + "' (explicit_euler, symplectic_euler, rk4, dormand_prince45)";
-            return false;
-        }
-    }
-    if (auto policy = o.get("--event-policy")) {
-        if (*policy == "located") solver.events = EventPolicy::Located;
-        else if (*policy == "end-of-step" || *policy == "end_of_step") solver.events = EventPolicy::EndOfStep;
-        else {
-            o.error = "unknown event policy '" + *policy + "' (located, end-of-step)";
-            return false;
-        }
-    }
+    if (!chooseWord<Integrator>(o, "--integrator", "integrator", kIntegrators, solver.integrator)) return false;
+    if (!chooseWord<EventPolicy>(o, "--event-policy", "event policy", kEventPolicies, solver.events)) return false;
     if (auto h = o.number("--step", range::step)) solver.step = *h;
     if (auto tol = o.number("--tolerance", range::tolerance)) solver.tolerance = *tol;
     return o.error.empty();

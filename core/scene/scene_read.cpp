@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "jl/scene/scalar_text.h"
+#include "jl/scene/scene_fields.h"
 #include "jl/scene/scene_ranges.h"
 #include "scene_read_parts.h"
 #include "yaml_fields.h"
@@ -21,12 +22,23 @@ namespace jl {
 
 namespace {
 
+// The keys of a section: its numbers from the table, then the others.
+template <class Section, std::size_t N>
+std::vector<std::string_view> keysOf(const NumberField<Section> (&numbers)[N], std::vector<std::string_view> others) {
+    std::vector<std::string_view> keys;
+    for (const NumberField<Section>& n : numbers) keys.push_back(n.key);
+    keys.insert(keys.end(), others.begin(), others.end());
+    return keys;
+}
+
+template <class Section, std::size_t N>
+void readNumbers(Fields& f, const NumberField<Section> (&numbers)[N], Section& section) {
+    for (const NumberField<Section>& n : numbers) f.number(n.key, section.*n.member, n.range);
+}
+
 void readBlockSpec(const Fields& parent, BlockSpec& block) {
-    Fields f(parent.problems(), parent.value("block"), {"length", "thickness", "width", "density", "mass", "color"});
-    f.number("length", block.length, range::size);
-    f.number("thickness", block.thickness, range::size);
-    f.number("width", block.width, range::size);
-    f.number("density", block.density, range::density);
+    Fields f(parent.problems(), parent.value("block"), keysOf(kBlockNumbers, {"mass", "color"}));
+    readNumbers(f, kBlockNumbers, block);
     f.number("mass", block.mass, range::mass);
     f.color("color", block.color);
 }
@@ -60,19 +72,15 @@ void readOverrides(const Fields& parent, LadderSpec& ladder) {
 }
 
 void readRibbons(const Fields& parent, RibbonSpec& ribbons) {
-    Fields f(parent.problems(), parent.value("ribbons"), {"width", "thickness", "inset", "color", "visible"});
-    f.number("width", ribbons.width, range::ribbonSize);
-    f.number("thickness", ribbons.thickness, range::ribbonSize);
-    f.number("inset", ribbons.inset, range::inset);
+    Fields f(parent.problems(), parent.value("ribbons"), keysOf(kRibbonNumbers, {"color", "visible"}));
+    readNumbers(f, kRibbonNumbers, ribbons);
     f.color("color", ribbons.color);
     f.flag("visible", ribbons.visible);
 }
 
 void readHinges(const Fields& parent, HingeOptions& hinges) {
-    Fields f(parent.problems(), parent.value("hinges"), {"damping", "restitution", "min_rebound_speed"});
-    f.number("damping", hinges.damping, range::angularDamping);
-    f.number("restitution", hinges.restitution, range::restitution);
-    f.number("min_rebound_speed", hinges.minReboundSpeed, range::reboundSpeed);
+    Fields f(parent.problems(), parent.value("hinges"), keysOf(kHingeNumbers, {}));
+    readNumbers(f, kHingeNumbers, hinges);
 }
 
 void readHeld(const Fields& parent, LadderSpec& ladder) {
@@ -97,7 +105,7 @@ void readLadder(const Located& at, const LoadLimits& limits, Problems& problems,
     // a valid count, the parts that index blocks cannot be checked.
     bool countKnown = true;
     if (f.has("blocks")) {
-        const auto n = readInteger(problems, f.value("blocks"), 1, LLONG_MAX);
+        const auto n = readInteger(problems, f.value("blocks"), range::kFewestBlocks, LLONG_MAX);
         if (n && *n > limits.maxBlocks)
             f.errorAt("blocks", std::to_string(*n) + " blocks is more than the limit of " +
                                     std::to_string(limits.maxBlocks));
@@ -136,35 +144,22 @@ void readFormat(Fields& f) {
 }
 
 void readDamping(const Fields& parent, Scene& scene) {
-    Fields f(parent.problems(), parent.value("damping"), {"linear", "angular"});
-    f.number("linear", scene.linearDamping, range::linearDamping);
-    f.number("angular", scene.angularDamping, range::angularDamping);
+    Fields f(parent.problems(), parent.value("damping"), keysOf(kDampingNumbers, {}));
+    readNumbers(f, kDampingNumbers, scene);
 }
 
 void readSolver(const Fields& parent, SolverSpec& solver) {
-    Fields f(parent.problems(), parent.value("solver"),
-             {"integrator", "step", "tolerance", "projection_tolerance", "events", "event_tolerance",
-              "frame_interval", "rigid_pairs"});
-    f.choice("integrator", solver.integrator,
-             {{"explicit_euler", Integrator::ExplicitEuler},
-              {"symplectic_euler", Integrator::SymplecticEuler},
-              {"rk4", Integrator::RK4},
-              {"dormand_prince45", Integrator::DormandPrince45}});
-    f.number("step", solver.step, range::step);
-    f.number("tolerance", solver.tolerance, range::tolerance);
-    f.number("projection_tolerance", solver.projectionTolerance, range::projectionTolerance);
-    f.choice("events", solver.events, {{"located", EventPolicy::Located}, {"end_of_step", EventPolicy::EndOfStep}});
-    f.number("event_tolerance", solver.eventTolerance, range::eventTolerance);
-    f.number("frame_interval", solver.frameInterval, range::frameInterval);
-    f.choice("rigid_pairs", solver.rigidPairs, {{"merge", RigidPairs::Merge}, {"weld", RigidPairs::Weld}});
+    Fields f(parent.problems(), parent.value("solver"), keysOf(kSolverNumbers, {"integrator", "events", "rigid_pairs"}));
+    f.choice<Integrator>("integrator", solver.integrator, kIntegrators);
+    f.choice<EventPolicy>("events", solver.events, kEventPolicies);
+    f.choice<RigidPairs>("rigid_pairs", solver.rigidPairs, kRigidPairs);
+    readNumbers(f, kSolverNumbers, solver);
 }
 
 void readView(const Fields& parent, ViewSpec& view) {
-    Fields f(parent.problems(), parent.value("view"), {"target", "distance", "yaw", "pitch"});
+    Fields f(parent.problems(), parent.value("view"), keysOf(kViewNumbers, {"target"}));
     f.point("target", view.target, range::coordinate);
-    f.number("distance", view.distance, range::viewDistance);
-    f.number("yaw", view.yaw, range::yaw);
-    f.number("pitch", view.pitch, range::pitch);
+    readNumbers(f, kViewNumbers, view);
 }
 
 }  // namespace

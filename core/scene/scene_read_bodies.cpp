@@ -64,8 +64,7 @@ void readInitial(const Located& at, Problems& problems, LadderSpec& ladder) {
     InitialState& initial = ladder.initial;
     // The kind may be left out when the lists say it.
     initial.kind = f.has("fold_angles") ? Kind::FoldAngles : f.has("poses") ? Kind::Poses : Kind::Equilibrium;
-    f.choice("kind", initial.kind,
-             {{"equilibrium", Kind::Equilibrium}, {"poses", Kind::Poses}, {"fold_angles", Kind::FoldAngles}});
+    f.choice<Kind>("kind", initial.kind, kInitialKinds);
     std::vector<Located> poseItems;
     if (f.has("poses"))
         forEachItem(problems, f.value("poses"), [&](const Located& item) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "jl/scene/scalar_text.h"
+#include "jl/scene/scene_fields.h"
 #include "jl/scene/scene_io.h"
 
 namespace jl {
@@ -52,6 +53,10 @@ public:
     void textIf(std::string_view key, const std::string& value) {
         if (!value.empty()) text(key, value);
     }
+    template <class E>
+    void choiceIf(std::string_view key, E value, E fallback, std::span<const Word<E>> words) {
+        if (value != fallback) text(key, std::string(wordOf(words, value)));
+    }
 
     YAML::Emitter& keyed(std::string_view key) { return out_ << YAML::Key << std::string(key) << YAML::Value; }
     void beginMap(bool flow = false) {
@@ -70,15 +75,20 @@ private:
     YAML::Emitter& out_;
 };
 
+// A section's numbers from the table, each only where it differs from the
+// default of a fresh section.
+template <class Section, std::size_t N>
+void writeNumbers(Writer& w, const NumberField<Section> (&numbers)[N], const Section& section) {
+    const Section d{};
+    for (const NumberField<Section>& n : numbers) w.numberIf(n.key, section.*n.member, d.*n.member);
+}
+
 void writeBlockSpec(Writer& w, const BlockSpec& block) {
     const BlockSpec d;
     if (block == d) return;
     w.keyed("block");
     w.beginMap(true);
-    w.numberIf("length", block.length, d.length);
-    w.numberIf("thickness", block.thickness, d.thickness);
-    w.numberIf("width", block.width, d.width);
-    w.numberIf("density", block.density, d.density);
+    writeNumbers(w, kBlockNumbers, block);
     w.number("mass", block.mass);
     w.colorIf("color", block.color, d.color);
     w.endMap();
@@ -106,9 +116,7 @@ void writeRibbonsAndHinges(Writer& w, const RibbonSpec& ribbons, const HingeOpti
     if (ribbons != r) {
         w.keyed("ribbons");
         w.beginMap(true);
-        w.numberIf("width", ribbons.width, r.width);
-        w.numberIf("thickness", ribbons.thickness, r.thickness);
-        w.numberIf("inset", ribbons.inset, r.inset);
+        writeNumbers(w, kRibbonNumbers, ribbons);
         w.colorIf("color", ribbons.color, r.color);
         if (ribbons.visible != r.visible) w.flag("visible", ribbons.visible);
         w.endMap();
@@ -117,9 +125,7 @@ void writeRibbonsAndHinges(Writer& w, const RibbonSpec& ribbons, const HingeOpti
     if (hinges != h) {
         w.keyed("hinges");
         w.beginMap(true);
-        w.numberIf("damping", hinges.damping, h.damping);
-        w.numberIf("restitution", hinges.restitution, h.restitution);
-        w.numberIf("min_rebound_speed", hinges.minReboundSpeed, h.minReboundSpeed);
+        writeNumbers(w, kHingeNumbers, hinges);
         w.endMap();
     }
 }
@@ -144,7 +150,7 @@ void writeInitial(Writer& w, const InitialState& initial) {
     if (initial.kind == Kind::Equilibrium) return;
     w.keyed("initial");
     w.beginMap();
-    w.text("kind", initial.kind == Kind::Poses ? "poses" : "fold_angles");
+    w.text("kind", std::string(wordOf<Kind>(kInitialKinds, initial.kind)));
     if (!initial.poses.empty()) {
         w.keyed("poses");
         w.beginList();
@@ -243,18 +249,12 @@ void writeLinks(Writer& w, const Scene& scene) {
 void writeSolver(Writer& w, const SolverSpec& solver) {
     const SolverSpec d;
     if (solver == d) return;
-    static constexpr const char* integrators[] = {"explicit_euler", "symplectic_euler", "rk4", "dormand_prince45"};
     w.keyed("solver");
     w.beginMap();
-    if (solver.integrator != d.integrator) w.text("integrator", integrators[static_cast<int>(solver.integrator)]);
-    w.numberIf("step", solver.step, d.step);
-    w.numberIf("tolerance", solver.tolerance, d.tolerance);
-    w.numberIf("projection_tolerance", solver.projectionTolerance, d.projectionTolerance);
-    if (solver.events != d.events)
-        w.text("events", solver.events == EventPolicy::Located ? "located" : "end_of_step");
-    w.numberIf("event_tolerance", solver.eventTolerance, d.eventTolerance);
-    w.numberIf("frame_interval", solver.frameInterval, d.frameInterval);
-    if (solver.rigidPairs != d.rigidPairs) w.text("rigid_pairs", solver.rigidPairs == RigidPairs::Merge ? "merge" : "weld");
+    w.choiceIf<Integrator>("integrator", solver.integrator, d.integrator, kIntegrators);
+    w.choiceIf<EventPolicy>("events", solver.events, d.events, kEventPolicies);
+    w.choiceIf<RigidPairs>("rigid_pairs", solver.rigidPairs, d.rigidPairs, kRigidPairs);
+    writeNumbers(w, kSolverNumbers, solver);
     w.endMap();
 }
 
@@ -325,9 +325,7 @@ void writeView(Writer& w, const ViewSpec& view) {
     w.keyed("view");
     w.beginMap(true);
     w.pointIf("target", view.target, d.target);
-    w.numberIf("distance", view.distance, d.distance);
-    w.numberIf("yaw", view.yaw, d.yaw);
-    w.numberIf("pitch", view.pitch, d.pitch);
+    writeNumbers(w, kViewNumbers, view);
     w.endMap();
 }
 
@@ -359,8 +357,7 @@ std::string sceneToYaml(const Scene& scene) {
     if (scene.linearDamping != d.linearDamping || scene.angularDamping != d.angularDamping) {
         w.keyed("damping");
         w.beginMap(true);
-        w.numberIf("linear", scene.linearDamping, d.linearDamping);
-        w.numberIf("angular", scene.angularDamping, d.angularDamping);
+        writeNumbers(w, kDampingNumbers, scene);
         w.endMap();
     }
     w.numberIf("duration", scene.duration, d.duration);

@@ -5,6 +5,7 @@
 
 #include <initializer_list>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -12,6 +13,7 @@
 
 #include "jl/scene/bound.h"
 #include "jl/scene/scene.h"
+#include "jl/scene/scene_fields.h"
 #include "problems.h"
 
 namespace jl {
@@ -78,9 +80,9 @@ public:
     void color(std::string_view key, std::optional<Color>& out);
     void flag(std::string_view key, bool& out);
     void text(std::string_view key, std::string& out);
-    // A word from a fixed set, e.g. integrator: rk4.
+    // A word from a fixed set (jl/scene/scene_fields.h), e.g. integrator: rk4.
     template <class E>
-    void choice(std::string_view key, E& out, std::initializer_list<std::pair<std::string_view, E>> words);
+    void choice(std::string_view key, E& out, std::span<const Word<E>> words);
 
 private:
     struct Entry {
@@ -99,12 +101,12 @@ private:
 };
 
 template <class E>
-void Fields::choice(std::string_view key, E& out, std::initializer_list<std::pair<std::string_view, E>> words) {
+void Fields::choice(std::string_view key, E& out, std::span<const Word<E>> words) {
     std::vector<std::string_view> names;
-    for (const auto& w : words) names.push_back(w.first);
+    for (const Word<E>& w : words) names.push_back(w.word);
     int index = -1;
     chooseFrom(key, names, index);
-    if (index >= 0) out = std::data(words)[index].second;
+    if (index >= 0) out = words[size_t(index)].value;
 }
 
 // The known word closest to `word` if it is close enough to be a likely typo.

@@ -10,6 +10,11 @@
 
 namespace jl::range {
 
+// A ladder: at least two blocks (one hinge); at most what the loader
+// accepts before it allocates anything per block.
+inline constexpr int kFewestBlocks = 2;
+inline constexpr int kMostBlocks = 100000;
+
 // Times (s): a run's length, script times, recorded drags. 1e5 s is more
 // than a day of simulated time.
 inline constexpr double kLongestTime = 1e5;

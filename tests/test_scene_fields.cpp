@@ -1,0 +1,152 @@
+// labels: io
+// The table of scene fields drives the reader, the writer and the format
+// page: every field of the table survives a save and a load with a value of
+// its own, every word of every choice does, a value just outside a range is
+// refused with the range's words, and docs/scene-format.md holds the
+// current tables. JL_UPDATE_DOCS=1 rewrites the page's tables instead.
+#include <QtTest>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "jl/scene/scene_fields.h"
+#include "jl/scene/scene_io.h"
+
+using namespace jl;
+
+namespace {
+
+// A value of the range that no default has: three quarters of the way up
+// (a geometric mean for ranges of many decades).
+double insideValue(const Bound& b) {
+    if (b.lo > 0 && b.hi / b.lo > 1e3) return std::sqrt(b.lo * b.hi) * 1.2345;
+    const double hi = std::isfinite(b.hi) ? b.hi : b.lo + 10;
+    return b.lo + 0.7513 * (hi - b.lo);
+}
+
+Scene ladderScene() {
+    Scene s;
+    s.ladder.emplace();
+    return s;
+}
+
+Scene reloaded(const Scene& s) {
+    const SceneLoad load = parseScene(sceneToYaml(s), "saved.yaml");
+    if (!load.scene) {
+        for (const Diagnostic& d : load.errors) qWarning("%s", d.format().c_str());
+        return {};
+    }
+    return *load.scene;
+}
+
+// Every number of one section: set, saved, loaded back bit for bit.
+template <class Section, std::size_t N, class At>
+void eachNumberRoundTrips(const NumberField<Section> (&numbers)[N], At at) {
+    for (const NumberField<Section>& n : numbers) {
+        Scene s = ladderScene();
+        const double v = insideValue(n.range);
+        QVERIFY2(n.range.contains(v), n.key.data());
+        at(s).*n.member = v;
+        const Scene back = reloaded(s);
+        QVERIFY2(back.ladder, n.key.data());
+        QVERIFY2(at(const_cast<Scene&>(back)).*n.member == v, n.key.data());
+    }
+}
+
+// A value just past a range's upper end is refused, and the message says the range.
+template <class Section, std::size_t N>
+void eachNumberIsChecked(std::string_view section, const NumberField<Section> (&numbers)[N]) {
+    for (const NumberField<Section>& n : numbers) {
+        if (!std::isfinite(n.range.hi)) continue;
+        const double past = n.range.hi > 0 ? n.range.hi * 2 + 1 : 1;
+        std::string yaml = "format: jacobs-ladder/1\nladder: {blocks: 3}\n";
+        const std::size_t dot = section.find('.');
+        if (dot == std::string_view::npos)
+            yaml += std::string(section) + ": {" + std::string(n.key) + ": " + std::to_string(past) + "}\n";
+        else
+            yaml = "format: jacobs-ladder/1\nladder: {blocks: 3, " + std::string(section.substr(dot + 1)) + ": {" +
+                   std::string(n.key) + ": " + std::to_string(past) + "}}\n";
+        const SceneLoad load = parseScene(yaml, "past.yaml");
+        QVERIFY2(!load.scene, (std::string(section) + "." + std::string(n.key)).c_str());
+        QVERIFY(!load.errors.empty());
+        const std::string message = load.errors.front().format();
+        QVERIFY2(message.find(std::string(n.key)) != std::string::npos, message.c_str());
+        QVERIFY2(message.find(n.range.describe()) != std::string::npos, message.c_str());
+    }
+}
+
+template <class E>
+void eachWordRoundTrips(std::span<const Word<E>> words, E SolverSpec::*member) {
+    for (const Word<E>& w : words) {
+        Scene s = ladderScene();
+        s.solver.*member = w.value;
+        QCOMPARE(reloaded(s).solver.*member, w.value);
+        QVERIFY(valueOf(words, w.word) == w.value);
+        QCOMPARE(wordOf(words, w.value), w.word);
+    }
+}
+
+}  // namespace
+
+class TestSceneFields : public QObject {
+    Q_OBJECT
+private slots:
+    void everyNumberOfTheTableIsReadAndWritten() {
+        eachNumberRoundTrips(kBlockNumbers, [](Scene& s) -> BlockSpec& { return s.ladder->block; });
+        eachNumberRoundTrips(kRibbonNumbers, [](Scene& s) -> RibbonSpec& { return s.ladder->ribbons; });
+        eachNumberRoundTrips(kHingeNumbers, [](Scene& s) -> HingeOptions& { return s.ladder->hinges; });
+        eachNumberRoundTrips(kDampingNumbers, [](Scene& s) -> Scene& { return s; });
+        eachNumberRoundTrips(kSolverNumbers, [](Scene& s) -> SolverSpec& { return s.solver; });
+        eachNumberRoundTrips(kViewNumbers, [](Scene& s) -> ViewSpec& { return s.view; });
+    }
+
+    void everyNumberIsCheckedAgainstItsRange() {
+        eachNumberIsChecked("ladder.block", kBlockNumbers);
+        eachNumberIsChecked("ladder.ribbons", kRibbonNumbers);
+        eachNumberIsChecked("ladder.hinges", kHingeNumbers);
+        eachNumberIsChecked("damping", kDampingNumbers);
+        eachNumberIsChecked("solver", kSolverNumbers);
+        eachNumberIsChecked("view", kViewNumbers);
+    }
+
+    void everyWordOfEveryChoiceIsReadAndWritten() {
+        eachWordRoundTrips<Integrator>(kIntegrators, &SolverSpec::integrator);
+        eachWordRoundTrips<EventPolicy>(kEventPolicies, &SolverSpec::events);
+        eachWordRoundTrips<RigidPairs>(kRigidPairs, &SolverSpec::rigidPairs);
+        QVERIFY(!valueOf<Integrator>(kIntegrators, "rk5"));
+    }
+
+    void aLadderHasTheSameBlockLimitsEverywhere() {
+        const SceneLoad one = parseScene("format: jacobs-ladder/1\nladder: {blocks: 1}\n", "one.yaml");
+        QVERIFY(!one.scene);
+        QVERIFY2(one.errors.front().format().find(">= 2") != std::string::npos, one.errors.front().format().c_str());
+        QCOMPARE(LoadLimits{}.maxBlocks, range::kMostBlocks);
+        const std::string most = "format: jacobs-ladder/1\nladder: {blocks: " + std::to_string(range::kMostBlocks + 1) + "}\n";
+        QVERIFY(!parseScene(most, "most.yaml").scene);
+    }
+
+    void theFormatPageHoldsTheCurrentTables() {
+        const std::filesystem::path page = std::filesystem::path(JL_SOURCE_DIR) / "docs" / "scene-format.md";
+        std::ifstream in(page, std::ios::binary);
+        std::stringstream text;
+        text << in.rdbuf();
+        const std::string committed = text.str();
+        for (std::string_view section : kDocumentedSections)
+            QVERIFY2(committed.find("<!-- fields: " + std::string(section) + " -->") != std::string::npos,
+                     section.data());
+        const std::string current = withCurrentFieldTables(committed);
+        if (current != committed && std::getenv("JL_UPDATE_DOCS")) {
+            std::ofstream(page, std::ios::binary) << current;
+            qInfo("rewrote %s", page.c_str());
+            return;
+        }
+        QVERIFY2(current == committed,
+                 "docs/scene-format.md is not current: run JL_UPDATE_DOCS=1 build/bin/test_scene_fields");
+        QVERIFY(current.find("| `thickness` | number | m | `0.012` |") != std::string::npos);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestSceneFields)
+#include "test_scene_fields.moc"
