@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "jl/scene/ladder_blocks.h"
 #include "jl/scene/scene_fields.h"
 #include "jl/scene/scene_io.h"
 
@@ -125,6 +126,30 @@ private slots:
         QCOMPARE(LoadLimits{}.maxBlocks, range::kMostBlocks);
         const std::string most = "format: jacobs-ladder/1\nladder: {blocks: " + std::to_string(range::kMostBlocks + 1) + "}\n";
         QVERIFY(!parseScene(most, "most.yaml").scene);
+    }
+
+    // The override rule, stated once (jl/scene/ladder_blocks.h): sizes and
+    // colours replace the ladder's; a density without a mass lets the mass
+    // follow from it; a given mass wins over any density.
+    void eachBlockIsTheLadderBlockWithItsOverrides() {
+        LadderSpec l;
+        l.blocks = 4;
+        l.block.mass = 0.05;
+        BlockOverride thick, dense, heavy, missing;
+        thick.index = 1, thick.thickness = 0.02, thick.color = Color{1, 2, 3};
+        dense.index = 2, dense.density = 900;
+        heavy.index = 3, heavy.density = 900, heavy.mass = 0.2;
+        missing.index = 7, missing.width = 1;
+        l.overrides = {thick, dense, heavy, missing};
+        const std::vector<BlockSpec> b = ladderBlocks(l);
+        QCOMPARE(b.size(), size_t(4));
+        QCOMPARE(b[0], l.block);
+        QCOMPARE(b[1].thickness, 0.02);
+        QVERIFY(b[1].color == (Color{1, 2, 3}));
+        QCOMPARE(massOf(b[1]), 0.05);
+        QVERIFY(!b[2].mass);
+        QCOMPARE(massOf(b[2]), 900 * l.block.length * l.block.thickness * l.block.width);
+        QCOMPARE(massOf(b[3]), 0.2);
     }
 
     void theFormatPageHoldsTheCurrentTables() {

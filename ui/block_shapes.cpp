@@ -1,5 +1,7 @@
 #include "ui/block_shapes.h"
 
+#include "jl/scene/ladder_blocks.h"
+
 #include <algorithm>
 
 namespace jlui {
@@ -12,16 +14,8 @@ constexpr float kParticleSize = 0.008f;  // m, drawn as a small cube
 std::vector<BlockShape> blockShapes(const jl::Scene& scene) {
     std::vector<BlockShape> out;
     if (scene.ladder) {
-        const jl::LadderSpec& l = *scene.ladder;
-        out.assign(size_t(std::max(0, l.blocks)),
-                   BlockShape{float(l.block.thickness), float(l.block.length), float(l.block.width), toQColor(l.block.color)});
-        for (const jl::BlockOverride& o : l.overrides) {
-            if (o.index < 0 || o.index >= int(out.size())) continue;
-            BlockShape& b = out[size_t(o.index)];
-            if (o.thickness) b.across = float(*o.thickness);
-            if (o.width) b.out = float(*o.width);
-            if (o.color) b.color = toQColor(*o.color);
-        }
+        for (const jl::BlockSpec& b : jl::ladderBlocks(*scene.ladder))
+            out.push_back({float(b.thickness), float(b.length), float(b.width), toQColor(b.color)});
     }
     for (const jl::BodySpec& b : scene.bodies)
         out.push_back({float(b.thickness), float(b.length), float(b.width), toQColor(b.color)});

@@ -1,5 +1,6 @@
 #include "ui/scene_fields.h"
 
+#include "jl/scene/ladder_blocks.h"
 #include "jl/scene/scene_ranges.h"
 
 #include <QCoreApplication>
@@ -53,8 +54,9 @@ NumberField blockMassField() {
                                  [](L& l, double v) { l.block.mass = v > 0 ? std::optional<double>(v) : std::nullopt; });
     f.unset = [](const jl::Scene& s) {
         if (!s.ladder) return QString();
-        const jl::BlockSpec& b = s.ladder->block;
-        return tr("from density: %1 g").arg(b.density * b.length * b.thickness * b.width * 1000, 0, 'f', 2);
+        jl::BlockSpec b = s.ladder->block;
+        b.mass.reset();
+        return tr("from density: %1 g").arg(jl::massOf(b) * 1000, 0, 'f', 2);
     };
     return f;
 }

@@ -1,6 +1,7 @@
 #include "jl/ladder/ladder.h"
 
 #include "jl/engine/projection.h"
+#include "jl/scene/ladder_blocks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,31 +20,6 @@ constexpr double kNoEvent = 1.0;  // the value of a function with no event to wa
 // angle between two calls is nearly always that small.
 double wrapToPi(double x) { return std::abs(x) <= kPi ? x : std::remainder(x, 2 * kPi); }
 
-double blockValue(const LadderSpec& s, int i, double BlockSpec::*field,
-                  std::optional<double> BlockOverride::*over) {
-    double v = s.block.*field;
-    for (const BlockOverride& o : s.overrides)
-        if (o.index == i && (o.*over)) v = *(o.*over);
-    return v;
-}
-
-std::optional<double> blockMass(const LadderSpec& s, int i) {
-    std::optional<double> m = s.block.mass;
-    bool densityOverride = false;
-    for (const BlockOverride& o : s.overrides) {
-        if (o.index != i) continue;
-        if (o.mass) m = o.mass;
-        if (o.density && !o.mass) densityOverride = true;
-    }
-    if (densityOverride) {
-        bool massOverride = false;
-        for (const BlockOverride& o : s.overrides)
-            if (o.index == i && o.mass) massOverride = true;
-        if (!massOverride) m.reset();
-    }
-    return m;
-}
-
 }  // namespace
 
 std::optional<std::string> Ladder::validate(const LadderSpec& spec) {
@@ -59,14 +35,13 @@ Ladder::Ladder(World& w, const LadderSpec& spec) : spec_(spec), length_(spec.blo
     blocks_.resize(size_t(n));
     thickness_.resize(size_t(n));
     corners_.resize(size_t(n));
+    const std::vector<BlockSpec> blocks = ladderBlocks(spec);
     for (int i = 0; i < n; ++i) {
-        const double t = blockValue(spec, i, &BlockSpec::thickness, &BlockOverride::thickness);
-        const double width = blockValue(spec, i, &BlockSpec::width, &BlockOverride::width);
-        const double density = blockValue(spec, i, &BlockSpec::density, &BlockOverride::density);
-        const double mass = blockMass(spec, i).value_or(density * length_ * t * width);
+        const BlockSpec& b = blocks[size_t(i)];
+        const double t = b.thickness;
         thickness_[size_t(i)] = t;
         // Upright at angle 0: the length runs along the block's local y.
-        blocks_[size_t(i)] = w.addBox(mass, Vec2(t, length_), width, Pose{});
+        blocks_[size_t(i)] = w.addBox(massOf(b), Vec2(t, length_), b.width, Pose{});
         for (int k = 0; k < 4; ++k) corners_[size_t(i)][size_t(k)] = w.addParticle(blocks_[size_t(i)], cornerLocal(i, k));
     }
     hinges_.resize(size_t(n - 1));
