@@ -119,6 +119,16 @@ private slots:
         QVERIFY(!valueOf<Integrator>(kIntegrators, "rk5"));
     }
 
+    // The view's default is the program's (three-quarters), so a file that
+    // asks for yaw 0, edge-on, keeps it through a save and a load.
+    void anEdgeOnViewIsKeptAsWritten() {
+        QVERIFY(ViewSpec{}.yaw != 0);
+        const SceneLoad load = parseScene("format: jacobs-ladder/1\nladder: {blocks: 3}\nview: {yaw: 0}\n", "edge.yaml");
+        QVERIFY(load.scene);
+        QCOMPARE(load.scene->view.yaw, 0.0);
+        QCOMPARE(reloaded(*load.scene).view.yaw, 0.0);
+    }
+
     void aLadderHasTheSameBlockLimitsEverywhere() {
         const SceneLoad one = parseScene("format: jacobs-ladder/1\nladder: {blocks: 1}\n", "one.yaml");
         QVERIFY(!one.scene);

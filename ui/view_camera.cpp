@@ -18,7 +18,7 @@ float radians(float deg) { return deg * std::numbers::pi_v<float> / 180.0f; }
 void ViewCamera::reset(const jl::ViewSpec& view, double extent) {
     target_ = QVector3D(float(view.target[0]), float(view.target[1]), 0);
     distance_ = float(view.distance);
-    yaw_ = view.yaw == jl::ViewSpec{}.yaw ? kThreeQuarterYaw : float(view.yaw);
+    yaw_ = float(view.yaw);  // the file's, or the three-quarter default of jl::ViewSpec
     pitch_ = float(view.pitch);
     // A default view on a ladder longer than it shows: frame the whole ladder.
     const float visible = 2 * distance_ * std::tan(radians(kFieldOfView / 2));

@@ -16,12 +16,9 @@ namespace jlui {
 
 class ViewCamera {
 public:
-    // Seen exactly edge-on (yaw 0) the blocks are a zig-zag of sticks with no
-    // faces and no ribbons, and the ribbons alternating on the faces are how
-    // one sees each block flip: a scene whose view leaves the yaw at its
-    // default (0) is seen from three-quarters instead. A file that wants the
-    // edge-on view says yaw: 360 (the scene cannot tell 0 written from 0 left out).
-    static constexpr float kThreeQuarterYaw = 35.0f;
+    // The yaw is the scene's: three-quarters unless the file says otherwise
+    // (jl::ViewSpec), since edge-on (yaw 0) the blocks are a zig-zag of
+    // sticks without the faces and ribbons that show each flip.
     static constexpr float kFieldOfView = 40.0f;  // degrees, vertical
 
     // From the scene's view, widened to show a ladder reaching `extent` below the hand.

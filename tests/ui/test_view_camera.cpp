@@ -88,7 +88,7 @@ private slots:
     void aShortLadderKeepsTheScenesView() {
         ViewCamera c;
         jl::ViewSpec v;  // target (0, -0.15), distance 0.8, pitch 10
-        v.yaw = 360;     // edge-on, as the file asks
+        v.yaw = 0;       // edge-on, as the file asks
         c.reset(v, 0.36);
         QCOMPARE(c.distance(), 0.8f);
         const QVector3D eye = c.eye();
@@ -120,7 +120,7 @@ private slots:
     void walkingMovesTheEyeLevelAndLookingAroundKeepsIt() {
         ViewCamera c;
         jl::ViewSpec v;
-        v.yaw = 360;  // looking along -z
+        v.yaw = 0;  // looking along -z
         c.reset(v, 0.36);
         const QVector3D before = c.eye();
         c.walk(1.0f, 0, 0);  // a metre forward, toward the ladder (-z), level
