@@ -14,6 +14,7 @@
 #include "jl/scene/ladder_blocks.h"
 #include "jl/scene/scene_fields.h"
 #include "jl/scene/scene_io.h"
+#include "jl/scene/yaml_comments.h"
 
 using namespace jl;
 
@@ -160,6 +161,16 @@ private slots:
         QVERIFY(!b[2].mass);
         QCOMPARE(massOf(b[2]), 900 * l.block.length * l.block.thickness * l.block.width);
         QCOMPARE(massOf(b[3]), 0.2);
+    }
+
+    void commentsAreFoundOutsideQuotes() {
+        QVERIFY(hasComments("# a scene\nformat: jacobs-ladder/1\n"));
+        QVERIFY(hasComments("ladder: {blocks: 3}  # three\n"));
+        QVERIFY(hasComments("ladder:\n  # indented\n  blocks: 3\n"));
+        QVERIFY(!hasComments("format: jacobs-ladder/1\ntitle: \"No. #1\"\n"));
+        QVERIFY(!hasComments("block: {color: '#c8a26b'}\n"));
+        QVERIFY(!hasComments("title: issue#3\n"));  // '#' inside a word is text
+        QVERIFY(!hasComments(""));
     }
 
     void theFormatPageHoldsTheCurrentTables() {

@@ -65,6 +65,8 @@ private:
     void newFile();
     void openDialog();
     bool save();
+    enum class CommentsChoice { SaveOver, SaveAs, Cancel };
+    CommentsChoice askAboutComments(const QString& path);
     bool saveAsDialog();
     void revert();
     bool maybeSave();

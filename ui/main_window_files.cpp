@@ -3,6 +3,7 @@
 #include "ui/main_window.h"
 
 #include "jl/scene/scene_io.h"
+#include "jl/scene/yaml_comments.h"
 #include "ui/file_errors_dialog.h"
 #include "ui/sim_controller.h"
 
@@ -15,6 +16,7 @@
 #include <QMenu>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
 
@@ -69,7 +71,37 @@ void MainWindow::openDialog() {
 
 bool MainWindow::save() {
     if (doc_->path().isEmpty()) return saveAsDialog();
-    return saveTo(doc_->path());
+    switch (askAboutComments(doc_->path())) {
+        case CommentsChoice::SaveOver: return saveTo(doc_->path());
+        case CommentsChoice::SaveAs: return saveAsDialog();
+        case CommentsChoice::Cancel: return false;
+    }
+    return false;
+}
+
+// The writer writes the scene, not the text: the comments of a hand-written
+// file would go. Before saving over such a file, say so, and offer a new
+// file instead.
+MainWindow::CommentsChoice MainWindow::askAboutComments(const QString& path) {
+    if (!options_.askToSave) return CommentsChoice::SaveOver;
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) return CommentsChoice::SaveOver;  // nothing there to lose
+    const QByteArray text = file.read(64 << 20);
+    if (!jl::hasComments(std::string_view(text.constData(), size_t(text.size())))) return CommentsChoice::SaveOver;
+    QMessageBox box(QMessageBox::Warning, tr("Comments will be lost"),
+                    tr("%1 has comments (lines with #). Scene files are written from the scene itself, so saving "
+                       "over it drops them. Save as a new file to keep the original as it is?")
+                        .arg(QFileInfo(path).fileName()),
+                    QMessageBox::NoButton, this);
+    box.setObjectName("commentsWarning");
+    QPushButton* saveAs = box.addButton(tr("Save As..."), QMessageBox::AcceptRole);
+    QPushButton* over = box.addButton(tr("Save Over It"), QMessageBox::DestructiveRole);
+    box.addButton(QMessageBox::Cancel);
+    box.setDefaultButton(saveAs);
+    box.exec();
+    if (box.clickedButton() == over) return CommentsChoice::SaveOver;
+    if (box.clickedButton() == saveAs) return CommentsChoice::SaveAs;
+    return CommentsChoice::Cancel;
 }
 
 bool MainWindow::saveAsDialog() {

@@ -4,6 +4,7 @@
 #include "ui_test_support.h"
 
 #include "jl/scene/scene_io.h"
+#include "jl/scene/yaml_comments.h"
 #include "jl/sim/simulation.h"
 
 #include <QFile>
@@ -32,6 +33,29 @@ void answerNextBox(QMessageBox::StandardButton button, QString* text = nullptr) 
         if (box) {
             if (text) *text = box->text();
             box->button(button)->click();
+        }
+        poll->stop();
+        poll->deleteLater();
+        delete waited;
+    });
+    poll->start(20);
+}
+
+// The same for a box whose buttons are the program's own words.
+void clickInNextBox(const QString& buttonText, QString* text = nullptr) {
+    auto* poll = new QTimer;
+    auto* waited = new int(0);
+    QObject::connect(poll, &QTimer::timeout, [=] {
+        // Another box may come first (the unsaved-changes prompt): wait for ours.
+        auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        QAbstractButton* wanted = nullptr;
+        if (box)
+            for (QAbstractButton* b : box->buttons())
+                if (b->text() == buttonText) wanted = b;
+        if (!wanted && ++*waited < 250) return;
+        if (wanted) {
+            if (text) *text = box->text();
+            wanted->click();
         }
         poll->stop();
         poll->deleteLater();
@@ -175,6 +199,7 @@ private slots:
             const int blocks = w.document()->scene().ladder->blocks;
             w.findChild<QSpinBox*>("blocks")->setValue(blocks + 2);
             answerNextBox(QMessageBox::Save);
+            clickInNextBox("Save Over It");  // classic.yaml has comments: a second box says they will go
             QVERIFY(w.close());
             const jl::SceneLoad saved = jl::parseScene(contents(path).toStdString(), "mine.yaml");
             QVERIFY(saved.scene.has_value());
@@ -192,6 +217,37 @@ private slots:
             answerNextBox(QMessageBox::Discard);
             QVERIFY(w.close());
         }
+    }
+
+    // The writer writes the scene, not the text: saving over a file with
+    // comments says they will go; Cancel leaves the file as it was, Save
+    // Over It writes the scene without them.
+    void savingOverAFileWithCommentsAsksFirst() {
+        QTemporaryDir dir;
+        const QString path = copyOfClassic(dir);
+        const QByteArray onDisk = contents(path);
+        QVERIFY(onDisk.contains("\n#") || onDisk.startsWith("#"));
+        MainWindow w({false, true});
+        QVERIFY(w.openFile(path));
+        w.findChild<QSpinBox*>("blocks")->setValue(9);
+        QString asked;
+        answerNextBox(QMessageBox::Cancel, &asked);
+        action(w, "&Save")->trigger();
+        QVERIFY2(asked.contains("comments"), qPrintable(asked));
+        QCOMPARE(contents(path), onDisk);
+        QVERIFY(w.document()->isModified());
+
+        clickInNextBox("Save Over It");
+        action(w, "&Save")->trigger();
+        QVERIFY(!w.document()->isModified());
+        const QByteArray saved = contents(path);
+        QVERIFY(!saved.contains("#  ") && !jl::hasComments(saved.toStdString()));
+        QCOMPARE(jl::parseScene(saved.toStdString(), "mine.yaml").scene->ladder->blocks, 9);
+        // Now without comments: a second save asks nothing.
+        w.findChild<QSpinBox*>("blocks")->setValue(10);
+        action(w, "&Save")->trigger();
+        QVERIFY(!w.document()->isModified());
+        QVERIFY(w.close());
     }
 
     void droppingASceneFileOnTheWindowOpensIt() {
