@@ -1,12 +1,14 @@
 #include "ui/ladder_panel.h"
 
 #include "ui/block_overrides.h"
+#include "ui/reach_estimate.h"
 #include "ui/scene_fields.h"
 #include "ui/value_form.h"
 
 #include <QCheckBox>
 #include <QColorDialog>
 #include <QFormLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -73,6 +75,20 @@ LadderPanel::LadderPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_
         editLadder("held", tr("Change held blocks"), [held](jl::LadderSpec& l) { l.held = held; });
         held_->setText(heldText(doc_->scene().ladder ? doc_->scene().ladder->held : std::vector<int>{}));
     });
+    // Under the block count: the live estimate of the first ripple, and the
+    // map of it over two parameters.
+    auto* reach = new QWidget(this);
+    auto* reachRow = new QHBoxLayout(reach);
+    reachRow->setContentsMargins(0, 0, 0, 0);
+    estimate_ = new ReachEstimate(reach);
+    auto* mapButton = new QPushButton(tr("Design map..."), reach);
+    mapButton->setObjectName("designMapButton");
+    mapButton->setToolTip(tr("How far the first ripple travels over two of the design's parameters, one simulation per design."));
+    connect(mapButton, &QPushButton::clicked, this, &LadderPanel::designMapRequested);
+    reachRow->addWidget(estimate_, 1);
+    reachRow->addWidget(mapButton);
+    form->insertRow(1, QString(), reach);
+
     overrides_ = new BlockOverrides(doc, this);
     box->addWidget(new QLabel(tr("<b>Blocks that differ</b>"), this));
     box->addWidget(overrides_, 1);
@@ -106,6 +122,7 @@ void LadderPanel::editLadder(const QString& key, const QString& text, const std:
 void LadderPanel::refresh() {
     setEnabled(doc_->scene().ladder.has_value());
     form_->refresh();
+    estimate_->estimate(doc_->scene());
     if (!doc_->scene().ladder) return;
     const jl::LadderSpec& l = *doc_->scene().ladder;
     paintSwatch(blockColor_, l.block.color);

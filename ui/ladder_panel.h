@@ -1,4 +1,5 @@
-// The Ladder dock: blocks, ribbons and hinges of the open scene, every edit undoable.
+// The Ladder dock: blocks, ribbons and hinges of the open scene, every edit
+// undoable; beside the block count, how far the first ripple travels.
 #pragma once
 
 #include "ui/document.h"
@@ -12,6 +13,7 @@ class QPushButton;
 namespace jlui {
 
 class BlockOverrides;
+class ReachEstimate;
 class ValueForm;
 
 class LadderPanel : public QWidget {
@@ -19,6 +21,10 @@ class LadderPanel : public QWidget {
 public:
     LadderPanel(Document* doc, QWidget* parent = nullptr);
     void refresh();
+    ReachEstimate* reachEstimate() const { return estimate_; }
+
+signals:
+    void designMapRequested();
 
 private:
     QPushButton* colorButton(const QString& key, const QString& tip);
@@ -31,6 +37,7 @@ private:
     QCheckBox* ribbonsVisible_;
     QLineEdit* held_;
     BlockOverrides* overrides_;
+    ReachEstimate* estimate_;
 };
 
 }  // namespace jlui

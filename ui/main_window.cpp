@@ -1,6 +1,7 @@
 #include "ui/main_window.h"
 
 #include "ui/change_value.h"
+#include "ui/design_map.h"
 #include "ui/events_panel.h"
 #include "ui/ladder_panel.h"
 #include "ui/ladder_view.h"
@@ -159,6 +160,8 @@ void MainWindow::createMenus() {
     edit->addActions({undoAct_, redoAct_});
     QMenu* sim = menuBar()->addMenu(tr("&Simulation"));
     sim->addActions({playAct_, stepAct_, backAct_, restartAct_});
+    sim->addSeparator();
+    sim->addAction(tr("&Design map..."), this, [this] { showDesignMap(this, doc_); })->setObjectName("designMapAction");
     viewMenu_ = menuBar()->addMenu(tr("&View"));
     viewMenu_->addActions({resetViewAct_, frameAct_, walkAct_});
     viewMenu_->addSeparator();
@@ -247,6 +250,7 @@ void MainWindow::createDocks() {
         return d;
     };
     ladderPanel_ = new LadderPanel(doc_, this);
+    connect(ladderPanel_, &LadderPanel::designMapRequested, this, [this] { showDesignMap(this, doc_); });
     simulationPanel_ = new SimulationPanel(doc_, this);
     scriptPanel_ = new ScriptPanel(doc_, this);
     eventsPanel_ = new EventsPanel(this);

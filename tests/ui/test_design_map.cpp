@@ -1,0 +1,212 @@
+// labels: ui
+// The design map and the ladder editor's live estimate, driven through their
+// widgets: a small map's cells are exactly the core's first-ripple reach of
+// the same designs, Cancel stops the runs, a click opens a design that one
+// Undo takes back, a map opened again comes from the cache without a run, and
+// the estimate beside the block count follows an edit.
+#include "ui/design_map.h"
+#include "ui/design_map_cache.h"
+#include "ui/design_map_grid.h"
+#include "ui/ladder_panel.h"
+#include "ui/reach_estimate.h"
+#include "ui/scene_fields.h"
+#include "ui_test_support.h"
+
+#include <QAction>
+#include <QDoubleSpinBox>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QThreadPool>
+#include <QtTest>
+
+using namespace jlui;
+using P = jl::DesignParameter;
+
+namespace {
+// 2 x 2 designs of few blocks: each run is a few simulated seconds.
+const jl::DesignAxis kBlocks{P::Blocks, 4, 6, 2};
+const jl::DesignAxis kThickness{P::Thickness, 0.006, 0.012, 0.006};
+
+bool sameReach(const jl::RippleReach& a, const jl::RippleReach& b) {
+    return a.hinges == b.hinges && a.reached == b.reached && a.flipTimes == b.flipTimes &&
+           a.meanTimeBetweenFlips == b.meanTimeBetweenFlips && a.failure == b.failure && a.cancelled == b.cancelled;
+}
+}  // namespace
+
+class DesignMapTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { jltest::isolateSettings(); }
+
+    void smallMapAgreesWithTheCore() {
+        Document doc;
+        DesignMap map(&doc);
+        map.show();
+        map.setAxes(kBlocks, kThickness);
+        QCOMPARE(map.grid()->columns(), 2);
+        QCOMPARE(map.grid()->rows(), 2);
+        QSignalSpy done(&map, &DesignMap::mapFinished);
+        map.compute();
+        QCOMPARE(map.cellsToRun(), 4);
+        QVERIFY(map.running());
+        QVERIFY(done.wait(120000));
+        QVERIFY(!map.running());
+        const double blocks[] = {4, 6}, thickness[] = {0.006, 0.012};
+        for (int r = 0; r < 2; ++r)
+            for (int c = 0; c < 2; ++c) {
+                const auto cell = map.grid()->cell(c, r);
+                QVERIFY(cell.has_value());
+                // The same design made independently from the document's scene.
+                const jl::Scene design =
+                    jl::withParameter(jl::withParameter(doc.scene(), P::Blocks, blocks[c]), P::Thickness, thickness[r]);
+                QCOMPARE(design.ladder->blocks, int(blocks[c]));
+                const jl::RippleReach core = jl::firstRippleReach(design, nullptr);
+                QVERIFY2(sameReach(*cell, core), qPrintable(map.grid()->cellText(c, r)));
+                QCOMPARE(cell->hinges, int(blocks[c]) - 1);
+            }
+        // docs/model.md section 15: 6 blocks of 60 x 12 mm flip all 5 hinges.
+        QCOMPARE(map.grid()->cell(1, 1)->reached, 5);
+        QVERIFY(map.grid()->cellText(1, 1).contains("hinge 5 of 5"));
+        // The new ladder (6 blocks, 12 mm) is that cell, framed.
+        QCOMPARE(map.grid()->current(), std::pair(1, 1));
+    }
+
+    void reopeningComesFromTheCache() {
+        Document doc;
+        {
+            DesignMap first(&doc);
+            first.setAxes(kBlocks, kThickness);
+            QSignalSpy done(&first, &DesignMap::mapFinished);
+            first.compute();
+            if (first.running()) QVERIFY(done.wait(120000));
+        }
+        const int cached = ReachCache::shared().size();
+        DesignMap again(&doc);
+        again.setAxes(kBlocks, kThickness);
+        for (int r = 0; r < 2; ++r)
+            for (int c = 0; c < 2; ++c) QVERIFY(again.grid()->cell(c, r).has_value());
+        QSignalSpy done(&again, &DesignMap::mapFinished);
+        again.compute();
+        QCOMPARE(again.cellsToRun(), 0);
+        QVERIFY(!again.running());
+        QCOMPARE(done.count(), 1);
+        QCOMPARE(ReachCache::shared().size(), cached);
+    }
+
+    void cancelStopsTheRuns() {
+        Document doc;
+        DesignMap map(&doc);
+        // Ladders of 300 and 400 blocks: each run simulates a minute or more.
+        map.setAxes({P::Blocks, 300, 400, 100}, {P::Thickness, 0.003, 0.004, 0.001});
+        QSignalSpy done(&map, &DesignMap::mapFinished);
+        map.compute();
+        QCOMPARE(map.cellsToRun(), 4);
+        QTest::qWait(500);
+        QVERIFY(map.running());
+        auto* cancel = map.findChild<QPushButton*>("cancelMap");
+        QVERIFY(cancel && cancel->isEnabled());
+        QTest::mouseClick(cancel, Qt::LeftButton);
+        QVERIFY(!map.running());
+        QVERIFY(done.wait(10000));
+        // Every run saw the flag and returned: the pool is idle at once.
+        QVERIFY(QThreadPool::globalInstance()->waitForDone(10000));
+        for (int r = 0; r < 2; ++r)
+            for (int c = 0; c < 2; ++c) {
+                QVERIFY(!map.grid()->cell(c, r).has_value());
+                QVERIFY(!ReachCache::shared().find(ReachCache::designKey(map.cellDesign(c, r))));
+            }
+    }
+
+    void clickingACellOpensItAndUndoRestores() {
+        MainWindow w(jltest::quietWindow());
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        const jl::Scene before = w.document()->scene();
+        // The Ladder panel's button opens the map.
+        auto* button = w.findChild<QPushButton*>("designMapButton");
+        QVERIFY(button);
+        QTest::mouseClick(button, Qt::LeftButton);
+        auto* map = w.findChild<DesignMap*>("designMap");
+        QVERIFY(map && map->isVisible());
+        map->setAxes(kBlocks, kThickness);
+        QSignalSpy done(map, &DesignMap::mapFinished);
+        map->compute();
+        if (map->running()) QVERIFY(done.wait(120000));
+        const int steps = w.document()->undoStack()->count();
+        QTest::mouseClick(map->grid(), Qt::LeftButton, {}, map->grid()->cellRect(0, 0).center());
+        QCOMPARE(w.document()->scene().ladder->blocks, 4);
+        QCOMPARE(w.document()->scene().ladder->block.thickness, 0.006);
+        QCOMPARE(w.document()->undoStack()->count(), steps + 1);
+        QTRY_COMPARE(map->grid()->current(), std::pair(0, 0));
+        // The map follows the ladder: its cells are the same designs, all cached.
+        QTRY_VERIFY(map->grid()->cell(1, 1).has_value());
+        w.document()->undoStack()->undo();
+        QVERIFY(w.document()->scene() == before);
+        // The menu entry shows the same window.
+        auto* action = w.findChild<QAction*>("designMapAction");
+        QVERIFY(action);
+        map->hide();
+        action->trigger();
+        QCOMPARE(w.findChild<DesignMap*>("designMap"), map);
+        QVERIFY(map->isVisible());
+    }
+
+    void exportsWriteTheMap() {
+        Document doc;
+        DesignMap map(&doc);
+        map.resize(800, 600);
+        map.setAxes(kBlocks, kThickness);
+        QSignalSpy done(&map, &DesignMap::mapFinished);
+        map.compute();
+        if (map.running()) QVERIFY(done.wait(120000));
+        QTemporaryDir dir;
+        QVERIFY(map.exportCsv(dir.filePath("map.csv")));
+        QFile csv(dir.filePath("map.csv"));
+        QVERIFY(csv.open(QIODevice::ReadOnly));
+        const QString text = QString::fromUtf8(csv.readAll());
+        QCOMPARE(text.count('\n'), 5);  // a header and one line per cell
+        QVERIFY(map.exportSvg(dir.filePath("map.svg")));
+        QVERIFY(QFileInfo(dir.filePath("map.svg")).size() > 0);
+        QVERIFY(map.exportPng(dir.filePath("map.png")));
+        QImage png(dir.filePath("map.png"));
+        QCOMPARE(png.size(), map.grid()->size());
+        // The cell of 6 blocks, 12 mm (all hinges flip; framed as the ladder
+        // being edited) is drawn inside its frame in the legend's top colour.
+        QCOMPARE(png.pixelColor(map.grid()->cellRect(1, 1).topLeft() + QPoint(8, 8)), DesignMapGrid::colorOf(1.0));
+    }
+
+    void estimateFollowsAnEdit() {
+        MainWindow w(jltest::quietWindow());
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        auto* estimate = w.findChild<ReachEstimate*>("reachEstimate");
+        QVERIFY(estimate);
+        QSignalSpy shown(estimate, &ReachEstimate::estimated);
+        auto setBlocks = [&w](int n) {
+            jl::LadderSpec l = *w.document()->scene().ladder;
+            setBlockCount(l, n);
+            changeScene(w.document(), ladderField("blocks"), l, "blocks");
+        };
+        // A long ladder first: its run starts, and is outdated by the next edit.
+        setBlocks(300);
+        QVERIFY(estimate->computing());
+        QVERIFY(estimate->text().contains("computing"));
+        QTest::qWait(600);
+        QCOMPARE(shown.count(), 0);
+        // Seven blocks: a design no earlier test ran, so it is computed.
+        setBlocks(7);
+        QVERIFY(shown.wait(60000));
+        QVERIFY(!estimate->computing());
+        const jl::RippleReach core = jl::firstRippleReach(w.document()->scene(), nullptr);
+        QCOMPARE(core.hinges, 6);
+        QVERIFY2(estimate->text().contains(QString("hinge %1 of 6").arg(core.reached)), qPrintable(estimate->text()));
+        // The 300-block result never showed: the newest design won.
+        QCOMPARE(shown.count(), 1);
+        QTest::qWait(300);
+        QCOMPARE(shown.count(), 1);
+    }
+};
+
+QTEST_MAIN(DesignMapTest)
+#include "test_design_map.moc"

@@ -1,0 +1,48 @@
+// The ladder editor's live estimate: how far the first ripple of the design
+// on screen travels ("the ripple reaches hinge 9 of 11"), simulated in the
+// background whenever the design changes. The newest design wins: an older
+// run is stopped and its result dropped; the UI never waits on a run.
+#pragma once
+
+#include "ui/design_map_interim.h"
+
+#include <QByteArray>
+#include <QFutureWatcher>
+#include <QLabel>
+#include <QThreadPool>
+
+#include <atomic>
+#include <memory>
+
+class QTimer;
+
+namespace jlui {
+
+class ReachEstimate : public QLabel {
+    Q_OBJECT
+public:
+    explicit ReachEstimate(QWidget* parent = nullptr);
+    ~ReachEstimate() override;
+
+    // The design to estimate; the same design again changes nothing.
+    void estimate(const jl::Scene& scene);
+    bool computing() const { return computing_; }
+
+signals:
+    void estimated();  // the label shows the newest design's result
+
+private:
+    void start();
+    void show(const jl::RippleReach& r);
+
+    jl::Scene design_;
+    QByteArray key_;     // of the design asked for last
+    QByteArray runKey_;  // of the design being run
+    bool computing_ = false;
+    QTimer* settle_;  // a burst of edits (typing 1000) starts one run
+    std::shared_ptr<std::atomic<bool>> stop_;
+    QFutureWatcher<jl::RippleReach> watcher_;
+    QThreadPool pool_;  // one thread, apart from the design map's
+};
+
+}  // namespace jlui
