@@ -9,7 +9,7 @@
 #include <Qt3DRender/QMaterial>
 #include <array>
 
-namespace jlui {
+namespace jl::ui {
 
 namespace {
 // Per instance: pose (x, y, angle, z), size (across, along, out, highlight), colour (rgba).
@@ -91,4 +91,4 @@ void BlockInstances::showFrame(const jl::Frame& frame, int grabbed) {
     renderer_->setInstanceCount(int(n));
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -16,7 +16,7 @@ namespace Qt3DRender {
 class QGeometryRenderer;
 }
 
-namespace jlui {
+namespace jl::ui {
 
 class BlockInstances : public Qt3DCore::QEntity {
 public:
@@ -32,4 +32,4 @@ private:
     Qt3DRender::QGeometryRenderer* renderer_;
 };
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -11,7 +11,7 @@
 #include <QVBoxLayout>
 #include <algorithm>
 
-namespace jlui {
+namespace jl::ui {
 
 namespace {
 enum Column { Index, Thickness, Width, Density, Mass, Colour, Columns };
@@ -110,4 +110,4 @@ void BlockOverrides::refresh() {
     }
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -8,7 +8,7 @@
 
 class QTableWidget;
 
-namespace jlui {
+namespace jl::ui {
 
 class BlockOverrides : public QWidget {
     Q_OBJECT
@@ -24,4 +24,4 @@ private:
     QTableWidget* table_;
 };
 
-}  // namespace jlui
+}  // namespace jl::ui

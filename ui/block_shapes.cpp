@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-namespace jlui {
+namespace jl::ui {
 
 namespace {
 QColor toQColor(const jl::Color& c) { return QColor(c.r, c.g, c.b); }
@@ -32,4 +32,4 @@ double ladderExtent(const jl::Scene& scene) {
     return std::max(h, 0.1);
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -7,7 +7,7 @@
 #include <QColor>
 #include <vector>
 
-namespace jlui {
+namespace jl::ui {
 
 struct BlockShape {
     float across = 0, along = 0, out = 0;  // m: local x, local y, z
@@ -22,4 +22,4 @@ std::vector<BlockShape> blockShapes(const jl::Scene& scene);
 // The height the ladder hangs over when built, for framing the camera and the room (m).
 double ladderExtent(const jl::Scene& scene);
 
-}  // namespace jlui
+}  // namespace jl::ui

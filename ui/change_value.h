@@ -8,7 +8,7 @@
 #include <chrono>
 #include <functional>
 
-namespace jlui {
+namespace jl::ui {
 
 template <typename T>
 struct SceneField {
@@ -64,4 +64,4 @@ void changeScene(Document* doc, const SceneField<T>& field, T value, const QStri
     doc->undoStack()->push(new ChangeValue<T>(doc, field, std::move(value), text));
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -26,7 +26,7 @@
 #include <cmath>
 #include <fstream>
 
-namespace jlui {
+namespace jl::ui {
 
 namespace {
 
@@ -415,4 +415,4 @@ DesignMap* showDesignMap(QWidget* window, Document* doc) {
     return map;
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

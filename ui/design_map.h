@@ -21,7 +21,7 @@ class QProgressBar;
 class QPushButton;
 class QTimer;
 
-namespace jlui {
+namespace jl::ui {
 
 class DesignMapGrid;
 
@@ -110,4 +110,4 @@ private:
 // Shows the window's design map, made on first use (kept, with its cache).
 DesignMap* showDesignMap(QWidget* window, Document* doc);
 
-}  // namespace jlui
+}  // namespace jl::ui

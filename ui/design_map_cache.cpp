@@ -4,7 +4,7 @@
 
 #include <QCryptographicHash>
 
-namespace jlui {
+namespace jl::ui {
 
 ReachCache& ReachCache::shared() {
     static ReachCache cache;
@@ -36,4 +36,4 @@ void ReachCache::keep(const QByteArray& key, const jl::RippleReach& reach) {
     if (!reach.cancelled) reaches_.insert(key, reach);
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -11,7 +11,7 @@
 
 #include <optional>
 
-namespace jlui {
+namespace jl::ui {
 
 class ReachCache {
 public:
@@ -32,4 +32,4 @@ private:
     QHash<QByteArray, jl::RippleReach> reaches_;
 };
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -9,7 +9,7 @@
 #include <array>
 #include <cmath>
 
-namespace jlui {
+namespace jl::ui {
 
 namespace {
 constexpr int kLeft = 78, kBottom = 52, kTop = 12, kLegend = 92;
@@ -197,4 +197,4 @@ void DesignMapGrid::mouseReleaseEvent(QMouseEvent* e) {
     if (const auto c = cellAt(e->position().toPoint())) emit cellClicked(c->first, c->second);
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

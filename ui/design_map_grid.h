@@ -11,7 +11,7 @@
 #include <optional>
 #include <vector>
 
-namespace jlui {
+namespace jl::ui {
 
 class DesignMapGrid : public QWidget {
     Q_OBJECT
@@ -58,4 +58,4 @@ private:
     std::pair<int, int> current_{-1, -1};
 };
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -8,7 +8,7 @@
 #include <QStandardPaths>
 #include <numbers>
 
-namespace jlui {
+namespace jl::ui {
 
 namespace {
 constexpr int kAutosaveMs = 30'000;
@@ -101,4 +101,4 @@ void Document::writeRecovery() const {
 
 void Document::removeRecovery() { QFile::remove(recoveryPath()); }
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -13,7 +13,7 @@
 #include <optional>
 #include <vector>
 
-namespace jlui {
+namespace jl::ui {
 
 class Document : public QObject {
     Q_OBJECT
@@ -46,7 +46,7 @@ public:
     static jl::Scene newScene();
 
 signals:
-    void changed(jlui::SceneChange change);
+    void changed(jl::ui::SceneChange change);
     void modifiedChanged(bool modified);
     void pathChanged(const QString& path);
 
@@ -57,4 +57,4 @@ private:
     QTimer autosave_;
 };
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -5,7 +5,7 @@
 
 #include <QColor>
 
-namespace jlui {
+namespace jl::ui {
 
 // Flip-flops orange, folds blue, locks green, releases grey, the rest purple:
 // the colours of the timeline's marks, so a mark means the same everywhere.
@@ -20,4 +20,4 @@ inline QColor eventColor(jl::EventKind k) {
     }
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

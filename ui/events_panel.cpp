@@ -3,7 +3,7 @@
 #include <QListWidget>
 #include <QVBoxLayout>
 
-namespace jlui {
+namespace jl::ui {
 
 namespace {
 
@@ -92,4 +92,4 @@ void EventsPanel::setEvents(std::shared_ptr<const std::vector<jl::Event>> events
     if (had < events_->size()) list_->scrollToBottom();
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -11,7 +11,7 @@
 class QListWidget;
 class QListWidgetItem;
 
-namespace jlui {
+namespace jl::ui {
 
 QString eventInWords(const jl::Event& e);
 
@@ -41,4 +41,4 @@ private:
     std::map<int, Run> runs_;  // by hinge: its latest run of locks and unlocks
 };
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -15,7 +15,7 @@
 #include <optional>
 #include <sstream>
 
-namespace jlui {
+namespace jl::ui {
 
 namespace {
 
@@ -183,4 +183,4 @@ ExportResult Exporter::video(const jl::Scene& scene, SequenceRequest request, co
     return {true, {}, {videoPath}};
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

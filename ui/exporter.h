@@ -15,7 +15,7 @@
 
 class QWidget;
 
-namespace jlui {
+namespace jl::ui {
 
 struct ExportResult {
     bool ok = false;
@@ -64,4 +64,4 @@ public:
     static ExportResult video(const jl::Scene& scene, SequenceRequest request, const QString& videoPath);
 };
 
-}  // namespace jlui
+}  // namespace jl::ui

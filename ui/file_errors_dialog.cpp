@@ -10,7 +10,7 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
-namespace jlui {
+namespace jl::ui {
 
 FileErrorsDialog::FileErrorsDialog(const QString& path, const std::vector<jl::Diagnostic>& errors, QWidget* parent)
     : QDialog(parent) {
@@ -43,4 +43,4 @@ QStringList FileErrorsDialog::lines() const {
     return out;
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -8,7 +8,7 @@
 
 class QListWidget;
 
-namespace jlui {
+namespace jl::ui {
 
 class FileErrorsDialog : public QDialog {
     Q_OBJECT
@@ -21,4 +21,4 @@ private:
     QListWidget* list_;
 };
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace jlui {
+namespace jl::ui {
 
 void FrameHistory::reset(double interval, std::size_t budgetBytes) {
     interval_ = interval > 0 ? interval : 1.0 / 60.0;
@@ -92,4 +92,4 @@ int FrameHistory::indexAt(double t) const {
     return std::clamp(i, 0, head());
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -9,7 +9,7 @@
 #include <memory>
 #include <vector>
 
-namespace jlui {
+namespace jl::ui {
 
 // Frame i is the state after advancing to time i * interval (frame 0 is the
 // built scene). Frames may be evicted to stay within the budget; keyframes
@@ -57,4 +57,4 @@ private:
     std::size_t snapshotBytes_ = 0;  // an estimate: Snapshot is opaque to us
 };
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -16,7 +16,7 @@
 #include <QSignalBlocker>
 #include <QVBoxLayout>
 
-namespace jlui {
+namespace jl::ui {
 
 namespace {
 QColor toQColor(const jl::Color& c) { return QColor(c.r, c.g, c.b); }
@@ -133,4 +133,4 @@ void LadderPanel::refresh() {
     overrides_->refresh();
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -10,7 +10,7 @@ class QCheckBox;
 class QLineEdit;
 class QPushButton;
 
-namespace jlui {
+namespace jl::ui {
 
 class BlockOverrides;
 class ReachEstimate;
@@ -40,4 +40,4 @@ private:
     ReachEstimate* estimate_;
 };
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -15,7 +15,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace jlui {
+namespace jl::ui {
 
 namespace {
 constexpr float kOrbitDegreesPerPixel = 0.3f;
@@ -266,4 +266,4 @@ void LadderView::walkTick() {
     updateCamera();
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -18,7 +18,7 @@ namespace Qt3DRender {
 class QRenderCapture;
 }
 
-namespace jlui {
+namespace jl::ui {
 
 class BlockInstances;
 class StripEntity;
@@ -99,4 +99,4 @@ private:
     QElapsedTimer walkClock_;
 };
 
-}  // namespace jlui
+}  // namespace jl::ui

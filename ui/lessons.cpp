@@ -9,7 +9,7 @@
 #include <QVBoxLayout>
 #include <algorithm>
 
-namespace jlui {
+namespace jl::ui {
 
 namespace {
 
@@ -98,4 +98,4 @@ void LessonPanel::setLarge(bool large) {
 
 QString LessonPanel::text() const { return text_->toPlainText(); }
 
-}  // namespace jlui
+}  // namespace jl::ui

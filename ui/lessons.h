@@ -11,7 +11,7 @@
 
 class QTextBrowser;
 
-namespace jlui {
+namespace jl::ui {
 
 struct Lesson {
     QString path;         // the scene file
@@ -49,4 +49,4 @@ private:
     QTextBrowser* text_;
 };
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -30,7 +30,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace jlui {
+namespace jl::ui {
 
 namespace {
 // The speed slider is logarithmic: 0.01x at the left, 4x at the right.
@@ -403,4 +403,4 @@ void MainWindow::writeSettings() const {
     settings.setValue("simulation/speed", speed_);
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -13,7 +13,7 @@ class QLabel;
 class QMenu;
 class QSlider;
 
-namespace jlui {
+namespace jl::ui {
 
 class EventsPanel;
 class LadderPanel;
@@ -122,4 +122,4 @@ private:
     QAction* walkAct_;
 };
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -20,7 +20,7 @@
 #include <QSettings>
 #include <QStatusBar>
 
-namespace jlui {
+namespace jl::ui {
 
 namespace {
 constexpr int kMaxRecent = 8;
@@ -201,4 +201,4 @@ void MainWindow::offerRecovery() {
     doc_->reset(*load.scene, from, true);
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

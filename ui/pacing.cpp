@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace jlui {
+namespace jl::ui {
 
 namespace {
 // Simulated seconds asked for at a time while looking for the next event: a
@@ -85,4 +85,4 @@ void Pacing::clearLoop() {
     emit loopChanged(false);
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

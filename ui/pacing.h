@@ -6,7 +6,7 @@
 #include <QObject>
 #include <memory>
 
-namespace jlui {
+namespace jl::ui {
 
 class SimController;
 
@@ -34,7 +34,7 @@ signals:
     void loopChanged(bool on);
 
 private:
-    void onStatus(std::shared_ptr<const jlui::SimStatus> s);
+    void onStatus(std::shared_ptr<const jl::ui::SimStatus> s);
     void showFrameAfter(double eventTime, double interval);
     void searchFurther(const SimStatus& s);
 
@@ -45,4 +45,4 @@ private:
     double from_ = 0, to_ = 0;
 };
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -10,7 +10,7 @@
 #include <QTimer>
 #include <QToolBar>
 
-namespace jlui {
+namespace jl::ui {
 
 PresentationMode::PresentationMode(QMainWindow* window, QStringList keepDocks)
     : QObject(window), window_(window), keepDocks_(std::move(keepDocks)) {
@@ -73,4 +73,4 @@ void PresentationMode::leave() {
     QTimer::singleShot(0, window_, [w = window_] { fitToScreen(w); });
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

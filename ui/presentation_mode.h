@@ -12,7 +12,7 @@ class QAction;
 class QMainWindow;
 class QWidget;
 
-namespace jlui {
+namespace jl::ui {
 
 class PresentationMode : public QObject {
     Q_OBJECT
@@ -45,4 +45,4 @@ private:
     QAction* escape_;  // Esc leaves, whatever has the focus
 };
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -5,7 +5,7 @@
 #include <QTimer>
 #include <QtConcurrent>
 
-namespace jlui {
+namespace jl::ui {
 
 ReachEstimate::ReachEstimate(QWidget* parent) : QLabel(parent) {
     setObjectName("reachEstimate");
@@ -75,4 +75,4 @@ void ReachEstimate::show(const jl::RippleReach& r) {
     emit estimated();
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -16,7 +16,7 @@
 
 class QTimer;
 
-namespace jlui {
+namespace jl::ui {
 
 class ReachEstimate : public QLabel {
     Q_OBJECT
@@ -45,4 +45,4 @@ private:
     QThreadPool pool_;  // one thread, apart from the design map's
 };
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -8,7 +8,7 @@
 #include <Qt3DRender/QDirectionalLight>
 #include <Qt3DRender/QPointLight>
 
-namespace jlui {
+namespace jl::ui {
 
 namespace {
 // Dimensions for a ladder reaching 0.5 m below the hand; larger ladders scale the room.
@@ -73,4 +73,4 @@ void Room::fitTo(double extent) {
     transform_->setTranslation({0, -float(extent) - kTableTopBelowLadder * scale, 0});
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

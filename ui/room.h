@@ -8,7 +8,7 @@ namespace Qt3DCore {
 class QTransform;
 }
 
-namespace jlui {
+namespace jl::ui {
 
 class Room : public Qt3DCore::QEntity {
 public:
@@ -20,4 +20,4 @@ private:
     Qt3DCore::QTransform* transform_;
 };
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -22,7 +22,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace jlui {
+namespace jl::ui {
 
 namespace {
 
@@ -360,4 +360,4 @@ void RunPlots::exportDialog() {
     if (!ok) QMessageBox::warning(this, tr("Export the plots"), error);
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

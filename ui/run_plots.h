@@ -16,7 +16,7 @@ class QBoxLayout;
 class QLineEdit;
 class QLineSeries;
 
-namespace jlui {
+namespace jl::ui {
 
 class TimeChart;
 
@@ -99,4 +99,4 @@ private:
 std::vector<int> parseIndexList(const QString& text, int lo, int hi);
 QString indexListText(const std::vector<int>& indices);
 
-}  // namespace jlui
+}  // namespace jl::ui

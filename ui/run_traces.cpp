@@ -6,7 +6,7 @@
 #include <limits>
 #include <numbers>
 
-namespace jlui {
+namespace jl::ui {
 
 QString traceName(EnergyTrace t) {
     switch (t) {
@@ -125,4 +125,4 @@ std::vector<QPointF> decimate(const std::vector<double>& t, const std::vector<do
     return out;
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

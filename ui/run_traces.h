@@ -8,7 +8,7 @@
 #include <QString>
 #include <vector>
 
-namespace jlui {
+namespace jl::ui {
 
 // The energy curves, in the order of RunTraces::energy().
 enum class EnergyTrace { Kinetic, Potential, Total, ImpactLoss, DampingLoss, HeldWork, UserWork, Balance, Count };
@@ -55,4 +55,4 @@ private:
 std::vector<QPointF> decimate(const std::vector<double>& t, const std::vector<double>& y, double t0, double t1,
                               int buckets);
 
-}  // namespace jlui
+}  // namespace jl::ui

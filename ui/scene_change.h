@@ -2,11 +2,11 @@
 // edit, and the merge ids of undo commands, kept in one enum each.
 #pragma once
 
-namespace jlui {
+namespace jl::ui {
 
 enum class SceneChange { Whole, Ladder, Solver, Script, Drags, Text };
 
 // Commands with the same id and the same field key merge (a spin-box drag is one undo step).
 enum class UndoId { LadderValue = 1, SolverValue, ScriptTable, RecordDrag, Description };
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -6,7 +6,7 @@
 #include <QCoreApplication>
 #include <algorithm>
 
-namespace jlui {
+namespace jl::ui {
 
 namespace {
 
@@ -140,4 +140,4 @@ void changeNumber(Document* doc, const NumberField& f, double si) {
     else if (copy.ladder) changeScene(doc, ladderField(f.key), *copy.ladder, text);
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

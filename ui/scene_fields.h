@@ -9,7 +9,7 @@
 #include <functional>
 #include <vector>
 
-namespace jlui {
+namespace jl::ui {
 
 struct NumberField {
     QString key;       // stable name, also the undo merge key
@@ -42,4 +42,4 @@ void changeNumber(Document* doc, const NumberField& f, double si);
 // A ladder of n blocks: per-block data past the end dropped, explicit start poses reset.
 void setBlockCount(jl::LadderSpec& ladder, int n);
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -5,7 +5,7 @@
 #include <QWidget>
 #include <algorithm>
 
-namespace jlui {
+namespace jl::ui {
 
 void fitToScreen(QWidget* window) {
     if (window->isFullScreen() || window->isMaximized() || !window->screen()) return;
@@ -25,4 +25,4 @@ void fitToScreen(QWidget* window) {
     if (QPoint(x, y) != frame.topLeft()) window->move(x, y);
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

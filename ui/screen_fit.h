@@ -5,11 +5,11 @@
 
 class QWidget;
 
-namespace jlui {
+namespace jl::ui {
 
 // Shrinks the window to the screen's available area (less the frame the
 // window manager adds) and moves it onto it; full screen and maximised
 // windows are the window manager's to place.
 void fitToScreen(QWidget* window);
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -12,7 +12,7 @@
 #include <QVBoxLayout>
 #include <numbers>
 
-namespace jlui {
+namespace jl::ui {
 
 namespace {
 using Kind = jl::ScriptAction::Kind;
@@ -136,4 +136,4 @@ void ScriptPanel::refresh() {
     table_->resizeColumnsToContents();
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

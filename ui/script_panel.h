@@ -7,7 +7,7 @@
 
 class QTableWidget;
 
-namespace jlui {
+namespace jl::ui {
 
 class ScriptPanel : public QWidget {
     Q_OBJECT
@@ -23,4 +23,4 @@ private:
     QTableWidget* table_;
 };
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -11,7 +11,7 @@
 #include <QPushButton>
 #include <QSpinBox>
 
-namespace jlui {
+namespace jl::ui {
 
 SequenceDialog::SequenceDialog(Kind kind, double from, double to, double duration, QWidget* parent)
     : QDialog(parent), kind_(kind) {
@@ -89,4 +89,4 @@ SequenceRequest SequenceDialog::request() const {
 
 QString SequenceDialog::target() const { return target_->text(); }
 
-}  // namespace jlui
+}  // namespace jl::ui

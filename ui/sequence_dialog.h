@@ -11,7 +11,7 @@ class QLabel;
 class QLineEdit;
 class QSpinBox;
 
-namespace jlui {
+namespace jl::ui {
 
 class SequenceDialog : public QDialog {
     Q_OBJECT
@@ -38,4 +38,4 @@ private:
     QLabel* count_;
 };
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -13,7 +13,7 @@
 
 static void registerResources() { Q_INIT_RESOURCE(resources); }
 
-namespace jlui {
+namespace jl::ui {
 
 void ensureResources() {
     static const bool once = (registerResources(), true);
@@ -58,4 +58,4 @@ Qt3DRender::QMaterial* shaderMaterial(const QString& name, Qt3DCore::QNode* pare
     return material;
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

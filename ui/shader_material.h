@@ -11,7 +11,7 @@ namespace Qt3DRender {
 class QMaterial;
 }
 
-namespace jlui {
+namespace jl::ui {
 
 // Registers resources/resources.qrc (compiled into this static library, so
 // nothing registers it before first use); safe to call more than once.
@@ -26,4 +26,4 @@ enum class ShaderOptions {
 // Loads qrc:/shaders/<name>.vert and .frag.
 Qt3DRender::QMaterial* shaderMaterial(const QString& name, Qt3DCore::QNode* parent, ShaderOptions options = ShaderOptions::Solid);
 
-}  // namespace jlui
+}  // namespace jl::ui

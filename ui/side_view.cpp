@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace jlui {
+namespace jl::ui {
 
 namespace {
 
@@ -360,4 +360,4 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
     p.restore();
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -14,7 +14,7 @@
 #include <memory>
 #include <vector>
 
-namespace jlui {
+namespace jl::ui {
 
 struct SideViewOptions {
     bool blockNumbers = true;
@@ -79,4 +79,4 @@ private:
 // Hinge colours by mode, used by the side view and its legend.
 QColor hingeColor(jl::HingeMode mode);
 
-}  // namespace jlui
+}  // namespace jl::ui

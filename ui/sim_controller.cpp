@@ -4,7 +4,7 @@
 
 #include <QThread>
 
-namespace jlui {
+namespace jl::ui {
 
 namespace {
 constexpr std::size_t kDefaultBudget = std::size_t(512) << 20;
@@ -63,4 +63,4 @@ void SimController::poll() {
     emit statusChanged(shown_);
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -12,7 +12,7 @@
 
 class QThread;
 
-namespace jlui {
+namespace jl::ui {
 
 class SimWorker;
 
@@ -43,7 +43,7 @@ public:
     std::shared_ptr<const SimStatus> shown() const { return shown_; }
 
 signals:
-    void statusChanged(std::shared_ptr<const jlui::SimStatus> status);
+    void statusChanged(std::shared_ptr<const jl::ui::SimStatus> status);
 
 private:
     void poll();
@@ -54,4 +54,4 @@ private:
     std::shared_ptr<const SimStatus> shown_;
 };
 
-}  // namespace jlui
+}  // namespace jl::ui

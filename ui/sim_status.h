@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace jlui {
+namespace jl::ui {
 
 struct SimStatus {
     std::shared_ptr<const jl::Frame> frame;                // on screen (the cursor's frame)
@@ -31,4 +31,4 @@ struct SimStatus {
     std::uint64_t loadSerial = 0; // grows with every scene load
 };
 
-}  // namespace jlui
+}  // namespace jl::ui

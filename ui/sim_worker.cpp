@@ -10,7 +10,7 @@
 #include <unistd.h>
 #endif
 
-namespace jlui {
+namespace jl::ui {
 
 namespace {
 constexpr auto kWorkSlice = std::chrono::milliseconds(12);  // then drain commands again
@@ -398,4 +398,4 @@ bool SimWorker::waitFinished(std::chrono::milliseconds limit) {
     return finished_.wait_for(lock, limit, [this] { return done_; });
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -17,7 +17,7 @@
 #include <mutex>
 #include <variant>
 
-namespace jlui {
+namespace jl::ui {
 
 namespace cmd {
 struct Load { jl::Scene scene; };
@@ -117,4 +117,4 @@ private:
     double realTimeFactor_ = 0, stepsPerSecond_ = 0;
 };
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -12,7 +12,7 @@
 #include <QSpinBox>
 #include <QVBoxLayout>
 
-namespace jlui {
+namespace jl::ui {
 
 namespace {
 
@@ -88,4 +88,4 @@ void SimulationPanel::refresh() {
     events_->setCurrentIndex(events_->findData(int(doc_->scene().solver.events)));
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

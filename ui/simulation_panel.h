@@ -8,7 +8,7 @@
 class QComboBox;
 class QSpinBox;
 
-namespace jlui {
+namespace jl::ui {
 
 class ValueForm;
 
@@ -31,4 +31,4 @@ private:
     QSpinBox* history_;
 };
 
-}  // namespace jlui
+}  // namespace jl::ui

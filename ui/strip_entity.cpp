@@ -10,7 +10,7 @@
 #include <Qt3DRender/QParameter>
 #include <algorithm>
 
-namespace jlui {
+namespace jl::ui {
 
 StripEntity::StripEntity(Qt3DCore::QNode* parent, bool unlit) : Qt3DCore::QEntity(parent) {
     auto* geometry = new Qt3DCore::QGeometry(this);
@@ -90,4 +90,4 @@ void buildDragLine(StripEntity& strip, const jl::Frame& frame, float z, float wi
     strip.commit();
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

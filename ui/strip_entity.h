@@ -18,7 +18,7 @@ class QGeometryRenderer;
 class QParameter;
 }
 
-namespace jlui {
+namespace jl::ui {
 
 class StripEntity : public Qt3DCore::QEntity {
 public:
@@ -45,4 +45,4 @@ void buildRibbons(StripEntity& strips, const jl::Frame& frame, double blockWidth
 // The mouse spring from the grabbed point to the hand, as a bar facing the viewer.
 void buildDragLine(StripEntity& strip, const jl::Frame& frame, float z, float width);
 
-}  // namespace jlui
+}  // namespace jl::ui

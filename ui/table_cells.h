@@ -8,7 +8,7 @@
 #include <QTableWidget>
 #include <utility>
 
-namespace jlui {
+namespace jl::ui {
 
 inline void setCellText(QTableWidget* table, int row, int column, const QString& text) {
     if (QTableWidgetItem* item = table->item(row, column)) item->setText(text);
@@ -29,4 +29,4 @@ inline std::pair<QPushButton*, QPushButton*> addRowButtons(QWidget* parent, QBox
     return {add, remove};
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

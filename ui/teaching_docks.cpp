@@ -20,7 +20,7 @@
 #include <QProgressDialog>
 #include <QStatusBar>
 
-namespace jlui {
+namespace jl::ui {
 
 TeachingDocks::TeachingDocks(MainWindow* window) : QObject(window), window_(window) {
     setObjectName("teaching");
@@ -220,4 +220,4 @@ void TeachingDocks::exportEvents() {
     if (!result.ok) QMessageBox::warning(window_, tr("Not exported"), result.error);
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

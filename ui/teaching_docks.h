@@ -12,7 +12,7 @@
 class QAction;
 class QDockWidget;
 
-namespace jlui {
+namespace jl::ui {
 
 class LessonPanel;
 class MainWindow;
@@ -41,7 +41,7 @@ signals:
 private:
     QDockWidget* dock(const QString& title, const QString& name, QWidget* w, Qt::DockWidgetArea area);
     void createMenus();
-    void onStatus(std::shared_ptr<const jlui::SimStatus> s);
+    void onStatus(std::shared_ptr<const jl::ui::SimStatus> s);
     void onSceneChanged();
     void setLook();
     void markLoop();
@@ -65,4 +65,4 @@ private:
     std::optional<double> loopStart_;  // L pressed once: the loop starts here
 };
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -10,7 +10,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace jlui {
+namespace jl::ui {
 
 namespace {
 
@@ -226,4 +226,4 @@ void TimeChart::mouseMoveEvent(QMouseEvent* e) {
     QChartView::mouseMoveEvent(e);
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

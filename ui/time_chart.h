@@ -13,7 +13,7 @@
 class QLineSeries;
 class QValueAxis;
 
-namespace jlui {
+namespace jl::ui {
 
 class TimeChart : public QChartView {
     Q_OBJECT
@@ -70,4 +70,4 @@ private:
     std::shared_ptr<const std::vector<jl::Event>> events_;
 };
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace jlui {
+namespace jl::ui {
 
 namespace {
 QColor markColor(jl::EventKind k) {
@@ -101,4 +101,4 @@ void Timeline::mouseMoveEvent(QMouseEvent* e) {
     if (e->buttons() & Qt::LeftButton) emit seekRequested(timeAt(int(e->position().x())));
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

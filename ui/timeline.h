@@ -8,7 +8,7 @@
 #include <memory>
 #include <vector>
 
-namespace jlui {
+namespace jl::ui {
 
 class Timeline : public QWidget {
     Q_OBJECT
@@ -36,4 +36,4 @@ private:
     std::shared_ptr<const std::vector<jl::Event>> events_;
 };
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -10,7 +10,7 @@
 #include <QSpinBox>
 #include <cmath>
 
-namespace jlui {
+namespace jl::ui {
 
 ValueForm::ValueForm(Document* doc, std::vector<NumberField> fields, QWidget* parent)
     : QWidget(parent), doc_(doc), fields_(std::move(fields)), form_(new QFormLayout(this)) {
@@ -92,4 +92,4 @@ void ValueForm::refresh() {
     }
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -9,7 +9,7 @@
 
 class QFormLayout;
 
-namespace jlui {
+namespace jl::ui {
 
 class ValueForm : public QWidget {
     Q_OBJECT
@@ -31,4 +31,4 @@ private:
     QFormLayout* form_;
 };
 
-}  // namespace jlui
+}  // namespace jl::ui

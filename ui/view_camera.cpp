@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace jlui {
+namespace jl::ui {
 
 namespace {
 constexpr float kFieldOfView = ViewCamera::kFieldOfView;
@@ -101,4 +101,4 @@ void ViewCamera::apply(Qt3DRender::QCamera* camera) const {
     camera->setViewCenter(target_);
 }
 
-}  // namespace jlui
+}  // namespace jl::ui

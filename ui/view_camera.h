@@ -12,7 +12,7 @@ namespace Qt3DRender {
 class QCamera;
 }
 
-namespace jlui {
+namespace jl::ui {
 
 class ViewCamera {
 public:
@@ -42,4 +42,4 @@ private:
     float distance_ = 0.8f, yaw_ = 0, pitch_ = 10;
 };
 
-}  // namespace jlui
+}  // namespace jl::ui

@@ -13,7 +13,7 @@
 namespace {
 
 // Hidden option for documentation: grab the screen after a while, save it, quit.
-void scheduleScreenshot(jlui::MainWindow& window, const QString& file, double afterSeconds) {
+void scheduleScreenshot(jl::ui::MainWindow& window, const QString& file, double afterSeconds) {
     QTimer::singleShot(int(afterSeconds * 1000), &window, [&window, file] {
         QScreen* screen = window.screen();
         const QPixmap shot = screen->grabWindow(0, window.frameGeometry().x(), window.frameGeometry().y(),
@@ -49,11 +49,11 @@ int main(int argc, char** argv) {
     parser.addOptions({screenshot, after, play, seek, orbit, lessons});
     parser.process(app);
     if (parser.isSet(lessons)) {
-        std::printf("%s\n", qPrintable(jlui::lessonsDirectory()));
-        return jlui::lessonsDirectory().isEmpty() ? 1 : 0;
+        std::printf("%s\n", qPrintable(jl::ui::lessonsDirectory()));
+        return jl::ui::lessonsDirectory().isEmpty() ? 1 : 0;
     }
 
-    jlui::MainWindow window;
+    jl::ui::MainWindow window;
     window.show();
     if (!parser.positionalArguments().isEmpty()) window.openFile(parser.positionalArguments().first());
     else window.offerRecovery();

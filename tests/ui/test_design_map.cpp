@@ -20,7 +20,7 @@
 #include <QThreadPool>
 #include <QtTest>
 
-using namespace jlui;
+using namespace jl::ui;
 using P = jl::DesignParameter;
 
 namespace {
@@ -37,7 +37,7 @@ bool sameReach(const jl::RippleReach& a, const jl::RippleReach& b) {
 class DesignMapTest : public QObject {
     Q_OBJECT
 private slots:
-    void initTestCase() { jltest::isolateSettings(); }
+    void initTestCase() { jl::test::isolateSettings(); }
 
     void smallMapAgreesWithTheCore() {
         Document doc;
@@ -119,7 +119,7 @@ private slots:
     }
 
     void clickingACellOpensItAndUndoRestores() {
-        MainWindow w(jltest::quietWindow());
+        MainWindow w(jl::test::quietWindow());
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         const jl::Scene before = w.document()->scene();
@@ -177,7 +177,7 @@ private slots:
     }
 
     void estimateFollowsAnEdit() {
-        MainWindow w(jltest::quietWindow());
+        MainWindow w(jl::test::quietWindow());
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         auto* estimate = w.findChild<ReachEstimate*>("reachEstimate");

@@ -17,7 +17,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
-using namespace jlui;
+using namespace jl::ui;
 
 namespace {
 const QString kClassic = QStringLiteral(JL_SOURCE_DIR "/examples/classic.yaml");
@@ -87,7 +87,7 @@ QString copyOfClassic(const QTemporaryDir& dir) {
 class DocumentFilesTest : public QObject {
     Q_OBJECT
 private slots:
-    void initTestCase() { jltest::isolateSettings(); }
+    void initTestCase() { jl::test::isolateSettings(); }
     void init() { Document::removeRecovery(); }
 
     // A new scene plays the classic trick: its turn sends a ripple down (it
@@ -105,7 +105,7 @@ private slots:
 
     void theRecoveryCopyHoldsTheUnsavedSceneAndGoesAwayOnSave() {
         QTemporaryDir dir;
-        MainWindow w(jltest::quietWindow());
+        MainWindow w(jl::test::quietWindow());
         QVERIFY(w.openFile(kClassic));
         w.findChild<QSpinBox*>("blocks")->setValue(11);
         QVERIFY(w.document()->isModified());
@@ -125,7 +125,7 @@ private slots:
 
     void aRecoveredSceneOpensAsUnsavedWorkWithItsOriginalPath() {
         {
-            MainWindow crashed(jltest::quietWindow());
+            MainWindow crashed(jl::test::quietWindow());
             QVERIFY(crashed.openFile(kClassic));
             crashed.findChild<QSpinBox*>("blocks")->setValue(12);
             crashed.document()->writeRecovery();
@@ -144,7 +144,7 @@ private slots:
         QTemporaryDir dir;
         const QString path = copyOfClassic(dir);
         const QByteArray onDisk = contents(path);
-        MainWindow w(jltest::quietWindow());
+        MainWindow w(jl::test::quietWindow());
         QVERIFY(w.openFile(path));
         const int blocks = w.document()->scene().ladder->blocks;
         QAction* revert = action(w, "&Revert");
@@ -251,7 +251,7 @@ private slots:
     }
 
     void droppingASceneFileOnTheWindowOpensIt() {
-        MainWindow w(jltest::quietWindow());
+        MainWindow w(jl::test::quietWindow());
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         QMimeData mime;

@@ -22,7 +22,7 @@
 #include <QToolBar>
 #include <QtTest>
 
-using namespace jlui;
+using namespace jl::ui;
 
 namespace {
 const QString kClassic = QStringLiteral(JL_SOURCE_DIR "/examples/classic.yaml");
@@ -43,18 +43,18 @@ bool showClassic(MainWindow& w) {
     w.resize(1400, 900);
     w.show();
     if (!QTest::qWaitForWindowExposed(&w)) return false;
-    const auto before = jltest::loadsSoFar(w.controller());
-    return w.openFile(kClassic) && jltest::loadedAfter(w.controller(), before);
+    const auto before = jl::test::loadsSoFar(w.controller());
+    return w.openFile(kClassic) && jl::test::loadedAfter(w.controller(), before);
 }
 }  // namespace
 
 class MainWindowTest : public QObject {
     Q_OBJECT
 private slots:
-    void initTestCase() { jltest::isolateSettings(); }
+    void initTestCase() { jl::test::isolateSettings(); }
 
     void opensClassicAndTheCaptureShowsTheBlocks() {
-        MainWindow w(jltest::quietWindow());
+        MainWindow w(jl::test::quietWindow());
         QVERIFY(showClassic(w));
         QCOMPARE(w.document()->scene().title, std::string("The classic cascade"));
         const auto status = w.controller()->status();
@@ -62,7 +62,7 @@ private slots:
         turnEdgeOn(w);
         QTest::qWait(300);  // a few rendered frames with the poses in place
 
-        const QImage image = jltest::captureView(w.ladderView());
+        const QImage image = jl::test::captureView(w.ladderView());
         QVERIFY2(!image.isNull(), "no capture from the 3-D view");
         const double scale = double(image.width()) / w.ladderView()->width();
         const QColor wood(200, 162, 107);  // #c8a26b, the file's block colour
@@ -78,14 +78,14 @@ private slots:
     }
 
     void ribbonsAreDrawnOverTheFacesAndHideWhenAsked() {
-        MainWindow w(jltest::quietWindow());
+        MainWindow w(jl::test::quietWindow());
         QVERIFY(showClassic(w));
         turnEdgeOn(w);
         w.ladderView()->orbit(35, 0);  // from the front the ribbons are edge on
         QTest::qWait(300);
         const QColor ribbon(40, 60, 140);  // the default ribbon colour
         auto ribbonPixels = [&] {
-            const QImage image = jltest::captureView(w.ladderView());
+            const QImage image = jl::test::captureView(w.ladderView());
             int n = 0;
             for (int y = 0; y < image.height(); y += 2)
                 for (int x = 0; x < image.width(); x += 2) {
@@ -100,7 +100,7 @@ private slots:
         QVERIFY(visible && visible->isChecked());
         visible->setChecked(false);
         QVERIFY(!w.document()->scene().ladder->ribbons.visible);
-        QVERIFY(jltest::waitForStatus(w.controller(), [](const SimStatus& s) {
+        QVERIFY(jl::test::waitForStatus(w.controller(), [](const SimStatus& s) {
             return s.recorded && !s.recorded->ladder->ribbons.visible && s.frame;
         }));
         QTest::qWait(300);
@@ -108,7 +108,7 @@ private slots:
     }
 
     void blockCountEditsMergeAndUndoRestoresTheSceneExactly() {
-        MainWindow w(jltest::quietWindow());
+        MainWindow w(jl::test::quietWindow());
         w.show();
         QVERIFY(w.openFile(kClassic));
         const jl::Scene original = w.document()->scene();
@@ -130,13 +130,13 @@ private slots:
         QApplication::processEvents();
         QCOMPARE(play->mapTo(&w, QPoint()).x(), before);
         const jl::Scene nine = w.document()->scene();
-        QVERIFY(jltest::waitForStatus(w.controller(), [](const SimStatus& s) { return s.frame && s.frame->blocks.size() == 9; }));
+        QVERIFY(jl::test::waitForStatus(w.controller(), [](const SimStatus& s) { return s.frame && s.frame->blocks.size() == 9; }));
 
         w.document()->undoStack()->undo();
         QVERIFY(w.document()->scene() == original);
         QVERIFY(!w.document()->isModified());
         QCOMPARE(blocks->value(), 6);
-        QVERIFY(jltest::waitForStatus(w.controller(), [](const SimStatus& s) { return s.frame && s.frame->blocks.size() == 6; }));
+        QVERIFY(jl::test::waitForStatus(w.controller(), [](const SimStatus& s) { return s.frame && s.frame->blocks.size() == 6; }));
         w.document()->undoStack()->redo();
         QVERIFY(w.document()->scene() == nine);
 
@@ -169,7 +169,7 @@ private slots:
 
     // Help > Controls lists the mouse and every key, read from the actions.
     void helpControlsListsTheMouseAndTheKeys() {
-        MainWindow w(jltest::quietWindow());
+        MainWindow w(jl::test::quietWindow());
         w.show();
         QAction* controls = nullptr;
         for (QAction* a : w.findChildren<QAction*>())
@@ -183,7 +183,7 @@ private slots:
     }
 
     void aBlockOverrideChangesThatBlockAloneAndUndoes() {
-        MainWindow w(jltest::quietWindow());
+        MainWindow w(jl::test::quietWindow());
         QVERIFY(showClassic(w));
         const jl::Scene original = w.document()->scene();
         auto* table = w.findChild<QTableWidget*>("blockOverrides");
@@ -203,12 +203,12 @@ private slots:
         QVERIFY(o[0].color.has_value());
 
         // Drawn: block 2 in its own colour, block 3 still in the ladder's.
-        QVERIFY(jltest::waitForStatus(w.controller(), [](const SimStatus& s) {
+        QVERIFY(jl::test::waitForStatus(w.controller(), [](const SimStatus& s) {
             return s.recorded && s.recorded->ladder->overrides.size() == 1 && s.recorded->ladder->overrides[0].thickness && s.frame;
         }));
         turnEdgeOn(w);
         QTest::qWait(300);
-        const QImage image = jltest::captureView(w.ladderView());
+        const QImage image = jl::test::captureView(w.ladderView());
         const double scale = double(image.width()) / w.ladderView()->width();
         const auto frame = w.controller()->status()->frame;
         auto colourAt = [&](int block) { return image.pixelColor((w.ladderView()->pixelOf(frame->blocks[size_t(block)].position) * scale).toPoint()); };
@@ -224,7 +224,7 @@ private slots:
 
     void saveThenOpenGivesAnEqualScene() {
         QTemporaryDir dir;
-        MainWindow w(jltest::quietWindow());
+        MainWindow w(jl::test::quietWindow());
         w.show();
         QVERIFY(w.openFile(kClassic));
         w.findChild<QSpinBox*>("blocks")->setValue(8);
@@ -243,7 +243,7 @@ private slots:
     }
 
     void aBadFileShowsEveryErrorAndLeavesTheOpenSceneUntouched() {
-        MainWindow w(jltest::quietWindow());
+        MainWindow w(jl::test::quietWindow());
         w.show();
         QVERIFY(w.openFile(kClassic));
         w.findChild<QSpinBox*>("blocks")->setValue(7);  // unsaved work that must survive
@@ -267,7 +267,7 @@ private slots:
     // Filling a 1440 x 900 screen, the window came back from presentation
     // mode taller than the screen, the plots and the status bar off it.
     void leavingPresentationModeKeepsTheWindowOnTheScreen() {
-        MainWindow w(jltest::quietWindow());
+        MainWindow w(jl::test::quietWindow());
         QVERIFY(showClassic(w));
         const QRect screen = w.screen()->availableGeometry();
         w.setGeometry(screen);
@@ -297,11 +297,11 @@ private slots:
     void aRestoredWindowTallerThanTheScreenIsFittedToIt() {
         const QRect screen = QGuiApplication::primaryScreen()->availableGeometry();
         {
-            MainWindow big(jltest::quietWindow());
+            MainWindow big(jl::test::quietWindow());
             big.setGeometry(screen.x() + 40, screen.y() + 30, screen.width() + 200, screen.height() + 400);
             QSettings().setValue("window/geometry", big.saveGeometry());
         }
-        MainWindow w(jltest::quietWindow());
+        MainWindow w(jl::test::quietWindow());
         QSettings().remove("window/geometry");
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));

@@ -13,7 +13,7 @@
 #include <QMessageBox>
 #include <QtTest>
 
-using namespace jlui;
+using namespace jl::ui;
 
 namespace {
 
@@ -36,20 +36,20 @@ bool samePoses(const jl::Frame& a, const jl::Frame& b) {
 }
 
 struct Fixture {
-    MainWindow window{jltest::quietWindow()};
+    MainWindow window{jl::test::quietWindow()};
     SimController* sim = window.controller();
     explicit Fixture(const jl::Scene& scene) {
         window.resize(1300, 850);
         window.show();
-        const auto before = jltest::loadsSoFar(sim);
+        const auto before = jl::test::loadsSoFar(sim);
         window.document()->reset(scene, QString());
-        if (!jltest::loadedAfter(sim, before)) qFatal("the scene was not loaded");
+        if (!jl::test::loadedAfter(sim, before)) qFatal("the scene was not loaded");
     }
     // Simulates (paused) up to frame `index` and waits until it is on screen.
     bool goTo(int index) {
         const double dt = sim->status()->interval;
         sim->seek(index * dt + dt / 4);
-        return jltest::waitForStatus(sim, [index](const SimStatus& s) { return s.frameIndex == index && !s.playing; });
+        return jl::test::waitForStatus(sim, [index](const SimStatus& s) { return s.frameIndex == index && !s.playing; });
     }
 };
 
@@ -58,76 +58,76 @@ struct Fixture {
 class PlaybackTest : public QObject {
     Q_OBJECT
 private slots:
-    void initTestCase() { jltest::isolateSettings(); }
+    void initTestCase() { jl::test::isolateSettings(); }
 
     void playingForASecondAdvancesTimeAndMovesTheBlocks() {
-        Fixture f(jltest::swingingLadder());
+        Fixture f(jl::test::swingingLadder());
         const auto first = f.sim->status()->frame;
         QCOMPARE(first->time, 0.0);
         f.window.setSpeed(1.0);
         f.sim->play();
         QTest::qWait(1000);
         f.sim->pause();
-        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return !s.playing; }));
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return !s.playing; }));
         const auto s = f.sim->status();
         // Paced to real time: about a second, allowing for a slow, shared machine.
         QVERIFY2(s->frame->time > 0.25 && s->frame->time < 1.3, qPrintable(QString::number(s->frame->time)));
         const double moved = (s->frame->blocks[3].position - first->blocks[3].position).norm();
         QVERIFY2(moved > 0.002, qPrintable(QString("block 3 moved %1 m").arg(moved)));
         // What is shown is what the engine computes for that frame.
-        QVERIFY(samePoses(*s->frame, engineFrameAt(jltest::swingingLadder(), s->frameIndex)));
+        QVERIFY(samePoses(*s->frame, engineFrameAt(jl::test::swingingLadder(), s->frameIndex)));
     }
 
     void stepForwardAndBackChangeTheFrameByOne() {
-        Fixture f(jltest::swingingLadder());
+        Fixture f(jl::test::swingingLadder());
         QVERIFY(f.goTo(10));
         const auto at10 = f.sim->status()->frame;
         f.sim->stepForward();
-        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return s.frameIndex == 11; }));
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.frameIndex == 11; }));
         const auto at11 = f.sim->status()->frame;
         QVERIFY(!samePoses(*at10, *at11));
-        QVERIFY(samePoses(*at11, engineFrameAt(jltest::swingingLadder(), 11)));
+        QVERIFY(samePoses(*at11, engineFrameAt(jl::test::swingingLadder(), 11)));
         f.sim->stepBack();
-        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return s.frameIndex == 10; }));
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.frameIndex == 10; }));
         QVERIFY(samePoses(*f.sim->status()->frame, *at10));
         f.sim->stepBack();
-        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return s.frameIndex == 9; }));
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.frameIndex == 9; }));
         QCOMPARE(f.sim->status()->frameCount, 12);  // stepping back records nothing
     }
 
     void keysInTheViewDriveTheTransport() {
-        Fixture f(jltest::swingingLadder());
+        Fixture f(jl::test::swingingLadder());
         LadderView* view = f.window.ladderView();
         QVERIFY(QTest::qWaitForWindowExposed(view));
         QTest::keyClick(view, Qt::Key_Period);
-        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return s.frameIndex == 1; }));
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.frameIndex == 1; }));
         QTest::keyClick(view, Qt::Key_Right);
-        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return s.frameIndex == 2; }));
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.frameIndex == 2; }));
         QTest::keyClick(view, Qt::Key_Left);
-        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return s.frameIndex == 1; }));
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.frameIndex == 1; }));
         QTest::keyClick(view, Qt::Key_Space);
-        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return s.playing && s.frameIndex > 3; }));
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.playing && s.frameIndex > 3; }));
         QTest::keyClick(view, Qt::Key_Space);
-        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return !s.playing; }));
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return !s.playing; }));
         QTest::keyClick(view, Qt::Key_R, Qt::ControlModifier);
-        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return s.frameIndex == 0; }));
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.frameIndex == 0; }));
     }
 
     void anEditShowsItsEffectAtTheMomentOnScreen() {
-        Fixture f(jltest::swingingLadder());
+        Fixture f(jl::test::swingingLadder());
         QVERIFY(f.goTo(30));
-        const auto before = jltest::loadsSoFar(f.sim);
+        const auto before = jl::test::loadsSoFar(f.sim);
         auto* thickness = f.window.findChild<QDoubleSpinBox*>("thickness");
         thickness->setValue(6.0);  // mm
         const jl::Scene edited = f.window.document()->scene();
         QCOMPARE(edited.ladder->block.thickness, 0.006);
-        QVERIFY(jltest::waitForStatus(f.sim, [before](const SimStatus& s) { return s.loadSerial > before && s.frameIndex == 30; }));
+        QVERIFY(jl::test::waitForStatus(f.sim, [before](const SimStatus& s) { return s.loadSerial > before && s.frameIndex == 30; }));
         QVERIFY(samePoses(*f.sim->status()->frame, engineFrameAt(edited, 30)));
-        QVERIFY(!samePoses(*f.sim->status()->frame, engineFrameAt(jltest::swingingLadder(), 30)));
+        QVERIFY(!samePoses(*f.sim->status()->frame, engineFrameAt(jl::test::swingingLadder(), 30)));
     }
 
     void scrubbingBackShowsThePosesRecordedThen() {
-        const jl::Scene scene = jltest::swingingLadder();
+        const jl::Scene scene = jl::test::swingingLadder();
         Fixture f(scene);
         QVERIFY(f.goTo(60));
         const jl::Frame expected = engineFrameAt(scene, 27);
@@ -142,7 +142,7 @@ private slots:
     }
 
     void aMouseDragChangesTheMotionAndReplaysBitIdentically() {
-        const jl::Scene scene = jltest::swingingLadder();
+        const jl::Scene scene = jl::test::swingingLadder();
         Fixture f(scene);
         LadderView* view = f.window.ladderView();
         QVERIFY(QTest::qWaitForWindowExposed(view));
@@ -153,13 +153,13 @@ private slots:
         QVERIFY(((*view->planePoint(at)) - centre).norm() < 0.003);  // picking ray hits where the block is
 
         QTest::mousePress(view, Qt::LeftButton, {}, at);
-        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return s.dragging && s.frame->dragging; }));
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.dragging && s.frame->dragging; }));
         QVERIFY(f.goTo(20));
         QTest::mouseMove(view, at + QPoint(80, -40));
         QVERIFY(f.goTo(30));
         // The spring is drawn: a red line from the block to the hand.
         auto redPixels = [&] {
-            const QImage image = jltest::captureView(view);
+            const QImage image = jl::test::captureView(view);
             int n = 0;
             for (int y = 0; y < image.height(); ++y)
                 for (int x = 0; x < image.width(); ++x) {
@@ -170,7 +170,7 @@ private slots:
         };
         QVERIFY2(redPixels() > 30, "no drag line drawn");
         QTest::mouseRelease(view, Qt::LeftButton, {}, at + QPoint(80, -40));
-        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return !s.dragging; }));
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return !s.dragging; }));
         QVERIFY(f.goTo(60));
         QCOMPARE(redPixels(), 0);  // released: no line
         const auto s = f.sim->status();
@@ -186,35 +186,35 @@ private slots:
         QCOMPARE(engineHashAt(*s->recorded, 60), s->headHash);
         QVERIFY(engineHashAt(scene, 60) != s->headHash);
         // The drag is part of the document now (saved with it, undoable).
-        QVERIFY(jltest::waitForStatus(f.sim, [&](const SimStatus&) { return f.window.document()->scene().drags == s->recorded->drags; }));
+        QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus&) { return f.window.document()->scene().drags == s->recorded->drags; }));
         QVERIFY(f.window.document()->isModified());
     }
 
     // The scene's duration is the lesson's length: playing stops there (the
     // classic cascade used to run on to 40 s), and Play goes on past it.
     void playingStopsAtTheScenesDurationThenGoesOnWhenAsked() {
-        jl::Scene scene = jltest::swingingLadder();
+        jl::Scene scene = jl::test::swingingLadder();
         scene.duration = 0.5;
         Fixture f(scene);
         f.window.setSpeed(4.0);
         f.sim->play();
-        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return s.frame && s.frame->time > 0.1; }));
-        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return !s.playing; }));
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.frame && s.frame->time > 0.1; }));
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return !s.playing; }));
         const auto end = f.sim->status();
         QVERIFY2(std::abs(end->frame->time - 0.5) <= end->interval, qPrintable(QString::number(end->frame->time)));
         f.sim->play();
-        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return s.frame && s.frame->time > 0.6; }));
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.frame && s.frame->time > 0.6; }));
     }
 
     void aFailedSolvePausesAndSaysWhyWithTheLastGoodFrame() {
         // Explicit Euler with 10 ms steps: the solver gives up within half a second.
-        jl::Scene scene = jltest::swingingLadder();
+        jl::Scene scene = jl::test::swingingLadder();
         scene.solver.integrator = jl::Integrator::ExplicitEuler;
         scene.solver.step = 0.01;
         Fixture f(scene);
         f.window.setSpeed(4.0);
         f.sim->play();
-        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return !s.failure.empty(); }));
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return !s.failure.empty(); }));
         const auto s = f.sim->status();
         QVERIFY(!s->playing);
         // The same failure, in the same words, as the engine run on its own.
@@ -227,7 +227,7 @@ private slots:
         qInfo("failed after the frame at %.3f s: %s", s->frame->time, s->failure.c_str());
         QVERIFY(s->frame->time > 0 && s->frame->time < 1.0);
         auto* warning = f.window.findChild<QLabel*>("warning");
-        QVERIFY(jltest::waitForStatus(f.sim, [&](const SimStatus&) { return warning->text().contains(QString::fromStdString(s->failure)); }));
+        QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus&) { return warning->text().contains(QString::fromStdString(s->failure)); }));
         // Shown whole: the status bar cuts it off (the advice at the end), so
         // a message that does not block the window says all of it.
         QMessageBox* box = nullptr;
@@ -251,7 +251,7 @@ private slots:
         Fixture f(scene);
         f.window.setSpeed(4.0);
         f.sim->play();
-        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return s.frameIndex > 0; }));
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.frameIndex > 0; }));
         // Not counted: the first frames of a new scene upload its buffers and shaders once.
         QTest::qWait(500);
 

@@ -24,7 +24,7 @@
 #include <cmath>
 #include <numbers>
 
-using namespace jlui;
+using namespace jl::ui;
 
 namespace {
 
@@ -66,7 +66,7 @@ QString colorText(const QColor& c) { return QString("(%1, %2, %3)").arg(c.red())
 class TeachingTest : public QObject {
     Q_OBJECT
 private slots:
-    void initTestCase() { jltest::isolateSettings(); }
+    void initTestCase() { jl::test::isolateSettings(); }
 
     void energyCurvesAreTheEnginesNumbers() {
         const jl::Scene scene = loadExample("classic.yaml");
@@ -424,14 +424,14 @@ private slots:
         QVERIFY(!run.events.empty());
         SimController sim;
         Pacing pacing(&sim);
-        const auto before = jltest::loadsSoFar(&sim);
+        const auto before = jl::test::loadsSoFar(&sim);
         sim.load(scene);
-        QVERIFY(jltest::loadedAfter(&sim, before));
+        QVERIFY(jl::test::loadedAfter(&sim, before));
         const double dt = scene.solver.frameInterval;
         // Nothing recorded yet: it simulates on until the first event happens.
         pacing.runToNextEvent();
         const int first = int(std::ceil(run.events[0].time / dt - 1e-9));
-        QVERIFY(jltest::waitForStatus(&sim, [&](const SimStatus& s) { return !pacing.seekingEvent() && s.frameIndex == first; }));
+        QVERIFY(jl::test::waitForStatus(&sim, [&](const SimStatus& s) { return !pacing.seekingEvent() && s.frameIndex == first; }));
         // The next one after the frame on screen (the first may share a frame with others).
         const jl::Event* next = nullptr;
         for (const jl::Event& e : run.events)
@@ -439,22 +439,22 @@ private slots:
         QVERIFY(next);
         pacing.runToNextEvent();
         const int second = int(std::ceil(next->time / dt - 1e-9));
-        QVERIFY(jltest::waitForStatus(&sim, [&](const SimStatus& s) { return !pacing.seekingEvent() && s.frameIndex == second; }));
+        QVERIFY(jl::test::waitForStatus(&sim, [&](const SimStatus& s) { return !pacing.seekingEvent() && s.frameIndex == second; }));
         QVERIFY(!sim.status()->playing);
     }
 
     void aLoopReturnsToItsStart() {
         SimController sim;
         Pacing pacing(&sim);
-        const auto before = jltest::loadsSoFar(&sim);
-        sim.load(jltest::swingingLadder());
-        QVERIFY(jltest::loadedAfter(&sim, before));
+        const auto before = jl::test::loadsSoFar(&sim);
+        sim.load(jl::test::swingingLadder());
+        QVERIFY(jl::test::loadedAfter(&sim, before));
         pacing.setLoop(0.1, 0.3);
         sim.setSpeed(2.0);
         sim.play();
         double latest = 0;
         bool wrapped = false;
-        QVERIFY(jltest::waitForStatus(&sim, [&](const SimStatus& s) {
+        QVERIFY(jl::test::waitForStatus(&sim, [&](const SimStatus& s) {
             if (s.frame->time < latest - 0.1) wrapped = true;
             latest = s.frame->time;
             return wrapped && s.frame->time > 0.15;

@@ -19,7 +19,7 @@
 #include <QValueAxis>
 #include <QtTest>
 
-using namespace jlui;
+using namespace jl::ui;
 
 namespace {
 
@@ -30,19 +30,19 @@ jl::Scene classic() {
 }
 
 struct Fixture {
-    MainWindow window{jltest::quietWindow()};
+    MainWindow window{jl::test::quietWindow()};
     TeachingDocks& teaching = *window.findChild<TeachingDocks*>("teaching");
     SimController* sim = window.controller();
     Fixture() {
         window.resize(1400, 950);
         window.show();
-        const auto before = jltest::loadsSoFar(sim);
+        const auto before = jl::test::loadsSoFar(sim);
         window.document()->reset(classic(), QString());
-        if (!jltest::loadedAfter(sim, before)) qFatal("the scene was not loaded");
+        if (!jl::test::loadedAfter(sim, before)) qFatal("the scene was not loaded");
     }
     bool showsTime(double t) {
         const int index = int(std::floor(t / sim->status()->interval + 1e-6));
-        return jltest::waitForStatus(sim, [index](const SimStatus& s) { return s.frameIndex == index && !s.playing; });
+        return jl::test::waitForStatus(sim, [index](const SimStatus& s) { return s.frameIndex == index && !s.playing; });
     }
 };
 
@@ -51,7 +51,7 @@ struct Fixture {
 class TeachingWindowTest : public QObject {
     Q_OBJECT
 private slots:
-    void initTestCase() { jltest::isolateSettings(); }
+    void initTestCase() { jl::test::isolateSettings(); }
 
     void theSideViewAndThePlotsFollowTheRunAndAPlotClickSeeks() {
         Fixture f;
@@ -65,7 +65,7 @@ private slots:
         // Each new frame shown past the last one becomes a sample of the plots.
         const int samples = f.teaching.plots()->traces().count();
         f.sim->stepForward();
-        QVERIFY(jltest::waitForStatus(f.sim, [&](const SimStatus& st) { return st.frameIndex == s->frameIndex + 1; }));
+        QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus& st) { return st.frameIndex == s->frameIndex + 1; }));
         QTest::qWait(100);
         QCOMPARE(f.teaching.plots()->traces().count(), samples + 1);
         QCOMPARE(f.teaching.plots()->traces().endTime(), f.sim->status()->frame->time);
@@ -77,7 +77,7 @@ private slots:
         const QPoint at = chart->viewPointOf(0.3, (chart->valueAxis()->min() + chart->valueAxis()->max()) / 2).toPoint();
         QTest::mouseClick(chart->viewport(), Qt::LeftButton, {}, at);
         const double pixel = (chart->timeAxis()->max() - chart->timeAxis()->min()) / chart->chart()->plotArea().width();
-        QVERIFY(jltest::waitForStatus(f.sim, [&](const SimStatus& st) {
+        QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus& st) {
             return std::abs(st.frame->time - 0.3) < 1.5 * pixel + st.interval;
         }));
     }
@@ -115,9 +115,9 @@ private slots:
         f.window.activateWindow();
         QVERIFY(QTest::qWaitForWindowActive(&f.window));
         QTest::keyClick(&f.window, Qt::Key_Space);
-        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return s.playing; }));
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.playing; }));
         QTest::keyClick(&f.window, Qt::Key_Space);
-        QVERIFY(jltest::waitForStatus(f.sim, [](const SimStatus& s) { return !s.playing; }));
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return !s.playing; }));
         // Esc leaves and everything comes back as it was.
         QTest::keyClick(&f.window, Qt::Key_Escape);
         QVERIFY(!p->active());
@@ -134,7 +134,7 @@ private slots:
         // Frame by frame, so the plots get every frame up to 0.75 s.
         for (int i = 1; i <= 45; ++i) {
             f.sim->seek((i + 0.25) * f.sim->status()->interval);
-            QVERIFY(jltest::waitForStatus(f.sim, [i](const SimStatus& s) { return s.frameIndex == i; }));
+            QVERIFY(jl::test::waitForStatus(f.sim, [i](const SimStatus& s) { return s.frameIndex == i; }));
             QTest::qWait(20);
         }
         f.teaching.plots()->refresh();

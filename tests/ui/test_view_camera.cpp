@@ -15,7 +15,7 @@
 #include <cmath>
 #include <numbers>
 
-using namespace jlui;
+using namespace jl::ui;
 
 namespace {
 const QString kClassic = QStringLiteral(JL_SOURCE_DIR "/examples/classic.yaml");
@@ -33,8 +33,8 @@ bool showScene(MainWindow& w, const QString& path) {
     w.resize(1400, 900);
     w.show();
     if (!QTest::qWaitForWindowExposed(&w)) return false;
-    const auto before = jltest::loadsSoFar(w.controller());
-    if (!w.openFile(path) || !jltest::loadedAfter(w.controller(), before)) return false;
+    const auto before = jl::test::loadsSoFar(w.controller());
+    if (!w.openFile(path) || !jl::test::loadedAfter(w.controller(), before)) return false;
     QTest::qWait(200);  // the first frame reaches the view
     return true;
 }
@@ -75,7 +75,7 @@ QString framingProblem(MainWindow& w) {
 class ViewCameraTest : public QObject {
     Q_OBJECT
 private slots:
-    void initTestCase() { jltest::isolateSettings(); }
+    void initTestCase() { jl::test::isolateSettings(); }
 
     void aSceneThatLeavesTheYawIsSeenFromThreeQuarters() {
         ViewCamera c;
@@ -140,7 +140,7 @@ private slots:
     void theWholeLadderIsFramedOnLoadAndOnF() {
         QFETCH(int, blocks);
         QTemporaryDir dir;
-        MainWindow w(jltest::quietWindow());
+        MainWindow w(jl::test::quietWindow());
         QVERIFY(showScene(w, ladderFile(dir, blocks)));
         QVERIFY(w.ladderView()->viewCamera().yaw() != 0);
         QString problem = framingProblem(w);
@@ -160,7 +160,7 @@ private slots:
     }
 
     void theClassicExampleIsSeenFromThreeQuartersAndWhole() {
-        MainWindow w(jltest::quietWindow());
+        MainWindow w(jl::test::quietWindow());
         QVERIFY(showScene(w, kClassic));
         QVERIFY(w.ladderView()->viewCamera().yaw() != 0);
         const QString problem = framingProblem(w);
@@ -168,13 +168,13 @@ private slots:
     }
 
     void aLongerLadderIsFramedAgain() {
-        MainWindow w(jltest::quietWindow());
+        MainWindow w(jl::test::quietWindow());
         QVERIFY(showScene(w, kClassic));
         auto* blocks = w.findChild<QSpinBox*>("blocks");
         QVERIFY(blocks);
-        const auto before = jltest::loadsSoFar(w.controller());
+        const auto before = jl::test::loadsSoFar(w.controller());
         blocks->setValue(60);
-        QVERIFY(jltest::loadedAfter(w.controller(), before));
+        QVERIFY(jl::test::loadedAfter(w.controller(), before));
         QTest::qWait(200);
         QCOMPARE(int(w.controller()->status()->frame->blocks.size()), 60);
         const QString problem = framingProblem(w);

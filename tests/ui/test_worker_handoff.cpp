@@ -9,7 +9,7 @@
 #include <QElapsedTimer>
 #include <QtTest>
 
-using namespace jlui;
+using namespace jl::ui;
 
 class WorkerHandoffTest : public QObject {
     Q_OBJECT

@@ -14,7 +14,7 @@
 #include <Qt3DRender/QRenderCapture>
 #include <memory>
 
-namespace jltest {
+namespace jl::test {
 
 // A 4-block ladder let go from bent fold angles: it swings, locks and
 // unlocks within the first second, quickly enough for any machine.
@@ -36,11 +36,11 @@ inline void isolateSettings() {
     QCoreApplication::setApplicationName("jacobsladder-tests");
 }
 
-inline jlui::MainWindow::Options quietWindow() { return {false, false}; }
+inline jl::ui::MainWindow::Options quietWindow() { return {false, false}; }
 
 // Waits (running the event loop) until the newest status satisfies `pred`.
 template <typename Pred>
-bool waitForStatus(jlui::SimController* c, Pred pred, int timeoutMs = 20000) {
+bool waitForStatus(jl::ui::SimController* c, Pred pred, int timeoutMs = 20000) {
     QElapsedTimer clock;
     clock.start();
     while (clock.elapsed() < timeoutMs) {
@@ -50,16 +50,16 @@ bool waitForStatus(jlui::SimController* c, Pred pred, int timeoutMs = 20000) {
     return false;
 }
 
-inline std::uint64_t loadsSoFar(jlui::SimController* c) { return c->status()->loadSerial; }
+inline std::uint64_t loadsSoFar(jl::ui::SimController* c) { return c->status()->loadSerial; }
 
 // The simulation has built a scene posted after `before` loads and shows its first frame.
-inline bool loadedAfter(jlui::SimController* c, std::uint64_t before) {
-    return waitForStatus(c, [before](const jlui::SimStatus& s) { return s.loadSerial > before && s.frame && s.failure.empty(); });
+inline bool loadedAfter(jl::ui::SimController* c, std::uint64_t before) {
+    return waitForStatus(c, [before](const jl::ui::SimStatus& s) { return s.loadSerial > before && s.frame && s.failure.empty(); });
 }
 
 // A capture may come back with a frame drawn just before the latest changes
 // reached the renderer; the second one in a row is drawn after them.
-inline QImage captureView(jlui::LadderView* view) {
+inline QImage captureView(jl::ui::LadderView* view) {
     QImage image;
     for (int i = 0; i < 2; ++i) {
         std::unique_ptr<Qt3DRender::QRenderCaptureReply> reply(view->capture()->requestCapture());
@@ -69,4 +69,4 @@ inline QImage captureView(jlui::LadderView* view) {
     return image;
 }
 
-}  // namespace jltest
+}  // namespace jl::test
