@@ -6,6 +6,7 @@
 #include "jl/sim/simulation.h"
 
 #include <QtTest>
+
 #include <functional>
 #include <map>
 #include <memory>

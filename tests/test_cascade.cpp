@@ -5,6 +5,7 @@
 #include "tests/scene_run.h"
 
 #include <QtTest>
+
 #include <cmath>
 
 using namespace jl;

@@ -6,6 +6,7 @@
 #include "jl/sim/event_bracket.h"
 
 #include <QtTest>
+
 #include <cmath>
 #include <functional>
 

@@ -7,6 +7,7 @@
 #include "tests/scene_run.h"
 
 #include <QtTest>
+
 #include <cmath>
 #include <filesystem>
 #include <numbers>

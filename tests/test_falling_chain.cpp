@@ -7,6 +7,7 @@
 #include "jl/reference/falling_chain.h"
 
 #include <QtTest>
+
 #include <cmath>
 
 using namespace jl;

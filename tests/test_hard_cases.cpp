@@ -10,6 +10,7 @@
 #include "jl/sim/simulation.h"
 
 #include <QtTest>
+
 #include <cmath>
 #include <cstdlib>
 #include <numbers>

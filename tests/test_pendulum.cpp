@@ -7,6 +7,7 @@
 #include "jl/reference/elliptic.h"
 
 #include <QtTest>
+
 #include <cmath>
 #include <numbers>
 

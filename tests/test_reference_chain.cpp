@@ -7,6 +7,7 @@
 #include "jl/reference/reference_chain.h"
 
 #include <QtTest>
+
 #include <cmath>
 #include <numbers>
 

@@ -8,6 +8,7 @@
 #include "jl/engine/world.h"
 
 #include <QtTest>
+
 #include <cmath>
 #include <random>
 

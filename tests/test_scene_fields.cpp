@@ -4,17 +4,17 @@
 // its own, every word of every choice does, a value just outside a range is
 // refused with the range's words, and docs/scene-format.md holds the
 // current tables. JL_UPDATE_DOCS=1 rewrites the page's tables instead.
+#include "jl/scene/ladder_blocks.h"
+#include "jl/scene/scene_fields.h"
+#include "jl/scene/scene_io.h"
+#include "jl/scene/yaml_comments.h"
+
 #include <QtTest>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-
-#include "jl/scene/ladder_blocks.h"
-#include "jl/scene/scene_fields.h"
-#include "jl/scene/scene_io.h"
-#include "jl/scene/yaml_comments.h"
 
 using namespace jl;
 

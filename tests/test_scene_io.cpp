@@ -1,10 +1,11 @@
 // labels: io
 // Scene files: round trips, atomic saves, and a corpus of bad files each with
 // the message it must produce ("# expect: line:column: text" in the file).
-#include <QtTest>
+#include "jl/base/output_file.h"
+#include "jl/scene/scalar_text.h"
+#include "jl/scene/scene_io.h"
 
-#include <sys/stat.h>
-#include <unistd.h>
+#include <QtTest>
 
 #include <cerrno>
 #include <cmath>
@@ -14,10 +15,8 @@
 #include <limits>
 #include <numbers>
 #include <sstream>
-
-#include "jl/base/output_file.h"
-#include "jl/scene/scalar_text.h"
-#include "jl/scene/scene_io.h"
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 using namespace jl;

@@ -7,6 +7,7 @@
 #include <Qt3DCore/QGeometry>
 #include <Qt3DRender/QGeometryRenderer>
 #include <Qt3DRender/QMaterial>
+
 #include <array>
 
 namespace jl::ui {

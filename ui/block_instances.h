@@ -6,6 +6,7 @@
 #include "ui/block_shapes.h"
 
 #include <Qt3DCore/QEntity>
+
 #include <vector>
 
 namespace Qt3DCore {

@@ -5,6 +5,7 @@
 #include "jl/scene/scene.h"
 
 #include <QColor>
+
 #include <vector>
 
 namespace jl::ui {

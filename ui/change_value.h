@@ -5,6 +5,7 @@
 #include "ui/document.h"
 
 #include <QUndoCommand>
+
 #include <chrono>
 #include <functional>
 

@@ -4,6 +4,7 @@
 #include "jl/sim/frame.h"
 
 #include <QWidget>
+
 #include <map>
 #include <memory>
 #include <vector>

@@ -11,6 +11,7 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QWidget>
+
 #include <cmath>
 #include <optional>
 #include <sstream>

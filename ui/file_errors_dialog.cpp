@@ -1,10 +1,10 @@
 #include "ui/file_errors_dialog.h"
 
+#include <QClipboard>
 #include <QDialogButtonBox>
 #include <QFileInfo>
 #include <QFontDatabase>
 #include <QGuiApplication>
-#include <QClipboard>
 #include <QLabel>
 #include <QListWidget>
 #include <QPushButton>

@@ -4,6 +4,7 @@
 #include "jl/base/diagnostic.h"
 
 #include <QDialog>
+
 #include <vector>
 
 class QListWidget;

@@ -12,6 +12,7 @@
 #include <Qt3DRender/QCamera>
 #include <Qt3DRender/QRenderCapture>
 #include <Qt3DRender/QRenderSettings>
+
 #include <algorithm>
 #include <cmath>
 

@@ -12,6 +12,7 @@
 #include <QSet>
 #include <QTimer>
 #include <Qt3DExtras/Qt3DWindow>
+
 #include <optional>
 
 namespace Qt3DRender {

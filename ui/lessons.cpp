@@ -7,6 +7,7 @@
 #include <QFileInfo>
 #include <QTextBrowser>
 #include <QVBoxLayout>
+
 #include <algorithm>
 
 namespace jl::ui {

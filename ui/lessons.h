@@ -7,6 +7,7 @@
 #include <QMenu>
 #include <QString>
 #include <QWidget>
+
 #include <vector>
 
 class QTextBrowser;

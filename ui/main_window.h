@@ -6,6 +6,7 @@
 #include "ui/sim_status.h"
 
 #include <QMainWindow>
+
 #include <memory>
 
 class QAction;

@@ -1,10 +1,9 @@
 // The main window's file handling: new, open (menu, command line, drop),
 // save, recent files, revert, the unsaved-changes prompt and crash recovery.
-#include "ui/main_window.h"
-
 #include "jl/scene/scene_io.h"
 #include "jl/scene/yaml_comments.h"
 #include "ui/file_errors_dialog.h"
+#include "ui/main_window.h"
 #include "ui/sim_controller.h"
 
 #include <QCloseEvent>

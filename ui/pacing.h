@@ -4,6 +4,7 @@
 #include "ui/sim_status.h"
 
 #include <QObject>
+
 #include <memory>
 
 namespace jl::ui {

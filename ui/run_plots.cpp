@@ -2,6 +2,7 @@
 
 #include "ui/time_chart.h"
 
+#include <QBoxLayout>
 #include <QChart>
 #include <QCoreApplication>
 #include <QFileDialog>
@@ -15,9 +16,9 @@
 #include <QRegularExpression>
 #include <QSvgGenerator>
 #include <QToolButton>
-#include <QValueAxis>
-#include <QBoxLayout>
 #include <QVBoxLayout>
+#include <QValueAxis>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>

@@ -8,6 +8,7 @@
 
 #include <QTimer>
 #include <QWidget>
+
 #include <array>
 #include <memory>
 #include <vector>

@@ -1,6 +1,7 @@
 #include "ui/run_traces.h"
 
 #include <QObject>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>

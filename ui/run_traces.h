@@ -6,6 +6,7 @@
 
 #include <QPointF>
 #include <QString>
+
 #include <vector>
 
 namespace jl::ui {

@@ -4,6 +4,7 @@
 #include "jl/scene/scene_ranges.h"
 
 #include <QCoreApplication>
+
 #include <algorithm>
 
 namespace jl::ui {

@@ -6,6 +6,7 @@
 #include "ui/change_value.h"
 
 #include <QString>
+
 #include <functional>
 #include <vector>
 

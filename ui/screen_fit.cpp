@@ -3,6 +3,7 @@
 #include <QLayout>
 #include <QScreen>
 #include <QWidget>
+
 #include <algorithm>
 
 namespace jl::ui {

@@ -10,6 +10,7 @@
 #include <QSignalBlocker>
 #include <QTableWidget>
 #include <QVBoxLayout>
+
 #include <numbers>
 
 namespace jl::ui {

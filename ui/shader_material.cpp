@@ -1,5 +1,6 @@
 #include "ui/shader_material.h"
 
+#include <QUrl>
 #include <Qt3DRender/QCullFace>
 #include <Qt3DRender/QEffect>
 #include <Qt3DRender/QFilterKey>
@@ -9,7 +10,6 @@
 #include <Qt3DRender/QRenderPass>
 #include <Qt3DRender/QShaderProgram>
 #include <Qt3DRender/QTechnique>
-#include <QUrl>
 
 static void registerResources() { Q_INIT_RESOURCE(resources); }
 

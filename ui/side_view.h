@@ -10,6 +10,7 @@
 #include <QImage>
 #include <QRectF>
 #include <QWidget>
+
 #include <array>
 #include <memory>
 #include <vector>

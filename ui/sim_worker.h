@@ -12,8 +12,6 @@
 #include <condition_variable>
 #include <deque>
 #include <memory>
-#include <chrono>
-#include <condition_variable>
 #include <mutex>
 #include <variant>
 

@@ -8,6 +8,7 @@
 #include <Qt3DRender/QGeometryRenderer>
 #include <Qt3DRender/QMaterial>
 #include <Qt3DRender/QParameter>
+
 #include <algorithm>
 
 namespace jl::ui {

@@ -7,6 +7,7 @@
 #include <QColor>
 #include <QVector3D>
 #include <Qt3DCore/QEntity>
+
 #include <vector>
 
 namespace Qt3DCore {

@@ -6,6 +6,7 @@
 #include <QBoxLayout>
 #include <QPushButton>
 #include <QTableWidget>
+
 #include <utility>
 
 namespace jl::ui {

@@ -6,6 +6,7 @@
 #include "ui/sim_status.h"
 
 #include <QObject>
+
 #include <memory>
 #include <optional>
 

@@ -7,6 +7,7 @@
 #include <QLineSeries>
 #include <QMouseEvent>
 #include <QValueAxis>
+
 #include <algorithm>
 #include <cmath>
 

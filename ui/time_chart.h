@@ -7,6 +7,7 @@
 #include <QChartView>
 #include <QFont>
 #include <QPointF>
+
 #include <memory>
 #include <vector>
 

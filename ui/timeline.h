@@ -5,6 +5,7 @@
 #include "jl/sim/frame.h"
 
 #include <QWidget>
+
 #include <memory>
 #include <vector>
 

@@ -5,6 +5,7 @@
 #include "ui/scene_fields.h"
 
 #include <QWidget>
+
 #include <vector>
 
 class QFormLayout;

@@ -1,6 +1,7 @@
 #include "ui/view_camera.h"
 
 #include <Qt3DRender/QCamera>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>

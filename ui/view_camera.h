@@ -6,6 +6,7 @@
 #include "jl/scene/scene.h"
 
 #include <QVector3D>
+
 #include <span>
 
 namespace Qt3DRender {

@@ -8,6 +8,7 @@
 #include <QCommandLineParser>
 #include <QScreen>
 #include <QTimer>
+
 #include <cstdio>
 
 namespace {

@@ -1,12 +1,11 @@
 #include "app/jladder/bench_png.h"
 
-#include <zlib.h>
-
 #include <algorithm>
 #include <array>
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <zlib.h>
 
 namespace jl::cli {
 

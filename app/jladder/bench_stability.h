@@ -8,6 +8,7 @@
 #include "app/jladder/bench_cases.h"
 
 #include <Eigen/Core>
+
 #include <string>
 #include <vector>
 

@@ -1,11 +1,11 @@
 // jladder validate: check scene files and list every problem as file:line:column: message.
-#include <cstdio>
-#include <string>
-#include <vector>
-
 #include "app/jladder/commands.h"
 #include "jl/scene/scene_io.h"
 #include "jl/sim/simulation.h"
+
+#include <cstdio>
+#include <string>
+#include <vector>
 
 namespace jl::cli {
 

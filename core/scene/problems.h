@@ -1,13 +1,13 @@
 // Collects the diagnostics of one file, up to a cap, and hands them back in file order.
 #pragma once
 
+#include "jl/base/diagnostic.h"
+
 #include <algorithm>
 #include <cstddef>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include "jl/base/diagnostic.h"
 
 namespace jl {
 

@@ -3,6 +3,11 @@
 // this file: every failure becomes a diagnostic.
 #include "jl/scene/scene_io.h"
 
+#include "jl/base/output_file.h"
+#include "problems.h"
+#include "scene_read.h"
+#include "yaml_prepass.h"
+
 #include <yaml-cpp/exceptions.h>
 #include <yaml-cpp/node/parse.h>
 
@@ -11,11 +16,6 @@
 #include <filesystem>
 #include <fstream>
 #include <new>
-
-#include "jl/base/output_file.h"
-#include "problems.h"
-#include "scene_read.h"
-#include "yaml_prepass.h"
 
 namespace jl {
 

@@ -3,6 +3,12 @@
 // scene under construction is private until no problem has been found.
 #include "scene_read.h"
 
+#include "jl/scene/scalar_text.h"
+#include "jl/scene/scene_fields.h"
+#include "jl/scene/scene_ranges.h"
+#include "scene_read_parts.h"
+#include "yaml_fields.h"
+
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -11,12 +17,6 @@
 #include <string>
 #include <unordered_map>
 #include <vector>
-
-#include "jl/scene/scalar_text.h"
-#include "jl/scene/scene_fields.h"
-#include "jl/scene/scene_ranges.h"
-#include "scene_read_parts.h"
-#include "yaml_fields.h"
 
 namespace jl {
 

@@ -1,13 +1,13 @@
 // Turns a parsed YAML tree into a Scene, checking every value and cross-reference.
 #pragma once
 
+#include "jl/scene/load_limits.h"
+#include "jl/scene/scene.h"
+#include "problems.h"
+
 #include <yaml-cpp/node/node.h>
 
 #include <optional>
-
-#include "jl/scene/scene.h"
-#include "jl/scene/load_limits.h"
-#include "problems.h"
 
 namespace jl {
 

@@ -1,12 +1,12 @@
 // Reading the parts of a scene that are bodies and the links between them:
 // the ladder's initial state, free bodies, particles, pins and springs.
+#include "jl/scene/scene_ranges.h"
+#include "scene_read_parts.h"
+
 #include <yaml-cpp/yaml.h>
 
 #include <charconv>
 #include <numbers>
-
-#include "jl/scene/scene_ranges.h"
-#include "scene_read_parts.h"
 
 namespace jl {
 

@@ -1,16 +1,16 @@
 // The section readers behind readScene, one per part of a scene file (internal to core).
 #pragma once
 
+#include "jl/scene/load_limits.h"
+#include "jl/scene/scene.h"
+#include "problems.h"
+#include "yaml_fields.h"
+
 #include <yaml-cpp/yaml.h>
 
 #include <string>
 #include <unordered_set>
 #include <vector>
-
-#include "jl/scene/scene.h"
-#include "jl/scene/load_limits.h"
-#include "problems.h"
-#include "yaml_fields.h"
 
 namespace jl {
 

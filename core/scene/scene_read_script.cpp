@@ -1,10 +1,10 @@
 // Reading what happens over time: the script's timed actions and recorded drags.
+#include "jl/scene/scene_ranges.h"
+#include "scene_read_parts.h"
+
 #include <yaml-cpp/yaml.h>
 
 #include <array>
-
-#include "jl/scene/scene_ranges.h"
-#include "scene_read_parts.h"
 
 namespace jl {
 

@@ -1,14 +1,14 @@
 // Writing a scene: keys in one fixed order (the order of docs/scene-format.md)
 // so files diff well, and only values that differ from the defaults, so a
 // file says what is special about its scene.
+#include "jl/scene/scalar_text.h"
+#include "jl/scene/scene_fields.h"
+#include "jl/scene/scene_io.h"
+
 #include <yaml-cpp/emitter.h>
 #include <yaml-cpp/emittermanip.h>
 
 #include <string>
-
-#include "jl/scene/scalar_text.h"
-#include "jl/scene/scene_fields.h"
-#include "jl/scene/scene_io.h"
 
 namespace jl {
 

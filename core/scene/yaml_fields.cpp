@@ -2,6 +2,8 @@
 // what was found, in words a teacher can act on.
 #include "yaml_fields.h"
 
+#include "jl/scene/scalar_text.h"
+
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -9,8 +11,6 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
-
-#include "jl/scene/scalar_text.h"
 
 namespace jl {
 

@@ -1,6 +1,11 @@
 // Typed reading of YAML values in a scene file: every wrong value becomes a located, worded problem.
 #pragma once
 
+#include "jl/scene/bound.h"
+#include "jl/scene/scene.h"
+#include "jl/scene/scene_fields.h"
+#include "problems.h"
+
 #include <yaml-cpp/node/node.h>
 
 #include <initializer_list>
@@ -10,11 +15,6 @@
 #include <string_view>
 #include <utility>
 #include <vector>
-
-#include "jl/scene/bound.h"
-#include "jl/scene/scene.h"
-#include "jl/scene/scene_fields.h"
-#include "problems.h"
 
 namespace jl {
 

@@ -1,10 +1,10 @@
 // Checks a scene file's text before any YAML tree is built: encoding, syntax, duplicate keys, aliases, size.
 #pragma once
 
+#include "problems.h"
+
 #include <cstddef>
 #include <string_view>
-
-#include "problems.h"
 
 namespace jl {
 

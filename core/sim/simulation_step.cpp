@@ -1,17 +1,16 @@
 // Stepping a simulation: one step of the integrator, the check that the
 // motion has not blown up, and the ladder's events located inside the step
 // and resolved at their instant.
-#include "jl/sim/simulation.h"
-
 #include "jl/engine/energy.h"
 #include "jl/engine/motion.h"
 #include "jl/engine/stable_step.h"
 #include "jl/sim/event_bracket.h"
+#include "jl/sim/simulation.h"
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 
 namespace jl {
 

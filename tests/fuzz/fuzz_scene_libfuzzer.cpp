@@ -1,10 +1,10 @@
 // libFuzzer entry for the scene loader: any bytes must give a scene or errors, never a crash.
+#include "jl/scene/scene_io.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <string_view>
-
-#include "jl/scene/scene_io.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string_view text(reinterpret_cast<const char*>(data), size);

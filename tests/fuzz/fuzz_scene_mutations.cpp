@@ -3,6 +3,9 @@
 // loaded scene must survive a save and load unchanged, and run: every step
 // moves time on or the run stops with a reason (what the ranges of
 // docs/scene-format.md promise).
+#include "jl/scene/scene_io.h"
+#include "jl/sim/simulation.h"
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -11,9 +14,6 @@
 #include <random>
 #include <string>
 #include <vector>
-
-#include "jl/scene/scene_io.h"
-#include "jl/sim/simulation.h"
 
 namespace fs = std::filesystem;
 

@@ -1,20 +1,19 @@
 // labels: ui
 // Files around the document: the recovery copy written while there are
 // unsaved edits and removed once saved, and a scene dropped on the window.
-#include "ui_test_support.h"
-
 #include "jl/scene/scene_io.h"
 #include "jl/scene/yaml_comments.h"
 #include "jl/sim/simulation.h"
+#include "ui_test_support.h"
 
+#include <QAction>
 #include <QFile>
 #include <QMessageBox>
-#include <QAction>
 #include <QMimeData>
 #include <QPushButton>
-#include <QTimer>
 #include <QSpinBox>
 #include <QTemporaryDir>
+#include <QTimer>
 #include <QtTest>
 
 using namespace jl::ui;

@@ -2,24 +2,23 @@
 // The desktop window: it opens a scene and draws it, edits undo exactly,
 // saves and opens, refuses a bad file without touching the open scene, and
 // stays within the screen (restored, and after presentation mode).
-#include "ui_test_support.h"
-
 #include "jl/scene/scene_io.h"
 #include "ui/file_errors_dialog.h"
 #include "ui/ladder_view.h"
+#include "ui_test_support.h"
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QMessageBox>
 #include <QPushButton>
-#include <QTableWidget>
 #include <QRegularExpression>
 #include <QScreen>
 #include <QSettings>
 #include <QSpinBox>
+#include <QTableWidget>
 #include <QTemporaryDir>
-#include <Qt3DRender/QRenderCapture>
 #include <QToolBar>
+#include <Qt3DRender/QRenderCapture>
 #include <QtTest>
 
 using namespace jl::ui;

@@ -2,15 +2,14 @@
 // The simulation behind the window: play, pause, step, scrub, a mouse drag
 // that is recorded and replays bit for bit, and a window that stays
 // responsive while a long ladder simulates flat out.
-#include "ui_test_support.h"
-
 #include "jl/sim/simulation.h"
 #include "ui/ladder_view.h"
+#include "ui_test_support.h"
 
 #include <QDoubleSpinBox>
 #include <QLabel>
-#include <QTimer>
 #include <QMessageBox>
+#include <QTimer>
 #include <QtTest>
 
 using namespace jl::ui;

@@ -2,8 +2,6 @@
 // Teaching and analysis: the plots draw the engine's numbers and the energy
 // books balance, clicks seek, the side view draws blocks where the engine
 // says they are, exports write what they promise, lessons list the examples.
-#include "ui_test_support.h"
-
 #include "jl/sim/simulation.h"
 #include "ui/events_panel.h"
 #include "ui/exporter.h"
@@ -12,6 +10,7 @@
 #include "ui/run_plots.h"
 #include "ui/side_view.h"
 #include "ui/time_chart.h"
+#include "ui_test_support.h"
 
 #include <QDir>
 #include <QLineSeries>
@@ -21,6 +20,7 @@
 #include <QTemporaryDir>
 #include <QValueAxis>
 #include <QtTest>
+
 #include <cmath>
 #include <numbers>
 

@@ -2,14 +2,13 @@
 // The teaching tools in the main window (MainWindow makes its TeachingDocks): the side view and plots follow the
 // running simulation, a click in a plot moves the timeline, the Lessons and
 // Teach menus sit before Help, presentation mode hides the chrome and comes back.
-#include "ui_test_support.h"
-
 #include "ui/lessons.h"
 #include "ui/presentation_mode.h"
 #include "ui/run_plots.h"
 #include "ui/side_view.h"
 #include "ui/teaching_docks.h"
 #include "ui/time_chart.h"
+#include "ui_test_support.h"
 
 #include <QDockWidget>
 #include <QMenuBar>

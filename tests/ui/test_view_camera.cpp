@@ -3,15 +3,15 @@
 // walking (eye and target together) and looking around from the eye; in the
 // window, a three-quarter view that frames the whole ladder on load, after
 // an edit that makes it longer and on F.
-#include "ui/view_camera.h"
-
-#include "ui_test_support.h"
 #include "ui/block_shapes.h"
+#include "ui/view_camera.h"
+#include "ui_test_support.h"
 
 #include <QSpinBox>
 #include <QTemporaryDir>
 #include <Qt3DRender/QCamera>
 #include <QtTest>
+
 #include <cmath>
 #include <numbers>
 

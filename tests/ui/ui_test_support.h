@@ -12,6 +12,7 @@
 #include <QStandardPaths>
 #include <QTest>
 #include <Qt3DRender/QRenderCapture>
+
 #include <memory>
 
 namespace jl::test {

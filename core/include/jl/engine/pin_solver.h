@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCholesky>
+
 #include <array>
 #include <vector>
 

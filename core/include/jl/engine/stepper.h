@@ -6,6 +6,7 @@
 #include "jl/engine/integrator.h"
 
 #include <Eigen/Core>
+
 #include <vector>
 
 namespace jl {

@@ -7,6 +7,7 @@
 #include "jl/engine/pin_solver.h"
 
 #include <Eigen/Core>
+
 #include <optional>
 #include <string>
 #include <vector>

@@ -1,11 +1,11 @@
 // The text forms of numbers, angles and colours in scene files, shared by the reader and the writer.
 #pragma once
 
+#include "jl/scene/scene.h"
+
 #include <optional>
 #include <string>
 #include <string_view>
-
-#include "jl/scene/scene.h"
 
 namespace jl {
 

@@ -1,15 +1,15 @@
 // Loading, validating and saving scene files (YAML, docs/scene-format.md); errors are values.
 #pragma once
 
+#include "jl/base/diagnostic.h"
+#include "jl/scene/load_limits.h"
+#include "jl/scene/scene.h"
+
 #include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include "jl/base/diagnostic.h"
-#include "jl/scene/load_limits.h"
-#include "jl/scene/scene.h"
 
 namespace jl {
 
