@@ -90,8 +90,8 @@ private slots:
         QVERIFY(r.events.empty());
         const Frame end = sim->frame();
         double moved = 0;
-        for (size_t i = 0; i < end.blocks.size(); ++i)
-            moved = std::max(moved, (end.blocks[i].position - start.blocks[i].position).norm());
+        for (size_t i = 0; i < end.poses.size(); ++i)
+            moved = std::max(moved, (end.poses[i].position - start.poses[i].position).norm());
         QVERIFY2(moved < 1e-9, qPrintable(QString::number(moved)));
     }
 

@@ -68,7 +68,7 @@ private slots:
         auto undisturbed = simulateFile(kClassic);
         undisturbed->advanceTo(1.4);
         QVERIFY(undisturbed->stateHash() != live->stateHash());
-        const Vec2 a = undisturbed->frame().blocks[4].position, b = live->frame().blocks[4].position;
+        const Vec2 a = undisturbed->frame().poses[4].position, b = live->frame().poses[4].position;
         QVERIFY2((a - b).norm() > 1e-3, qPrintable(QString::number((a - b).norm())));
     }
 

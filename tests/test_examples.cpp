@@ -222,7 +222,7 @@ private slots:
         double ahead = -1;
         while (sim->time() < 1.0 && sim->stepOnce()) {
             const Frame f = sim->frame();
-            const Pose& last = f.blocks.back();
+            const Pose& last = f.poses.back();
             const Vec2 tip = last.position + rotate(last.angle, Vec2(0, 0.03));
             ahead = std::max(ahead, -0.5 * 9.81 * f.time * f.time - tip.y());
         }

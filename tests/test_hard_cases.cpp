@@ -68,7 +68,7 @@ Outcome run(const Scene& scene, double until, double frameInterval = 0.01) {
     for (double t = frameInterval; t <= until + 1e-12; t += frameInterval) {
         sim.advanceTo(t);
         const Frame f = sim.frame();
-        for (const Pose& p : f.blocks)
+        for (const Pose& p : f.poses)
             if (!p.position.allFinite() || !std::isfinite(p.angle)) o.finite = false;
         if (!std::isfinite(f.energy.balance())) o.finite = false;
         o.worstBalance = std::max(o.worstBalance, std::abs(f.energy.balance()));
@@ -403,8 +403,8 @@ private slots:
         QVERIFY(after.energy.kinetic < 1e-20);
         QVERIFY(std::abs(after.energy.balance()) < 1e-15);
         // Block 1 now hangs at rest from the held block's other corner.
-        const Vec2 corner = after.blocks[0].apply(Vec2(-kT / 2, kL / 2));
-        QVERIFY((after.blocks[1].apply(Vec2(-kT / 2, kL / 2)) - corner).norm() < 1e-10);
+        const Vec2 corner = after.poses[0].apply(Vec2(-kT / 2, kL / 2));
+        QVERIFY((after.poses[1].apply(Vec2(-kT / 2, kL / 2)) - corner).norm() < 1e-10);
         QVERIFY(sim.advanceTo(0.5));
         QVERIFY(std::abs(sim.frame().energy.balance()) < 1e-12);
     }

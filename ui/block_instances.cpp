@@ -71,11 +71,11 @@ BlockInstances::BlockInstances(Qt3DCore::QNode* parent) : Qt3DCore::QEntity(pare
 void BlockInstances::setShapes(std::vector<BlockShape> shapes) { shapes_ = std::move(shapes); }
 
 void BlockInstances::showFrame(const jl::Frame& frame, int grabbed) {
-    const size_t n = std::min(frame.blocks.size(), shapes_.size());
+    const size_t n = std::min(frame.poses.size(), shapes_.size());
     QByteArray data(int(n * kInstanceFloats * sizeof(float)), Qt::Uninitialized);
     auto* f = reinterpret_cast<float*>(data.data());
     for (size_t i = 0; i < n; ++i, f += kInstanceFloats) {
-        const jl::Pose& p = frame.blocks[i];
+        const jl::Pose& p = frame.poses[i];
         const BlockShape& s = shapes_[i];
         const bool held = i < frame.held.size() && frame.held[i];
         // Held blocks are a shade darker: the hand has them.

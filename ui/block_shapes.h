@@ -1,5 +1,5 @@
 // How each drawn thing of a frame looks: box size and colour per entry of
-// Frame::blocks, read once from the scene (frames carry only poses).
+// Frame::poses, read once from the scene (frames carry only poses).
 #pragma once
 
 #include "jl/scene/scene.h"
@@ -16,7 +16,7 @@ struct BlockShape {
 };
 
 // Ladder blocks, then general bodies, then particles: the order of
-// Frame::blocks. Boxes of both kinds have local x across (thickness) and
+// Frame::poses. Boxes of both kinds have local x across (thickness) and
 // local y along (length), as the engine builds them.
 std::vector<BlockShape> blockShapes(const jl::Scene& scene);
 

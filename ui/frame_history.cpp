@@ -22,7 +22,7 @@ void FrameHistory::setBudget(std::size_t bytes) {
 }
 
 std::size_t FrameHistory::frameBytes(const jl::Frame& f) {
-    std::size_t n = sizeof(jl::Frame) + f.blocks.size() * sizeof(jl::Pose) + f.held.size() / 8 +
+    std::size_t n = sizeof(jl::Frame) + f.poses.size() * sizeof(jl::Pose) + f.held.size() / 8 +
                     f.hinges.size() * sizeof(jl::HingeFrame) + f.events.size() * sizeof(jl::Event);
     for (const auto& r : f.ribbons) n += sizeof(r) + r.points.size() * sizeof(jl::Vec2);
     return n;

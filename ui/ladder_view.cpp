@@ -84,7 +84,7 @@ void LadderView::setScene(const jl::Scene& scene, bool resetCamera) {
 
 void LadderView::showFrame(const jl::Frame& frame) {
     if (!frame.dragging) grabbed_ = -1;
-    shownPoses_ = frame.blocks;
+    shownPoses_ = frame.poses;
     if (frameOnNextFrame_) {
         frameOnNextFrame_ = false;
         frameLadder();
@@ -100,8 +100,8 @@ void LadderView::showFrame(const jl::Frame& frame) {
     if (frame.dragging && grabbed_ < 0) {
         // Which block: the one whose centre is nearest the grabbed point.
         double best = 1e300;
-        for (size_t i = 0; i < frame.blocks.size(); ++i) {
-            const double d = (frame.blocks[i].position - frame.dragFrom).squaredNorm();
+        for (size_t i = 0; i < frame.poses.size(); ++i) {
+            const double d = (frame.poses[i].position - frame.dragFrom).squaredNorm();
             if (d < best) best = d, grabbed_ = int(i);
         }
     }

@@ -41,11 +41,11 @@ void RunTraces::truncateAfter(double t) {
 
 void RunTraces::append(const jl::Frame& frame) {
     // Another scene (a different number of blocks) starts afresh.
-    if (!time_.empty() && frame.blocks.size() != angle_.size()) clear();
+    if (!time_.empty() && frame.poses.size() != angle_.size()) clear();
     if (!time_.empty() && frame.time <= time_.back()) truncateAfter(std::nextafter(frame.time, -1e300));
     if (time_.empty()) {
         fold_.assign(frame.hinges.size(), {});
-        angle_.assign(frame.blocks.size(), {});
+        angle_.assign(frame.poses.size(), {});
     }
     time_.push_back(frame.time);
     const jl::EnergyFrame& e = frame.energy;
@@ -55,7 +55,7 @@ void RunTraces::append(const jl::Frame& frame) {
     for (size_t j = 0; j < fold_.size(); ++j)
         fold_[j].push_back(j < frame.hinges.size() ? frame.hinges[j].foldAngle : std::numeric_limits<double>::quiet_NaN());
     for (size_t i = 0; i < angle_.size(); ++i) {
-        double a = frame.blocks[i].angle;
+        double a = frame.poses[i].angle;
         // Keep the curve continuous: a block turning past pi is not a jump.
         if (angle_[i].size() > 0) {
             const double before = angle_[i].back();

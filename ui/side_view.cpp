@@ -100,7 +100,7 @@ void SideView::setOptions(const SideViewOptions& o) {
 }
 
 std::array<jl::Vec2, 4> SideView::corners(int block) const {
-    const jl::Pose& pose = frame_->blocks[size_t(block)];
+    const jl::Pose& pose = frame_->poses[size_t(block)];
     std::array<jl::Vec2, 4> out;
     if (block < int(cornerLocal_.size())) {
         for (int k = 0; k < 4; ++k) out[size_t(k)] = pose.apply(cornerLocal_[size_t(block)][size_t(k)]);
@@ -116,11 +116,11 @@ std::array<jl::Vec2, 4> SideView::corners(int block) const {
 
 QRectF SideView::extentOf(const jl::Frame& f) const {
     double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
-    const size_t n = std::min(f.blocks.size(), shapes_.size());
+    const size_t n = std::min(f.poses.size(), shapes_.size());
     for (size_t i = 0; i < n; ++i) {
         // The circumscribed circle: the extent does not depend on the angle.
         const double r = std::hypot(shapes_[i].across, shapes_[i].along) / 2;
-        const jl::Vec2& c = f.blocks[i].position;
+        const jl::Vec2& c = f.poses[i].position;
         x0 = std::min(x0, c.x() - r), x1 = std::max(x1, c.x() + r);
         y0 = std::min(y0, c.y() - r), y1 = std::max(y1, c.y() + r);
     }
@@ -130,7 +130,7 @@ QRectF SideView::extentOf(const jl::Frame& f) const {
 
 void SideView::resetFraming() {
     framing_ = {};
-    if (!frame_->blocks.empty()) growFraming(extentOf(*frame_));
+    if (!frame_->poses.empty()) growFraming(extentOf(*frame_));
     update();
 }
 
@@ -184,7 +184,7 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
     p.setRenderHint(QPainter::Antialiasing);
     p.setRenderHint(QPainter::TextAntialiasing);
     p.fillRect(target, kBackground);
-    if (framing_.isEmpty() || frame_->blocks.empty()) {
+    if (framing_.isEmpty() || frame_->poses.empty()) {
         p.restore();
         return;
     }
@@ -209,7 +209,7 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
         if (py >= target.top() && py <= target.bottom()) p.drawLine(QPointF(target.left(), py), QPointF(target.right(), py));
     }
 
-    const int n = int(std::min(frame_->blocks.size(), shapes_.size()));
+    const int n = int(std::min(frame_->poses.size(), shapes_.size()));
     const double blockPixels = shapes_.empty() ? 0 : shapes_.front().along * map.scale;
     const double thicknessPixels = shapes_.empty() ? 0 : shapes_.front().across * map.scale;
     // A long ladder seen whole is a thread: each block a line along its
@@ -242,7 +242,7 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
     for (int i = firstParticle_; i < n; ++i) {
         p.setPen(QPen(kInk, 1 * ui));
         p.setBrush(shapes_[size_t(i)].color);
-        p.drawEllipse(map(frame_->blocks[size_t(i)].position), 4.5 * ui, 4.5 * ui);
+        p.drawEllipse(map(frame_->poses[size_t(i)].position), 4.5 * ui, 4.5 * ui);
     }
     if (options_.ribbons && !thread) {
         const double w = std::max(1.6 * ui, ribbonThickness_ * map.scale);
@@ -264,7 +264,7 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
         p.setBrush(kInk);
         for (int i = 0; i < std::min(n, int(cornerLocal_.size())); ++i) {
             const auto c = corners(i);
-            const jl::Vec2 centre = frame_->blocks[size_t(i)].position;
+            const jl::Vec2 centre = frame_->poses[size_t(i)].position;
             const jl::Vec2 along = (c[1] - c[0]) * 0.3;  // corner 0 towards corner 1: the lengthwise orientation
             arrow(p, map(centre - along), map(centre + along), 7 * ui);
         }
@@ -275,7 +275,7 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
         p.setFont(small);
         for (int i = 0; i < std::min(n, int(cornerLocal_.size())); ++i) {
             const auto c = corners(i);
-            const jl::Vec2 centre = frame_->blocks[size_t(i)].position;
+            const jl::Vec2 centre = frame_->poses[size_t(i)].position;
             // Inside the block near each corner: a little in from the end, a
             // quarter of the thickness in from the side, so the numbers of two
             // blocks meeting at a hinge do not overlap.
@@ -296,7 +296,7 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
         p.setFont(bold);
         const int every = std::max(1, int(std::ceil(bold.pixelSize() * 1.6 / std::max(1.0, blockPixels))));
         for (int i = 0; i < std::min(n, firstParticle_); i += every) {
-            const QPointF at = map(frame_->blocks[size_t(i)].position);
+            const QPointF at = map(frame_->poses[size_t(i)].position);
             // Beside the arrow when both are asked for.
             const QPointF shift = options_.orientation ? QPointF(0, -bold.pixelSize() * 0.9) : QPointF();
             haloText(p, at + shift, QString::number(i), kInk);

@@ -192,7 +192,7 @@ CascadeResult runCascade(const Scene& scene) {
     built.simulation->advanceExactlyTo(scene.duration);
     Frame f = built.simulation->frame();
     r.events = f.events;
-    r.poses = f.blocks;
+    r.poses = f.poses;
     r.failure = f.failure;
     return r;
 }

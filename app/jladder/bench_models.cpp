@@ -55,7 +55,7 @@ Outcome finish(Simulation& sim) {
     Outcome o;
     Frame f = sim.frame();
     o.events = f.events;
-    o.poses = f.blocks;
+    o.poses = f.poses;
     o.failure = f.failure;
     return o;
 }

@@ -6,9 +6,9 @@ void writePosesCsvHeader(std::ostream& out) { out << "t,block,x,y,theta\n"; }
 
 void writePosesCsvRows(std::ostream& out, const Frame& f) {
     const auto precision = out.precision(17);
-    for (size_t i = 0; i < f.blocks.size(); ++i)
-        out << f.time << ',' << i << ',' << f.blocks[i].position.x() << ',' << f.blocks[i].position.y() << ','
-            << f.blocks[i].angle << '\n';
+    for (size_t i = 0; i < f.poses.size(); ++i)
+        out << f.time << ',' << i << ',' << f.poses[i].position.x() << ',' << f.poses[i].position.y() << ','
+            << f.poses[i].angle << '\n';
     out.precision(precision);
 }
 

@@ -436,10 +436,10 @@ void Simulation::endDrag() {
 Frame Simulation::frame() {
     Frame f;
     f.time = t_;
-    f.blocks.reserve(blocks_.size());
+    f.poses.reserve(blocks_.size());
     f.held.reserve(blocks_.size());
     for (PartId p : blocks_) {
-        f.blocks.push_back(world_.partPose(p));
+        f.poses.push_back(world_.partPose(p));
         f.held.push_back(world_.isHeld(p));
     }
     if (ladder_) {

@@ -57,7 +57,7 @@ private slots:
         QVERIFY(showClassic(w));
         QCOMPARE(w.document()->scene().title, std::string("The classic cascade"));
         const auto status = w.controller()->status();
-        QCOMPARE(int(status->frame->blocks.size()), 6);
+        QCOMPARE(int(status->frame->poses.size()), 6);
         turnEdgeOn(w);
         QTest::qWait(300);  // a few rendered frames with the poses in place
 
@@ -66,7 +66,7 @@ private slots:
         const double scale = double(image.width()) / w.ladderView()->width();
         const QColor wood(200, 162, 107);  // #c8a26b, the file's block colour
         for (int i = 0; i < 6; ++i) {
-            const jl::Vec2 c = status->frame->blocks[size_t(i)].position;
+            const jl::Vec2 c = status->frame->poses[size_t(i)].position;
             const QPointF p = w.ladderView()->pixelOf(c) * scale;
             const QColor got = image.pixelColor(p.toPoint());
             QVERIFY2(woodColoured(got, wood), qPrintable(QString("block %1 at %2,%3 is %4").arg(i).arg(p.x()).arg(p.y()).arg(got.name())));
@@ -129,13 +129,13 @@ private slots:
         QApplication::processEvents();
         QCOMPARE(play->mapTo(&w, QPoint()).x(), before);
         const jl::Scene nine = w.document()->scene();
-        QVERIFY(jl::test::waitForStatus(w.controller(), [](const SimStatus& s) { return s.frame && s.frame->blocks.size() == 9; }));
+        QVERIFY(jl::test::waitForStatus(w.controller(), [](const SimStatus& s) { return s.frame && s.frame->poses.size() == 9; }));
 
         w.document()->undoStack()->undo();
         QVERIFY(w.document()->scene() == original);
         QVERIFY(!w.document()->isModified());
         QCOMPARE(blocks->value(), 6);
-        QVERIFY(jl::test::waitForStatus(w.controller(), [](const SimStatus& s) { return s.frame && s.frame->blocks.size() == 6; }));
+        QVERIFY(jl::test::waitForStatus(w.controller(), [](const SimStatus& s) { return s.frame && s.frame->poses.size() == 6; }));
         w.document()->undoStack()->redo();
         QVERIFY(w.document()->scene() == nine);
 
@@ -210,7 +210,7 @@ private slots:
         const QImage image = jl::test::captureView(w.ladderView());
         const double scale = double(image.width()) / w.ladderView()->width();
         const auto frame = w.controller()->status()->frame;
-        auto colourAt = [&](int block) { return image.pixelColor((w.ladderView()->pixelOf(frame->blocks[size_t(block)].position) * scale).toPoint()); };
+        auto colourAt = [&](int block) { return image.pixelColor((w.ladderView()->pixelOf(frame->poses[size_t(block)].position) * scale).toPoint()); };
         const jl::Color oc = *o[0].color;
         QVERIFY(woodColoured(colourAt(2), QColor(oc.r, oc.g, oc.b)));
         QVERIFY(!woodColoured(colourAt(2), QColor(200, 162, 107)));

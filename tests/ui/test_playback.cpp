@@ -28,9 +28,9 @@ jl::Frame engineFrameAt(const jl::Scene& scene, int index) { return engineAt(sce
 std::uint64_t engineHashAt(const jl::Scene& scene, int index) { return engineAt(scene, index)->stateHash(); }
 
 bool samePoses(const jl::Frame& a, const jl::Frame& b) {
-    if (a.blocks.size() != b.blocks.size()) return false;
-    for (size_t i = 0; i < a.blocks.size(); ++i)
-        if (a.blocks[i].position != b.blocks[i].position || a.blocks[i].angle != b.blocks[i].angle) return false;
+    if (a.poses.size() != b.poses.size()) return false;
+    for (size_t i = 0; i < a.poses.size(); ++i)
+        if (a.poses[i].position != b.poses[i].position || a.poses[i].angle != b.poses[i].angle) return false;
     return true;
 }
 
@@ -71,7 +71,7 @@ private slots:
         const auto s = f.sim->status();
         // Paced to real time: about a second, allowing for a slow, shared machine.
         QVERIFY2(s->frame->time > 0.25 && s->frame->time < 1.3, qPrintable(QString::number(s->frame->time)));
-        const double moved = (s->frame->blocks[3].position - first->blocks[3].position).norm();
+        const double moved = (s->frame->poses[3].position - first->poses[3].position).norm();
         QVERIFY2(moved > 0.002, qPrintable(QString("block 3 moved %1 m").arg(moved)));
         // What is shown is what the engine computes for that frame.
         QVERIFY(samePoses(*s->frame, engineFrameAt(jl::test::swingingLadder(), s->frameIndex)));
@@ -146,7 +146,7 @@ private slots:
         LadderView* view = f.window.ladderView();
         QVERIFY(QTest::qWaitForWindowExposed(view));
         QVERIFY(f.goTo(12));
-        const jl::Vec2 centre = f.sim->status()->frame->blocks[3].position;
+        const jl::Vec2 centre = f.sim->status()->frame->poses[3].position;
         const QPoint at = view->pixelOf(centre).toPoint();
         QVERIFY(view->planePoint(at).has_value());
         QVERIFY(((*view->planePoint(at)) - centre).norm() < 0.003);  // picking ray hits where the block is
@@ -179,7 +179,7 @@ private slots:
 
         // The push changed the motion...
         const jl::Frame without = engineFrameAt(scene, 60);
-        const double diff = (without.blocks[3].position - s->frame->blocks[3].position).norm();
+        const double diff = (without.poses[3].position - s->frame->poses[3].position).norm();
         QVERIFY2(diff > 0.001, qPrintable(QString("block 3 differs by %1 m").arg(diff)));
         // ...and the recorded scene replays it exactly.
         QCOMPARE(engineHashAt(*s->recorded, 60), s->headHash);

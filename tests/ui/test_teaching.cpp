@@ -225,7 +225,7 @@ private slots:
         const Run run = runHeadless(scene, 0.7);
         const jl::Frame& f = run.frames.back();
         // The ladder has moved from where it hung: the check is not of a still picture.
-        QVERIFY((f.blocks[3].position - run.frames.front().blocks[3].position).norm() > 0.01);
+        QVERIFY((f.poses[3].position - run.frames.front().poses[3].position).norm() > 0.01);
         SideView view;
         SideViewOptions look;
         look.blockNumbers = false;  // the number would sit on the centre pixel
@@ -237,8 +237,8 @@ private slots:
         QCOMPARE(image.size(), size);
         const QColor wood(200, 162, 107);  // "#c8a26b" in classic.yaml
         const QRectF target(QPointF(0, 0), QSizeF(size));
-        for (size_t i = 0; i < f.blocks.size(); ++i) {
-            const QPoint at = view.pixelOf(f.blocks[i].position, target).toPoint();
+        for (size_t i = 0; i < f.poses.size(); ++i) {
+            const QPoint at = view.pixelOf(f.poses[i].position, target).toPoint();
             QVERIFY(image.rect().contains(at));
             const QColor c = image.pixelColor(at);
             QVERIFY2(near(c, wood), qPrintable(QString("block %1 at %2,%3 is %4").arg(i).arg(at.x()).arg(at.y()).arg(colorText(c))));
@@ -248,7 +248,7 @@ private slots:
         const QRectF shown = view.framing();
         auto clearance = [&f](const jl::Vec2& p) {
             double d = 1e9;
-            for (const jl::Pose& b : f.blocks) d = std::min(d, (b.position - p).norm());
+            for (const jl::Pose& b : f.poses) d = std::min(d, (b.position - p).norm());
             return d;
         };
         const jl::Vec2 left(shown.left() + 0.05 * shown.width(), shown.center().y());
@@ -364,7 +364,7 @@ private slots:
         // Block 3 at 0.5 s (frame 5) is where the engine puts it, to the last bit.
         auto engine = jl::Simulation::build(scene).simulation;
         engine->advanceTo(0.5);
-        const jl::Pose at05 = engine->frame().blocks[3];
+        const jl::Pose at05 = engine->frame().poses[3];
         const QStringList cells = poses[5 * 6 + 3 + 1].split(',');
         QCOMPARE(cells[1].toInt(), 3);
         QCOMPARE(cells[2].toDouble(), at05.position.x());

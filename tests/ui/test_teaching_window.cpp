@@ -59,7 +59,7 @@ private slots:
         QTest::qWait(100);  // the controller's poll hands the status to the docks
         const auto s = f.sim->status();
         QCOMPARE(f.teaching.sideView()->frame().time, s->frame->time);
-        QCOMPARE(f.teaching.sideView()->frame().blocks[3].position, s->frame->blocks[3].position);
+        QCOMPARE(f.teaching.sideView()->frame().poses[3].position, s->frame->poses[3].position);
         QCOMPARE(f.teaching.plots()->traces().endTime(), s->frame->time);
         // Each new frame shown past the last one becomes a sample of the plots.
         const int samples = f.teaching.plots()->traces().count();

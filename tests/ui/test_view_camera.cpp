@@ -48,8 +48,8 @@ QString framingProblem(MainWindow& w) {
     const std::vector<BlockShape> shapes = blockShapes(w.document()->scene());
     const QMatrix4x4 viewProjection = view->camera()->projectionMatrix() * view->camera()->viewMatrix();
     float lo[2] = {1e9f, 1e9f}, hi[2] = {-1e9f, -1e9f};
-    for (size_t i = 0; i < status->frame->blocks.size(); ++i) {
-        const jl::Pose& p = status->frame->blocks[i];
+    for (size_t i = 0; i < status->frame->poses.size(); ++i) {
+        const jl::Pose& p = status->frame->poses[i];
         const BlockShape& s = shapes[i];
         const float c = float(std::cos(p.angle)), sn = float(std::sin(p.angle));
         for (const float u : {-s.across / 2, s.across / 2})
@@ -176,7 +176,7 @@ private slots:
         blocks->setValue(60);
         QVERIFY(jl::test::loadedAfter(w.controller(), before));
         QTest::qWait(200);
-        QCOMPARE(int(w.controller()->status()->frame->blocks.size()), 60);
+        QCOMPARE(int(w.controller()->status()->frame->poses.size()), 60);
         const QString problem = framingProblem(w);
         QVERIFY2(problem.isEmpty(), qPrintable(problem));
     }

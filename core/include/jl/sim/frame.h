@@ -37,7 +37,7 @@ struct SolverFrame {
 
 struct Frame {
     double time = 0;                  // s
-    std::vector<Pose> blocks;         // every block (ladder) or box/particle (general scene), in scene order
+    std::vector<Pose> poses;          // every block (ladder), then every box and particle (general scene), in scene order
     std::vector<bool> held;           // per block
     std::vector<HingeFrame> hinges;   // ladder: hinges[j-1] is hinge j
     std::vector<RibbonFrame> ribbons;
