@@ -4,7 +4,7 @@
 
 #include "jl/scene/scene.h"
 #include "jl/sim/simulation.h"
-#include "ui/frame_history.h"
+#include "jl/sim/frame_history.h"
 #include "ui/sim_status.h"
 
 #include <atomic>

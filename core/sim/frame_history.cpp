@@ -1,9 +1,9 @@
-#include "ui/frame_history.h"
+#include "jl/sim/frame_history.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace jl::ui {
+namespace jl {
 
 void FrameHistory::reset(double interval, std::size_t budgetBytes) {
     interval_ = interval > 0 ? interval : 1.0 / 60.0;
@@ -21,10 +21,10 @@ void FrameHistory::setBudget(std::size_t bytes) {
     evict(head());
 }
 
-std::size_t FrameHistory::frameBytes(const jl::Frame& f) {
-    std::size_t n = sizeof(jl::Frame) + f.poses.size() * sizeof(jl::Pose) + f.held.size() / 8 +
-                    f.hinges.size() * sizeof(jl::HingeFrame) + f.events.size() * sizeof(jl::Event);
-    for (const auto& r : f.ribbons) n += sizeof(r) + r.points.size() * sizeof(jl::Vec2);
+std::size_t FrameHistory::frameBytes(const Frame& f) {
+    std::size_t n = sizeof(Frame) + f.poses.size() * sizeof(Pose) + f.held.size() / 8 +
+                    f.hinges.size() * sizeof(HingeFrame) + f.events.size() * sizeof(Event);
+    for (const auto& r : f.ribbons) n += sizeof(r) + r.points.size() * sizeof(Vec2);
     return n;
 }
 
@@ -92,4 +92,4 @@ int FrameHistory::indexAt(double t) const {
     return std::clamp(i, 0, head());
 }
 
-}  // namespace jl::ui
+}  // namespace jl

@@ -9,15 +9,15 @@
 #include <memory>
 #include <vector>
 
-namespace jl::ui {
+namespace jl {
 
 // Frame i is the state after advancing to time i * interval (frame 0 is the
 // built scene). Frames may be evicted to stay within the budget; keyframes
 // are kept, so any evicted frame can be re-simulated from the one before it.
 class FrameHistory {
 public:
-    using FramePtr = std::shared_ptr<const jl::Frame>;
-    using SnapshotPtr = std::shared_ptr<const jl::Snapshot>;
+    using FramePtr = std::shared_ptr<const Frame>;
+    using SnapshotPtr = std::shared_ptr<const Snapshot>;
 
     void reset(double interval, std::size_t budgetBytes);
     void setBudget(std::size_t bytes);
@@ -44,7 +44,7 @@ public:
     std::size_t bytes() const { return bytes_; }
 
 private:
-    static std::size_t frameBytes(const jl::Frame& f);
+    static std::size_t frameBytes(const Frame& f);
     void evict(int protectIndex);
 
     double interval_ = 1.0 / 60.0;
@@ -57,4 +57,4 @@ private:
     std::size_t snapshotBytes_ = 0;  // an estimate: Snapshot is opaque to us
 };
 
-}  // namespace jl::ui
+}  // namespace jl
