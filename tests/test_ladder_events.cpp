@@ -4,6 +4,9 @@
 // the reactions. Blocks are 60 x 12 x 45 mm, density 600 (m = 19.44 g).
 #include "jl/engine/dynamics.h"
 #include "jl/engine/energy.h"
+#include "jl/engine/world.h"
+#include "jl/ladder/block_corners.h"
+#include "jl/ladder/ladder.h"
 #include "tests/scene_run.h"
 
 #include <QtTest>
@@ -58,6 +61,32 @@ HingeContact contactNow(const Simulation& sim, int j) {
 class LadderEventsTest : public QObject {
     Q_OBJECT
 private slots:
+    // The views number corners from the design alone; the engine pins hinges
+    // to its own: they must be the same points, per-block thickness included,
+    // and a hinge must join the same-numbered corners of its two blocks.
+    void cornersFromTheDesignAreTheEngines() {
+        LadderSpec spec;
+        spec.blocks = 5;
+        BlockOverride thick;
+        thick.index = 2;
+        thick.thickness = 0.02;
+        spec.overrides.push_back(thick);
+        World w;
+        const Ladder ladder(w, spec);
+        const auto corners = blockCorners(spec);
+        QCOMPARE(int(corners.size()), 5);
+        for (int i = 0; i < 5; ++i)
+            for (int k = 0; k < 4; ++k) QCOMPARE(corners[size_t(i)][size_t(k)], ladder.cornerLocal(i, k));
+        QCOMPARE(corners[2][2].x(), 0.01);  // half the overridden thickness
+        QCOMPARE(corners[0][1].y(), 0.03);  // even blocks: corner 1 at the top end
+        QCOMPARE(corners[1][1].y(), -0.03); // odd blocks: at the bottom end
+        for (int j = 1; j < 5; ++j) {
+            const int k = ladder.hinge(j).corner;
+            const Vec2 a = ladder.cornerWorld(w, j - 1, k), b = ladder.cornerWorld(w, j, k);
+            QVERIFY((a - b).norm() < 1e-9);
+        }
+    }
+
     // Block 1 falls off the end of the flat block, hits phi = 0 and locks as a
     // cantilever. Moments about the pin: m g L/2 = N T, so N = m g L / (2 T).
     void lockHoldsCantileverWithHandWorkedForce_data() { bothModelsOfRigidPairs(); }

@@ -1,6 +1,6 @@
 #include "ui/side_view.h"
 
-#include "jl/engine/world.h"
+#include "jl/ladder/block_corners.h"
 #include "jl/ladder/ladder.h"
 
 #include <QPainter>
@@ -81,12 +81,8 @@ void SideView::setScene(const jl::Scene& scene) {
     ladderBlocks_ = scene.ladder ? scene.ladder->blocks : 0;
     firstParticle_ = int(shapes_.size() - scene.particles.size());
     if (scene.ladder && !jl::Ladder::validate(*scene.ladder)) {
-        // The engine's own numbering (Ladder::cornerLocal), not a copy of its rule.
-        jl::World world;
-        const jl::Ladder ladder(world, *scene.ladder);
-        cornerLocal_.resize(size_t(ladder.blockCount()));
-        for (int i = 0; i < ladder.blockCount(); ++i)
-            for (int k = 0; k < 4; ++k) cornerLocal_[size_t(i)][size_t(k)] = ladder.cornerLocal(i, k);
+        // The engine's own numbering, not a copy of its rule.
+        cornerLocal_ = jl::blockCorners(*scene.ladder);
         ribbonColor_ = QColor(scene.ladder->ribbons.color.r, scene.ladder->ribbons.color.g, scene.ladder->ribbons.color.b);
         ribbonThickness_ = scene.ladder->ribbons.thickness;
     }

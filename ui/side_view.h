@@ -68,7 +68,7 @@ private:
     void growFraming(const QRectF& need);
 
     std::vector<BlockShape> shapes_;
-    std::vector<std::array<jl::Vec2, 4>> cornerLocal_;  // ladder blocks, from jl::Ladder
+    std::vector<std::array<jl::Vec2, 4>> cornerLocal_;  // ladder blocks, from jl::blockCorners
     int ladderBlocks_ = 0, firstParticle_ = 0;
     QColor ribbonColor_{40, 60, 140};
     double ribbonThickness_ = 0.0005;

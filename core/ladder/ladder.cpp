@@ -1,6 +1,7 @@
 #include "jl/ladder/ladder.h"
 
 #include "jl/engine/projection.h"
+#include "jl/ladder/block_corners.h"
 #include "jl/scene/ladder_blocks.h"
 
 #include <algorithm>
@@ -79,14 +80,7 @@ Ladder::Ladder(World& w, const LadderSpec& spec) : spec_(spec), length_(spec.blo
     updateAngles(w);
 }
 
-// Corner k of block i: bit 0 walks the length, bit 1 the thickness. Even
-// blocks point "up", odd ones "down", so a hinge joins equal corner numbers.
-Vec2 Ladder::cornerLocal(int i, int k) const {
-    const double t = thickness_[size_t(i)];
-    const double side = (k & 2) ? t / 2 : -t / 2;
-    const double end = (k & 1) ? length_ / 2 : -length_ / 2;
-    return {side, up(i) ? end : -end};
-}
+Vec2 Ladder::cornerLocal(int i, int k) const { return blockCorner(i, k, thickness_[size_t(i)], length_); }
 
 Vec2 Ladder::cornerWorld(const World& w, int i, int k) const { return w.pointPosition(block(i), cornerLocal(i, k)); }
 

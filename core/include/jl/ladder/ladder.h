@@ -56,8 +56,8 @@ public:
     PartId block(int i) const { return blocks_[size_t(i)]; }
     const Hinge& hinge(int j) const { return hinges_[size_t(j - 1)]; }
 
-    // Where corner k of block i is, in the block's frame. The one place that
-    // says where a hinge attaches to a block (a ribbon model would change it).
+    // Where corner k of block i is, in the block's frame (jl/ladder/block_corners.h,
+    // the one place that says where a hinge attaches to a block).
     Vec2 cornerLocal(int i, int k) const;
     Vec2 cornerWorld(const World& w, int i, int k) const;
     // The particle at corner k of block i (for scripted joins; hinges use their own).
@@ -137,7 +137,6 @@ private:
     };
     void place(World& w);
     void placeHanging(World& w);
-    bool up(int i) const { return i % 2 == 0; }
     // An impact's velocity jump: part velocities before it and pin impulses.
     struct Impact {
         const std::vector<Twist>* before = nullptr;
