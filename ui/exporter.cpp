@@ -2,6 +2,7 @@
 
 #include "jl/sim/event_csv.h"
 #include "jl/sim/frame_csv.h"
+#include "jl/sim/recording.h"
 #include "jl/sim/simulation.h"
 
 #include <QDir>
@@ -119,27 +120,42 @@ ExportResult Exporter::eventsCsv(const std::vector<jl::Event>& events, const QSt
     return {true, {}, {path}};
 }
 
+namespace {
+
+// The frames and events of a recorded run from `from` on, kept for the tables.
+struct TableRows : jl::RecordTarget {
+    double from = 0;
+    std::vector<jl::Frame> frames;
+    std::vector<jl::Event> events;
+    bool frame(const jl::Frame& f) override {
+        if (f.time < from - 1e-12) return true;
+        frames.push_back(f);
+        frames.back().events.clear();
+        return true;
+    }
+    bool event(const jl::Event& e) override {
+        if (e.time >= from) events.push_back(e);
+        return true;
+    }
+};
+
+}  // namespace
+
 ExportResult Exporter::tables(const jl::Scene& scene, double from, double to, double every, const QString& directory) {
-    const int total = frameCount(from, to, every > 0 ? 1 / every : 0);
-    if (total == 0) return failed(QObject::tr("The time range is empty: choose an end after the start and a positive interval."));
+    if (!(every > 0) || !(to >= from)) return failed(QObject::tr("The time range is empty: choose an end after the start and a positive interval."));
     if (!QDir().mkpath(directory)) return failed(QObject::tr("Could not make the folder %1.").arg(directory));
     auto built = jl::Simulation::build(scene);
     if (!built.simulation) return failed(QObject::tr("The scene does not build."));
-    jl::Simulation& sim = *built.simulation;
-    std::vector<jl::Frame> frames;
-    std::vector<jl::Event> events;
-    for (int i = 0; i < total; ++i) {
-        if (!sim.advanceTo(from + i * every))
-            return failed(QObject::tr("The run stopped at %1 s: %2").arg(sim.time()).arg(QString::fromStdString(sim.failure())));
-        frames.push_back(sim.frame());
-        for (const jl::Event& e : frames.back().events)
-            if (e.time >= from) events.push_back(e);
-        frames.back().events.clear();
-    }
+    // Recorded as the command line's export records it: the same rows.
+    TableRows rows;
+    rows.from = from;
+    const jl::Recording run = jl::record(*built.simulation, to, every, &rows);
+    if (!run.failure.empty())
+        return failed(QObject::tr("The run stopped at %1 s: %2").arg(run.time).arg(QString::fromStdString(run.failure)));
     std::ostringstream poses, energy, log;
-    jl::writePosesCsv(poses, frames);
-    jl::writeEnergyCsv(energy, frames);
-    jl::writeEventsCsv(log, events);
+    jl::writePosesCsv(poses, rows.frames);
+    jl::writeEnergyCsv(energy, rows.frames);
+    jl::writeEventsCsv(log, rows.events);
     ExportResult result{true, {}, {}};
     const std::pair<const char*, std::string> files[] = {{"poses.csv", poses.str()}, {"energy.csv", energy.str()}, {"events.csv", log.str()}};
     for (const auto& [name, text] : files) {

@@ -54,8 +54,10 @@ public:
     // The event log as CSV (jl/sim/event_csv.h), written atomically.
     static ExportResult eventsCsv(const std::vector<jl::Event>& events, const QString& path);
     // Re-runs the scene and writes poses.csv, energy.csv and events.csv
-    // (jl/sim/frame_csv.h, jl/sim/event_csv.h) into `directory`: a frame at
-    // `from` and every `every` seconds up to `to`, the events in between.
+    // (jl/sim/frame_csv.h, jl/sim/event_csv.h) into `directory`, recorded as
+    // `jladder export` records them (jl/sim/recording.h): a frame at the first
+    // step at or after each multiple of `every` from `from` on, to exactly
+    // `to`, and the events in between.
     static ExportResult tables(const jl::Scene& scene, double from, double to, double every, const QString& directory);
 
     // Where ffmpeg is, or empty when it is not installed; what to tell the user then.

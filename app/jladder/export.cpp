@@ -2,10 +2,10 @@
 #include "app/jladder/commands.h"
 #include "app/jladder/interruption.h"
 #include "app/jladder/options.h"
-#include "app/jladder/recording.h"
 #include "app/jladder/run_outputs.h"
 #include "jl/scene/scene_io.h"
 #include "jl/scene/scene_ranges.h"
+#include "jl/sim/recording.h"
 
 #include <cstdio>
 
@@ -55,7 +55,7 @@ int exportFrames(const std::vector<std::string>& args) {
         return 1;
     }
     catchInterruptions();
-    const Recording r = record(*built.simulation, until, every, &outputs);
+    const Recording r = record(*built.simulation, until, every, &outputs, interruption);
     const bool written = outputs.finish(r.complete(), "jladder export");
     if (!r.failure.empty()) std::fprintf(stderr, "%s: the run failed %s\n", path.c_str(), r.failure.c_str());
     if (r.interrupted) endByInterruption();

@@ -2,8 +2,8 @@
 #include "app/jladder/commands.h"
 #include "app/jladder/interruption.h"
 #include "app/jladder/options.h"
-#include "app/jladder/recording.h"
 #include "app/jladder/run_outputs.h"
+#include "app/jladder/summary.h"
 #include "jl/scene/scene_io.h"
 #include "jl/scene/scene_ranges.h"
 
@@ -83,7 +83,7 @@ int run(const std::vector<std::string>& args) {
         return 1;
     }
     catchInterruptions();
-    const Recording r = record(*built.simulation, *until, every, &outputs);
+    const Recording r = record(*built.simulation, *until, every, &outputs, interruption);
     const bool written = outputs.finish(r.complete(), "jladder run");
     std::cout << summaryJson(r, path) << '\n';
     std::cout.flush();

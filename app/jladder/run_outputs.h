@@ -5,8 +5,8 @@
 // that is killed leaves it in FILE.partial-XXXXXX.
 #pragma once
 
-#include "app/jladder/recording.h"
 #include "jl/base/output_file.h"
+#include "jl/sim/recording.h"
 
 #include <sstream>
 #include <string>

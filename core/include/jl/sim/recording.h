@@ -1,0 +1,46 @@
+// A run recorded from start to end: the frames an export or a report wants
+// (one at t = 0, then one at the first step at or after each multiple of the
+// frame interval) and every event, handed on as the run produces them so that
+// memory does not grow with the length of the run; and what the run was like
+// (energy books, pin gaps, steps, why it ended). The command line's run and
+// export and the desktop program's table export all record this way.
+#pragma once
+
+#include "jl/sim/frame.h"
+#include "jl/sim/simulation.h"
+
+#include <functional>
+#include <string>
+
+namespace jl {
+
+// Where a recording's frames and events go as they come; false from either
+// stops the run (an output could not be written).
+class RecordTarget {
+public:
+    virtual ~RecordTarget() = default;
+    virtual bool frame(const Frame& f) = 0;
+    virtual bool event(const Event& e) = 0;
+};
+
+struct Recording {
+    double energyStart = 0, energyEnd = 0, worstBalance = 0, worstResidual = 0, wallSeconds = 0;
+    double time = 0;
+    long long steps = 0, evaluations = 0, events = 0;
+    SolverFrame solver;         // the last frame's statistics (the step the engine chose among them)
+    std::string failure;        // the engine's
+    int interrupted = 0;        // what `interruption` returned when it ended the run early, or 0
+    bool targetFailed = false;  // the target refused a frame or an event
+    bool complete() const { return failure.empty() && interrupted == 0 && !targetFailed; }
+};
+
+// Runs `sim` to exactly `until` (the last step shortened to land on it),
+// handing every event to `target` and a frame at t = 0 and then at the first
+// step at or after each multiple of `every` seconds (energy books checked on
+// each), and keeping the largest pin gap after every step. Ends early on a
+// failure, a refusal of the target or when `interruption` (asked between two
+// steps) returns non-zero.
+Recording record(Simulation& sim, double until, double every, RecordTarget* target,
+                 const std::function<int()>& interruption = {});
+
+}  // namespace jl
