@@ -5,6 +5,7 @@
 #include "ui/events_panel.h"
 #include "ui/ladder_panel.h"
 #include "ui/ladder_view.h"
+#include "ui/presentation_mode.h"
 #include "ui/screen_fit.h"
 #include "ui/script_panel.h"
 #include "ui/shader_material.h"
@@ -90,10 +91,7 @@ MainWindow::MainWindow(Options options) : options_(options) {
 
     // Side view, plots, lessons, pacing and exports (docs/teaching.md); before
     // readSettings so their docks are restored with the others.
-    auto* teaching = new TeachingDocks(this);
-    connect(teaching, &TeachingDocks::lessonRequested, this, [this](const QString& path) {
-        if (maybeSave()) openFile(path);
-    });
+    createTeaching();
     readSettings();
     onSceneChanged(SceneChange::Whole);
     updateTitle();
@@ -167,7 +165,8 @@ void MainWindow::createMenus() {
     viewMenu_->addActions({resetViewAct_, frameAct_, walkAct_});
     viewMenu_->addSeparator();
     for (QDockWidget* d : findChildren<QDockWidget*>()) viewMenu_->addAction(d->toggleViewAction());
-    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    helpMenu_ = menuBar()->addMenu(tr("&Help"));
+    QMenu* help = helpMenu_;
     QAction* controls = help->addAction(tr("&Controls"), this, &MainWindow::showControls);
     controls->setShortcut(QKeySequence::HelpContents);
     help->addAction(tr("&About"), this, [this] {
@@ -255,16 +254,44 @@ void MainWindow::createDocks() {
     simulationPanel_ = new SimulationPanel(doc_, this);
     scriptPanel_ = new ScriptPanel(doc_, this);
     eventsPanel_ = new EventsPanel(this);
-    dock(tr("Ladder"), "ladderDock", ladderPanel_, Qt::LeftDockWidgetArea);
+    ladderDock_ = dock(tr("Ladder"), "ladderDock", ladderPanel_, Qt::LeftDockWidgetArea);
     QDockWidget* simDock = dock(tr("Simulation"), "simulationDock", simulationPanel_, Qt::LeftDockWidgetArea);
-    QDockWidget* scriptDock = dock(tr("Script"), "scriptDock", scriptPanel_, Qt::RightDockWidgetArea);
+    scriptDock_ = dock(tr("Script"), "scriptDock", scriptPanel_, Qt::RightDockWidgetArea);
+    QDockWidget* scriptDock = scriptDock_;
     QDockWidget* eventsDock = dock(tr("Events"), "eventsDock", eventsPanel_, Qt::RightDockWidgetArea);
-    tabifyDockWidget(findChild<QDockWidget*>("ladderDock"), simDock);
-    findChild<QDockWidget*>("ladderDock")->raise();
+    tabifyDockWidget(ladderDock_, simDock);
+    ladderDock_->raise();
     splitDockWidget(scriptDock, eventsDock, Qt::Vertical);
     // The event log grows while the script stays short: give the log the room.
     resizeDocks({scriptDock, eventsDock}, {200, 520}, Qt::Vertical);
     resizeDocks({scriptDock}, {380}, Qt::Horizontal);
+}
+
+// The teaching tools make their docks and menus; the window places them.
+void MainWindow::createTeaching() {
+    teaching_ = new TeachingDocks(doc_, sim_, this);
+    connect(teaching_, &TeachingDocks::lessonRequested, this, [this](const QString& path) {
+        if (maybeSave()) openFile(path);
+    });
+    connect(teaching_, &TeachingDocks::message, this, [this](const QString& text) { statusBar()->showMessage(text, 5000); });
+    QDockWidget* side = teaching_->sideViewDock();
+    addDockWidget(Qt::RightDockWidgetArea, side);
+    // The script is seldom edited in class: the side view shares its place, in front.
+    tabifyDockWidget(scriptDock_, side);
+    side->raise();
+    // Tabifying forgets the column's width the window asked for: ask again.
+    resizeDocks({side}, {std::max(380, scriptDock_->width())}, Qt::Horizontal);
+    addDockWidget(Qt::BottomDockWidgetArea, teaching_->plotsDock());
+    addDockWidget(Qt::LeftDockWidgetArea, teaching_->lessonDock());
+    tabifyDockWidget(ladderDock_, teaching_->lessonDock());
+    // Before Help, which stays last.
+    menuBar()->insertMenu(helpMenu_->menuAction(), teaching_->lessonsMenu());
+    menuBar()->insertMenu(helpMenu_->menuAction(), teaching_->teachMenu());
+    // In presentation mode the views stay; the editing panels go.
+    presentation_ = new PresentationMode(this, {side, teaching_->plotsDock(), teaching_->lessonDock()});
+    connect(teaching_->presentationAction(), &QAction::triggered, presentation_, &PresentationMode::toggle);
+    connect(presentation_, &PresentationMode::activeChanged, teaching_->presentationAction(), &QAction::setChecked);
+    connect(presentation_, &PresentationMode::activeChanged, teaching_, &TeachingDocks::setLarge);
 }
 
 void MainWindow::createStatusBar() {

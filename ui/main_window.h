@@ -10,6 +10,7 @@
 #include <memory>
 
 class QAction;
+class QDockWidget;
 class QLabel;
 class QMenu;
 class QSlider;
@@ -19,9 +20,11 @@ namespace jl::ui {
 class EventsPanel;
 class LadderPanel;
 class LadderView;
+class PresentationMode;
 class ScriptPanel;
 class SimController;
 class SimulationPanel;
+class TeachingDocks;
 class Timeline;
 
 class MainWindow : public QMainWindow {
@@ -44,6 +47,8 @@ public:
     SimController* controller() const { return sim_; }
     LadderView* ladderView() const { return view_; }
     QWidget* viewContainer() const { return viewContainer_; }
+    TeachingDocks* teaching() const { return teaching_; }
+    PresentationMode* presentation() const { return presentation_; }
     void setSpeed(double factor);
 
 protected:
@@ -56,6 +61,7 @@ private:
     void createMenus();
     void createToolBar();
     void createDocks();
+    void createTeaching();
     void createStatusBar();
     void connectView();
     void showFailure(const QString& failure);
@@ -90,6 +96,11 @@ private:
     SimulationPanel* simulationPanel_;
     ScriptPanel* scriptPanel_;
     EventsPanel* eventsPanel_;
+    QDockWidget* ladderDock_ = nullptr;
+    QDockWidget* scriptDock_ = nullptr;
+    TeachingDocks* teaching_ = nullptr;
+    PresentationMode* presentation_ = nullptr;
+    QMenu* helpMenu_ = nullptr;
     QMenu* recentMenu_ = nullptr;
     QMenu* viewMenu_ = nullptr;
     QSlider* speedSlider_ = nullptr;

@@ -12,7 +12,7 @@
 
 namespace jl::ui {
 
-PresentationMode::PresentationMode(QMainWindow* window, QStringList keepDocks)
+PresentationMode::PresentationMode(QMainWindow* window, QList<QDockWidget*> keepDocks)
     : QObject(window), window_(window), keepDocks_(std::move(keepDocks)) {
     escape_ = new QAction(tr("Leave presentation mode"), this);
     escape_->setShortcut(Qt::Key_Escape);
@@ -40,7 +40,7 @@ void PresentationMode::enter() {
     QList<QWidget*> chrome{window_->menuBar(), window_->statusBar()};
     for (QToolBar* t : window_->findChildren<QToolBar*>()) chrome << t;
     for (QDockWidget* d : window_->findChildren<QDockWidget*>())
-        if (!keepDocks_.contains(d->objectName())) chrome << d;
+        if (!keepDocks_.contains(d)) chrome << d;
     for (QWidget* w : chrome)
         if (w && w->isVisible()) {
             w->hide();

@@ -6,9 +6,9 @@
 #include <QList>
 #include <QObject>
 #include <QPointer>
-#include <QStringList>
 
 class QAction;
+class QDockWidget;
 class QMainWindow;
 class QWidget;
 
@@ -17,8 +17,8 @@ namespace jl::ui {
 class PresentationMode : public QObject {
     Q_OBJECT
 public:
-    // `keepDocks`: object names of the docks that stay in view (the rest hide).
-    PresentationMode(QMainWindow* window, QStringList keepDocks);
+    // `keepDocks`: the docks that stay in view (the rest hide).
+    PresentationMode(QMainWindow* window, QList<QDockWidget*> keepDocks);
 
     bool active() const { return active_; }
     void setActive(bool on);
@@ -35,7 +35,7 @@ private:
     void leave();
 
     QMainWindow* window_;
-    QStringList keepDocks_;
+    QList<QDockWidget*> keepDocks_;
     bool active_ = false;
     // What entering changed, to put back exactly on leaving.
     Qt::WindowStates windowState_;

@@ -2,9 +2,8 @@
 
 #include "ui/exporter.h"
 #include "ui/lessons.h"
-#include "ui/main_window.h"
+#include "ui/document.h"
 #include "ui/pacing.h"
-#include "ui/presentation_mode.h"
 #include "ui/run_plots.h"
 #include "ui/sequence_dialog.h"
 #include "ui/side_view.h"
@@ -15,68 +14,52 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QMenu>
-#include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressDialog>
-#include <QStatusBar>
 
 namespace jl::ui {
 
-TeachingDocks::TeachingDocks(MainWindow* window) : QObject(window), window_(window) {
+TeachingDocks::TeachingDocks(Document* doc, SimController* sim, QWidget* parent)
+    : QObject(parent), doc_(doc), sim_(sim), parent_(parent) {
     setObjectName("teaching");
-    sideView_ = new SideView(window);
-    plots_ = new RunPlots(window);
-    lessonPanel_ = new LessonPanel(window);
-    pacing_ = new Pacing(window->controller(), this);
-    QDockWidget* sideDock = dock(tr("Side view"), "sideViewDock", sideView_, Qt::RightDockWidgetArea);
-    // The script is seldom edited in class: the side view shares its place, in front.
-    if (auto* script = window->findChild<QDockWidget*>("scriptDock")) {
-        window->tabifyDockWidget(script, sideDock);
-        sideDock->raise();
-        // Tabifying forgets the column's width the window asked for: ask again.
-        window->resizeDocks({sideDock}, {std::max(380, script->width())}, Qt::Horizontal);
-    }
-    dock(tr("Plots"), "plotsDock", plots_, Qt::BottomDockWidgetArea);
-    lessonDock_ = dock(tr("Lesson"), "lessonDock", lessonPanel_, Qt::LeftDockWidgetArea);
-    if (auto* ladder = window->findChild<QDockWidget*>("ladderDock")) window->tabifyDockWidget(ladder, lessonDock_);
-    // In presentation mode the views stay; the editing panels go.
-    presentation_ = new PresentationMode(window, {"sideViewDock", "plotsDock", "lessonDock"});
+    sideView_ = new SideView(parent);
+    plots_ = new RunPlots(parent);
+    lessonPanel_ = new LessonPanel(parent);
+    pacing_ = new Pacing(sim, this);
+    sideViewDock_ = dock(tr("Side view"), "sideViewDock", sideView_);
+    plotsDock_ = dock(tr("Plots"), "plotsDock", plots_);
+    lessonDock_ = dock(tr("Lesson"), "lessonDock", lessonPanel_);
     createMenus();
 
-    SimController* sim = window->controller();
     connect(sim, &SimController::statusChanged, this, &TeachingDocks::onStatus);
     connect(plots_, &RunPlots::seekRequested, sim, &SimController::seek);
-    connect(window->document(), &Document::changed, this, &TeachingDocks::onSceneChanged);
+    connect(doc, &Document::changed, this, &TeachingDocks::onSceneChanged);
     connect(pacing_, &Pacing::message, this, &TeachingDocks::say);
-    connect(presentation_, &PresentationMode::activeChanged, this, [this](bool on) {
-        setLook();
-        plots_->setLarge(on);
-        lessonPanel_->setLarge(on);
-    });
     onSceneChanged();
 }
 
-QDockWidget* TeachingDocks::dock(const QString& title, const QString& name, QWidget* w, Qt::DockWidgetArea area) {
-    auto* d = new QDockWidget(title, window_);
+QDockWidget* TeachingDocks::dock(const QString& title, const QString& name, QWidget* w) {
+    auto* d = new QDockWidget(title, parent_);
     d->setObjectName(name);
     d->setWidget(w);
-    window_->addDockWidget(area, d);
     return d;
 }
 
+void TeachingDocks::setLarge(bool on) {
+    large_ = on;
+    setLook();
+    plots_->setLarge(on);
+    lessonPanel_->setLarge(on);
+}
+
 void TeachingDocks::createMenus() {
-    QMenuBar* bar = window_->menuBar();
-    // Before Help, which stays last.
-    QAction* before = nullptr;
-    for (QAction* a : bar->actions())
-        if (a->menu() && a->menu()->title().remove('&') == tr("Help")) before = a;
-
-    auto* lessons = new LessonsMenu(findLessons(lessonsDirectory()), window_);
+    auto* lessons = new LessonsMenu(findLessons(lessonsDirectory()), parent_);
     connect(lessons, &LessonsMenu::openRequested, this, &TeachingDocks::lessonRequested);
-    bar->insertMenu(before, lessons);
+    lessonsMenu_ = lessons;
 
-    auto* teach = new QMenu(tr("&Teach"), window_);
+    auto* teach = new QMenu(tr("&Teach"), parent_);
     teach->setObjectName("teachMenu");
+    teachMenu_ = teach;
     auto add = [this, teach](const QString& text, const QKeySequence& key, const QString& tip, auto slot) {
         QAction* a = teach->addAction(text);
         a->setShortcut(key);
@@ -89,10 +72,11 @@ void TeachingDocks::createMenus() {
         [this] { pacing_->runToNextEvent(); });
     add(tr("&Loop a stretch"), Qt::Key_L,
         tr("Press once where the loop starts and once where it ends; press again to stop looping"), [this] { markLoop(); });
-    QAction* present = add(tr("&Presentation mode"), Qt::Key_F5,
-                           tr("Full screen, large type, only the views; Esc or F5 to leave"), [this] { presentation_->toggle(); });
-    present->setCheckable(true);
-    connect(presentation_, &PresentationMode::activeChanged, present, &QAction::setChecked);
+    presentationAction_ = teach->addAction(tr("&Presentation mode"));
+    presentationAction_->setShortcut(Qt::Key_F5);
+    presentationAction_->setStatusTip(tr("Full screen, large type, only the views; Esc or F5 to leave"));
+    presentationAction_->setToolTip(presentationAction_->statusTip());
+    presentationAction_->setCheckable(true);
     teach->addSeparator();
     auto toggle = [this, teach](const QString& text, const QKeySequence& key, bool on) {
         QAction* a = teach->addAction(text);
@@ -113,9 +97,7 @@ void TeachingDocks::createMenus() {
     exports->addAction(tr("&Event log as CSV..."), this, &TeachingDocks::exportEvents);
     exports->addAction(tr("&Tables as CSV (poses, energies, events)..."), this, &TeachingDocks::exportTables);
     teach->addSeparator();
-    for (const char* name : {"sideViewDock", "plotsDock", "lessonDock"})
-        teach->addAction(window_->findChild<QDockWidget*>(name)->toggleViewAction());
-    bar->insertMenu(before, teach);
+    for (QDockWidget* d : {sideViewDock_, plotsDock_, lessonDock_}) teach->addAction(d->toggleViewAction());
 }
 
 void TeachingDocks::setLook() {
@@ -123,12 +105,12 @@ void TeachingDocks::setLook() {
     o.blockNumbers = blockNumbers_->isChecked();
     o.cornerNumbers = cornerNumbers_->isChecked();
     o.orientation = arrows_->isChecked();
-    o.scale = presentation_->active() ? 2.0 : 1.0;
+    o.scale = large_ ? 2.0 : 1.0;
     sideView_->setOptions(o);
 }
 
 void TeachingDocks::onSceneChanged() {
-    const jl::Scene& scene = window_->document()->scene();
+    const jl::Scene& scene = doc_->scene();
     sideView_->setScene(scene);
     plots_->setDuration(scene.duration);
     lessonPanel_->showScene(scene);
@@ -139,9 +121,9 @@ void TeachingDocks::onStatus(std::shared_ptr<const SimStatus> s) {
     plots_->showStatus(*s);
 }
 
-std::shared_ptr<const SimStatus> TeachingDocks::latest() const { return window_->controller()->status(); }
+std::shared_ptr<const SimStatus> TeachingDocks::latest() const { return sim_->status(); }
 
-void TeachingDocks::say(const QString& text) { window_->statusBar()->showMessage(text, 5000); }
+void TeachingDocks::say(const QString& text) { emit message(text); }
 
 void TeachingDocks::markLoop() {
     const auto s = latest();
@@ -159,33 +141,33 @@ void TeachingDocks::markLoop() {
     loopStart_.reset();
     if (b - a < 1e-6) return say(tr("The loop needs two different times."));
     pacing_->setLoop(a, b);
-    window_->controller()->seek(a);
-    window_->controller()->play();
+    sim_->seek(a);
+    sim_->play();
     say(tr("Looping from %1 s to %2 s: press L to stop.").arg(a, 0, 'f', 3).arg(b, 0, 'f', 3));
 }
 
 void TeachingDocks::sideViewPicture() {
-    const QString path = QFileDialog::getSaveFileName(window_, tr("Side view as a picture"), "side-view.png", tr("PNG picture (*.png)"));
+    const QString path = QFileDialog::getSaveFileName(parent_, tr("Side view as a picture"), "side-view.png", tr("PNG picture (*.png)"));
     if (path.isEmpty()) return;
     // Twice the size on screen: sharp on slides.
     if (!sideView_->render(sideView_->size() * 2).save(path, "PNG"))
-        QMessageBox::warning(window_, tr("Not exported"), tr("Could not write the picture %1.").arg(path));
+        QMessageBox::warning(parent_, tr("Not exported"), tr("Could not write the picture %1.").arg(path));
 }
 
 void TeachingDocks::exportSequence(bool video) {
     const auto s = latest();
     if (video && Exporter::ffmpeg().isEmpty()) {
-        QMessageBox::information(window_, tr("Export a video"), Exporter::ffmpegMissing());
+        QMessageBox::information(parent_, tr("Export a video"), Exporter::ffmpegMissing());
         return;
     }
     const double head = s ? s->headTime : 0;
-    const double end = head > 0 ? head : window_->document()->scene().duration;
+    const double end = head > 0 ? head : doc_->scene().duration;
     SequenceDialog dialog(video ? SequenceDialog::Kind::Video : SequenceDialog::Kind::Pictures, 0, end,
-                          std::max(end, window_->document()->scene().duration), window_);
+                          std::max(end, doc_->scene().duration), parent_);
     if (dialog.exec() != QDialog::Accepted) return;
     SequenceRequest r = dialog.request();
     r.look = sideView_->options();
-    QProgressDialog progress(tr("Drawing the pictures..."), tr("Cancel"), 0, Exporter::frameCount(r.from, r.to, r.fps), window_);
+    QProgressDialog progress(tr("Drawing the pictures..."), tr("Cancel"), 0, Exporter::frameCount(r.from, r.to, r.fps), parent_);
     progress.setWindowModality(Qt::WindowModal);
     r.progress = [&progress](int done, int) {
         progress.setValue(done);
@@ -193,31 +175,31 @@ void TeachingDocks::exportSequence(bool video) {
         return !progress.wasCanceled();
     };
     // The run as recorded, with the user's drags: the pictures show what was on screen.
-    const jl::Scene scene = s && s->recorded ? *s->recorded : window_->document()->scene();
+    const jl::Scene scene = s && s->recorded ? *s->recorded : doc_->scene();
     const ExportResult result = video ? Exporter::video(scene, r, dialog.target()) : Exporter::imageSequence(scene, r);
     progress.reset();
-    if (!result.ok) QMessageBox::warning(window_, tr("Not exported"), result.error);
+    if (!result.ok) QMessageBox::warning(parent_, tr("Not exported"), result.error);
     else say(tr("Exported %n file(s).", nullptr, int(result.files.size())));
 }
 
 void TeachingDocks::exportTables() {
-    const QString dir = QFileDialog::getExistingDirectory(window_, tr("Folder for poses.csv, energy.csv and events.csv"));
+    const QString dir = QFileDialog::getExistingDirectory(parent_, tr("Folder for poses.csv, energy.csv and events.csv"));
     if (dir.isEmpty()) return;
     const auto s = latest();
     // Every frame of the recorded run, as the timeline has them.
-    const jl::Scene scene = s && s->recorded ? *s->recorded : window_->document()->scene();
+    const jl::Scene scene = s && s->recorded ? *s->recorded : doc_->scene();
     const double end = s && s->headTime > 0 ? s->headTime : scene.duration;
     const ExportResult result = Exporter::tables(scene, 0, end, scene.solver.frameInterval, dir);
-    if (!result.ok) QMessageBox::warning(window_, tr("Not exported"), result.error);
+    if (!result.ok) QMessageBox::warning(parent_, tr("Not exported"), result.error);
     else say(tr("Wrote %1.").arg(result.files.join(", ")));
 }
 
 void TeachingDocks::exportEvents() {
     const auto s = latest();
-    const QString path = QFileDialog::getSaveFileName(window_, tr("Event log as CSV"), "events.csv", tr("CSV table (*.csv)"));
+    const QString path = QFileDialog::getSaveFileName(parent_, tr("Event log as CSV"), "events.csv", tr("CSV table (*.csv)"));
     if (path.isEmpty()) return;
     const ExportResult result = Exporter::eventsCsv(s && s->events ? *s->events : std::vector<jl::Event>{}, path);
-    if (!result.ok) QMessageBox::warning(window_, tr("Not exported"), result.error);
+    if (!result.ok) QMessageBox::warning(parent_, tr("Not exported"), result.error);
 }
 
 }  // namespace jl::ui

@@ -1,6 +1,7 @@
-// What the teaching tools add to the main window, in one place: the side
-// view, plots and lesson docks, the Lessons and Teach menus and the exports,
-// fed from the simulation's status and the open document.
+// The teaching tools in one place: the side view, plots and lesson docks, the
+// Lessons and Teach menus and the exports, fed from the open document and the
+// simulation's status. They know the document and the controller, never the
+// window: the window places the docks and menus they make.
 #pragma once
 
 #include "ui/sim_status.h"
@@ -12,35 +13,48 @@
 
 class QAction;
 class QDockWidget;
+class QMenu;
+class QWidget;
 
 namespace jl::ui {
 
+class Document;
 class LessonPanel;
-class MainWindow;
 class Pacing;
-class PresentationMode;
 class RunPlots;
 class SideView;
+class SimController;
 
 class TeachingDocks : public QObject {
     Q_OBJECT
 public:
-    // Call once the window has its docks and menus, before it restores its
-    // saved layout (so the new docks are restored too).
-    explicit TeachingDocks(MainWindow* window);
+    // `parent` owns the docks and menus and is the parent of the dialogs.
+    TeachingDocks(Document* doc, SimController* sim, QWidget* parent);
+
+    QDockWidget* sideViewDock() const { return sideViewDock_; }
+    QDockWidget* plotsDock() const { return plotsDock_; }
+    QDockWidget* lessonDock() const { return lessonDock_; }
+    QMenu* lessonsMenu() const { return lessonsMenu_; }
+    QMenu* teachMenu() const { return teachMenu_; }
+    // Checkable; the window connects it to its presentation mode.
+    QAction* presentationAction() const { return presentationAction_; }
 
     SideView* sideView() const { return sideView_; }
     RunPlots* plots() const { return plots_; }
     LessonPanel* lessonPanel() const { return lessonPanel_; }
     Pacing* pacing() const { return pacing_; }
-    PresentationMode* presentation() const { return presentation_; }
+
+    // Large type and lines, for a projector.
+    void setLarge(bool on);
 
 signals:
     // A lesson was chosen: the window asks about unsaved changes, then opens it.
     void lessonRequested(const QString& path);
+    // A short message for the status bar.
+    void message(const QString& text);
 
 private:
-    QDockWidget* dock(const QString& title, const QString& name, QWidget* w, Qt::DockWidgetArea area);
+    QDockWidget* dock(const QString& title, const QString& name, QWidget* w);
     void createMenus();
     void onStatus(std::shared_ptr<const jl::ui::SimStatus> s);
     void onSceneChanged();
@@ -53,13 +67,20 @@ private:
     void say(const QString& text);
     std::shared_ptr<const SimStatus> latest() const;
 
-    MainWindow* window_;
+    Document* doc_;
+    SimController* sim_;
+    QWidget* parent_;
     SideView* sideView_;
     RunPlots* plots_;
     LessonPanel* lessonPanel_;
     Pacing* pacing_;
-    PresentationMode* presentation_;
+    QDockWidget* sideViewDock_ = nullptr;
+    QDockWidget* plotsDock_ = nullptr;
     QDockWidget* lessonDock_ = nullptr;
+    QMenu* lessonsMenu_ = nullptr;
+    QMenu* teachMenu_ = nullptr;
+    QAction* presentationAction_ = nullptr;
+    bool large_ = false;
     QAction* blockNumbers_ = nullptr;
     QAction* cornerNumbers_ = nullptr;
     QAction* arrows_ = nullptr;

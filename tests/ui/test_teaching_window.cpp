@@ -30,7 +30,7 @@ jl::Scene classic() {
 
 struct Fixture {
     MainWindow window{jl::test::quietWindow()};
-    TeachingDocks& teaching = *window.findChild<TeachingDocks*>("teaching");
+    TeachingDocks& teaching = *window.teaching();
     SimController* sim = window.controller();
     Fixture() {
         window.resize(1400, 950);
@@ -98,7 +98,7 @@ private slots:
 
     void presentationModeHidesTheChromeAndComesBack() {
         Fixture f;
-        PresentationMode* p = f.teaching.presentation();
+        PresentationMode* p = f.window.presentation();
         auto* ladderDock = f.window.findChild<QDockWidget*>("ladderDock");
         auto* sideDock = f.window.findChild<QDockWidget*>("sideViewDock");
         QVERIFY(f.window.menuBar()->isVisible());
