@@ -406,13 +406,4 @@ void DesignMap::showEvent(QShowEvent* e) {
     if (!running_) showMap();
 }
 
-DesignMap* showDesignMap(QWidget* window, Document* doc) {
-    auto* map = window->findChild<DesignMap*>("designMap");
-    if (!map) map = new DesignMap(doc, window);
-    map->show();
-    map->raise();
-    map->activateWindow();
-    return map;
-}
-
 }  // namespace jl::ui

@@ -107,7 +107,4 @@ private:
     QFutureWatcher<jl::RippleReach> watcher_;
 };
 
-// Shows the window's design map, made on first use (kept, with its cache).
-DesignMap* showDesignMap(QWidget* window, Document* doc);
-
 }  // namespace jl::ui

@@ -160,7 +160,7 @@ void MainWindow::createMenus() {
     QMenu* sim = menuBar()->addMenu(tr("&Simulation"));
     sim->addActions({playAct_, stepAct_, backAct_, restartAct_});
     sim->addSeparator();
-    sim->addAction(tr("&Design map..."), this, [this] { showDesignMap(this, doc_); })->setObjectName("designMapAction");
+    sim->addAction(tr("&Design map..."), this, [this] { showDesignMap(); })->setObjectName("designMapAction");
     viewMenu_ = menuBar()->addMenu(tr("&View"));
     viewMenu_->addActions({resetViewAct_, frameAct_, walkAct_});
     viewMenu_->addSeparator();
@@ -250,7 +250,7 @@ void MainWindow::createDocks() {
         return d;
     };
     ladderPanel_ = new LadderPanel(doc_, this);
-    connect(ladderPanel_, &LadderPanel::designMapRequested, this, [this] { showDesignMap(this, doc_); });
+    connect(ladderPanel_, &LadderPanel::designMapRequested, this, [this] { showDesignMap(); });
     simulationPanel_ = new SimulationPanel(doc_, this);
     scriptPanel_ = new ScriptPanel(doc_, this);
     eventsPanel_ = new EventsPanel(this);
@@ -265,6 +265,14 @@ void MainWindow::createDocks() {
     // The event log grows while the script stays short: give the log the room.
     resizeDocks({scriptDock, eventsDock}, {200, 520}, Qt::Vertical);
     resizeDocks({scriptDock}, {380}, Qt::Horizontal);
+}
+
+// One design map per window, kept when closed: reopening shows its last map.
+void MainWindow::showDesignMap() {
+    if (!designMap_) designMap_ = new DesignMap(doc_, this);
+    designMap_->show();
+    designMap_->raise();
+    designMap_->activateWindow();
 }
 
 // The teaching tools make their docks and menus; the window places them.

@@ -17,6 +17,7 @@ class QSlider;
 
 namespace jl::ui {
 
+class DesignMap;
 class EventsPanel;
 class LadderPanel;
 class LadderView;
@@ -62,6 +63,7 @@ private:
     void createToolBar();
     void createDocks();
     void createTeaching();
+    void showDesignMap();
     void createStatusBar();
     void connectView();
     void showFailure(const QString& failure);
@@ -101,6 +103,7 @@ private:
     TeachingDocks* teaching_ = nullptr;
     PresentationMode* presentation_ = nullptr;
     QMenu* helpMenu_ = nullptr;
+    DesignMap* designMap_ = nullptr;
     QMenu* recentMenu_ = nullptr;
     QMenu* viewMenu_ = nullptr;
     QSlider* speedSlider_ = nullptr;
