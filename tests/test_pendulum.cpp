@@ -5,11 +5,14 @@
 #include "jl/engine/motion.h"
 #include "jl/engine/world.h"
 #include "jl/reference/elliptic.h"
+#include "jl/scene/scene_io.h"
+#include "jl/sim/recording.h"
 
 #include <QtTest>
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 using namespace jl;
 
@@ -184,6 +187,48 @@ private slots:
         const double relative = std::abs(p.swing() - theta0) / theta0;
         qInfo("adaptive: relative error %.3e in %d steps", relative, steps);
         QVERIFY2(relative < 1e-9, qPrintable(QString("relative error %1 in %2 steps").arg(relative).arg(steps)));
+    }
+
+    // Frames at exact times, read off the steps' dense output: the example
+    // pendulum (30 degrees, the adaptive integrator) recorded every eighth of
+    // its exact period has a frame at exactly each multiple, passing the
+    // bottom at 1/4 and 3/4 and at its extremes at 1/2 and 1; and asking for
+    // frames leaves the run itself as it was, bit for bit.
+    void framesAtExactTimesFromTheDenseOutput() {
+        struct Frames : RecordTarget {
+            std::vector<Frame> kept;
+            bool frame(const Frame& f) override {
+                kept.push_back(f);
+                return true;
+            }
+            bool event(const Event&) override { return true; }
+        };
+        const SceneLoad load = loadScene(std::string(JL_SOURCE_DIR) + "/examples/pendulum.yaml");
+        QVERIFY(load.scene);
+        const double m = rho * L * T * W, r = std::hypot(L, T) / 2, theta0 = std::numbers::pi / 6;
+        const double period = pendulumPeriod(m * (L * L + T * T) / 3, m, g, r, theta0);
+        const double every = period / 8, rest = -std::atan(T / L);
+
+        auto withFrames = Simulation::build(*load.scene).simulation;
+        Frames frames;
+        const Recording a = record(*withFrames, 2 * period, every, &frames);
+        QVERIFY(a.complete());
+        QCOMPARE(int(frames.kept.size()), 17);
+        for (int k = 0; k <= 16; ++k) {
+            const Frame& f = frames.kept[size_t(k)];
+            QCOMPARE(f.time, k * every);
+            const double swing = f.poses[0].angle - rest;
+            const double expected = k % 4 == 0 ? (k % 8 == 0 ? theta0 : -theta0) : k % 2 == 0 ? 0.0 : NAN;
+            if (!std::isnan(expected)) QVERIFY2(std::abs(swing - expected) < 1e-7, qPrintable(QString("k = %1: %2").arg(k).arg(swing)));
+        }
+        // The grid times fall inside steps, not on their ends: they were read off.
+        QVERIFY(a.steps > 40);
+
+        auto without = Simulation::build(*load.scene).simulation;
+        const Recording b = record(*without, 2 * period, 0, nullptr);
+        QCOMPARE(b.steps, a.steps);
+        QCOMPARE(without->frame().poses[0].angle, withFrames->frame().poses[0].angle);
+        QCOMPARE(without->frame().poses[0].position, withFrames->frame().poses[0].position);
     }
 };
 

@@ -13,10 +13,6 @@ void account(Recording& r, const Frame& f) {
     r.energyEnd = f.energy.total();
 }
 
-// The first multiple of `every` after t (a step may pass several): computed,
-// not counted up to, so that a step far longer than `every` costs nothing.
-double nextMultiple(double t, double every) { return every * (std::floor((t + 1e-12) / every) + 1); }
-
 }  // namespace
 
 Recording record(Simulation& sim, double until, double every, RecordTarget* target, const std::function<int()>& interruption) {
@@ -32,23 +28,32 @@ Recording record(Simulation& sim, double until, double every, RecordTarget* targ
     r.energyStart = first.energy.total();
     account(r, first);
     r.targetFailed = r.targetFailed || (target && !target->frame(first));
-    double nextFrame = every;
+    // Frames at exactly the multiples of `every`: inside a step from its dense
+    // output, at a step's end when it ends on one (jl/sim/simulation.h).
+    const double grid = sim.frameGrid();
+    sim.setFrameGrid(every > 0 ? every : 0);
     const auto start = std::chrono::steady_clock::now();
     while (!r.targetFailed && sim.time() < until && sim.failure().empty()) {
         if (interruption && (r.interrupted = interruption())) break;
         if (!sim.stepOnceUpTo(until)) break;  // the run ends at exactly `until`
         handOn(sim.takeEvents());
         r.worstResidual = std::max(r.worstResidual, sim.lastResidual());
-        const bool due = every > 0 && sim.time() >= nextFrame - 1e-12;
-        if (!due && sim.time() < until) continue;
-        const Frame f = sim.frame();
+        for (const Frame& f : sim.takeGridFrames()) {
+            account(r, f);
+            r.targetFailed = r.targetFailed || (target && !target->frame(f));
+        }
+        const double k = every > 0 ? std::round(sim.time() / every) : 0;
+        const bool onGrid = every > 0 && std::abs(sim.time() - k * every) <= 1e-9 * every;
+        if (!onGrid && sim.time() < until) continue;
+        Frame f = sim.frame();
         handOn(f.events);
         account(r, f);
-        if (due) {
+        if (onGrid) {
+            f.time = k * every;  // within rounding of it: the grid's time, exactly
             r.targetFailed = r.targetFailed || (target && !target->frame(f));
-            nextFrame = nextMultiple(sim.time(), every);
         }
     }
+    sim.setFrameGrid(grid);
     const Frame last = sim.frame();
     r.failure = last.failure;
     r.time = sim.time();

@@ -57,6 +57,61 @@ bool Simulation::rerunStep(double h) {
     return advanceAndProject(world_, dynamics_, stepper_, t_, h, ledger_, scene_.solver.projectionTolerance, true).ok();
 }
 
+// The frames of the grid strictly inside the step just taken (from t_, of
+// length `taken`, not yet resolved: the world holds its end, in the same
+// structure as its start), read off the quintic Hermite interpolant of the
+// step; past the instants already emitted. Everything the step computes
+// after this is put back as it was, so frames never change the run: the
+// dynamics' last evaluation (its pin forces choose the next automatic step)
+// and the accelerations. The energy books between the ends are cubic Hermite
+// in time, from their values and rates (the powers) at both ends.
+void Simulation::emitGridFrames(double taken) {
+    if (!(gridEvery_ > 0)) return;
+    const double t0 = t_, t1 = t_ + taken;
+    const double eps = 1e-9 * gridEvery_;
+    double k = std::floor(std::max(t0, gridDoneUpTo_) / gridEvery_) + 1;
+    if (k * gridEvery_ <= std::max(t0, gridDoneUpTo_) + eps) k += 1;
+    if (!(k * gridEvery_ < t1 - eps)) return;
+    const Dynamics::Last dynamicsAtEnd = dynamics_.last();
+    const Eigen::VectorXd q1 = world_.q, v1 = world_.v, a1saved = world_.a;
+    const Ledger ledgerAtEnd = ledger_;
+    const Powers p1 = dynamics_.evaluate(world_, t1);
+    interpolant_.setEnd(world_.q, world_.v, world_.a);
+    world_.q = stepStartQ_;
+    world_.v = stepStartV_;
+    const Powers p0 = dynamics_.evaluate(world_, t0);
+    interpolant_.setStart(taken, world_.q, world_.v, world_.a);
+    // Cubic Hermite in time from the books and their rates at both ends.
+    const auto books = [taken](double s, double b0, double r0, double b1, double r1) {
+        const double s2 = s * s, s3 = s2 * s;
+        return (2 * s3 - 3 * s2 + 1) * b0 + (s3 - 2 * s2 + s) * taken * r0 + (-2 * s3 + 3 * s2) * b1 + (s3 - s2) * taken * r1;
+    };
+    for (; k * gridEvery_ < t1 - eps; k += 1) {
+        const double t = k * gridEvery_;
+        const double s = (t - t0) / taken;
+        interpolant_.at(t - t0, world_.q, world_.v);
+        world_.updateKinematics(t);
+        const Ledger& l0 = stepStartLedger_;
+        ledger_.held = books(s, l0.held, p0.held, ledgerAtEnd.held, p1.held);
+        ledger_.user = books(s, l0.user, p0.user, ledgerAtEnd.user, p1.user);
+        ledger_.damping = books(s, l0.damping, p0.damping, ledgerAtEnd.damping, p1.damping);
+        // The events stay pending: they reach the caller in order, with the
+        // frames at the ends of steps (takeEvents, frame).
+        const double now = t_;
+        std::vector<Event> pending = std::exchange(pending_, {});
+        t_ = t;
+        gridFrames_.push_back(frame());
+        t_ = now;
+        pending_ = std::move(pending);
+        gridDoneUpTo_ = t;
+    }
+    world_.q = q1;
+    world_.v = v1;
+    world_.a = a1saved;
+    ledger_ = ledgerAtEnd;
+    dynamics_.restoreLast(dynamicsAtEnd);
+}
+
 // The smallest event function in the state the world holds, at time t (an
 // event function is negative when its event has happened); `forces` gets
 // the smallest of the contact-force ones.
@@ -135,6 +190,8 @@ void Simulation::settleHolds(double limit) {
 Simulation::Trial Simulation::tryLettingGo(int j, double limit) {
     const std::shared_ptr<const Snapshot> before = snapshot();
     std::vector<Event> pending = std::exchange(pending_, {});
+    const size_t gridFrames = gridFrames_.size();
+    const double gridDoneUpTo = gridDoneUpTo_;
     const int drag = liveDrag_;
     trial_ = true;
     ladder_->letGo(j);
@@ -152,6 +209,8 @@ Simulation::Trial Simulation::tryLettingGo(int j, double limit) {
     }
     restore(*before);
     pending_ = std::move(pending);
+    gridFrames_.resize(gridFrames);  // the trial's frames go with it
+    gridDoneUpTo_ = gridDoneUpTo;
     liveDrag_ = drag;
     return closed ? Trial::ClosedAgain : Trial::Undecided;
 }
@@ -266,6 +325,7 @@ bool Simulation::takeStep(double limit) {
                 if (!locateEvent(taken, fEnd, forces)) return false;
                 stepper_.setNextStep(next0 > 0 ? next0 : chosen);
             }
+            emitGridFrames(taken);
             std::vector<Event> happened = ladder_->resolve(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
             if (happened.empty() && taken < m.step.taken) {
                 // The located instant asked for nothing after all (a function
@@ -275,6 +335,7 @@ bool Simulation::takeStep(double limit) {
                 m = advanceAndProject(world_, dynamics_, stepper_, t_, m.step.taken, ledger_, solver.projectionTolerance, true);
                 taken = m.step.taken;
                 ++stats_.spuriousEvents;
+                emitGridFrames(taken);
                 happened = ladder_->resolve(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
             }
             for (Event& e : happened) record(e);
@@ -287,8 +348,12 @@ bool Simulation::takeStep(double limit) {
                 fail("an impact produced a non-finite state");
                 return false;
             }
+        } else {
+            emitGridFrames(taken);
         }
         ladder_->updateAngles(world_);
+    } else {
+        emitGridFrames(taken);
     }
     t_ = (lands && taken == h) ? scheduled : t_ + taken;
     ++stats_.steps;

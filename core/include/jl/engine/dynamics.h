@@ -29,6 +29,16 @@ public:
     // Applied (non-constraint) forces of the last evaluation, 3 per body.
     const Eigen::VectorXd& appliedForces() const { return force_; }
     PinSolver& solver() { return solver_; }
+    // What the last evaluation left (applied and pin forces), to put back
+    // after evaluations that must leave no trace (frames read off a step).
+    struct Last {
+        Eigen::VectorXd force, lambda;
+    };
+    Last last() const { return {force_, lambda_}; }
+    void restoreLast(const Last& l) {
+        force_ = l.force;
+        lambda_ = l.lambda;
+    }
     long long evaluations() const { return evaluations_; }
 
 private:

@@ -1,6 +1,6 @@
 // A run recorded from start to end: the frames an export or a report wants
-// (one at t = 0, then one at the first step at or after each multiple of the
-// frame interval) and every event, handed on as the run produces them so that
+// (one at t = 0, then one at exactly each multiple of the frame interval,
+// read off the steps' dense output) and every event, handed on as the run produces them so that
 // memory does not grow with the length of the run; and what the run was like
 // (energy books, pin gaps, steps, why it ended). The command line's run and
 // export and the desktop program's table export all record this way.
@@ -35,9 +35,9 @@ struct Recording {
 };
 
 // Runs `sim` to exactly `until` (the last step shortened to land on it),
-// handing every event to `target` and a frame at t = 0 and then at the first
-// step at or after each multiple of `every` seconds (energy books checked on
-// each), and keeping the largest pin gap after every step. Ends early on a
+// handing every event to `target` and a frame at t = 0 and then at exactly
+// each multiple of `every` seconds up to `until` (energy books checked on
+// each; the frame times never change the steps), and keeping the largest pin gap after every step. Ends early on a
 // failure, a refusal of the target or when `interruption` (asked between two
 // steps) returns non-zero.
 Recording record(Simulation& sim, double until, double every, RecordTarget* target,

@@ -66,6 +66,15 @@ public:
     bool stepOnceUpTo(double limit) { return takeStep(limit); }
     // Runs until an event happens or `limit` is reached; true if one happened.
     bool advanceToNextEvent(double limit);
+
+    // Frames at exact times without letting those times shape the steps:
+    // with a grid of `every` seconds, a step that passes a multiple of it
+    // (strictly inside the step) leaves the state at that multiple, read off
+    // the step's dense output, as a frame to take. A step that ends on a
+    // multiple leaves none: frame() is that frame. 0 turns the grid off.
+    void setFrameGrid(double every) { gridEvery_ = every; }
+    double frameGrid() const { return gridEvery_; }
+    std::vector<Frame> takeGridFrames() { return std::exchange(gridFrames_, {}); }
     const std::string& failure() const { return failure_; }
 
     // The mouse spring of docs/model.md section 11.3 on block `block`, grabbed at
@@ -107,6 +116,7 @@ private:
     double smallestEventFunction(double t, double* forces = nullptr);
     void restoreStepStart();
     bool rerunStep(double h);
+    void emitGridFrames(double taken);
     void record(const Event& e);
     bool booksDiverged() const;
     double booksImbalance(double total) const;
@@ -147,6 +157,9 @@ private:
     Ledger stepStartLedger_;
     std::vector<double> eventValues_;
     StepInterpolant interpolant_;
+    double gridEvery_ = 0;            // s, 0: no grid frames
+    double gridDoneUpTo_ = 0;         // s, grid frames are emitted after this time
+    std::vector<Frame> gridFrames_;   // emitted, not yet taken
 };
 
 }  // namespace jl
