@@ -106,6 +106,35 @@ private slots:
         QVERIFY2(r.worstBalance < 1e-8, qPrintable(QString::number(r.worstBalance)));
     }
 
+    // Blocks of unequal thickness (12 and 20 mm) lock end to end as a
+    // cantilever: the hinge's own corners stay together and the pair does not
+    // move sideways. The
+    // second corners of a lock (k^2) lie 12 and 20 mm across: they cannot
+    // coincide, so the pair must keep the hinge corners as its pin (in weld
+    // mode, the weld holds the angle; in merge mode, one body).
+    void unequalThicknessesLockWithoutShifting_data() { bothModelsOfRigidPairs(); }
+    void unequalThicknessesLockWithoutShifting() {
+        QFETCH(QString, pairs);
+        // Block 0 held flat, block 1 falls off its end and locks as a cantilever.
+        std::string yaml = flatHeldBlock(1.4, "0deg", pairs);
+        yaml.replace(yaml.find("  held: [0]\n"), 12, "  held: [0]\n  overrides: [{index: 1, thickness: 0.02}]\n");
+        auto sim = simulate(yaml);
+        QVERIFY(sim);
+        // Just after the lock (the first event).
+        QVERIFY(sim->advanceToNextEvent(1.0));
+        QVERIFY2(sim->failure().empty(), sim->failure().c_str());
+        QCOMPARE(sim->ladder()->hinge(1).mode, HingeMode::OpenLocked);
+        const Ladder& ladder = *sim->ladder();
+        const int k = ladder.hinge(1).corner;
+        const World& w = sim->world();
+        const double gap = (ladder.cornerWorld(w, 0, k) - ladder.cornerWorld(w, 1, k)).norm();
+        QVERIFY2(gap < 1e-9, qPrintable(QString("hinge corners %1 m apart").arg(gap)));
+        // Locked straight below block 0 (upright at the origin), not shifted.
+        const double across = (ladder.cornerWorld(w, 0, k ^ 2) - ladder.cornerWorld(w, 1, k ^ 2)).norm();
+        QVERIFY2(std::abs(across - 0.008) < 1e-9, qPrintable(QString("lock corners %1 m apart").arg(across)));
+        QVERIFY2(pinResidual(w) < 1e-9, qPrintable(QString::number(pinResidual(w))));
+    }
+
     // Block 1 hangs from the upright held block 0 by hinge 1 and is let go at
     // rest from fold angle phi0: a physical pendulum about the pin, hanging
     // at phi = a = atan(T/L), with omega0^2 = m g r / I_p = 3 g / (2 sqrt(L^2 + T^2)).

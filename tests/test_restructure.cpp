@@ -118,6 +118,34 @@ private slots:
         QVERIFY((s.w.partVelocity(s.b).linear - vb.linear).norm() < 1e-15);
     }
 
+    // Weld mode keeps, of the two shared points of a pair, the one where the
+    // bodies really meet: a 12 mm and a 20 mm thick box end to end meet at
+    // their hinge corners, while their far lock corners lie 8 mm apart. With
+    // the lock corners made first (lower ids), keeping the first pin would
+    // pull them together and shift the pair sideways by 8 mm.
+    void weldKeepsThePinWhereTheBodiesMeet() {
+        constexpr double L = 0.06, Ta = 0.012, Tb = 0.02;
+        World w;
+        w.setWeldRigidPairs(true);
+        w.gravity = Vec2::Zero();
+        const PartId a = w.addBox(0.02, Vec2(Ta, L), 0.045, Pose{Vec2(0, 0), 0});
+        // b hangs below a, end to end, their -x faces flush (the hinge side).
+        const Pose poseB{Vec2(-Ta / 2 + Tb / 2, -L), 0};
+        const PartId b = w.addBox(0.03, Vec2(Tb, L), 0.045, poseB);
+        const ParticleId lockA = w.addParticle(a, Vec2(Ta / 2, -L / 2));
+        const ParticleId lockB = w.addParticle(b, Vec2(Tb / 2, L / 2));
+        const ParticleId hingeA = w.addParticle(a, Vec2(-Ta / 2, -L / 2));
+        const ParticleId hingeB = w.addParticle(b, Vec2(-Tb / 2, L / 2));
+        QVERIFY(!w.combine(hingeA, hingeB));
+        QVERIFY(!w.combine(lockA, lockB));
+        QCOMPARE(int(w.pins().size()), 1);
+        QCOMPARE(int(w.welds().size()), 1);
+        QVERIFY2((w.partPose(b).position - poseB.position).norm() < 1e-12,
+                 qPrintable(QString("b moved by %1 m").arg((w.partPose(b).position - poseB.position).norm())));
+        QVERIFY(std::abs(w.partPose(b).angle) < 1e-12);
+        QVERIFY((w.pointPosition(a, Vec2(-Ta / 2, -L / 2)) - w.pointPosition(b, Vec2(-Tb / 2, L / 2))).norm() < 1e-12);
+    }
+
     void freeParticleJoinsABody() {
         World w;
         w.gravity = Vec2::Zero();

@@ -445,11 +445,17 @@ void World::rebuildPins() const {
 }
 
 // Weld mode: of the pins between one pair of bodies (two bodies that share
-// two particles), the first stays a pin and the second becomes a weld of
-// their relative angle, taken from where the two shared points lie on each
-// body; any further pin is redundant and dropped.
+// two particles), the one whose points lie closer stays a pin and the other
+// becomes a weld of their relative angle, taken from where the two shared
+// points lie on each body; any further pin is redundant and dropped.
 void World::weldSharedPairs() const {
     std::map<std::pair<int, int>, int> firstPin;
+    const auto gap = [this](const Pin& p) {
+        const auto at = [this](int b, const Vec2& local) {
+            return Vec2(q.segment<2>(3 * b) + rotate(q[3 * b + 2], local));
+        };
+        return (at(p.bodyA, p.localA) - at(p.bodyB, p.localB)).norm();
+    };
     std::vector<Pin> kept;
     std::vector<char> welded;
     kept.reserve(pins_.size());
@@ -464,10 +470,22 @@ void World::weldSharedPairs() const {
         }
         const int index = it->second;
         if (welded[size_t(index)]) continue;
+        // The pin stays where the bodies really meet: blocks of unequal
+        // thickness locked end to end share their hinge corners, while their
+        // other pair of corners lies apart by the difference (pulling those
+        // together would shift the pair sideways).
+        // Where both pairs meet (equal thicknesses), the first stays, so the
+        // choice never turns on rounding.
+        Pin candidate = p;
+        const double firstGap = gap(kept[size_t(index)]);
+        const Pin& kept0 = kept[size_t(index)];
+        const double spacing = ((p.bodyA == kept0.bodyA ? p.localA : p.localB) - kept0.localA).norm();
+        if (firstGap > 1e-6 * spacing && gap(p) < firstGap) std::swap(candidate, kept[size_t(index)]);
         const Pin& first = kept[size_t(index)];
-        const bool same = p.bodyA == first.bodyA;
-        const Vec2 dA = (same ? p.localA : p.localB) - first.localA;
-        const Vec2 dB = (same ? p.localB : p.localA) - first.localB;
+        const Pin& second = candidate;
+        const bool same = second.bodyA == first.bodyA;
+        const Vec2 dA = (same ? second.localA : second.localB) - first.localA;
+        const Vec2 dB = (same ? second.localB : second.localA) - first.localB;
         const double arm = dA.norm();
         if (!(arm > 1e-12)) continue;  // the same point twice: the pin holds it
         const double base = std::atan2(dB.y(), dB.x()) - std::atan2(dA.y(), dA.x());
