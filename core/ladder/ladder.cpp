@@ -62,6 +62,14 @@ Ladder::Ladder(World& w, const LadderSpec& spec) : spec_(spec), length_(spec.blo
     // A small fraction of the time a block takes to fall its own length.
     const double g = w.gravity.norm();
     zenoTime_ = g > 0 ? 0.0125 * std::sqrt(length_ / g) : 1e-3;
+    // The scales of the contact tests. Without gravity, 1 m/s^2 stands in
+    // for it (a scripted push sets the forces then).
+    double lightest = std::numeric_limits<double>::infinity();
+    for (const BlockSpec& b : blocks) lightest = std::min(lightest, massOf(b));
+    const double accel = g > 0 ? g : 1.0, timeScale = std::sqrt(length_ / accel);
+    forceTolerance_ = 1e-8 * lightest * accel;
+    impulseTolerance_ = 5e-8 * lightest * accel * timeScale;
+    restingRate_ = 1e-10 / timeScale;
     place(w);
     for (int j = 1; j < n; ++j) {
         Hinge& h = hinges_[size_t(j - 1)];
@@ -318,12 +326,12 @@ double Ladder::eventFunctions(const World& w, const Dynamics& d, std::vector<dou
         case HingeMode::Free:
         case HingeMode::Cut: continue;
         case HingeMode::OpenLocked:
-            g[0] = contact(w, d, j).normal + kForceTolerance;
+            g[0] = contact(w, d, j).normal + forceTolerance_;
             break;
         case HingeMode::Folded: {
             const HingeContact c = contact(w, d, j);
-            g[0] = c.nearEnd + kForceTolerance;
-            g[1] = c.farEnd + kForceTolerance;
+            g[0] = c.nearEnd + forceTolerance_;
+            g[1] = c.farEnd + forceTolerance_;
             break;
         }
         }

@@ -15,7 +15,6 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kTouch = Ladder::kTouchBand;  // rad: this close to a limit touches it
-constexpr double kResting = 1e-9;   // rad/s: slower than this is at rest
 
 }  // namespace
 
@@ -30,8 +29,8 @@ bool Ladder::touchingLimit(const World& w, int j, bool folded, bool resting) con
     const double rate = folded ? -foldRate(w, j) : foldRate(w, j);  // < 0 closing
     if (gap < -kTouch) return true;
     if (gap > kTouch) return false;
-    if (rate < -kResting) return true;
-    return resting && rate <= kResting && (folded ? -foldAcceleration(w, j) : foldAcceleration(w, j)) < 0;
+    if (rate < -restingRate_) return true;
+    return resting && rate <= restingRate_ && (folded ? -foldAcceleration(w, j) : foldAcceleration(w, j)) < 0;
 }
 
 bool Ladder::bothHeld(const World& w, int j) const {
@@ -93,7 +92,8 @@ void Ladder::renewHold(int j, double t) {
 std::optional<std::pair<int, EventKind>> Ladder::pullingContact(const World& w, const Dynamics& d, const Impact* impact,
                                                                 const std::vector<int>& keep) const {
     std::optional<std::pair<int, EventKind>> worst;
-    double most = -kForceTolerance;
+    const double tolerance = impact ? impulseTolerance_ : forceTolerance_;
+    double most = -tolerance;
     for (int j = 1; j < blockCount(); ++j) {
         const HingeMode mode = hinge(j).mode;
         if (mode != HingeMode::OpenLocked && mode != HingeMode::Folded) continue;
@@ -108,7 +108,7 @@ std::optional<std::pair<int, EventKind>> Ladder::pullingContact(const World& w, 
             if (c.nearEnd < most) {
                 most = c.nearEnd;
                 worst = {j, EventKind::FlipFlop};
-            } else if (c.farEnd < most && c.nearEnd >= -kForceTolerance) {
+            } else if (c.farEnd < most && c.nearEnd >= -tolerance) {
                 most = c.farEnd;
                 worst = {j, EventKind::Unfold};
             }

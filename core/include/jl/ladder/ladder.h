@@ -79,7 +79,14 @@ public:
     // projection's noise (1e-10 m over a 1 mm block): a hinge within this
     // band of a limit touches it, and one past it by more is past it.
     static constexpr double kTouchBand = 1e-7;  // rad
-    static constexpr double kForceTolerance = 1e-9;   // N (N s for impulses)
+    // A contact force (impulse) counts as pulling only past these, scaled
+    // to the ladder: forces to the weight of its lightest block, impulses to
+    // that weight times the time scale sqrt(L/g), and a hinge rests when it
+    // turns slower than a fraction of 1 / sqrt(L/g). A 1 mm and a 1 m block
+    // get the same relative thresholds (docs/model.md section 8.4).
+    double forceTolerance() const { return forceTolerance_; }      // N
+    double impulseTolerance() const { return impulseTolerance_; }  // N s
+    double restingRate() const { return restingRate_; }            // rad/s
     // Needs the accelerations of the state (Dynamics::evaluate done).
     // Returns the smallest of the contact-force functions (+inf if none).
     double eventFunctions(const World& w, const Dynamics& d, std::vector<double>& out) const;
@@ -176,6 +183,7 @@ private:
     std::vector<int> dampers_;
     double length_ = 0;
     double zenoTime_ = 1e-3;
+    double forceTolerance_ = 1e-9, impulseTolerance_ = 1e-9, restingRate_ = 1e-9;
     // phi = sense * (theta_j - theta_{j-1} + offset), per hinge and corner.
     struct FoldLinear {
         double sense = 1, offset = 0;
