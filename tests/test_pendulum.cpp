@@ -211,7 +211,7 @@ private slots:
 
         auto withFrames = Simulation::build(*load.scene).simulation;
         Frames frames;
-        const Recording a = record(*withFrames, 2 * period, every, &frames);
+        const Recording a = record(*withFrames, 2 * period, FrameGrid{0, every}, &frames);
         QVERIFY(a.complete());
         QCOMPARE(int(frames.kept.size()), 17);
         for (int k = 0; k <= 16; ++k) {
@@ -225,7 +225,7 @@ private slots:
         QVERIFY(a.steps > 40);
 
         auto without = Simulation::build(*load.scene).simulation;
-        const Recording b = record(*without, 2 * period, 0, nullptr);
+        const Recording b = record(*without, 2 * period, FrameGrid{}, nullptr);
         QCOMPARE(b.steps, a.steps);
         QCOMPARE(without->frame().poses[0].angle, withFrames->frame().poses[0].angle);
         QCOMPARE(without->frame().poses[0].position, withFrames->frame().poses[0].position);

@@ -59,6 +59,18 @@ int Exporter::frameCount(double from, double to, double fps) {
     return int(std::floor((to - from) * fps + 1e-9)) + 1;
 }
 
+namespace {
+
+// The frames of a recorded run from `from` on, handed to `each` as they come.
+struct FramesFrom : jl::RecordTarget {
+    double from = 0;
+    std::function<bool(jl::Frame&&)> each;
+    bool frame(const jl::Frame& f) override { return f.time < from - 1e-9 || each(jl::Frame(f)); }
+    bool event(const jl::Event&) override { return true; }
+};
+
+}  // namespace
+
 ExportResult Exporter::imageSequence(const jl::Scene& scene, const SequenceRequest& r) {
     const int total = frameCount(r.from, r.to, r.fps);
     if (total == 0) return failed(QObject::tr("The time range is empty: choose an end after the start and a positive frame rate."));
@@ -74,30 +86,13 @@ ExportResult Exporter::imageSequence(const jl::Scene& scene, const SequenceReque
     SideView view;
     view.setOptions(r.look);
     view.setScene(scene);
-    // Frame i of the range is the state after advancing to from + i / fps,
-    // as the timeline's frames are.
-    auto frameAt = [&](int i, jl::Frame& out) {
-        if (!sim.advanceTo(r.from + i / r.fps)) return false;
-        out = sim.frame();
-        return true;
-    };
-    std::vector<jl::Frame> frames;
-    const bool twoPasses = !r.painter && double(total) * sim.blockCount() <= kMaxPosesInMemory;
-    if (twoPasses) {
-        // First the whole range, so one framing holds every picture.
-        frames.resize(size_t(total));
-        QRectF all;
-        for (int i = 0; i < total; ++i) {
-            if (!frameAt(i, frames[size_t(i)])) return failed(QString::fromStdString(sim.failure()));
-            all = all.united(view.extentOf(frames[size_t(i)]));
-        }
-        view.setFraming(all.adjusted(-0.1 * all.width(), -0.06 * all.height(), 0.1 * all.width(), 0.06 * all.height()));
-    }
+    // Picture i shows the run at exactly from + i / fps, recorded as the
+    // table exports are (jl/sim/recording.h).
+    const jl::FrameGrid grid{r.from, 1 / r.fps};
     ExportResult result{true, {}, {}};
-    for (int i = 0; i < total; ++i) {
-        jl::Frame f;
-        if (twoPasses) f = std::move(frames[size_t(i)]);
-        else if (!frameAt(i, f)) return failed(QObject::tr("The run stopped at %1 s: %2").arg(sim.time()).arg(QString::fromStdString(sim.failure())));
+    int drawn = 0;
+    const auto draw = [&](const jl::Frame& f) {
+        if (drawn >= total) return true;
         QImage picture;
         if (r.painter) {
             picture = r.painter(f);
@@ -105,10 +100,37 @@ ExportResult Exporter::imageSequence(const jl::Scene& scene, const SequenceReque
             view.showFrame(f);
             picture = view.render(r.size);
         }
-        const QString path = QDir(r.directory).filePath(QString("frame_%1.png").arg(i, 5, 10, QChar('0')));
-        if (!picture.save(path, "PNG")) return failed(QObject::tr("Could not write the picture %1.").arg(path));
+        const QString path = QDir(r.directory).filePath(QString("frame_%1.png").arg(drawn, 5, 10, QChar('0')));
+        if (!picture.save(path, "PNG")) {
+            result = failed(QObject::tr("Could not write the picture %1.").arg(path));
+            return false;
+        }
         result.files << path;
-        if (r.progress && !r.progress(i + 1, total)) return failed(QObject::tr("Cancelled after %1 of %2 pictures.").arg(i + 1).arg(total));
+        ++drawn;
+        if (r.progress && !r.progress(drawn, total)) {
+            result = failed(QObject::tr("Cancelled after %1 of %2 pictures.").arg(drawn).arg(total));
+            return false;
+        }
+        return true;
+    };
+    FramesFrom target;
+    target.from = r.from;
+    std::vector<jl::Frame> frames;
+    const bool twoPasses = !r.painter && double(total) * sim.blockCount() <= kMaxPosesInMemory;
+    // Two passes when they fit in memory: first the whole range, so that one
+    // framing holds every picture; else each picture as its frame comes.
+    if (twoPasses) target.each = [&](jl::Frame&& f) { frames.push_back(std::move(f)); return true; };
+    else target.each = [&](jl::Frame&& f) { return draw(f); };
+    const jl::Recording run = jl::record(sim, r.to, grid, &target);
+    if (!result.ok) return result;
+    if (!run.failure.empty())
+        return failed(QObject::tr("The run stopped at %1 s: %2").arg(run.time).arg(QString::fromStdString(run.failure)));
+    if (twoPasses) {
+        QRectF all;
+        for (const jl::Frame& f : frames) all = all.united(view.extentOf(f));
+        view.setFraming(all.adjusted(-0.1 * all.width(), -0.06 * all.height(), 0.1 * all.width(), 0.06 * all.height()));
+        for (const jl::Frame& f : frames)
+            if (!draw(f)) return result;
     }
     return result;
 }
@@ -149,7 +171,7 @@ ExportResult Exporter::tables(const jl::Scene& scene, double from, double to, do
     // Recorded as the command line's export records it: the same rows.
     TableRows rows;
     rows.from = from;
-    const jl::Recording run = jl::record(*built.simulation, to, every, &rows);
+    const jl::Recording run = jl::record(*built.simulation, to, jl::FrameGrid{from, every}, &rows);
     if (!run.failure.empty())
         return failed(QObject::tr("The run stopped at %1 s: %2").arg(run.time).arg(QString::fromStdString(run.failure)));
     std::ostringstream poses, energy, log;

@@ -55,7 +55,7 @@ int exportFrames(const std::vector<std::string>& args) {
         return 1;
     }
     catchInterruptions();
-    const Recording r = record(*built.simulation, until, every, &outputs, interruption);
+    const Recording r = record(*built.simulation, until, FrameGrid{0, every}, &outputs, interruption);
     const bool written = outputs.finish(r.complete(), "jladder export");
     if (!r.failure.empty()) std::fprintf(stderr, "%s: the run failed %s\n", path.c_str(), r.failure.c_str());
     if (r.interrupted) endByInterruption();

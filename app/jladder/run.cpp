@@ -83,7 +83,7 @@ int run(const std::vector<std::string>& args) {
         return 1;
     }
     catchInterruptions();
-    const Recording r = record(*built.simulation, *until, every, &outputs, interruption);
+    const Recording r = record(*built.simulation, *until, FrameGrid{0, every}, &outputs, interruption);
     const bool written = outputs.finish(r.complete(), "jladder run");
     std::cout << summaryJson(r, path) << '\n';
     std::cout.flush();

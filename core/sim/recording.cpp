@@ -15,7 +15,7 @@ void account(Recording& r, const Frame& f) {
 
 }  // namespace
 
-Recording record(Simulation& sim, double until, double every, RecordTarget* target, const std::function<int()>& interruption) {
+Recording record(Simulation& sim, double until, const FrameGrid& grid, RecordTarget* target, const std::function<int()>& interruption) {
     Recording r;
     const auto handOn = [&](const std::vector<Event>& events) {
         for (const Event& e : events) {
@@ -28,10 +28,10 @@ Recording record(Simulation& sim, double until, double every, RecordTarget* targ
     r.energyStart = first.energy.total();
     account(r, first);
     r.targetFailed = r.targetFailed || (target && !target->frame(first));
-    // Frames at exactly the multiples of `every`: inside a step from its dense
+    // Frames at exactly the grid's instants: inside a step from its dense
     // output, at a step's end when it ends on one (jl/sim/simulation.h).
-    const double grid = sim.frameGrid();
-    sim.setFrameGrid(every > 0 ? every : 0);
+    const FrameGrid before = sim.frameGrid();
+    sim.setFrameGrid(grid);
     const auto start = std::chrono::steady_clock::now();
     while (!r.targetFailed && sim.time() < until && sim.failure().empty()) {
         if (interruption && (r.interrupted = interruption())) break;
@@ -42,18 +42,17 @@ Recording record(Simulation& sim, double until, double every, RecordTarget* targ
             account(r, f);
             r.targetFailed = r.targetFailed || (target && !target->frame(f));
         }
-        const double k = every > 0 ? std::round(sim.time() / every) : 0;
-        const bool onGrid = every > 0 && std::abs(sim.time() - k * every) <= 1e-9 * every;
+        const bool onGrid = grid.on(sim.time());
         if (!onGrid && sim.time() < until) continue;
         Frame f = sim.frame();
         handOn(f.events);
         account(r, f);
         if (onGrid) {
-            f.time = k * every;  // within rounding of it: the grid's time, exactly
+            f.time = grid.at(grid.nearest(sim.time()));  // within rounding of it: the grid's time, exactly
             r.targetFailed = r.targetFailed || (target && !target->frame(f));
         }
     }
-    sim.setFrameGrid(grid);
+    sim.setFrameGrid(before);
     const Frame last = sim.frame();
     r.failure = last.failure;
     r.time = sim.time();

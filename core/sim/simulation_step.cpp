@@ -66,12 +66,13 @@ bool Simulation::rerunStep(double h) {
 // and the accelerations. The energy books between the ends are cubic Hermite
 // in time, from their values and rates (the powers) at both ends.
 void Simulation::emitGridFrames(double taken) {
-    if (!(gridEvery_ > 0)) return;
+    if (!(grid_.every > 0)) return;
     const double t0 = t_, t1 = t_ + taken;
-    const double eps = 1e-9 * gridEvery_;
-    double k = std::floor(std::max(t0, gridDoneUpTo_) / gridEvery_) + 1;
-    if (k * gridEvery_ <= std::max(t0, gridDoneUpTo_) + eps) k += 1;
-    if (!(k * gridEvery_ < t1 - eps)) return;
+    const double eps = 1e-9 * grid_.every;
+    const double after = std::max(t0, gridDoneUpTo_);
+    double k = std::floor((after - grid_.origin) / grid_.every) + 1;
+    if (grid_.at(k) <= after + eps) k += 1;
+    if (!(grid_.at(k) < t1 - eps)) return;
     const Dynamics::Last dynamicsAtEnd = dynamics_.last();
     const Eigen::VectorXd q1 = world_.q, v1 = world_.v, a1saved = world_.a;
     const Ledger ledgerAtEnd = ledger_;
@@ -86,8 +87,8 @@ void Simulation::emitGridFrames(double taken) {
         const double s2 = s * s, s3 = s2 * s;
         return (2 * s3 - 3 * s2 + 1) * b0 + (s3 - 2 * s2 + s) * taken * r0 + (-2 * s3 + 3 * s2) * b1 + (s3 - s2) * taken * r1;
     };
-    for (; k * gridEvery_ < t1 - eps; k += 1) {
-        const double t = k * gridEvery_;
+    for (; grid_.at(k) < t1 - eps; k += 1) {
+        const double t = grid_.at(k);
         const double s = (t - t0) / taken;
         interpolant_.at(t - t0, world_.q, world_.v);
         world_.updateKinematics(t);

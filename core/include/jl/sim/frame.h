@@ -4,6 +4,7 @@
 #include "jl/base/geometry.h"
 #include "jl/ladder/hinge_event.h"
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -33,6 +34,15 @@ struct SolverFrame {
     double residual = 0;           // m, largest pin gap after the last step
     int bodies = 0, pins = 0;      // unknowns in use (locked pairs are one body)
     double wallSeconds = 0;        // spent simulating so far
+};
+
+// Evenly spaced instants: origin + k every for every whole k (s).
+struct FrameGrid {
+    double origin = 0, every = 0;  // every = 0: no instants
+    double at(double k) const { return origin + k * every; }
+    // The nearest instant's k, and whether t is that instant to within rounding.
+    double nearest(double t) const { return std::round((t - origin) / every); }
+    bool on(double t) const { return every > 0 && std::abs(t - at(nearest(t))) <= 1e-9 * every; }
 };
 
 struct Frame {

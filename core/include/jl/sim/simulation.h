@@ -68,12 +68,13 @@ public:
     bool advanceToNextEvent(double limit);
 
     // Frames at exact times without letting those times shape the steps:
-    // with a grid of `every` seconds, a step that passes a multiple of it
-    // (strictly inside the step) leaves the state at that multiple, read off
-    // the step's dense output, as a frame to take. A step that ends on a
-    // multiple leaves none: frame() is that frame. 0 turns the grid off.
-    void setFrameGrid(double every) { gridEvery_ = every; }
-    double frameGrid() const { return gridEvery_; }
+    // with a grid (grid.origin + k grid.every for every whole k), a step that
+    // passes a time of the grid (strictly inside the step) leaves the state
+    // at that time, read off the step's dense output, as a frame to take. A
+    // step that ends on a grid time leaves none: frame() is that frame. A
+    // grid with every = 0 is off.
+    void setFrameGrid(const FrameGrid& grid) { grid_ = grid; }
+    const FrameGrid& frameGrid() const { return grid_; }
     std::vector<Frame> takeGridFrames() { return std::exchange(gridFrames_, {}); }
     const std::string& failure() const { return failure_; }
 
@@ -157,7 +158,7 @@ private:
     Ledger stepStartLedger_;
     std::vector<double> eventValues_;
     StepInterpolant interpolant_;
-    double gridEvery_ = 0;            // s, 0: no grid frames
+    FrameGrid grid_;
     double gridDoneUpTo_ = 0;         // s, grid frames are emitted after this time
     std::vector<Frame> gridFrames_;   // emitted, not yet taken
 };
