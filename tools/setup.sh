@@ -5,7 +5,7 @@ set -euo pipefail
 
 JL_PACKAGES=(build-essential cmake ninja-build qt6-base-dev qt6-3d-dev
   libqt6opengl6-dev qt6-charts-dev qt6-svg-dev libeigen3-dev libyaml-cpp-dev
-  libgl1-mesa-dev zlib1g-dev xvfb xauth)
+  libgl1-mesa-dev xvfb xauth)
 
 jl_missing_packages() {
   local missing=()

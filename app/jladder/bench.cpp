@@ -1,22 +1,10 @@
-// jladder bench: speed against error, measured and published. Runs every
-// study of bench_cases.h (and the peers if built in), writes CSV tables,
-// SVG and PNG charts and the report docs/performance.md.
-#include "app/jladder/bench_cases.h"
-#include "app/jladder/bench_chart.h"
-#include "app/jladder/bench_events.h"
-#include "app/jladder/bench_examples.h"
-#include "app/jladder/bench_models.h"
-#include "app/jladder/bench_peers.h"
-#include "app/jladder/bench_report.h"
-#include "app/jladder/bench_stability.h"
+// jladder bench: the command of the benchmark (bench/run.h): its options,
+// and the JSON line it ends with.
 #include "app/jladder/commands.h"
 #include "app/jladder/options.h"
+#include "bench/run.h"
 
-#include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <map>
 
 namespace jl::cli {
 
@@ -37,89 +25,12 @@ const char* kHelp =
     "directory) at its own settings for 3 s (quick: 1 s), and long-ladder.yaml\n"
     "with 1,000 blocks (not in --quick);\n"
     "and, if built with -DJL_BENCH_PEERS=ON, MuJoCo, Box2D and\n"
-    "Bullet on the same chains. Writes DIR/*.csv, DIR/*.svg, DIR/*.png\n"
+    "Bullet on the same chains. Writes DIR/*.csv, DIR/*.svg\n"
     "(default DIR: docs/bench) and FILE (default docs/performance.md).\n"
     "--quick: fewer sizes and steps; fits in CI (under a minute).\n"
     "--only stability|models|events|examples: that study alone; FILE (default\n"
     "DIR/stability.md, DIR/models.md, DIR/events.md or DIR/examples.md) gets\n"
     "its section only.\n";
-
-bool writeCsv(const std::vector<BenchRow>& rows, const std::filesystem::path& path) {
-    std::ofstream f(path);
-    f << "study,method,blocks,parameter,cost_cpu_s_per_sim_s,error,finished,note\n";
-    f.precision(6);
-    for (const BenchRow& r : rows)
-        f << r.study << ',' << r.method << ',' << r.blocks << ',' << r.parameter << ',' << r.cost << ',' << r.error << ','
-          << (r.finished ? 1 : 0) << ",\"" << r.note << "\"\n";
-    return bool(f);
-}
-
-bool writeEventCostCsv(const std::vector<EventCostRow>& rows, const std::filesystem::path& path) {
-    std::ofstream f(path);
-    f << "blocks,window_from_s,window_to_s,steps,mean_step_s,events,instants,kinds,window_cpu_s,repetitions,repeatable,"
-         "plain_step_s,plain_steps,plain_repetitions,plain_events,plain_step_cpu_s,event_cpu_s,cpu_per_event_s,"
-         "cpu_per_instant_s,event_share,plain_steps_per_event,turning_steps,turning_events,turning_step_cpu_s,"
-         "cpu_per_event_turning_baseline_s,eventful_steps,eventful_steps_cpu_s,cpu_per_event_in_eventful_steps_s,"
-         "failure\n";
-    f.precision(6);
-    for (const EventCostRow& r : rows)
-        f << r.blocks << ',' << r.from << ',' << r.to << ',' << r.steps << ',' << r.meanStep << ',' << r.events << ','
-          << r.instants << ",\"" << r.kinds << "\"," << r.runCpu << ',' << r.runRepetitions << ','
-          << (r.repeatable ? 1 : 0) << ',' << r.plainStep << ',' << r.plainSteps << ',' << r.plainRepetitions << ','
-          << r.plainEvents << ',' << r.plainStepCpu << ',' << r.runCpu - double(r.steps) * r.plainStepCpu << ','
-          << r.perEvent << ',' << r.perInstant << ',' << r.eventShare << ',' << r.perEvent / r.plainStepCpu << ','
-          << r.controlSteps << ',' << r.controlEvents << ',' << r.controlStepCpu << ',' << r.perEventControl << ','
-          << r.eventfulSteps << ',' << r.eventfulCpu << ',' << r.perEventInStep << ",\"" << r.failure << "\"\n";
-    return bool(f);
-}
-
-bool writeExamplesCsv(const ExamplesStudy& s, const std::filesystem::path& path) {
-    std::ofstream f(path);
-    f << "scene,blocks,asked_s,simulated_s,cpu_s,cpu_s_per_sim_s,faster_than_real_time,steps,integrator,adaptive,"
-         "tolerance,automatic_step,smallest_step_s,largest_step_s,step_halvings,hinge_events,failure\n";
-    f.precision(6);
-    for (const ExampleRow& r : s.rows)
-        f << '"' << r.scene << "\"," << r.blocks << ',' << r.asked << ',' << r.simulated << ',' << r.cpu << ','
-          << r.perSimulated() << ',' << (r.simulated > 0 && r.perSimulated() <= 1 ? 1 : 0) << ',' << r.steps << ",\""
-          << r.integrator << "\"," << (r.adaptive ? 1 : 0) << ',' << r.tolerance << ',' << (r.automaticStep ? 1 : 0)
-          << ',' << r.smallestStep << ',' << r.largestStep << ',' << r.stepHalvings << ',' << r.hingeEvents << ",\""
-          << r.failure << "\"\n";
-    return bool(f);
-}
-
-bool writeStabilityCsv(const StabilityStudy& s, const std::filesystem::path& path) {
-    std::ofstream f(path);
-    f << "blocks,omega_max_engine,omega_max_reference,omega_hand_upper,omega_hand_airy,lanczos_steps,ritz_residual,"
-         "rk4_dt_limit_predicted,symplectic_euler_dt_limit_predicted,dormand_prince45_dt_limit_predicted,horizon_s,"
-         "rk4_seeded_stays,rk4_seeded_grows,rk4_hanging_runs,rk4_hanging_fails,rk4_turned_runs,rk4_turned_fails,"
-         "hanging_cost,turned_cost,hand_tension_factor,peak_tension_factor,peak_tension_time,rk4_dt_limit_at_peak,"
-         "dopri_steps,dopri_rejected,dopri_mean_step,dopri_cost\n";
-    f.precision(8);
-    for (const StabilityRow& r : s.rows)
-        f << r.blocks << ',' << r.omegaMax << ',' << std::sqrt(r.referenceOmega2) << ',' << r.handUpper << ','
-          << r.handAiry << ',' << r.engine.iterations << ',' << r.engine.residual << ',' << r.rk4Limit << ','
-          << r.symplecticLimit << ',' << r.dopriLimit << ',' << r.horizon << ',' << r.seededPass << ','
-          << r.seededFail << ',' << r.hangingPass << ',' << r.hangingFail << ',' << r.turnedPass << ','
-          << r.turnedFail << ',' << r.hangingCost << ',' << r.turnedCost << ',' << r.handTension << ','
-          << r.peakTension << ',' << r.peakTime << ',' << r.turnedPeakLimit << ',' << r.dopriSteps << ','
-          << r.dopriRejected << ',' << r.dopriMeanStep << ',' << r.dopriCost << '\n';
-    return bool(f);
-}
-
-// One series per method: cost against error.
-Chart workPrecision(const std::string& title, const std::string& errorLabel, const std::vector<BenchRow>& rows) {
-    Chart c{title, "CPU seconds per simulated second", errorLabel, {}};
-    std::map<std::string, size_t> index;
-    for (const BenchRow& r : rows) {
-        if (!r.finished) continue;
-        if (!index.count(r.method)) {
-            index[r.method] = c.series.size();
-            c.series.push_back({r.method, {}, r.method.find("end-of-step") != std::string::npos});
-        }
-        c.series[index[r.method]].points.push_back({r.cost, r.error});
-    }
-    return c;
-}
 
 }  // namespace
 
@@ -137,111 +48,17 @@ int bench(const std::vector<std::string>& args) {
         std::fprintf(stderr, "jladder bench: %s\n", o.error.c_str());
         return 2;
     }
-    const bool onlyStability = only == "stability", onlyModels = only == "models", onlyEvents = only == "events";
-    const bool onlyExamples = only == "examples";
-    const std::filesystem::path examplesDir = o.get("--examples").value_or("examples");
-    BenchPlan plan;
-    plan.quick = o.has("--quick");
-    plan.minSeconds = plan.quick ? 0.005 : 0.05;
-    const std::filesystem::path out = o.get("--out").value_or("docs/bench");
-    const std::filesystem::path report =
-        o.get("--report").value_or(!only.empty() ? (out / (only + ".md")).string() : std::string("docs/performance.md"));
-    std::error_code ec;
-    std::filesystem::create_directories(out, ec);
-    if (!ec && report.has_parent_path()) std::filesystem::create_directories(report.parent_path(), ec);
-    if (ec) {
-        std::fprintf(stderr, "jladder bench: cannot create %s: %s\n", out.c_str(), ec.message().c_str());
-        return 1;
-    }
-
-    // The JSON line every form ends with.
-    auto finish = [&](bool ok) {
-        std::printf("{\"out\":%s,\"report\":%s,\"ok\":%s}\n", jsonString(out.string()).c_str(),
-                    jsonString(report.string()).c_str(), ok ? "true" : "false");
-        return ok ? 0 : 1;
-    };
-    if (onlyStability) {
-        std::fprintf(stderr, "stability limit\n");
-        const StabilityStudy study = stabilityStudy(plan);
-        return finish(writeStabilityCsv(study, out / "stability.csv") && writeStabilityReport(study, plan.quick, report));
-    }
-    if (onlyModels) {
-        std::fprintf(stderr, "rigid pairs: merged or welded\n");
-        const std::vector<BenchRow> rows = rigidPairModelStudy(plan);
-        return finish(writeCsv(rows, out / "models.csv") && writeModelsReport(rows, plan.quick, report));
-    }
-    if (onlyEvents) {
-        std::fprintf(stderr, "cost of an event\n");
-        const std::vector<EventCostRow> rows = eventCostStudy(plan);
-        return finish(writeEventCostCsv(rows, out / "events.csv") && writeEventCostReport(rows, plan.quick, report));
-    }
-
-    if (onlyExamples) {
-        std::fprintf(stderr, "examples at default settings\n");
-        const ExamplesStudy study = examplesStudy(plan, examplesDir);
-        return finish(writeExamplesCsv(study, out / "examples.csv") && writeExamplesReport(study, plan.quick, report) &&
-                      study.error.empty());
-    }
-
-    BenchResults results;
-    results.quick = plan.quick;
-    std::fprintf(stderr, "pendulum\n");
-    results.pendulum = pendulumStudy(plan);
-    const std::vector<int> chainSizes = plan.quick ? std::vector<int>{10, 100} : std::vector<int>{10, 100, 1000};
-    const std::vector<double> peerSteps = plan.quick ? std::vector<double>{1e-3, 1e-4} : std::vector<double>{1e-3, 5e-4, 2.5e-4, 1e-4};
-    for (int n : chainSizes) {
-        std::fprintf(stderr, "falling chain N=%d\n", n);
-        std::vector<Vec2> reference;
-        std::vector<BenchRow> rows = chainStudy(plan, n, n <= 100, reference);
-        for (const PeerRun& p : measurePeers(n, peerSteps, 0.5, reference, plan.minSeconds))
-            rows.push_back({"chain" + std::to_string(n), p.engine, n, p.step, p.cost, p.error, p.finished, ""});
-        results.chains[n] = rows;
-    }
-    std::fprintf(stderr, "ladder cascade\n");
-    results.ladder = ladderStudy(plan);
-    std::fprintf(stderr, "scaling\n");
-    results.scaling = scalingStudy(plan);
-    std::fprintf(stderr, "long ladder\n");
-    results.longLadder = longLadderStudy(plan);
-    std::fprintf(stderr, "stability limit\n");
-    results.stability = stabilityStudy(plan);
-    std::fprintf(stderr, "rigid pairs: merged or welded\n");
-    results.models = rigidPairModelStudy(plan);
-    std::fprintf(stderr, "cost of an event\n");
-    results.eventCost = eventCostStudy(plan);
-    std::fprintf(stderr, "examples at default settings\n");
-    results.examples = examplesStudy(plan, examplesDir);
-    results.peers = peerVersions();
-
-    bool ok = writeCsv(results.pendulum, out / "pendulum.csv") && writeCsv(results.ladder, out / "ladder.csv") &&
-              writeCsv(results.scaling, out / "scaling.csv") && writeCsv(results.longLadder, out / "long_ladder.csv") &&
-              writeStabilityCsv(results.stability, out / "stability.csv") && writeCsv(results.models, out / "models.csv") &&
-              writeEventCostCsv(results.eventCost, out / "events.csv") &&
-              writeExamplesCsv(results.examples, out / "examples.csv");
-    ok = writeChart(workPrecision("Physical pendulum, one exact period (theta0 = 2 rad)", "error (rad)", results.pendulum),
-                    out, "pendulum") && ok;
-    for (const auto& [n, rows] : results.chains) {
-        const std::string name = "chain" + std::to_string(n);
-        ok = writeCsv(rows, out / (name + ".csv")) && ok;
-        ok = writeChart(workPrecision("Falling chain, N = " + std::to_string(n) + ", t = 0.5 s",
-                                      "largest block-centre error (m)", rows),
-                        out, name) && ok;
-    }
-    ok = writeChart(workPrecision("Ladder cascade, 6 blocks, t = 1.2 s", "largest block-centre error (m)", results.ladder),
-                    out, "ladder") && ok;
-    Chart scaling{"Cost per block-step, falling chain (dt = 1 ms; the Euler methods 0.1 ms)", "blocks N",
-                  "ns per block-step (CPU)", {}};
-    std::map<std::string, size_t> index;
-    for (const BenchRow& r : results.scaling) {
-        if (!index.count(r.method)) {
-            index[r.method] = scaling.series.size();
-            scaling.series.push_back({r.method, {}, false});
-        }
-        scaling.series[index[r.method]].points.push_back({double(r.blocks), r.error});
-    }
-    ok = writeChart(scaling, out, "scaling") && ok;
-    ok = writeReport(results, out, report) && ok;
-    return finish(ok);
+    bench::BenchRequest request;
+    request.quick = o.has("--quick");
+    request.only = only;
+    request.out = o.get("--out").value_or("docs/bench");
+    request.report =
+        o.get("--report").value_or(!only.empty() ? (request.out / (only + ".md")).string() : std::string("docs/performance.md"));
+    request.examples = o.get("--examples").value_or("examples");
+    const bool ok = bench::runBench(request);
+    std::printf("{\"out\":%s,\"report\":%s,\"ok\":%s}\n", jsonString(request.out.string()).c_str(),
+                jsonString(request.report.string()).c_str(), ok ? "true" : "false");
+    return ok ? 0 : 1;
 }
 
 }  // namespace jl::cli

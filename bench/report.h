@@ -3,17 +3,17 @@
 // the numbers.
 #pragma once
 
-#include "app/jladder/bench_cases.h"
-#include "app/jladder/bench_events.h"
-#include "app/jladder/bench_examples.h"
-#include "app/jladder/bench_stability.h"
+#include "bench/cases.h"
+#include "bench/events.h"
+#include "bench/examples.h"
+#include "bench/stability.h"
 
 #include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
 
-namespace jl::cli {
+namespace jl::bench {
 
 struct BenchResults {
     bool quick = false;
@@ -36,4 +36,4 @@ bool writeEventCostReport(const std::vector<EventCostRow>& rows, bool quick, con
 // The section "Examples at default settings" alone (jladder bench --only examples).
 bool writeExamplesReport(const ExamplesStudy& s, bool quick, const std::filesystem::path& report);
 
-}  // namespace jl::cli
+}  // namespace jl::bench

@@ -1,12 +1,12 @@
-// Line charts with logarithmic axes for the benchmark report, drawn the same
-// way into SVG (text) and PNG (our own rasteriser, no plotting library).
+// Line charts with logarithmic axes for the benchmark report, as SVG (text,
+// shown by any browser and by the repository's Markdown viewer).
 #pragma once
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
-namespace jl::cli {
+namespace jl::bench {
 
 struct ChartSeries {
     std::string name;
@@ -19,7 +19,7 @@ struct Chart {
     std::vector<ChartSeries> series;
 };
 
-// Writes DIR/NAME.svg and DIR/NAME.png; false if a file could not be written.
+// Writes DIR/NAME.svg; false if it could not be written.
 bool writeChart(const Chart& chart, const std::filesystem::path& dir, const std::string& name);
 
-}  // namespace jl::cli
+}  // namespace jl::bench

@@ -1,4 +1,4 @@
-#include "app/jladder/bench_report.h"
+#include "bench/report.h"
 
 #include <algorithm>
 #include <chrono>
@@ -9,7 +9,7 @@
 #include <sstream>
 #include <thread>
 
-namespace jl::cli {
+namespace jl::bench {
 
 namespace {
 
@@ -536,16 +536,16 @@ bool writeReport(const BenchResults& r, const std::filesystem::path& plots, cons
        << "largest block-centre distance at t = 1.2 s from a Dormand-Prince run at tolerance 1e-12 with located events, "
        << "plus how many events happen in the reference order and their worst time error.\n\n";
 
-    md << "## Physical pendulum\n\n![pendulum](" << dir << "/pendulum.png)\n\n";
+    md << "## Physical pendulum\n\n![pendulum](" << dir << "/pendulum.svg)\n\n";
     table(md, r.pendulum, "step (s) / tolerance", "error");
     for (const auto& [n, rows] : r.chains) {
-        md << "## Falling chain, N = " << n << "\n\n![chain" << n << "](" << dir << "/chain" << n << ".png)\n\n";
+        md << "## Falling chain, N = " << n << "\n\n![chain" << n << "](" << dir << "/chain" << n << ".svg)\n\n";
         table(md, rows, "step (s) / tolerance", "error (m)");
     }
     md << "## Ladder cascade (6 blocks; the paper's way is explicit Euler with end-of-step events)\n\n![ladder](" << dir
-       << "/ladder.png)\n\n";
+       << "/ladder.svg)\n\n";
     table(md, r.ladder, "step (s) / tolerance", "error (m)");
-    md << "## Scaling: cost per block-step\n\n![scaling](" << dir << "/scaling.png)\n\n"
+    md << "## Scaling: cost per block-step\n\n![scaling](" << dir << "/scaling.svg)\n\n"
        << "| method | N | steps | ns per block-step | CPU s per simulated s |\n|---|---:|---:|---:|---:|\n";
     for (const BenchRow& s : r.scaling)
         md << "| " << s.method << " | " << s.blocks << " | " << s.note << " | " << num(s.error) << " | " << num(s.cost) << " |\n";
@@ -587,4 +587,4 @@ bool writeStabilityReport(const StabilityStudy& s, bool quick, const std::filesy
     return writeSection("stability", quick, report, [&](std::ostream& md) { stability(md, s, quick); });
 }
 
-}  // namespace jl::cli
+}  // namespace jl::bench

@@ -4,12 +4,12 @@
 // steps costs on the same ladder hanging at rest, per event.
 #pragma once
 
-#include "app/jladder/bench_cases.h"
+#include "bench/cases.h"
 
 #include <string>
 #include <vector>
 
-namespace jl::cli {
+namespace jl::bench {
 
 struct EventCostRow {
     int blocks = 0;
@@ -50,4 +50,4 @@ struct EventCostRow {
 
 std::vector<EventCostRow> eventCostStudy(const BenchPlan& plan);
 
-}  // namespace jl::cli
+}  // namespace jl::bench

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace jl::cli {
+namespace jl::bench {
 
 // One measured configuration. cost: CPU seconds of one thread per simulated
 // second; error: the study's error measure (see docs/performance.md).
@@ -44,4 +44,4 @@ std::vector<BenchRow> scalingStudy(const BenchPlan& plan);
 // A long ladder turned over with RK4 (real-time factor in the note).
 std::vector<BenchRow> longLadderStudy(const BenchPlan& plan);
 
-}  // namespace jl::cli
+}  // namespace jl::bench

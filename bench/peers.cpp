@@ -1,19 +1,19 @@
-#include "app/jladder/bench_peers.h"
+#include "bench/peers.h"
 
-#include "app/jladder/bench_clock.h"
+#include "bench/clock.h"
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
 
 #ifdef JL_BENCH_PEERS
-#include <box2d/box2d.h>
-#include <mujoco/mujoco.h>
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
-#include <btBulletDynamicsCommon.h>
 #include <LinearMath/btScalar.h>
+#include <box2d/box2d.h>
+#include <btBulletDynamicsCommon.h>
+#include <mujoco/mujoco.h>
 #endif
 
 #include <cstdio>
@@ -21,7 +21,7 @@
 #include <memory>
 #include <string>
 
-namespace jl::cli {
+namespace jl::bench {
 
 #ifdef JL_BENCH_PEERS
 
@@ -206,4 +206,4 @@ std::string peerVersions() { return "not measured: this build has JL_BENCH_PEERS
 
 #endif
 
-}  // namespace jl::cli
+}  // namespace jl::bench

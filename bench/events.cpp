@@ -1,6 +1,6 @@
-#include "app/jladder/bench_events.h"
+#include "bench/events.h"
 
-#include "app/jladder/bench_clock.h"
+#include "bench/clock.h"
 #include "jl/sim/simulation.h"
 
 #include <algorithm>
@@ -9,7 +9,7 @@
 #include <map>
 #include <memory>
 
-namespace jl::cli {
+namespace jl::bench {
 
 namespace {
 
@@ -219,4 +219,4 @@ std::vector<EventCostRow> eventCostStudy(const BenchPlan& plan) {
     return rows;
 }
 
-}  // namespace jl::cli
+}  // namespace jl::bench

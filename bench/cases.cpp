@@ -1,10 +1,11 @@
-#include "app/jladder/bench_cases.h"
+#include "bench/cases.h"
 
-#include "app/jladder/bench_clock.h"
+#include "bench/clock.h"
 #include "jl/engine/motion.h"
 #include "jl/reference/elliptic.h"
 #include "jl/reference/falling_chain.h"
 #include "jl/reference/reference_chain.h"
+#include "jl/scene/scene_fields.h"
 #include "jl/sim/simulation.h"
 
 #include <algorithm>
@@ -13,18 +14,20 @@
 #include <functional>
 #include <numbers>
 
-namespace jl::cli {
+namespace jl::bench {
 
 namespace {
 
+// Every integrator, by its word in scene files (jl/scene/scene_fields.h).
 struct Method {
     Integrator kind;
-    const char* name;
+    std::string name;
 };
-constexpr Method kMethods[] = {{Integrator::ExplicitEuler, "explicit_euler"},
-                               {Integrator::SymplecticEuler, "symplectic_euler"},
-                               {Integrator::RK4, "rk4"},
-                               {Integrator::DormandPrince45, "dormand_prince45"}};
+std::vector<Method> methods() {
+    std::vector<Method> out;
+    for (const Word<Integrator>& w : kIntegrators) out.push_back({w.value, std::string(w.word)});
+    return out;
+}
 
 bool adaptive(Integrator k) { return k == Integrator::DormandPrince45; }
 
@@ -91,7 +94,7 @@ std::vector<BenchRow> pendulumStudy(const BenchPlan& plan) {
     const std::vector<double> tolerances = plan.quick ? std::vector<double>{1e-4, 1e-8, 1e-12}
                                                       : std::vector<double>{1e-3, 1e-5, 1e-7, 1e-9, 1e-11, 1e-12};
     std::vector<BenchRow> rows;
-    for (const Method& m : kMethods) {
+    for (const Method& m : methods()) {
         std::vector<double> steps;
         for (double n : perPeriod) steps.push_back(period / n);
         for (double p : parameters(m.kind, steps, tolerances)) {
@@ -143,7 +146,7 @@ std::vector<BenchRow> chainStudy(const BenchPlan& plan, int n, bool independent,
     const std::vector<double> tolerances = plan.quick ? std::vector<double>{1e-5, 1e-9}
                                                       : std::vector<double>{1e-3, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13};
     std::vector<BenchRow> rows;
-    for (const Method& m : kMethods)
+    for (const Method& m : methods())
         for (double p : parameters(m.kind, steps, tolerances)) {
             BenchRow row{"chain" + std::to_string(n), m.name, n, p, 0, 0, true, ""};
             auto once = [&] {
@@ -212,17 +215,16 @@ std::vector<BenchRow> ladderStudy(const BenchPlan& plan) {
 
     struct Config {
         Integrator kind;
-        const char* name;
         std::vector<double> params;
     };
     const std::vector<Config> configs =
-        plan.quick ? std::vector<Config>{{Integrator::ExplicitEuler, "explicit_euler", {1e-4}},
-                                         {Integrator::RK4, "rk4", {1e-3}},
-                                         {Integrator::DormandPrince45, "dormand_prince45", {1e-7}}}
-                   : std::vector<Config>{{Integrator::ExplicitEuler, "explicit_euler", {1e-4, 3e-5, 1e-5}},
-                                         {Integrator::SymplecticEuler, "symplectic_euler", {1e-3, 3e-4, 1e-4, 3e-5}},
-                                         {Integrator::RK4, "rk4", {2e-3, 1e-3, 5e-4, 2e-4}},
-                                         {Integrator::DormandPrince45, "dormand_prince45", {1e-5, 1e-7, 1e-9, 1e-11}}};
+        plan.quick ? std::vector<Config>{{Integrator::ExplicitEuler, {1e-4}},
+                                         {Integrator::RK4, {1e-3}},
+                                         {Integrator::DormandPrince45, {1e-7}}}
+                   : std::vector<Config>{{Integrator::ExplicitEuler, {1e-4, 3e-5, 1e-5}},
+                                         {Integrator::SymplecticEuler, {1e-3, 3e-4, 1e-4, 3e-5}},
+                                         {Integrator::RK4, {2e-3, 1e-3, 5e-4, 2e-4}},
+                                         {Integrator::DormandPrince45, {1e-5, 1e-7, 1e-9, 1e-11}}};
     std::vector<BenchRow> rows;
     for (const Config& c : configs)
         for (EventPolicy policy : {EventPolicy::Located, EventPolicy::EndOfStep})
@@ -231,7 +233,7 @@ std::vector<BenchRow> ladderStudy(const BenchPlan& plan) {
                 s.solver.integrator = c.kind;
                 if (adaptive(c.kind)) s.solver.tolerance = p; else s.solver.step = p;
                 s.solver.events = policy;
-                const std::string method = std::string(c.name) + (policy == EventPolicy::Located ? " located" : " end-of-step");
+                const std::string method = std::string(integratorWord(c.kind)) + (policy == EventPolicy::Located ? " located" : " end-of-step");
                 BenchRow row{"ladder", method, blocks, p, 0, 0, true, ""};
                 CascadeResult result;
                 row.cost = timed(plan.minSeconds, [&] {
@@ -272,7 +274,7 @@ std::vector<BenchRow> scalingStudy(const BenchPlan& plan) {
                                               : std::vector<int>{10, 100, 1000, 10000, 100000};
     const double blockSteps = plan.quick ? 2e5 : 2e6;
     std::vector<BenchRow> rows;
-    for (const Method& m : kMethods)
+    for (const Method& m : methods())
         for (int n : sizes) {
             World w;
             buildFallingChain(w, n);
@@ -307,7 +309,7 @@ std::vector<BenchRow> scalingStudy(const BenchPlan& plan) {
             char note[96];
             std::snprintf(note, sizeof note, "%lld steps%s", taken, row.finished ? "" : ", stopped: a step failed");
             row.note = note;
-            std::fprintf(stderr, "  scaling %-18s N=%-7d %5lld steps  %8.1f ns/block-step\n", m.name, n, taken, row.error);
+            std::fprintf(stderr, "  scaling %-18s N=%-7d %5lld steps  %8.1f ns/block-step\n", m.name.c_str(), n, taken, row.error);
             rows.push_back(row);
         }
     return rows;
@@ -343,4 +345,4 @@ std::vector<BenchRow> longLadderStudy(const BenchPlan& plan) {
     return rows;
 }
 
-}  // namespace jl::cli
+}  // namespace jl::bench

@@ -1,6 +1,4 @@
-#include "app/jladder/bench_chart.h"
-
-#include "app/jladder/bench_png.h"
+#include "bench/chart.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,9 +6,13 @@
 #include <fstream>
 #include <sstream>
 
-namespace jl::cli {
+namespace jl::bench {
 
 namespace {
+
+struct Rgb {
+    unsigned char r = 0, g = 0, b = 0;
+};
 
 constexpr int kWidth = 860, kHeight = 520;
 constexpr double kLegend = 280;  // the legend's column at the right
@@ -56,9 +58,11 @@ std::pair<int, int> decades(const Chart& c, bool x) {
 // Text extents. The raster font is the wider of the two renderings (the SVG's
 // sans-serif runs about 0.55 em a character), so a layout that keeps the
 // raster text apart keeps the SVG text apart too.
-int rasterScale(int size) { return size >= kTitleSize ? 3 : 2; }
-double textWidth(const std::string& s, int size) { return Raster::textWidth(s, rasterScale(size)); }
-double textHeight(int size) { return 5.0 * rasterScale(size); }
+// How much room text takes in a sans-serif font, from the font size in px:
+// an average advance of 0.55 em, letters 0.75 em tall (the viewer's font
+// decides the rest; the layout keeps a margin for it).
+double textWidth(const std::string& s, int size) { return 0.55 * size * double(s.size()); }
+double textHeight(int size) { return 0.75 * size; }
 
 // Where everything goes: one row each for the title and the y-axis label
 // above the plot, the x tick labels and the x-axis label below it, the y
@@ -102,15 +106,24 @@ Layout layout(const Chart& c, std::pair<int, int> xs, std::pair<int, int> ys) {
     return l;
 }
 
-// Everything drawn, as calls on an abstract pen, so SVG and PNG agree.
-struct Pen {
-    virtual ~Pen() = default;
-    virtual void line(double x0, double y0, double x1, double y1, Rgb c, double width, bool dashed) = 0;
-    virtual void dot(double x, double y, Rgb c) = 0;
-    virtual void text(double x, double y, const std::string& s, int size, int anchor, Rgb c) = 0;
+// SVG elements, one per line.
+struct SvgPen {
+    std::ostringstream out;
+    void line(double x0, double y0, double x1, double y1, Rgb c, double width, bool dashed) {
+        out << "<line x1='" << x0 << "' y1='" << y0 << "' x2='" << x1 << "' y2='" << y1 << "' stroke='" << hex(c)
+            << "' stroke-width='" << width << "'" << (dashed ? " stroke-dasharray='6 4'" : "") << "/>\n";
+    }
+    void dot(double x, double y, Rgb c) {
+        out << "<circle cx='" << x << "' cy='" << y << "' r='3' fill='" << hex(c) << "'/>\n";
+    }
+    void text(double x, double y, const std::string& s, int size, int anchor, Rgb c) {
+        static const char* anchors[] = {"start", "middle", "end"};
+        out << "<text x='" << x << "' y='" << y + size / 3.0 << "' font-size='" << size << "' text-anchor='"
+            << anchors[anchor] << "' fill='" << hex(c) << "'>" << escape(s) << "</text>\n";
+    }
 };
 
-void draw(const Chart& c, Pen& pen) {
+void draw(const Chart& c, SvgPen& pen) {
     const auto [x0, x1] = decades(c, true);
     const auto [y0, y1] = decades(c, false);
     const Layout l = layout(c, {x0, x1}, {y0, y1});
@@ -148,33 +161,6 @@ void draw(const Chart& c, Pen& pen) {
     }
 }
 
-struct SvgPen : Pen {
-    std::ostringstream out;
-    void line(double x0, double y0, double x1, double y1, Rgb c, double width, bool dashed) override {
-        out << "<line x1='" << x0 << "' y1='" << y0 << "' x2='" << x1 << "' y2='" << y1 << "' stroke='" << hex(c)
-            << "' stroke-width='" << width << "'" << (dashed ? " stroke-dasharray='6 4'" : "") << "/>\n";
-    }
-    void dot(double x, double y, Rgb c) override {
-        out << "<circle cx='" << x << "' cy='" << y << "' r='3' fill='" << hex(c) << "'/>\n";
-    }
-    void text(double x, double y, const std::string& s, int size, int anchor, Rgb c) override {
-        static const char* anchors[] = {"start", "middle", "end"};
-        out << "<text x='" << x << "' y='" << y + size / 3.0 << "' font-size='" << size << "' text-anchor='"
-            << anchors[anchor] << "' fill='" << hex(c) << "'>" << escape(s) << "</text>\n";
-    }
-};
-
-struct RasterPen : Pen {
-    Raster raster{kWidth, kHeight, Rgb{255, 255, 255}};
-    void line(double x0, double y0, double x1, double y1, Rgb c, double width, bool dashed) override {
-        raster.line(x0, y0, x1, y1, c, width, dashed);
-    }
-    void dot(double x, double y, Rgb c) override { raster.dot(x, y, 3, c); }
-    void text(double x, double y, const std::string& s, int size, int anchor, Rgb c) override {
-        raster.text(x, y, s, rasterScale(size), anchor, c);
-    }
-};
-
 }  // namespace
 
 bool writeChart(const Chart& chart, const std::filesystem::path& dir, const std::string& name) {
@@ -184,9 +170,7 @@ bool writeChart(const Chart& chart, const std::filesystem::path& dir, const std:
     f << "<svg xmlns='http://www.w3.org/2000/svg' width='" << kWidth << "' height='" << kHeight
       << "' font-family='sans-serif'>\n<rect width='100%' height='100%' fill='white'/>\n"
       << svg.out.str() << "</svg>\n";
-    RasterPen png;
-    draw(chart, png);
-    return bool(f) && png.raster.savePng(dir / (name + ".png"));
+    return bool(f);
 }
 
-}  // namespace jl::cli
+}  // namespace jl::bench

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace jl::cli {
+namespace jl::bench {
 
 struct PeerRun {
     std::string engine;   // "mujoco 2.2.2 rk4", ...
@@ -26,4 +26,4 @@ std::vector<PeerRun> measurePeers(int n, const std::vector<double>& steps, doubl
 // "MuJoCo 2.2.2, Box2D 2.4.1, ..." or why there are none.
 std::string peerVersions();
 
-}  // namespace jl::cli
+}  // namespace jl::bench

@@ -4,7 +4,7 @@
 
 #include <ctime>
 
-namespace jl::cli {
+namespace jl::bench {
 
 inline double threadSeconds() {
     timespec t{};
@@ -12,4 +12,4 @@ inline double threadSeconds() {
     return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
-}  // namespace jl::cli
+}  // namespace jl::bench

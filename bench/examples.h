@@ -3,13 +3,13 @@
 // scene plays at 1x on one core.
 #pragma once
 
-#include "app/jladder/bench_cases.h"
+#include "bench/cases.h"
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
-namespace jl::cli {
+namespace jl::bench {
 
 struct ExampleRow {
     std::string scene;     // file name, e.g. "long-ladder.yaml" ("... x 1,000 blocks" for the long design)
@@ -39,4 +39,4 @@ struct ExamplesStudy {
 // with 1,000 blocks.
 ExamplesStudy examplesStudy(const BenchPlan& plan, const std::filesystem::path& dir);
 
-}  // namespace jl::cli
+}  // namespace jl::bench

@@ -1,6 +1,6 @@
-#include "app/jladder/bench_stability.h"
+#include "bench/stability.h"
 
-#include "app/jladder/bench_clock.h"
+#include "bench/clock.h"
 #include "jl/engine/projection.h"
 #include "jl/sim/simulation.h"
 
@@ -12,7 +12,7 @@
 #include <cstdio>
 #include <random>
 
-namespace jl::cli {
+namespace jl::bench {
 
 namespace {
 
@@ -452,4 +452,4 @@ StabilityStudy stabilityStudy(const BenchPlan& plan) {
     return study;
 }
 
-}  // namespace jl::cli
+}  // namespace jl::bench

@@ -1,6 +1,7 @@
-#include "app/jladder/bench_examples.h"
+#include "bench/examples.h"
 
-#include "app/jladder/bench_clock.h"
+#include "bench/clock.h"
+#include "jl/scene/scene_fields.h"
 #include "jl/scene/scene_io.h"
 #include "jl/sim/simulation.h"
 
@@ -8,33 +9,19 @@
 #include <cmath>
 #include <cstdio>
 
-namespace jl::cli {
+namespace jl::bench {
 
 namespace {
 
 constexpr const char* kLong = "long-ladder.yaml";
 constexpr int kLongBlocks = 1000;
 
-const char* integratorName(Integrator i) {
-    switch (i) {
-        case Integrator::ExplicitEuler:
-            return "explicit Euler";
-        case Integrator::SymplecticEuler:
-            return "symplectic Euler";
-        case Integrator::RK4:
-            return "RK4";
-        case Integrator::DormandPrince45:
-            return "Dormand-Prince 4(5)";
-    }
-    return "?";
-}
-
 // One scene for `horizon` s of simulated time (its duration if shorter).
 ExampleRow runScene(const std::string& name, Scene scene, double horizon) {
     ExampleRow row;
     row.scene = name;
     row.asked = std::min(horizon, scene.duration);
-    row.integrator = integratorName(scene.solver.integrator);
+    row.integrator = std::string(integratorWord(scene.solver.integrator));
     row.adaptive = scene.solver.integrator == Integrator::DormandPrince45;
     row.tolerance = scene.solver.tolerance;
     row.blocks = scene.ladder ? scene.ladder->blocks : int(scene.bodies.size() + scene.particles.size());
@@ -110,4 +97,4 @@ ExamplesStudy examplesStudy(const BenchPlan& plan, const std::filesystem::path& 
     return s;
 }
 
-}  // namespace jl::cli
+}  // namespace jl::bench

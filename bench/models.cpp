@@ -1,6 +1,7 @@
-#include "app/jladder/bench_models.h"
+#include "bench/models.h"
 
-#include "app/jladder/bench_clock.h"
+#include "bench/clock.h"
+#include "jl/scene/scene_fields.h"
 #include "jl/sim/simulation.h"
 
 #include <algorithm>
@@ -8,7 +9,7 @@
 #include <cstdio>
 #include <numbers>
 
-namespace jl::cli {
+namespace jl::bench {
 
 namespace {
 
@@ -116,15 +117,14 @@ std::vector<BenchRow> rigidPairModelStudy(const BenchPlan& plan) {
                                        {"models_wrongway25", 25, 0.012, 1.2, false}};
     struct Config {
         Integrator kind;
-        const char* name;
         double parameter;
     };
     const std::vector<Config> configs =
-        plan.quick ? std::vector<Config>{{Integrator::RK4, "rk4", 1e-3}}
-                   : std::vector<Config>{{Integrator::RK4, "rk4", 1e-3},
-                                         {Integrator::RK4, "rk4", 2.5e-4},
-                                         {Integrator::DormandPrince45, "dormand_prince45", 1e-7},
-                                         {Integrator::DormandPrince45, "dormand_prince45", 1e-10}};
+        plan.quick ? std::vector<Config>{{Integrator::RK4, 1e-3}}
+                   : std::vector<Config>{{Integrator::RK4, 1e-3},
+                                         {Integrator::RK4, 2.5e-4},
+                                         {Integrator::DormandPrince45, 1e-7},
+                                         {Integrator::DormandPrince45, 1e-10}};
     std::vector<BenchRow> rows;
     for (const Case& c : cases) {
         // One reference for all three models: merged, tight Dormand-Prince.
@@ -156,7 +156,7 @@ std::vector<BenchRow> rigidPairModelStudy(const BenchPlan& plan) {
                 s.solver.integrator = k.kind;
                 if (k.kind == Integrator::DormandPrince45) s.solver.tolerance = k.parameter; else s.solver.step = k.parameter;
                 s.solver.rigidPairs = m.pairs;
-                BenchRow row{c.study, std::string(k.name) + ", " + m.name, c.blocks, k.parameter, 0, 0, true, ""};
+                BenchRow row{c.study, std::string(integratorWord(k.kind)) + ", " + m.name, c.blocks, k.parameter, 0, 0, true, ""};
                 Outcome o;
                 int runs = 0;
                 const double begin = threadSeconds();
@@ -186,4 +186,4 @@ std::vector<BenchRow> rigidPairModelStudy(const BenchPlan& plan) {
     return rows;
 }
 
-}  // namespace jl::cli
+}  // namespace jl::bench

@@ -3,9 +3,9 @@
 // two bodies held by a pin and a weld, side by side in cost and error.
 #pragma once
 
-#include "app/jladder/bench_cases.h"
+#include "bench/cases.h"
 
-namespace jl::cli {
+namespace jl::bench {
 
 // Rows of study "models": method names the model (merged on the chain
 // solver, merged on the sparse solver, welded); the note gives the mean
@@ -14,4 +14,4 @@ namespace jl::cli {
 // merged one, both at tolerance 1e-12 (how far apart the models themselves are).
 std::vector<BenchRow> rigidPairModelStudy(const BenchPlan& plan);
 
-}  // namespace jl::cli
+}  // namespace jl::bench

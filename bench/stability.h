@@ -5,14 +5,14 @@
 // integrator; and the largest RK4 step that actually runs, by bisection.
 #pragma once
 
-#include "app/jladder/bench_cases.h"
+#include "bench/cases.h"
 
 #include <Eigen/Core>
 
 #include <string>
 #include <vector>
 
-namespace jl::cli {
+namespace jl::bench {
 
 // omega_max^2 of the hanging ladder from the engine: Lanczos in the mass
 // metric on K x = -(da/dq) x, x tangent to the pins (finite differences of
@@ -82,4 +82,4 @@ struct StabilityStudy {
 
 StabilityStudy stabilityStudy(const BenchPlan& plan);
 
-}  // namespace jl::cli
+}  // namespace jl::bench
