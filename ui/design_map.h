@@ -4,7 +4,8 @@
 // the current ladder (one undo step); the map exports as CSV, SVG and PNG.
 #pragma once
 
-#include "ui/design_map_interim.h"
+#include "jl/design/design_axis.h"
+#include "jl/design/ripple_reach.h"
 #include "ui/document.h"
 
 #include <QDialog>

@@ -4,7 +4,8 @@
 // estimate reuse a run instead of repeating it. Used from the UI thread only.
 #pragma once
 
-#include "ui/design_map_interim.h"
+#include "jl/design/design_axis.h"
+#include "jl/design/ripple_reach.h"
 
 #include <QByteArray>
 #include <QHash>

@@ -3,7 +3,8 @@
 // numbers of a cell on hover, and a click to open that design.
 #pragma once
 
-#include "ui/design_map_interim.h"
+#include "jl/design/design_axis.h"
+#include "jl/design/ripple_reach.h"
 
 #include <QStringList>
 #include <QWidget>

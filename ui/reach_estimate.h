@@ -4,7 +4,8 @@
 // run is stopped and its result dropped; the UI never waits on a run.
 #pragma once
 
-#include "ui/design_map_interim.h"
+#include "jl/design/design_axis.h"
+#include "jl/design/ripple_reach.h"
 
 #include <QByteArray>
 #include <QFutureWatcher>

@@ -1,13 +1,17 @@
-// jladder reach: how far the first ripple travels down ladders of several
-// lengths and block thicknesses (docs/model.md section 15), as a Markdown table.
+// jladder reach: how far the first ripple travels (docs/model.md section 15).
+// Without axes, the fixed table of designs that section quotes; with one or
+// two axes (--blocks 6:50:2 --thickness 2mm:12mm:1mm ...), a design map over
+// them (jl/design/ripple_map.h), as CSV and an SVG heat map.
 #include "app/jladder/commands.h"
 #include "app/jladder/options.h"
-#include "jl/sim/simulation.h"
+#include "jl/base/output_file.h"
+#include "jl/design/ripple_map.h"
+#include "jl/scene/scene_io.h"
 
-#include <algorithm>
+#include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <map>
+#include <cstdlib>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -16,129 +20,163 @@ namespace jl::cli {
 
 namespace {
 
-struct Reach {
-    int hinges = 0;          // flipped in order 1, 2, ..., k
-    std::vector<double> at;  // first flip time of hinges 1..k
-    int flipsElsewhere = 0;  // other hinges that flipped meanwhile (e.g. the bottom one whipping)
-    int events = 0;          // every hinge event of the run (lock, unlock, fold, unfold, flip, bounce)
-    int quickRow = 0;        // chatter: the most quick cycles of one hinge in a row
-    double until = 0;        // s, the length of the run
-    std::string failure;
-};
+const char* kHelp =
+    "usage: jladder reach [--out FILE]\n"
+    "       jladder reach --PARAMETER FROM:TO:STEP [--PARAMETER FROM:TO:STEP] [--scene BASE.yaml]\n"
+    "                     [--jobs N] [--csv FILE] [--svg FILE] [--title TEXT]\n"
+    "Without axes: turns the top block of ladders of 6, 8, 12, 25 and 50 blocks (60 x 12 mm)\n"
+    "and of the thinner designs docs/model.md section 15 quotes, and tabulates how many\n"
+    "hinges the first ripple flips, every hinge event of the run, and the chatter measure\n"
+    "(the most quick cycles of one hinge in a row: a release and a close within 1 ms), in\n"
+    "Markdown (stdout, or FILE).\n"
+    "With axes: a design map. PARAMETER is one of blocks, thickness, length, width (lengths\n"
+    "in m, or with mm or cm), density (kg/m^3), hinge_damping (N m s/rad), turn_duration\n"
+    "(s, or ms); one axis gives a line, two a map. Every cell is a full simulation of the\n"
+    "first ripple on BASE (default: 6 blocks of 60 x 12 x 45 mm, density 600, block 0 held\n"
+    "and turned half a turn from 0.2 s over 0.3 s), run on N threads (default: every core).\n"
+    "Writes CSV (stdout, or --csv FILE) and an SVG heat map (--svg FILE); the same command\n"
+    "gives the same bytes whatever N. Files are replaced only once written whole.\n";
 
-bool releases(EventKind k) {
-    return k == EventKind::Unlock || k == EventKind::FlipFlop || k == EventKind::Unfold || k == EventKind::Bounce;
-}
-
-// The chatter measure of docs/model.md section 8.6: a release of a hinge
-// (unlock, flip, unfold, bounce) followed by a close of the same hinge (lock,
-// fold) within 1 ms is a quick cycle; a slower close ends that hinge's row.
-// The most quick cycles of one hinge in a row.
-int longestQuickRow(const std::vector<Event>& events) {
-    constexpr double kWindow = 1e-3;  // s
-    std::map<int, double> releasedAt;
-    std::map<int, int> row;
-    int longest = 0;
-    for (const Event& e : events) {
-        if (releases(e.kind)) releasedAt[e.hinge] = e.time;
-        if (e.kind != EventKind::Lock && e.kind != EventKind::Fold) continue;
-        const auto r = releasedAt.find(e.hinge);
-        if (r != releasedAt.end() && e.time - r->second <= kWindow) longest = std::max(longest, ++row[e.hinge]);
-        else row[e.hinge] = 0;
-    }
-    return longest;
-}
-
-// Holds block 0 of an n-block ladder (blocks 60 mm x T x 45 mm, density 600)
-// in its hanging equilibrium, turns it half a turn counter-clockwise from
-// t = 0.2 s over 0.3 s, and follows the first flips. The ripple has reached
-// hinge k when hinges 1..k each flipped, each after the one above it.
-Reach measure(int n, double thickness, double until) {
-    Scene s;
-    LadderSpec l;
-    l.blocks = n;
-    l.block.thickness = thickness;
-    s.ladder = l;
-    ScriptAction turn;
-    turn.at = 0.2;
-    turn.angle = 3.14159265358979323846;
-    turn.duration = 0.3;
-    s.script.push_back(turn);
-    Reach r;
-    r.until = until;
-    auto sim = Simulation::build(s).simulation;
-    std::vector<double> first(size_t(n), -1);
-    std::vector<Event> events;
-    while (sim->time() < until && sim->stepOnce())
-        for (const Event& e : sim->takeEvents()) {
-            if (e.hinge <= 0) continue;  // the script's own entries
-            events.push_back(e);
-            if (e.kind == EventKind::FlipFlop && first[size_t(e.hinge)] < 0) first[size_t(e.hinge)] = e.time;
-        }
-    r.failure = sim->failure();
-    r.events = int(events.size());
-    r.quickRow = longestQuickRow(events);
-    double last = 0;
-    for (int j = 1; j < n && first[size_t(j)] >= last; ++j) {
-        r.at.push_back(first[size_t(j)]);
-        last = first[size_t(j)];
-        ++r.hinges;
-    }
-    for (int j = r.hinges + 2; j < n; ++j) r.flipsElsewhere += first[size_t(j)] >= 0 ? 1 : 0;
-    return r;
-}
-
-std::string row(int n, double thickness, const Reach& r) {
-    std::ostringstream s;
-    s.precision(3);
-    s << "| " << n << " | " << thickness * 1000 << " | " << r.hinges << " of " << n - 1 << " | ";
-    if (r.at.size() >= 2) s << (r.at.back() - r.at.front()) / double(r.at.size() - 1) << " s";
-    s << " | " << r.flipsElsewhere << " | " << r.events << " in " << r.until << " s | " << r.quickRow << " | "
-      << (r.failure.empty() ? "" : r.failure) << " |\n";
-    return s.str();
-}
-
-}  // namespace
-
-int reach(const std::vector<std::string>& args) {
-    Options o = parse(args, {"--out"}, {"--help"});
-    if (o.has("--help")) {
-        std::fputs("usage: jladder reach [--out FILE]\n"
-                   "Turns the top block of ladders of 6, 8, 12, 25 and 50 blocks (60 x 12 mm) and\n"
-                   "of the thinner designs docs/model.md section 15 quotes, and tabulates how many\n"
-                   "hinges the first ripple flips, every hinge event of the run, and the chatter\n"
-                   "measure (the most quick cycles of one hinge in a row: a release and a close\n"
-                   "within 1 ms), in Markdown (stdout, or FILE).\n",
-                   stdout);
-        return 0;
-    }
-    if (!o.error.empty()) {
-        std::fprintf(stderr, "jladder reach: %s\n", o.error.c_str());
-        return 2;
-    }
+// The fixed table of the designs docs/model.md section 15 quotes.
+int table(const std::optional<std::string>& out) {
     struct Case {
         int n;
         double t;
     };
     const std::vector<Case> cases = {{6, 0.012}, {8, 0.012}, {12, 0.012}, {25, 0.012}, {50, 0.012},
                                      {12, 0.006}, {25, 0.004}, {25, 0.003}};
-    std::string table =
+    std::string text =
         "| blocks | thickness (mm) | hinges the first ripple flips | mean time between flips | other hinges flipped | "
         "hinge events | most quick cycles of one hinge in a row | failure |\n"
         "|---:|---:|---|---:|---:|---:|---:|---|\n";
     for (const Case& c : cases) {
-        const double until = 1.0 + 0.2 * c.n;
-        const std::string r = row(c.n, c.t, measure(c.n, c.t, until));
-        std::fputs(r.c_str(), stderr);
-        table += r;
+        const RippleReach r = firstRippleReach(turnedLadder(c.n, c.t));
+        std::ostringstream s;
+        s.precision(3);
+        s << "| " << c.n << " | " << c.t * 1000 << " | " << r.reached << " of " << r.hinges << " | ";
+        if (r.flipTimes.size() >= 2) s << r.meanTimeBetweenFlips << " s";
+        s << " | " << r.flipsElsewhere << " | " << r.events << " in " << r.until << " s | " << r.quickRow << " | "
+          << r.failure << " |\n";
+        std::fputs(s.str().c_str(), stderr);
+        text += s.str();
     }
-    if (auto file = o.get("--out")) {
-        std::ofstream out(*file);
-        out << table;
-        return out ? 0 : 1;
+    if (!out) {
+        std::fputs(text.c_str(), stdout);
+        return 0;
     }
-    std::fputs(table.c_str(), stdout);
+    OutputFile f;
+    if (!f.open(*out) || !f.write(text) || !f.commit()) {
+        std::fprintf(stderr, "jladder reach: %s: %s\n", out->c_str(), f.error().c_str());
+        return 1;
+    }
     return 0;
+}
+
+// "12mm" -> 0.012: a number, then the unit the parameter allows (none: SI).
+std::optional<double> quantity(const std::string& text, DesignParameter p, std::string& error) {
+    char* end = nullptr;
+    const double v = std::strtod(text.c_str(), &end);
+    const std::string unit(end);
+    double scale = 0;
+    const bool length = p == DesignParameter::Thickness || p == DesignParameter::Length || p == DesignParameter::Width;
+    if (unit.empty()) scale = 1;
+    else if (length && unit == "mm") scale = 1e-3;
+    else if (length && unit == "cm") scale = 1e-2;
+    else if (length && unit == "m") scale = 1;
+    else if (p == DesignParameter::TurnDuration && unit == "ms") scale = 1e-3;
+    else if (p == DesignParameter::TurnDuration && unit == "s") scale = 1;
+    if (end == text.c_str() || !(scale > 0) || !std::isfinite(v)) {
+        error = "'" + text + "' is not a value of " + std::string(describe(p).word);
+        return std::nullopt;
+    }
+    return v * scale;
+}
+
+// "6:50:2" -> an axis; checked for a count of cells a map can show.
+std::optional<DesignAxis> axis(const std::string& text, DesignParameter p, std::string& error) {
+    const size_t a = text.find(':'), b = a == std::string::npos ? a : text.find(':', a + 1);
+    if (b == std::string::npos || text.find(':', b + 1) != std::string::npos) {
+        error = "--" + std::string(describe(p).word) + " takes FROM:TO:STEP, not '" + text + "'";
+        return std::nullopt;
+    }
+    const auto from = quantity(text.substr(0, a), p, error);
+    const auto to = from ? quantity(text.substr(a + 1, b - a - 1), p, error) : std::nullopt;
+    const auto step = to ? quantity(text.substr(b + 1), p, error) : std::nullopt;
+    if (!step) return std::nullopt;
+    DesignAxis x{p, *from, *to, *step};
+    const size_t n = axisValues(x).size();
+    if (n == 0 || n > 200) {
+        error = "--" + std::string(describe(p).word) + " " + text + " gives " + (n ? "more than 200" : "no") +
+                " values (FROM <= TO, STEP > 0)";
+        return std::nullopt;
+    }
+    return x;
+}
+
+bool save(const std::string& path, const std::string& text) {
+    OutputFile f;
+    if (f.open(path) && f.write(text) && f.commit()) return true;
+    std::fprintf(stderr, "jladder reach: %s: %s\n", path.c_str(), f.error().c_str());
+    return false;
+}
+
+}  // namespace
+
+int reach(const std::vector<std::string>& args) {
+    std::vector<std::string> valued{"--out", "--scene", "--jobs", "--csv", "--svg", "--title"};
+    for (const DesignParameterWord& w : kDesignParameters) valued.push_back("--" + std::string(w.word));
+    Options o = parse(args, valued, {"--help"});
+    if (o.has("--help")) {
+        std::fputs(kHelp, stdout);
+        return 0;
+    }
+    std::vector<DesignAxis> axes;
+    for (const DesignParameterWord& w : kDesignParameters)
+        if (auto text = o.get("--" + std::string(w.word)); text && o.error.empty())
+            if (auto a = axis(*text, w.value, o.error)) axes.push_back(*a);
+    if (o.error.empty() && axes.size() > 2) o.error = "give at most two axes";
+    if (o.error.empty() && axes.empty() && (o.get("--csv") || o.get("--svg") || o.get("--scene")))
+        o.error = "--csv, --svg and --scene make a map: give one or two axes (--blocks 4:12:2 ...)";
+    int jobs = 0;
+    if (auto j = o.get("--jobs"); j && o.error.empty()) {
+        jobs = std::atoi(j->c_str());
+        if (jobs < 1 || jobs > 256) o.error = "--jobs takes a whole number from 1 to 256";
+    }
+    if (!o.error.empty()) {
+        std::fprintf(stderr, "jladder reach: %s\n", o.error.c_str());
+        return 2;
+    }
+    if (axes.empty()) return table(o.get("--out"));
+
+    Scene base = turnedLadder(6, 0.012);
+    if (auto path = o.get("--scene")) {
+        SceneLoad load = loadScene(*path);
+        for (const Diagnostic& d : load.errors) std::fprintf(stderr, "%s\n", d.format().c_str());
+        if (!load.scene) return 1;
+        if (!load.scene->ladder) {
+            std::fprintf(stderr, "jladder reach: %s has no ladder\n", path->c_str());
+            return 1;
+        }
+        base = *load.scene;
+    }
+    // One axis: a line, the second axis the base's own blocks count.
+    if (axes.size() == 1) {
+        const DesignParameter other =
+            axes[0].parameter == DesignParameter::Blocks ? DesignParameter::Thickness : DesignParameter::Blocks;
+        const double value = other == DesignParameter::Blocks ? base.ladder->blocks : base.ladder->block.thickness;
+        axes.push_back({other, value, value, 1});
+    }
+    const RippleMap map = computeRippleMap(base, axes[0], axes[1], jobs, nullptr, [](int done, int total) {
+        std::fprintf(stderr, "\r%d of %d designs", done, total);
+    });
+    std::fputc('\n', stderr);
+    const std::string csv = rippleMapCsv(map);
+    const std::string title = o.get("--title").value_or("How far the first ripple travels");
+    bool ok = true;
+    if (auto path = o.get("--csv")) ok = save(*path, csv) && ok;
+    else std::fputs(csv.c_str(), stdout);
+    if (auto path = o.get("--svg")) ok = save(*path, rippleMapSvg(map, title)) && ok;
+    return ok ? 0 : 1;
 }
 
 }  // namespace jl::cli

@@ -1,0 +1,55 @@
+#include "jl/design/design_axis.h"
+
+#include "jl/scene/scene_ranges.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace jl {
+
+const DesignParameterWord& describe(DesignParameter p) {
+    for (const DesignParameterWord& w : kDesignParameters)
+        if (w.value == p) return w;
+    return kDesignParameters[0];
+}
+
+std::vector<double> axisValues(const DesignAxis& a) {
+    std::vector<double> v;
+    if (!(a.step > 0) || !(a.to >= a.from) || !std::isfinite(a.from) || !std::isfinite(a.to)) return v;
+    const double count = std::floor((a.to - a.from) / a.step + 1e-9) + 1;
+    if (count > 1e6) return v;
+    for (int i = 0; i < int(count); ++i) v.push_back(a.from + i * a.step);
+    return v;
+}
+
+Scene withParameter(Scene s, DesignParameter p, double value) {
+    if (!s.ladder) s.ladder = LadderSpec{};
+    LadderSpec& l = *s.ladder;
+    switch (p) {
+        case DesignParameter::Blocks:
+            l.blocks = int(std::clamp(std::lround(value), long(range::kFewestBlocks), long(range::kMostBlocks)));
+            break;
+        case DesignParameter::Thickness:
+            l.block.thickness = value;
+            break;
+        case DesignParameter::Length:
+            l.block.length = value;
+            break;
+        case DesignParameter::Width:
+            l.block.width = value;
+            break;
+        case DesignParameter::Density:
+            l.block.density = value;
+            break;
+        case DesignParameter::HingeDamping:
+            l.hinges.damping = value;
+            break;
+        case DesignParameter::TurnDuration:
+            for (ScriptAction& a : s.script)
+                if (a.kind == ScriptAction::Kind::Turn) a.duration = value;
+            break;
+    }
+    return s;
+}
+
+}  // namespace jl

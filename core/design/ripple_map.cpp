@@ -1,0 +1,161 @@
+#include "jl/design/ripple_map.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <thread>
+
+namespace jl {
+
+RippleMap computeRippleMap(const Scene& base, const DesignAxis& x, const DesignAxis& y, int jobs,
+                           const std::atomic<bool>* cancel, const std::function<void(int, int)>& progress) {
+    RippleMap m{x, y, axisValues(x), axisValues(y), {}, false};
+    const size_t total = m.xs.size() * m.ys.size();
+    m.cells.resize(total);
+    std::atomic<size_t> next{0};
+    std::atomic<int> done{0};
+    auto work = [&] {
+        for (size_t k = next++; k < total; k = next++) {
+            if (cancel && cancel->load(std::memory_order_relaxed)) return;
+            const size_t i = k % m.xs.size(), j = k / m.xs.size();
+            const Scene s = withParameter(withParameter(base, x.parameter, m.xs[i]), y.parameter, m.ys[j]);
+            m.cells[k] = firstRippleReach(s, cancel);
+            const int d = ++done;
+            if (progress) progress(d, int(total));
+        }
+    };
+    if (jobs < 1) jobs = int(std::max(1u, std::thread::hardware_concurrency()));
+    jobs = int(std::min<size_t>(size_t(jobs), std::max<size_t>(total, 1)));
+    std::vector<std::thread> workers;
+    for (int t = 1; t < jobs; ++t) workers.emplace_back(work);
+    work();
+    for (std::thread& t : workers) t.join();
+    m.cancelled = cancel && cancel->load();
+    return m;
+}
+
+namespace {
+
+std::string fixed(double v, int digits) {
+    char s[64];
+    std::snprintf(s, sizeof s, "%.*f", digits, v);
+    return s;
+}
+
+// Values in the file: a count whole, else 6 significant digits (SI).
+std::string value(DesignParameter p, double v) {
+    if (p == DesignParameter::Blocks) return std::to_string(std::lround(v));
+    char s[64];
+    std::snprintf(s, sizeof s, "%.6g", v);
+    return s;
+}
+
+bool isLength(DesignParameter p) {
+    return p == DesignParameter::Thickness || p == DesignParameter::Length || p == DesignParameter::Width;
+}
+
+// Values as a reader of the map wants them: lengths in mm.
+std::string shown(DesignParameter p, double v) { return value(p, isLength(p) ? 1000 * v : v); }
+
+std::string csvText(const std::string& s) {
+    std::string out = "\"";
+    for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+}
+
+std::string xml(const std::string& s) {
+    std::string out;
+    for (char c : s) {
+        if (c == '<') out += "&lt;";
+        else if (c == '>') out += "&gt;";
+        else if (c == '&') out += "&amp;";
+        else out += c;
+    }
+    return out;
+}
+
+std::string axisTitle(const DesignAxis& a) {
+    const DesignParameterWord& w = describe(a.parameter);
+    const std::string unit = isLength(a.parameter) ? "mm" : std::string(w.unit);
+    return std::string(w.label) + (unit.empty() ? "" : " (" + unit + ")");
+}
+
+// White (nothing flipped) through yellow to dark green (every hinge).
+std::string colour(double fraction) {
+    const double f = std::clamp(fraction, 0.0, 1.0);
+    const int r = int(std::lround(255 - f * (255 - 26)));
+    const int g = int(std::lround(255 - f * (255 - 120)));
+    const int b = int(std::lround(224 - f * (224 - 50)));
+    char s[8];
+    std::snprintf(s, sizeof s, "#%02x%02x%02x", r, g, b);
+    return s;
+}
+
+}  // namespace
+
+std::string rippleMapCsv(const RippleMap& m) {
+    std::ostringstream out;
+    out << describe(m.x.parameter).word << ',' << describe(m.y.parameter).word
+        << ",hinges,reached,mean_time_between_flips_s,flips_elsewhere,events,quick_row,failure\n";
+    for (size_t j = 0; j < m.ys.size(); ++j)
+        for (size_t i = 0; i < m.xs.size(); ++i) {
+            const RippleReach& r = m.at(i, j);
+            out << value(m.x.parameter, m.xs[i]) << ',' << value(m.y.parameter, m.ys[j]) << ',' << r.hinges << ','
+                << r.reached << ',' << fixed(r.meanTimeBetweenFlips, 6) << ',' << r.flipsElsewhere << ',' << r.events
+                << ',' << r.quickRow << ',' << csvText(r.cancelled ? "cancelled" : r.failure) << '\n';
+        }
+    return out.str();
+}
+
+std::string rippleMapSvg(const RippleMap& m, const std::string& title) {
+    constexpr double cell = 44, left = 110, top = 56, legendWidth = 150;
+    const double width = left + cell * double(m.xs.size()) + 30 + legendWidth;
+    const double height = top + cell * double(m.ys.size()) + 70;
+    std::ostringstream s;
+    s << "<svg xmlns='http://www.w3.org/2000/svg' width='" << fixed(width, 0) << "' height='" << fixed(height, 0)
+      << "' font-family='sans-serif' font-size='12'>\n<rect width='100%' height='100%' fill='white'/>\n"
+      << "<text x='" << fixed(left, 0) << "' y='24' font-size='15'>" << xml(title) << "</text>\n";
+    // Rows from the bottom up, as a plot's y axis runs.
+    for (size_t j = 0; j < m.ys.size(); ++j) {
+        const double y0 = top + cell * double(m.ys.size() - 1 - j);
+        s << "<text x='" << fixed(left - 8, 0) << "' y='" << fixed(y0 + cell / 2 + 4, 1) << "' text-anchor='end'>"
+          << shown(m.y.parameter, m.ys[j]) << "</text>\n";
+        for (size_t i = 0; i < m.xs.size(); ++i) {
+            const RippleReach& r = m.at(i, j);
+            const double x0 = left + cell * double(i);
+            const double fraction = r.hinges > 0 ? double(r.reached) / r.hinges : 0;
+            const bool failed = !r.failure.empty() || r.cancelled;
+            s << "<rect x='" << fixed(x0, 1) << "' y='" << fixed(y0, 1) << "' width='" << fixed(cell, 0)
+              << "' height='" << fixed(cell, 0) << "' fill='" << (failed ? "#d0d0d0" : colour(fraction))
+              << "' stroke='white'><title>" << r.reached << " of " << r.hinges << " hinges"
+              << (failed ? "; " + xml(r.cancelled ? "cancelled" : r.failure) : "") << "</title></rect>\n"
+              << "<text x='" << fixed(x0 + cell / 2, 1) << "' y='" << fixed(y0 + cell / 2 + 4, 1)
+              << "' text-anchor='middle' fill='" << (fraction > 0.6 ? "white" : "black") << "'>"
+              << (failed ? std::string("!") : std::to_string(r.reached)) << "</text>\n";
+        }
+    }
+    const double bottom = top + cell * double(m.ys.size());
+    for (size_t i = 0; i < m.xs.size(); ++i)
+        s << "<text x='" << fixed(left + cell * (double(i) + 0.5), 1) << "' y='" << fixed(bottom + 16, 1)
+          << "' text-anchor='middle'>" << shown(m.x.parameter, m.xs[i]) << "</text>\n";
+    s << "<text x='" << fixed(left + cell * double(m.xs.size()) / 2, 1) << "' y='" << fixed(bottom + 40, 1)
+      << "' text-anchor='middle'>" << xml(axisTitle(m.x)) << "</text>\n"
+      << "<text transform='translate(18 " << fixed(top + cell * double(m.ys.size()) / 2, 1)
+      << ") rotate(-90)' text-anchor='middle'>" << xml(axisTitle(m.y)) << "</text>\n";
+    // The legend: the fraction of hinges the first ripple flips.
+    const double lx = left + cell * double(m.xs.size()) + 30;
+    s << "<text x='" << fixed(lx, 1) << "' y='" << fixed(top - 8, 1) << "'>hinges flipped</text>\n";
+    for (int k = 0; k <= 4; ++k) {
+        const double f = 1.0 - k / 4.0, ly = top + 24 * k;
+        s << "<rect x='" << fixed(lx, 1) << "' y='" << fixed(ly, 1) << "' width='20' height='20' fill='" << colour(f)
+          << "' stroke='#999'/>\n<text x='" << fixed(lx + 28, 1) << "' y='" << fixed(ly + 14, 1) << "'>"
+          << int(std::lround(100 * f)) << " %</text>\n";
+    }
+    s << "<rect x='" << fixed(lx, 1) << "' y='" << fixed(top + 24 * 5, 1)
+      << "' width='20' height='20' fill='#d0d0d0' stroke='#999'/>\n<text x='" << fixed(lx + 28, 1) << "' y='"
+      << fixed(top + 24 * 5 + 14, 1) << "'>run failed (!)</text>\n</svg>\n";
+    return s.str();
+}
+
+}  // namespace jl

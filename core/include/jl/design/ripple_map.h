@@ -1,0 +1,40 @@
+// The design map: the first ripple's reach over two design parameters, one
+// full simulation per cell, the cells shared among worker threads (each run
+// on one thread). The map is the same whatever the number of threads: each
+// cell depends on its own design only and is written at its own index.
+#pragma once
+
+#include "jl/design/design_axis.h"
+#include "jl/design/ripple_reach.h"
+
+#include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace jl {
+
+struct RippleMap {
+    DesignAxis x, y;
+    std::vector<double> xs, ys;      // the axes' values
+    std::vector<RippleReach> cells;  // row by row: cell (i, j) at j * xs.size() + i
+    bool cancelled = false;
+    const RippleReach& at(size_t i, size_t j) const { return cells[j * xs.size() + i]; }
+};
+
+// `progress(done, total)` is called from the workers as cells finish (it must
+// be thread-safe); `cancel` is polled by every run. jobs < 1: one per core.
+RippleMap computeRippleMap(const Scene& base, const DesignAxis& x, const DesignAxis& y, int jobs,
+                           const std::atomic<bool>* cancel = nullptr,
+                           const std::function<void(int done, int total)>& progress = {});
+
+// One row per cell: the two values (SI), the hinges, how many the first ripple
+// flipped, the mean time between flips, events, chatter, failure. Numbers
+// with fixed precision: the same map gives the same bytes.
+std::string rippleMapCsv(const RippleMap& m);
+
+// A heat map: each cell coloured by the fraction of the hinges the first
+// ripple flips and labelled with that count, axes with their units, a legend.
+std::string rippleMapSvg(const RippleMap& m, const std::string& title);
+
+}  // namespace jl

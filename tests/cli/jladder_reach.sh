@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# jladder reach as a user meets it: a design map written as CSV and SVG, the
+# same bytes whatever the number of threads; bad axes refused with a message.
+# Usage: jladder_reach.sh JLADDER WORK_DIR
+set -u
+jladder=$1
+work=$2
+rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
+failures=0
+fail() {
+    echo "FAIL: $*" >&2
+    failures=$((failures + 1))
+}
+
+for jobs in 1 2; do
+    "$jladder" reach --blocks 4:8:2 --thickness 6mm:12mm:6mm --jobs $jobs --csv map$jobs.csv --svg map$jobs.svg \
+        2>err.txt || fail "reach --jobs $jobs: exit $? ($(head -c 300 err.txt))"
+done
+cmp -s map1.csv map2.csv || fail "the CSV depends on --jobs"
+cmp -s map1.svg map2.svg || fail "the SVG depends on --jobs"
+[ "$(head -1 map1.csv)" = "blocks,thickness,hinges,reached,mean_time_between_flips_s,flips_elsewhere,events,quick_row,failure" ] ||
+    fail "CSV header: $(head -1 map1.csv)"
+[ "$(wc -l <map1.csv)" = 7 ] || fail "6 designs wanted, got: $(cat map1.csv)"
+grep -q "^6,0.012,5,5," map1.csv || fail "the classic design (6 blocks, 12 mm) should ripple through its 5 hinges: $(cat map1.csv)"
+grep -q "<svg" map1.svg && grep -q "block thickness (mm)" map1.svg || fail "the SVG has no map or no axis title"
+
+# Bad axes: refused with a message, nothing written.
+bad() {
+    "$jladder" reach "$@" --csv bad.csv >out.txt 2>err.txt
+    local got=$?
+    [ "$got" = 2 ] || fail "exit $got, wanted 2: reach $*"
+    [ -s err.txt ] || fail "no message for: reach $*"
+    [ ! -e bad.csv ] || fail "bad.csv written for: reach $*"
+}
+bad --blocks 4:8
+bad --blocks 8:4:1
+bad --thickness 6kg:12mm:6mm
+bad --blocks 4:8:2 --thickness 6mm:12mm:6mm --width 40mm:50mm:10mm
+bad --blocks 4:8:2 --jobs 0
+bad --blocks 2:100000:1
+
+# One axis: a line of designs.
+"$jladder" reach --blocks 4:6:2 --csv line.csv 2>err.txt || fail "one axis: exit $?"
+[ "$(wc -l <line.csv)" = 3 ] || fail "one axis: $(cat line.csv)"
+
+[ "$failures" = 0 ] && echo "all reach checks passed"
+exit "$failures"

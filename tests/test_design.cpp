@@ -1,0 +1,89 @@
+// labels: ladder
+// Design questions over many runs: the axes and the scene of one design, the
+// first ripple's reach on designs whose answer is known, and a map that is
+// the same whatever the number of threads.
+#include "jl/design/design_axis.h"
+#include "jl/design/ripple_map.h"
+#include "jl/design/ripple_reach.h"
+
+#include <QtTest>
+
+#include <atomic>
+#include <numbers>
+
+using namespace jl;
+
+class DesignTest : public QObject {
+    Q_OBJECT
+private slots:
+    void axesGiveTheirValues() {
+        const std::vector<double> v = axisValues({DesignParameter::TurnDuration, 0.1, 0.5, 0.1});
+        QCOMPARE(int(v.size()), 5);  // 0.5 itself, despite 0.1 not being exact in binary
+        QCOMPARE(v.back(), 0.1 + 4 * 0.1);
+        QCOMPARE(int(axisValues({DesignParameter::Blocks, 6, 50, 2}).size()), 23);
+        QVERIFY(axisValues({DesignParameter::Blocks, 6, 5, 1}).empty());   // backwards
+        QVERIFY(axisValues({DesignParameter::Blocks, 6, 50, 0}).empty());  // no step
+    }
+
+    void aDesignSetsOneParameter() {
+        const Scene base = turnedLadder(6, 0.012);
+        QCOMPARE(withParameter(base, DesignParameter::Blocks, 12.4).ladder->blocks, 12);
+        QCOMPARE(withParameter(base, DesignParameter::Blocks, 1).ladder->blocks, 2);  // a ladder has two blocks at least
+        QCOMPARE(withParameter(base, DesignParameter::Thickness, 0.003).ladder->block.thickness, 0.003);
+        QCOMPARE(withParameter(base, DesignParameter::HingeDamping, 1e-5).ladder->hinges.damping, 1e-5);
+        const Scene slow = withParameter(base, DesignParameter::TurnDuration, 0.6);
+        QCOMPARE(slow.script.front().duration, 0.6);
+        QCOMPARE(slow.ladder->blocks, 6);  // the rest as it was
+        QCOMPARE(std::string(describe(DesignParameter::HingeDamping).word), std::string("hinge_damping"));
+    }
+
+    // The classic design: every hinge flips in order (the classic example's
+    // lesson), the first soon after the turn ends at 0.5 s.
+    void theClassicRipplesToTheBottom() {
+        const RippleReach r = firstRippleReach(turnedLadder(6, 0.012));
+        QVERIFY2(r.failure.empty(), r.failure.c_str());
+        QCOMPARE(r.hinges, 5);
+        QCOMPARE(r.reached, 5);
+        QCOMPARE(int(r.flipTimes.size()), 5);
+        QVERIFY(r.flipTimes.front() > 0.45 && r.flipTimes.front() < 0.6);
+        for (size_t k = 1; k < r.flipTimes.size(); ++k) QVERIFY(r.flipTimes[k] > r.flipTimes[k - 1]);
+        QCOMPARE(r.meanTimeBetweenFlips, (r.flipTimes.back() - r.flipTimes.front()) / 4);
+    }
+
+    // Without a turn, nothing flips: the ladder hangs at rest.
+    void noTurnNoRipple() {
+        Scene s = turnedLadder(8, 0.012);
+        s.script.clear();
+        const RippleReach r = firstRippleReach(s);
+        QVERIFY(r.failure.empty());
+        QCOMPARE(r.reached, 0);
+        QCOMPARE(r.events, 0);
+        QCOMPARE(r.until, 0.5 + 0.2 * 8);
+    }
+
+    void aCancelledRunSaysSo() {
+        std::atomic<bool> cancel{true};
+        QVERIFY(firstRippleReach(turnedLadder(6, 0.012), &cancel).cancelled);
+    }
+
+    void aMapIsTheSameOnAnyNumberOfThreads() {
+        const DesignAxis x{DesignParameter::Blocks, 4, 8, 2}, y{DesignParameter::Thickness, 0.006, 0.012, 0.006};
+        std::atomic<int> calls{0};
+        const RippleMap one = computeRippleMap(turnedLadder(6, 0.012), x, y, 1, nullptr, [&](int, int) { ++calls; });
+        const RippleMap two = computeRippleMap(turnedLadder(6, 0.012), x, y, 2);
+        QCOMPARE(calls.load(), 6);
+        QCOMPARE(int(one.cells.size()), 6);
+        QCOMPARE(rippleMapCsv(one), rippleMapCsv(two));
+        QCOMPARE(rippleMapSvg(one, "t"), rippleMapSvg(two, "t"));
+        // Cell (i, j) is the design of xs[i] and ys[j].
+        QCOMPARE(one.at(2, 1).hinges, 7);
+        QCOMPARE(one.at(0, 0).hinges, 3);
+        const RippleReach alone = firstRippleReach(withParameter(turnedLadder(8, 0.012), DesignParameter::Thickness, 0.006));
+        QCOMPARE(one.at(2, 0).reached, alone.reached);
+        QCOMPARE(one.at(2, 0).flipTimes, alone.flipTimes);
+        QVERIFY(rippleMapCsv(one).starts_with("blocks,thickness,hinges,reached,"));
+    }
+};
+
+QTEST_APPLESS_MAIN(DesignTest)
+#include "test_design.moc"
