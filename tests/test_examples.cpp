@@ -21,7 +21,7 @@ namespace {
 // The examples whose claims a test below checks (a new example needs one).
 const std::set<std::string> kClaimsChecked = {
     "back-and-forth.yaml", "classic.yaml", "falling-chain.yaml", "heavy-middle.yaml", "long-ladder.yaml",
-    "particles-and-springs.yaml", "pendulum.yaml", "wrong-way.yaml"};
+    "particles-and-springs.yaml", "pendulum.yaml", "two-ripples.yaml", "wrong-way.yaml"};
 
 // What "small" means for the energy books of a ladder: lifting all of it
 // through its own height, m g N L (1 J for the classic ladder).
@@ -133,6 +133,49 @@ private slots:
         QCOMPARE(reach(first), 5);
         QVERIFY(first.at(5) < 1.7);
         QCOMPARE(reach(firstFlips(r.events, 1.7)), 5);
+    }
+
+    // "Turned over on its own, the top block sends a ripple through all eleven
+    // hinges, a flip every 0.13 s or so at first ... turns the block back at
+    // 0.9 s ... (hinge 4 has just flipped) ... Hinges 1 to 5 each flip twice,
+    // there and back, and hinges 6 to 10 never flip ... turn back at 0.85 s
+    // or at 1.0 s instead and both ripples get through, every hinge from 1 to
+    // 10 flipping at least twice."
+    void twoRipplesCancelAtHingeFive() {
+        const Run r = soundRun("two-ripples.yaml");
+        if (QTest::currentTestFailed()) return;
+        auto flipsOf = [](const std::vector<Event>& events) {
+            std::map<int, int> n;
+            for (const Event& e : events)
+                if (e.kind == EventKind::FlipFlop) ++n[e.hinge];
+            return n;
+        };
+        const auto flips = flipsOf(r.events);
+        for (int j = 1; j <= 5; ++j) QVERIFY2(flips.count(j) && flips.at(j) == 2, qPrintable(QString("hinge %1").arg(j)));
+        for (int j = 6; j <= 10; ++j) QVERIFY2(!flips.count(j), qPrintable(QString("hinge %1 flipped").arg(j)));
+        QVERIFY(flips.count(11));
+        const auto first = firstFlips(r.events);
+        QVERIFY(first.at(4) < 0.9 && first.at(5) > 0.9);
+        const auto second = firstFlips(r.events, 1.0);
+        QVERIFY(second.count(1) && second.count(5) && second.at(1) < second.at(5));
+        for (int j = 1; j < 4; ++j) QVERIFY(first.at(j + 1) - first.at(j) > 0.1 && first.at(j + 1) - first.at(j) < 0.16);
+
+        // The same ladder turned over alone: its ripple reaches all eleven hinges.
+        SceneLoad load = loadScene(std::string(JL_SOURCE_DIR) + "/examples/two-ripples.yaml");
+        QVERIFY(load.scene);
+        Scene alone = *load.scene;
+        alone.script.pop_back();
+        auto sim = Simulation::build(alone).simulation;
+        QCOMPARE(reach(firstFlips(runUntil(*sim, 3.5).events)), 11);
+        // Turned back earlier or later: both ripples get through.
+        for (double at : {0.85, 1.0}) {
+            Scene s = *load.scene;
+            s.script.back().at = at;
+            auto other = Simulation::build(s).simulation;
+            const auto n = flipsOf(runUntil(*other, 4.0).events);
+            for (int j = 1; j <= 10; ++j)
+                QVERIFY2(n.count(j) && n.at(j) >= 2, qPrintable(QString("turned back at %1 s: hinge %2").arg(at).arg(j)));
+        }
     }
 
     // "The first two blocks lock end to end within 0.05 s of the start of the
