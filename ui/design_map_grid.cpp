@@ -133,6 +133,7 @@ void DesignMapGrid::paintEvent(QPaintEvent*) {
         p.drawRect(cell.adjusted(2, 2, -2, -2));
         p.setPen(QPen(Qt::white, 1));
         p.drawRect(cell.adjusted(2, 2, -2, -2));
+        p.setPen(palette().color(QPalette::WindowText));  // the axes are text on the window
     }
 
     // Axes: ticks at cell centres, every k-th when they would overlap.

@@ -50,6 +50,9 @@ public:
     QWidget* viewContainer() const { return viewContainer_; }
     TeachingDocks* teaching() const { return teaching_; }
     PresentationMode* presentation() const { return presentation_; }
+    // Shows the window's design map, made on first use (kept, with its cache).
+    void showDesignMap();
+    DesignMap* designMap() const { return designMap_; }
     void setSpeed(double factor);
 
 protected:
@@ -63,7 +66,6 @@ private:
     void createToolBar();
     void createDocks();
     void createTeaching();
-    void showDesignMap();
     void createStatusBar();
     void connectView();
     void showFailure(const QString& failure);

@@ -1,7 +1,9 @@
 // The desktop program: jacobsladder [scene.yaml]
+#include "ui/design_map.h"
 #include "ui/ladder_view.h"
 #include "ui/lessons.h"
 #include "ui/main_window.h"
+#include "ui/presentation_mode.h"
 #include "ui/sim_controller.h"
 
 #include <QApplication>
@@ -10,17 +12,22 @@
 #include <QTimer>
 
 #include <cstdio>
+#include <functional>
 
 namespace {
 
-// Hidden option for documentation: grab the screen after a while, save it, quit.
-void scheduleScreenshot(jl::ui::MainWindow& window, const QString& file, double afterSeconds) {
-    QTimer::singleShot(int(afterSeconds * 1000), &window, [&window, file] {
-        QScreen* screen = window.screen();
-        const QPixmap shot = screen->grabWindow(0, window.frameGeometry().x(), window.frameGeometry().y(),
-                                                window.frameGeometry().width(), window.frameGeometry().height());
-        shot.save(file);
+// Hidden option for documentation (tools/screenshots.sh): grab what the
+// screen shows of `shown` (the window, or a dialog of it) after a while,
+// save it, quit. The screen, not the widget: QWidget::grab misses the 3-D view.
+void scheduleScreenshot(jl::ui::MainWindow& window, std::function<QWidget*()> shown, const QString& file,
+                        double afterSeconds) {
+    QTimer::singleShot(int(afterSeconds * 1000), &window, [&window, shown, file] {
+        QWidget* w = shown();
+        const QRect r = w->frameGeometry();
+        const QPixmap shot = w->screen()->grabWindow(0, r.x(), r.y(), r.width(), r.height());
+        if (!shot.save(file)) std::fprintf(stderr, "jacobsladder: could not write %s\n", qPrintable(file));
         window.close();
+        QApplication::quit();
     });
 }
 
@@ -45,9 +52,11 @@ int main(int argc, char** argv) {
     QCommandLineOption seek("seek", "Simulate up to SECONDS and show that moment.", "SECONDS");
     QCommandLineOption orbit("orbit", "Turn the view by DEGREES about the ladder.", "DEGREES");
     QCommandLineOption lessons("lessons-directory", "Print where the lessons (the examples) are found, then quit.");
-    for (QCommandLineOption* o : {&screenshot, &after, &seek, &orbit, &lessons})
+    QCommandLineOption designMap("design-map", "Open the design map (--screenshot then shows it).");
+    QCommandLineOption present("present", "Start in presentation mode.");
+    for (QCommandLineOption* o : {&screenshot, &after, &seek, &orbit, &lessons, &designMap, &present})
         o->setFlags(QCommandLineOption::HiddenFromHelp);
-    parser.addOptions({screenshot, after, play, seek, orbit, lessons});
+    parser.addOptions({screenshot, after, play, seek, orbit, lessons, designMap, present});
     parser.process(app);
     if (parser.isSet(lessons)) {
         std::printf("%s\n", qPrintable(jl::ui::lessonsDirectory()));
@@ -61,6 +70,20 @@ int main(int argc, char** argv) {
     if (parser.isSet(orbit)) window.ladderView()->orbit(parser.value(orbit).toFloat(), 0);
     if (parser.isSet(seek)) window.controller()->seek(parser.value(seek).toDouble());
     if (parser.isSet(play)) window.controller()->play();
-    if (parser.isSet(screenshot)) scheduleScreenshot(window, parser.value(screenshot), parser.value(after).toDouble());
+    if (parser.isSet(present)) window.presentation()->setActive(true);
+    if (parser.isSet(designMap)) {
+        window.showDesignMap();
+        window.designMap()->compute();
+    }
+    if (parser.isSet(screenshot)) {
+        const bool map = parser.isSet(designMap);
+        scheduleScreenshot(
+            window,
+            [&window, map]() -> QWidget* {
+                if (map && window.designMap()) return window.designMap();
+                return &window;
+            },
+            parser.value(screenshot), parser.value(after).toDouble());
+    }
     return app.exec();
 }

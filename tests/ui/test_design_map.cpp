@@ -70,6 +70,15 @@ private slots:
         QVERIFY(map.grid()->cellText(1, 1).contains("hinge 5 of 5"));
         // The new ladder (6 blocks, 12 mm) is that cell, framed.
         QCOMPARE(map.grid()->current(), std::pair(1, 1));
+        // The axes are written in the window's text colour, whatever was framed
+        // last: below the cells (ticks and title) some pixels are dark.
+        const QImage shown = map.grid()->grab().toImage();
+        const QRect below(0, map.grid()->cellRect(0, 0).bottom() + 4, shown.width(),
+                          shown.height() - map.grid()->cellRect(0, 0).bottom() - 4);
+        int dark = 0;
+        for (int y = below.top(); y < below.bottom(); ++y)
+            for (int x = below.left(); x < below.right(); ++x) dark += qGray(shown.pixel(x, y)) < 100 ? 1 : 0;
+        QVERIFY2(dark > 20, qPrintable(QString("%1 dark pixels under the map").arg(dark)));
     }
 
     void reopeningComesFromTheCache() {
