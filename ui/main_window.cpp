@@ -26,6 +26,7 @@
 #include <QSlider>
 #include <QStatusBar>
 #include <QStyle>
+#include <QTimer>
 #include <QToolBar>
 #include <QVBoxLayout>
 
@@ -300,6 +301,22 @@ void MainWindow::createTeaching() {
     connect(teaching_->presentationAction(), &QAction::triggered, presentation_, &PresentationMode::toggle);
     connect(presentation_, &PresentationMode::activeChanged, teaching_->presentationAction(), &QAction::setChecked);
     connect(presentation_, &PresentationMode::activeChanged, teaching_, &TeachingDocks::setLarge);
+    // Large type needs room: on the projector the plots get a third of the
+    // screen's height (their tick labels would otherwise be cut to "..."),
+    // and their own height back afterwards.
+    connect(presentation_, &PresentationMode::activeChanged, this, [this](bool on) {
+        QDockWidget* plots = teaching_->plotsDock();
+        if (!on) {
+            if (plotsHeightBefore_ > 0) resizeDocks({plots}, {plotsHeightBefore_}, Qt::Vertical);
+            plotsHeightBefore_ = -1;
+            return;
+        }
+        plotsHeightBefore_ = plots->height();
+        QTimer::singleShot(0, this, [this, plots] {
+            if (presentation_->active())
+                resizeDocks({plots}, {std::max(plots->height(), height() / 3)}, Qt::Vertical);
+        });
+    });
 }
 
 void MainWindow::createStatusBar() {

@@ -106,6 +106,7 @@ private:
     PresentationMode* presentation_ = nullptr;
     QMenu* helpMenu_ = nullptr;
     DesignMap* designMap_ = nullptr;
+    int plotsHeightBefore_ = -1;  // the plots dock's height before presentation mode
     QMenu* recentMenu_ = nullptr;
     QMenu* viewMenu_ = nullptr;
     QSlider* speedSlider_ = nullptr;

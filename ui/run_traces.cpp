@@ -14,11 +14,11 @@ QString traceName(EnergyTrace t) {
     case EnergyTrace::Kinetic: return QObject::tr("kinetic");
     case EnergyTrace::Potential: return QObject::tr("potential");
     case EnergyTrace::Total: return QObject::tr("total E");
-    case EnergyTrace::ImpactLoss: return QObject::tr("lost in impacts");
-    case EnergyTrace::DampingLoss: return QObject::tr("lost to damping");
-    case EnergyTrace::HeldWork: return QObject::tr("work by the hand");
-    case EnergyTrace::UserWork: return QObject::tr("work by drags");
-    case EnergyTrace::Balance: return QObject::tr("books: E - (E0 + W - D)");
+    case EnergyTrace::ImpactLoss: return QObject::tr("impact loss");
+    case EnergyTrace::DampingLoss: return QObject::tr("damping loss");
+    case EnergyTrace::HeldWork: return QObject::tr("hand's work");
+    case EnergyTrace::UserWork: return QObject::tr("drags' work");
+    case EnergyTrace::Balance: return QObject::tr("balance");
     case EnergyTrace::Count: break;
     }
     return {};

@@ -147,7 +147,7 @@ void TimeChart::setExtraMargins(double left, double right) {
 void TimeChart::setLarge(bool large) {
     if (large == large_) return;
     large_ = large;
-    const double k = large ? 1.8 : 1.0;
+    const double k = large ? 1.5 : 1.0;
     auto scaled = [k](QFont f) {
         f.setPointSizeF(f.pointSizeF() * k);
         return f;
@@ -158,6 +158,9 @@ void TimeChart::setLarge(bool large) {
         a->setLabelsFont(scaled(fonts_.labels));
         a->setTitleFont(scaled(fonts_.axisTitle));
     }
+    // Time is the same on every chart and the timeline says it: in large type
+    // its title gives its room to the tick labels.
+    timeAxis_->setTitleVisible(!large);
     for (QAbstractSeries* a : chart()->series()) {
         auto* s = static_cast<QLineSeries*>(a);
         QPen pen = s->pen();

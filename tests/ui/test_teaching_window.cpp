@@ -11,6 +11,8 @@
 #include "ui_test_support.h"
 
 #include <QDockWidget>
+#include <QGraphicsScene>
+#include <QGraphicsTextItem>
 #include <QMenuBar>
 #include <QScreen>
 #include <QSignalSpy>
@@ -26,6 +28,16 @@ jl::Scene classic() {
     const jl::SceneLoad load = jl::loadScene(std::string(JL_SOURCE_DIR) + "/examples/classic.yaml");
     if (!load.scene) qFatal("classic.yaml does not load");
     return *load.scene;
+}
+
+// Axis labels and titles a chart had to cut short ("..." in place of text).
+int cutLabels(TimeChart* chart) {
+    int cut = 0;
+    for (QGraphicsItem* item : chart->scene()->items())
+        if (auto* text = dynamic_cast<QGraphicsTextItem*>(item))
+            if (text->isVisible() && (text->toPlainText().contains("...") || text->toPlainText().contains(QChar(0x2026))))
+                ++cut;
+    return cut;
 }
 
 struct Fixture {
@@ -110,6 +122,12 @@ private slots:
         QVERIFY(sideDock->isVisible());
         QVERIFY(f.window.font().pointSizeF() > before.pointSizeF() * 1.5);
         QCOMPARE(f.teaching.sideView()->options().scale, 2.0);
+        // The plots get room for their large type: no tick label cut to "...".
+        QTRY_VERIFY(f.window.findChild<QDockWidget*>("plotsDock")->height() >= f.window.height() / 3 - 2);
+        QTest::qWait(200);
+        for (TimeChart* c : {f.teaching.plots()->energyChart(), f.teaching.plots()->foldChart(),
+                             f.teaching.plots()->speedChart()})
+            QCOMPARE(cutLabels(c), 0);
         // The keyboard still drives: Space plays, though the toolbar is hidden.
         f.window.activateWindow();
         QVERIFY(QTest::qWaitForWindowActive(&f.window));
