@@ -259,7 +259,8 @@ void MainWindow::createDocks() {
     QDockWidget* simDock = dock(tr("Simulation"), "simulationDock", simulationPanel_, Qt::LeftDockWidgetArea);
     scriptDock_ = dock(tr("Script"), "scriptDock", scriptPanel_, Qt::RightDockWidgetArea);
     QDockWidget* scriptDock = scriptDock_;
-    QDockWidget* eventsDock = dock(tr("Events"), "eventsDock", eventsPanel_, Qt::RightDockWidgetArea);
+    eventsDock_ = dock(tr("Events"), "eventsDock", eventsPanel_, Qt::RightDockWidgetArea);
+    QDockWidget* eventsDock = eventsDock_;
     tabifyDockWidget(ladderDock_, simDock);
     ladderDock_->raise();
     splitDockWidget(scriptDock, eventsDock, Qt::Vertical);
@@ -288,8 +289,10 @@ void MainWindow::createTeaching() {
     // The script is seldom edited in class: the side view shares its place, in front.
     tabifyDockWidget(scriptDock_, side);
     side->raise();
-    // Tabifying forgets the column's width the window asked for: ask again.
+    // Tabifying forgets the column's width the window asked for: ask again;
+    // and the side view, in front, gets the larger part of the column's height.
     resizeDocks({side}, {std::max(380, scriptDock_->width())}, Qt::Horizontal);
+    resizeDocks({side, eventsDock_}, {460, 260}, Qt::Vertical);
     addDockWidget(Qt::BottomDockWidgetArea, teaching_->plotsDock());
     addDockWidget(Qt::LeftDockWidgetArea, teaching_->lessonDock());
     tabifyDockWidget(ladderDock_, teaching_->lessonDock());

@@ -102,6 +102,7 @@ private:
     EventsPanel* eventsPanel_;
     QDockWidget* ladderDock_ = nullptr;
     QDockWidget* scriptDock_ = nullptr;
+    QDockWidget* eventsDock_ = nullptr;
     TeachingDocks* teaching_ = nullptr;
     PresentationMode* presentation_ = nullptr;
     QMenu* helpMenu_ = nullptr;

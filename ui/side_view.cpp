@@ -3,8 +3,10 @@
 #include "jl/ladder/block_corners.h"
 #include "jl/ladder/ladder.h"
 
+#include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
+#include <QWheelEvent>
 
 #include <algorithm>
 #include <cmath>
@@ -72,7 +74,63 @@ SideView::SideView(QWidget* parent) : QWidget(parent) {
     setMinimumSize(160, 160);
     setAttribute(Qt::WA_OpaquePaintEvent);
     setToolTip(tr("The ladder seen from the side, as the paper draws it. Hinges: green free, blue locked open, "
-                  "orange folded."));
+                  "orange folded. Wheel: zoom; drag: pan; double-click: follow the whole ladder again."));
+}
+
+// Where the ladder is drawn: all of `target` but a band at the top (the
+// clock) and one at the bottom (the legend, and the scale bar above it).
+QRectF SideView::plotArea(const QRectF& target, double ui) const {
+    const double line = (12 * ui) * 1.4, band = line + 12 * ui;
+    if (target.height() < 6 * band) return target;
+    const bool legend = options_.legend && !frame_->hinges.empty();
+    return target.adjusted(0, options_.clock ? band : 0, 0, -(band + (legend ? line : 0)));
+}
+
+double SideView::uiScale() const { return options_.scale * std::max(1.0, std::min(width(), height()) / 700.0); }
+
+// The mouse: the wheel zooms about the pointer, a drag pans, a double click
+// goes back to following the whole ladder. Zoomed or panned, the view stays
+// where the user put it.
+void SideView::wheelEvent(QWheelEvent* e) {
+    if (framing_.isEmpty()) return;
+    const Mapping map(framing_, plotArea(rect(), uiScale()));
+    const QPointF at = e->position();
+    const jl::Vec2 fixed((at.x() - map.origin.x()) / map.scale, (map.origin.y() - at.y()) / map.scale);
+    const double factor = std::pow(0.85, e->angleDelta().y() / 120.0);
+    QRectF r = framing_;
+    r = QRectF(fixed.x() - (fixed.x() - r.left()) * factor, fixed.y() - (fixed.y() - r.top()) * factor,
+               r.width() * factor, r.height() * factor);
+    if (r.width() < 1e-3 || r.width() > 1e3) return;
+    framing_ = r;
+    following_ = false;
+    update();
+    e->accept();
+}
+
+void SideView::mousePressEvent(QMouseEvent* e) {
+    if (e->button() != Qt::LeftButton) return QWidget::mousePressEvent(e);
+    dragFrom_ = e->position();
+    setCursor(Qt::ClosedHandCursor);
+}
+
+void SideView::mouseMoveEvent(QMouseEvent* e) {
+    if (!(e->buttons() & Qt::LeftButton) || framing_.isEmpty()) return QWidget::mouseMoveEvent(e);
+    const Mapping map(framing_, plotArea(rect(), uiScale()));
+    const QPointF d = e->position() - dragFrom_;
+    dragFrom_ = e->position();
+    framing_.translate(-d.x() / map.scale, d.y() / map.scale);
+    following_ = false;
+    update();
+}
+
+void SideView::mouseReleaseEvent(QMouseEvent* e) {
+    unsetCursor();
+    QWidget::mouseReleaseEvent(e);
+}
+
+void SideView::mouseDoubleClickEvent(QMouseEvent*) {
+    following_ = true;
+    resetFraming();
 }
 
 void SideView::setScene(const jl::Scene& scene) {
@@ -126,6 +184,7 @@ QRectF SideView::extentOf(const jl::Frame& f) const {
 
 void SideView::resetFraming() {
     framing_ = {};
+    following_ = true;
     if (!frame_->poses.empty()) growFraming(extentOf(*frame_));
     update();
 }
@@ -136,6 +195,7 @@ void SideView::setFraming(const QRectF& plane) {
 }
 
 void SideView::growFraming(const QRectF& need) {
+    if (!following_ && !framing_.isEmpty()) return;  // zoomed or panned by hand: stay there
     if (need.isEmpty() || framing_.contains(need)) return;
     QRectF r = framing_.isEmpty() ? need : framing_.united(need);
     // Grow with room to spare, so a swinging ladder changes scale seldom.
@@ -160,7 +220,8 @@ void SideView::showFrame(std::shared_ptr<const jl::Frame> frame) {
 
 QPointF SideView::pixelOf(const jl::Vec2& point, const QRectF& target) const {
     if (framing_.isEmpty()) return target.center();
-    return Mapping(framing_, target)(point);
+    const double ui = options_.scale * std::max(1.0, std::min(target.width(), target.height()) / 700);
+    return Mapping(framing_, plotArea(target, ui))(point);
 }
 
 QImage SideView::render(const QSize& size) const {
@@ -184,10 +245,10 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
         p.restore();
         return;
     }
-    const Mapping map(framing_, target);
     const double ui = options_.scale * std::max(1.0, std::min(target.width(), target.height()) / 700);
     QFont font = p.font();
     font.setPixelSize(int(std::lround(12 * ui)));
+    const Mapping map(framing_, plotArea(target, ui));
 
     // A grid of round lengths, at least ~80 px apart: the scale at a glance.
     double cell = 0.01;
@@ -323,9 +384,11 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
         p.setPen(kInk);
         p.drawText(QPointF(target.left() + pad, target.top() + pad + m.ascent()), tr("t = %1 s").arg(frame_->time, 0, 'f', 3));
     }
-    // The scale bar: one grid cell.
+    // The scale bar: one grid cell, above the legend's row.
     {
-        const QPointF a(target.left() + pad, target.bottom() - pad), b = a + QPointF(cell * map.scale, 0);
+        const bool legendRow = options_.legend && !frame_->hinges.empty();
+        const QPointF a(target.left() + pad, target.bottom() - pad - (legendRow ? m.height() * 1.4 : 0));
+        const QPointF b = a + QPointF(cell * map.scale, 0);
         p.setPen(QPen(kInk, 1.5 * ui));
         p.drawLine(a, b);
         p.drawLine(a, a - QPointF(0, 4 * ui));
@@ -333,25 +396,24 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
         const QString length = cell < 1 ? tr("%1 cm").arg(std::lround(cell * 100)) : tr("%1 m").arg(cell);
         p.drawText(QPointF(b.x() + 4 * ui, a.y()), length);
     }
+    // The legend: one row at the bottom right, clear of the ladder (the
+    // drawing keeps out of the top and bottom bands).
     if (options_.legend && !frame_->hinges.empty()) {
         const std::pair<jl::HingeMode, QString> items[] = {{jl::HingeMode::Free, tr("free")},
                                                             {jl::HingeMode::OpenLocked, tr("locked open")},
                                                             {jl::HingeMode::Folded, tr("folded")}};
+        const double dot = 6 * ui, gap = 10 * ui;
         double width = 0;
-        for (const auto& [mode, text] : items) width = std::max(width, m.horizontalAdvance(text));
-        const double line = m.height() * 1.25, boxW = width + 3.2 * line, boxH = line * 3 + pad;
-        const QRectF box(target.right() - pad - boxW, target.top() + pad, boxW, boxH);
-        p.setPen(QPen(kGrid.darker(120), 1));
-        p.setBrush(QColor(255, 255, 255, 230));
-        p.drawRoundedRect(box, 4 * ui, 4 * ui);
-        double y = box.top() + pad / 2 + line / 2;
+        for (const auto& [mode, text] : items) width += 2 * dot + 4 * ui + m.horizontalAdvance(text) + gap;
+        double x = target.right() - pad - width + gap;
+        const double y = target.bottom() - pad - m.height() / 2;
         for (const auto& [mode, text] : items) {
             p.setPen(QPen(Qt::white, 1.2 * ui));
             p.setBrush(hingeColor(mode));
-            p.drawEllipse(QPointF(box.left() + line * 0.8, y), 6 * ui, 6 * ui);
+            p.drawEllipse(QPointF(x + dot, y), dot, dot);
             p.setPen(kInk);
-            p.drawText(QPointF(box.left() + line * 1.6, y + m.ascent() / 2 - m.descent() / 2), text);
-            y += line;
+            p.drawText(QPointF(x + 2 * dot + 4 * ui, y + m.ascent() / 2 - m.descent() / 2), text);
+            x += 2 * dot + 4 * ui + m.horizontalAdvance(text) + gap;
         }
     }
     p.restore();

@@ -43,10 +43,13 @@ public:
     const SideViewOptions& options() const { return options_; }
 
     // The part of the plane shown (m). It grows to keep every block in view
-    // and never shrinks by itself, so the picture does not jump about.
+    // and never shrinks by itself, so the picture does not jump about; once
+    // zoomed (wheel) or panned (drag) by hand it stays put until a double
+    // click or resetFraming.
     QRectF framing() const { return framing_; }
     void setFraming(const QRectF& plane);
     void resetFraming();
+    bool following() const { return following_; }
     // Everything frame `f` occupies in the plane (m).
     QRectF extentOf(const jl::Frame& f) const;
 
@@ -61,11 +64,18 @@ public:
 
 protected:
     void paintEvent(QPaintEvent*) override;
+    void wheelEvent(QWheelEvent* e) override;
+    void mousePressEvent(QMouseEvent* e) override;
+    void mouseMoveEvent(QMouseEvent* e) override;
+    void mouseReleaseEvent(QMouseEvent* e) override;
+    void mouseDoubleClickEvent(QMouseEvent* e) override;
 
 private:
     struct Mapping;
     std::array<jl::Vec2, 4> corners(int block) const;  // in the plane, numbered as the engine numbers them
     void growFraming(const QRectF& need);
+    QRectF plotArea(const QRectF& target, double ui) const;
+    double uiScale() const;
 
     std::vector<BlockShape> shapes_;
     std::vector<std::array<jl::Vec2, 4>> cornerLocal_;  // ladder blocks, from jl::blockCorners
@@ -74,6 +84,8 @@ private:
     double ribbonThickness_ = 0.0005;
     std::shared_ptr<const jl::Frame> frame_ = std::make_shared<const jl::Frame>();
     QRectF framing_;
+    bool following_ = true;  // the framing grows with the ladder (until zoomed or panned by hand)
+    QPointF dragFrom_;
     SideViewOptions options_;
 };
 

@@ -12,13 +12,16 @@
 #include "ui/time_chart.h"
 #include "ui_test_support.h"
 
+#include <QApplication>
 #include <QDir>
 #include <QLineSeries>
 #include <QListWidget>
+#include <QMouseEvent>
 #include <QSignalSpy>
 #include <QSvgRenderer>
 #include <QTemporaryDir>
 #include <QValueAxis>
+#include <QWheelEvent>
 #include <QtTest>
 
 #include <cmath>
@@ -80,8 +83,8 @@ private slots:
             QCOMPARE(pts.size(), int(run.frames.size()));
             for (size_t i = 0; i < run.frames.size(); ++i) {
                 const jl::EnergyFrame& e = run.frames[i].energy;
-                const double expected[] = {e.kinetic, e.potential, e.total(), e.impactLoss,
-                                           e.dampingLoss, e.heldWork, e.userWork, e.balance()};
+                const double expected[] = {e.kinetic,     e.potential, e.total(),  e.impactLoss,
+                                           e.dampingLoss, e.heldWork,  e.userWork, e.balance()};
                 QCOMPARE(pts[int(i)].x(), run.frames[i].time);
                 QCOMPARE(pts[int(i)].y(), expected[t] * plots.energyScale());
             }
@@ -94,7 +97,8 @@ private slots:
         // Fold angles are drawn in degrees.
         const auto* hinge1 = static_cast<QLineSeries*>(plots.foldChart()->chart()->series().first());
         QCOMPARE(hinge1->name(), QString("hinge 1"));
-        QVERIFY(std::abs(hinge1->points()[30].y() - run.frames[30].hinges[0].foldAngle * (180 / std::numbers::pi)) < 1e-12);
+        QVERIFY(std::abs(hinge1->points()[30].y() - run.frames[30].hinges[0].foldAngle * (180 / std::numbers::pi)) <
+                1e-12);
     }
 
     void theEnergyBooksBalanceToAFlatLineInTheClassicCascade() {
@@ -144,13 +148,16 @@ private slots:
         QTest::qWait(50);  // the charts lay out their new axes
         QSignalSpy seeks(&plots, &RunPlots::seekRequested);
         for (TimeChart* chart : {plots.energyChart(), plots.foldChart(), plots.speedChart()}) {
-            const QPoint at = chart->viewPointOf(0.7, chart->valueAxis()->min() * 0.5 + chart->valueAxis()->max() * 0.5).toPoint();
+            const QPoint at =
+                chart->viewPointOf(0.7, chart->valueAxis()->min() * 0.5 + chart->valueAxis()->max() * 0.5).toPoint();
             QTest::mouseClick(chart->viewport(), Qt::LeftButton, {}, at);
             QVERIFY(!seeks.isEmpty());
             const double t = seeks.takeLast().at(0).toDouble();
             // Within the time one pixel spans.
-            const double pixel = (chart->timeAxis()->max() - chart->timeAxis()->min()) / chart->chart()->plotArea().width();
-            QVERIFY2(std::abs(t - 0.7) < 1.5 * pixel, qPrintable(QString("%2: asked for 0.7 s, got %1 s").arg(t).arg(chart->chart()->title())));
+            const double pixel =
+                (chart->timeAxis()->max() - chart->timeAxis()->min()) / chart->chart()->plotArea().width();
+            QVERIFY2(std::abs(t - 0.7) < 1.5 * pixel,
+                     qPrintable(QString("%2: asked for 0.7 s, got %1 s").arg(t).arg(chart->chart()->title())));
         }
         // A click beside the plot (on the axis labels) asks for nothing.
         QTest::mouseClick(plots.energyChart()->viewport(), Qt::LeftButton, {}, QPoint(2, 2));
@@ -168,7 +175,9 @@ private slots:
         auto* list = panel.findChild<QListWidget*>("events");
         QCOMPARE(list->count(), int(run.events.size()));
         // Each entry says when and what, in words.
-        QCOMPARE(list->item(2)->text(), QString("%1 s: %2").arg(run.events[2].time, 0, 'f', 3).arg(QString::fromStdString(run.events[2].text)));
+        QCOMPARE(
+            list->item(2)->text(),
+            QString("%1 s: %2").arg(run.events[2].time, 0, 'f', 3).arg(QString::fromStdString(run.events[2].text)));
         QVERIFY(!run.events[2].text.empty());
         QSignalSpy seeks(&panel, &EventsPanel::seekRequested);
         list->scrollToItem(list->item(2));
@@ -206,7 +215,8 @@ private slots:
         QStringList rows;
         for (int i = 0; i < list->count(); ++i) rows << list->item(i)->text();
         QCOMPARE(list->count(), 6);
-        QVERIFY2(rows[2].startsWith("0.300–0.318 s: blocks 0 and 1 lock and unlock again and again (10 events)"), qPrintable(rows[2]));
+        QVERIFY2(rows[2].startsWith("0.300–0.318 s: blocks 0 and 1 lock and unlock again and again (10 events)"),
+                 qPrintable(rows[2]));
         QVERIFY2(rows[3].contains("block 2 flips"), qPrintable(rows[3]));
         QVERIFY(rows[4].startsWith("1.000 s:") && rows[5].startsWith("1.005 s:"));
         QSignalSpy seeks(&panel, &EventsPanel::seekRequested);
@@ -241,7 +251,8 @@ private slots:
             const QPoint at = view.pixelOf(f.poses[i].position, target).toPoint();
             QVERIFY(image.rect().contains(at));
             const QColor c = image.pixelColor(at);
-            QVERIFY2(near(c, wood), qPrintable(QString("block %1 at %2,%3 is %4").arg(i).arg(at.x()).arg(at.y()).arg(colorText(c))));
+            QVERIFY2(near(c, wood),
+                     qPrintable(QString("block %1 at %2,%3 is %4").arg(i).arg(at.x()).arg(at.y()).arg(colorText(c))));
         }
         // Well outside the ladder: the background (or a grid line), never wood.
         // The middle of the framing's left or right edge, whichever is further from every block.
@@ -267,10 +278,57 @@ private slots:
                 if (&o != &h && (o.position - h.position).norm() < 0.006) alone = false;
             if (!alone) continue;
             const QColor hc = image.pixelColor(view.pixelOf(h.position, target).toPoint());
-            QVERIFY2(near(hc, hingeColor(h.mode), 6), qPrintable(QString("%1 hinge is %2").arg(jl::toString(h.mode)).arg(colorText(hc))));
+            QVERIFY2(near(hc, hingeColor(h.mode), 6),
+                     qPrintable(QString("%1 hinge is %2").arg(jl::toString(h.mode)).arg(colorText(hc))));
             ++checked;
         }
         QVERIFY(checked >= 3);
+    }
+
+    // The wheel zooms about the pointer, a drag pans, and the view then stays
+    // where the user put it; a double click follows the whole ladder again.
+    // The clock and the legend keep clear of the drawing.
+    void theSideViewZoomsPansAndFollowsAgain() {
+        const jl::Scene scene = loadExample("classic.yaml");
+        const Run run = runHeadless(scene, 0.7);
+        SideView view;
+        view.resize(400, 500);
+        view.setScene(scene);
+        view.showFrame(run.frames.front());
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        const QRectF whole = view.framing();
+        QVERIFY(view.following());
+        // Nothing drawn under the clock's band or the legend's row.
+        const QRectF target(QPointF(0, 0), QSizeF(view.size()));
+        for (const jl::Pose& b : run.frames.front().poses) {
+            const QPointF at = view.pixelOf(b.position, target);
+            QVERIFY2(at.y() > 30 && at.y() < view.height() - 50, qPrintable(QString::number(at.y())));
+        }
+        // Zoom in about block 3: it stays under the pointer, the framing shrinks.
+        const jl::Vec2 block3 = run.frames.front().poses[3].position;
+        const QPointF pointer = view.pixelOf(block3, target);
+        QWheelEvent wheel(pointer, view.mapToGlobal(pointer), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
+                          Qt::NoScrollPhase, false);
+        QApplication::sendEvent(&view, &wheel);
+        QVERIFY(view.framing().width() < 0.9 * whole.width());
+        QVERIFY(!view.following());
+        QVERIFY((view.pixelOf(block3, target) - pointer).manhattanLength() < 1.0);
+        // Later frames do not move a view the user has zoomed.
+        const QRectF zoomed = view.framing();
+        view.showFrame(run.frames.back());
+        QCOMPARE(view.framing(), zoomed);
+        // A drag of 40 px to the right moves the picture with the mouse.
+        QTest::mousePress(&view, Qt::LeftButton, {}, QPoint(200, 250));
+        QMouseEvent move(QEvent::MouseMove, QPointF(240, 250), view.mapToGlobal(QPointF(240, 250)), Qt::NoButton,
+                         Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(&view, &move);
+        QTest::mouseRelease(&view, Qt::LeftButton, {}, QPoint(240, 250));
+        QVERIFY(std::abs(view.pixelOf(block3, target).x() - pointer.x() - 40) < 1.0);
+        // A double click: the whole ladder in view again, following.
+        QTest::mouseDClick(&view, Qt::LeftButton, {}, QPoint(200, 250));
+        QVERIFY(view.following());
+        QVERIFY(view.framing().contains(view.extentOf(run.frames.back())));
     }
 
     void theSideViewUsesTheEnginesCornerNumbers() {
@@ -432,15 +490,20 @@ private slots:
         // Nothing recorded yet: it simulates on until the first event happens.
         pacing.runToNextEvent();
         const int first = int(std::ceil(run.events[0].time / dt - 1e-9));
-        QVERIFY(jl::test::waitForStatus(&sim, [&](const SimStatus& s) { return !pacing.seekingEvent() && s.frameIndex == first; }));
+        QVERIFY(jl::test::waitForStatus(
+            &sim, [&](const SimStatus& s) { return !pacing.seekingEvent() && s.frameIndex == first; }));
         // The next one after the frame on screen (the first may share a frame with others).
         const jl::Event* next = nullptr;
         for (const jl::Event& e : run.events)
-            if (e.time > sim.status()->frame->time + 1e-9) { next = &e; break; }
+            if (e.time > sim.status()->frame->time + 1e-9) {
+                next = &e;
+                break;
+            }
         QVERIFY(next);
         pacing.runToNextEvent();
         const int second = int(std::ceil(next->time / dt - 1e-9));
-        QVERIFY(jl::test::waitForStatus(&sim, [&](const SimStatus& s) { return !pacing.seekingEvent() && s.frameIndex == second; }));
+        QVERIFY(jl::test::waitForStatus(
+            &sim, [&](const SimStatus& s) { return !pacing.seekingEvent() && s.frameIndex == second; }));
         QVERIFY(!sim.status()->playing);
     }
 
@@ -455,11 +518,14 @@ private slots:
         sim.play();
         double latest = 0;
         bool wrapped = false;
-        QVERIFY(jl::test::waitForStatus(&sim, [&](const SimStatus& s) {
-            if (s.frame->time < latest - 0.1) wrapped = true;
-            latest = s.frame->time;
-            return wrapped && s.frame->time > 0.15;
-        }, 10000));
+        QVERIFY(jl::test::waitForStatus(
+            &sim,
+            [&](const SimStatus& s) {
+                if (s.frame->time < latest - 0.1) wrapped = true;
+                latest = s.frame->time;
+                return wrapped && s.frame->time > 0.15;
+            },
+            10000));
         sim.pause();
         QVERIFY(latest < 0.3 + 0.2);
     }
@@ -479,7 +545,9 @@ private slots:
         }
         SideViewOptions look;
         look.cornerNumbers = look.orientation = true;
-        QVERIFY(Exporter::sideViewPicture(scene, whole.frames[size_t(at)], QSize(900, 1000), look, out + "/side-view.png").ok);
+        QVERIFY(
+            Exporter::sideViewPicture(scene, whole.frames[size_t(at)], QSize(900, 1000), look, out + "/side-view.png")
+                .ok);
         RunPlots plots;
         plots.resize(1000, 900);
         plots.show();
