@@ -7,6 +7,7 @@
 #include "ui/ladder_view.h"
 #include "ui/presentation_mode.h"
 #include "ui/screen_fit.h"
+#include "ui/scene_text_dialog.h"
 #include "ui/script_panel.h"
 #include "ui/shader_material.h"
 #include "ui/sim_controller.h"
@@ -158,6 +159,10 @@ void MainWindow::createMenus() {
     file->addAction(quitAct_);
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
     edit->addActions({undoAct_, redoAct_});
+    edit->addSeparator();
+    QAction* text = edit->addAction(tr("&Title and Description..."), this, [this] { SceneTextDialog(doc_, this).exec(); });
+    text->setObjectName("sceneTextAction");
+    text->setStatusTip(tr("Edit the scene's title and description: the lesson the Lesson panel shows"));
     QMenu* sim = menuBar()->addMenu(tr("&Simulation"));
     sim->addActions({playAct_, stepAct_, backAct_, restartAct_});
     sim->addSeparator();
@@ -361,6 +366,7 @@ void MainWindow::loadIntoSimulation() {
 
 void MainWindow::onSceneChanged(SceneChange change) {
     const jl::Scene& scene = doc_->scene();
+    if (change == SceneChange::Text) return;  // words: the panels that show them follow the document
     if (change == SceneChange::Drags) {
         // Drags the running simulation recorded itself need no rebuild.
         const auto s = sim_->shown();

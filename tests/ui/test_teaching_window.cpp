@@ -5,17 +5,22 @@
 #include "ui/lessons.h"
 #include "ui/presentation_mode.h"
 #include "ui/run_plots.h"
+#include "ui/scene_text_dialog.h"
 #include "ui/side_view.h"
 #include "ui/teaching_docks.h"
 #include "ui/time_chart.h"
 #include "ui_test_support.h"
 
+#include <QApplication>
 #include <QDockWidget>
 #include <QGraphicsScene>
 #include <QGraphicsTextItem>
+#include <QLineEdit>
 #include <QMenuBar>
+#include <QPlainTextEdit>
 #include <QScreen>
 #include <QSignalSpy>
+#include <QTimer>
 #include <QToolBar>
 #include <QValueAxis>
 #include <QtTest>
@@ -35,7 +40,8 @@ int cutLabels(TimeChart* chart) {
     int cut = 0;
     for (QGraphicsItem* item : chart->scene()->items())
         if (auto* text = dynamic_cast<QGraphicsTextItem*>(item))
-            if (text->isVisible() && (text->toPlainText().contains("...") || text->toPlainText().contains(QChar(0x2026))))
+            if (text->isVisible() &&
+                (text->toPlainText().contains("...") || text->toPlainText().contains(QChar(0x2026))))
                 ++cut;
     return cut;
 }
@@ -53,7 +59,8 @@ struct Fixture {
     }
     bool showsTime(double t) {
         const int index = int(std::floor(t / sim->status()->interval + 1e-6));
-        return jl::test::waitForStatus(sim, [index](const SimStatus& s) { return s.frameIndex == index && !s.playing; });
+        return jl::test::waitForStatus(sim,
+                                       [index](const SimStatus& s) { return s.frameIndex == index && !s.playing; });
     }
 };
 
@@ -76,21 +83,23 @@ private slots:
         // Each new frame shown past the last one becomes a sample of the plots.
         const int samples = f.teaching.plots()->traces().count();
         f.sim->stepForward();
-        QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus& st) { return st.frameIndex == s->frameIndex + 1; }));
+        QVERIFY(
+            jl::test::waitForStatus(f.sim, [&](const SimStatus& st) { return st.frameIndex == s->frameIndex + 1; }));
         QTest::qWait(100);
         QCOMPARE(f.teaching.plots()->traces().count(), samples + 1);
         QCOMPARE(f.teaching.plots()->traces().endTime(), f.sim->status()->frame->time);
-        QCOMPARE(f.teaching.plots()->traces().energy(EnergyTrace::Total).back(), f.sim->status()->frame->energy.total());
+        QCOMPARE(f.teaching.plots()->traces().energy(EnergyTrace::Total).back(),
+                 f.sim->status()->frame->energy.total());
 
         f.teaching.plots()->refresh();
         QTest::qWait(50);
         TimeChart* chart = f.teaching.plots()->energyChart();
-        const QPoint at = chart->viewPointOf(0.3, (chart->valueAxis()->min() + chart->valueAxis()->max()) / 2).toPoint();
+        const QPoint at =
+            chart->viewPointOf(0.3, (chart->valueAxis()->min() + chart->valueAxis()->max()) / 2).toPoint();
         QTest::mouseClick(chart->viewport(), Qt::LeftButton, {}, at);
         const double pixel = (chart->timeAxis()->max() - chart->timeAxis()->min()) / chart->chart()->plotArea().width();
-        QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus& st) {
-            return std::abs(st.frame->time - 0.3) < 1.5 * pixel + st.interval;
-        }));
+        QVERIFY(jl::test::waitForStatus(
+            f.sim, [&](const SimStatus& st) { return std::abs(st.frame->time - 0.3) < 1.5 * pixel + st.interval; }));
     }
 
     void lessonsAndTeachMenusSitBeforeHelp() {
@@ -106,6 +115,38 @@ private slots:
         lessons->actions().at(1)->trigger();
         QCOMPARE(asked.size(), 1);
         QVERIFY(asked.first().at(0).toString().endsWith("wrong-way.yaml"));
+    }
+
+    // Edit > Title and Description: typed into the dialog, shown in the lesson
+    // panel, one undo step, control characters kept out of the file, and the
+    // run on screen left alone (words change no physics).
+    void titleAndDescriptionAreEditedAndUndone() {
+        Fixture f;
+        f.sim->seek(0.5);
+        QVERIFY(f.showsTime(0.5));
+        const auto shownBefore = f.sim->status()->frameIndex;
+        QAction* action = f.window.findChild<QAction*>("sceneTextAction");
+        QVERIFY(action);
+        QTimer::singleShot(0, [] {
+            auto* dialog = qobject_cast<SceneTextDialog*>(QApplication::activeModalWidget());
+            if (!dialog) return;
+            dialog->titleField()->clear();
+            QTest::keyClicks(dialog->titleField(), "Ripples for Year 9");
+            dialog->titleField()->insert(QString(QChar(1)));  // pasted: a control character
+            dialog->descriptionField()->setPlainText("First line.\n\nSecond paragraph.");
+            dialog->accept();
+        });
+        action->trigger();
+        QCOMPARE(f.window.document()->scene().title, std::string("Ripples for Year 9"));
+        QCOMPARE(f.window.document()->scene().description, std::string("First line.\n\nSecond paragraph."));
+        QVERIFY(f.teaching.lessonPanel()->text().contains("Ripples for Year 9"));
+        QVERIFY(f.teaching.lessonPanel()->text().contains("Second paragraph."));
+        QTest::qWait(100);
+        QCOMPARE(f.sim->status()->frameIndex, shownBefore);  // not run again from the start
+        f.window.document()->undoStack()->undo();
+        QCOMPARE(f.window.document()->scene().title, std::string("The classic cascade"));
+        QVERIFY(f.teaching.lessonPanel()->text().contains("The classic cascade"));
+        QCOMPARE(SceneTextDialog::cleanTitle("a\nb\tc"), QString("a b c"));
     }
 
     void presentationModeHidesTheChromeAndComesBack() {
@@ -125,8 +166,8 @@ private slots:
         // The plots get room for their large type: no tick label cut to "...".
         QTRY_VERIFY(f.window.findChild<QDockWidget*>("plotsDock")->height() >= f.window.height() / 3 - 2);
         QTest::qWait(200);
-        for (TimeChart* c : {f.teaching.plots()->energyChart(), f.teaching.plots()->foldChart(),
-                             f.teaching.plots()->speedChart()})
+        for (TimeChart* c :
+             {f.teaching.plots()->energyChart(), f.teaching.plots()->foldChart(), f.teaching.plots()->speedChart()})
             QCOMPARE(cutLabels(c), 0);
         // The keyboard still drives: Space plays, though the toolbar is hidden.
         f.window.activateWindow();
@@ -158,7 +199,8 @@ private slots:
         QTest::qWait(1500);
         QCOMPARE(f.window.size(), QSize(1400, 950));  // the docks fit: showing them did not grow the window
         const QRect g = f.window.frameGeometry();
-        QVERIFY(f.window.screen()->grabWindow(0, g.x(), g.y(), g.width(), g.height()).save(out + "/teaching-window.png"));
+        QVERIFY(
+            f.window.screen()->grabWindow(0, g.x(), g.y(), g.width(), g.height()).save(out + "/teaching-window.png"));
     }
 };
 
