@@ -5,10 +5,12 @@
 #include "jl/design/design_axis.h"
 #include "jl/design/ripple_map.h"
 #include "jl/design/ripple_reach.h"
+#include "jl/scene/scene_ranges.h"
 
 #include <QtTest>
 
 #include <atomic>
+#include <cmath>
 #include <numbers>
 
 using namespace jl;
@@ -21,6 +23,13 @@ private slots:
         QCOMPARE(int(v.size()), 5);  // 0.5 itself, despite 0.1 not being exact in binary
         QCOMPARE(v.back(), 0.1 + 4 * 0.1);
         QCOMPARE(int(axisValues({DesignParameter::Blocks, 6, 50, 2}).size()), 23);
+        // The map of the measurement: 1.5 to 15 mm in ten steps, the last
+        // one 15 mm within rounding.
+        const std::vector<double> t = axisValues({DesignParameter::Thickness, 0.0015, 0.015, 0.0015});
+        QCOMPARE(int(t.size()), 10);
+        QCOMPARE(t.front(), 0.0015);
+        QVERIFY(std::abs(t.back() - 0.015) < 1e-15);
+        QCOMPARE(axisValues({DesignParameter::Density, 600, 600, 1}), std::vector<double>{600});  // one value
         QVERIFY(axisValues({DesignParameter::Blocks, 6, 5, 1}).empty());   // backwards
         QVERIFY(axisValues({DesignParameter::Blocks, 6, 50, 0}).empty());  // no step
     }
@@ -29,6 +38,12 @@ private slots:
         const Scene base = turnedLadder(6, 0.012);
         QCOMPARE(withParameter(base, DesignParameter::Blocks, 12.4).ladder->blocks, 12);
         QCOMPARE(withParameter(base, DesignParameter::Blocks, 1).ladder->blocks, 2);  // a ladder has two blocks at least
+        QCOMPARE(withParameter(base, DesignParameter::Blocks, 1e300).ladder->blocks, range::kMostBlocks);
+        QCOMPARE(withParameter(base, DesignParameter::Blocks, std::nan("")).ladder->blocks, range::kFewestBlocks);
+        QCOMPARE(withParameter(base, DesignParameter::Length, 0.08).ladder->block.length, 0.08);
+        QCOMPARE(withParameter(base, DesignParameter::Width, 0.05).ladder->block.width, 0.05);
+        QCOMPARE(withParameter(base, DesignParameter::Density, 700).ladder->block.density, 700.0);
+        QCOMPARE(withParameter(Scene{}, DesignParameter::Blocks, 9).ladder->blocks, 9);  // a ladder made if none
         QCOMPARE(withParameter(base, DesignParameter::Thickness, 0.003).ladder->block.thickness, 0.003);
         QCOMPARE(withParameter(base, DesignParameter::HingeDamping, 1e-5).ladder->hinges.damping, 1e-5);
         const Scene slow = withParameter(base, DesignParameter::TurnDuration, 0.6);
@@ -48,6 +63,25 @@ private slots:
         QVERIFY(r.flipTimes.front() > 0.45 && r.flipTimes.front() < 0.6);
         for (size_t k = 1; k < r.flipTimes.size(); ++k) QVERIFY(r.flipTimes[k] > r.flipTimes[k - 1]);
         QCOMPARE(r.meanTimeBetweenFlips, (r.flipTimes.back() - r.flipTimes.front()) / 4);
+    }
+
+    // Twelve blocks 12 mm thick: hinge 1 flips and the weight of the blocks
+    // below holds hinge 2 back (docs/model.md section 15: "1 of 11").
+    void aThickLongLadderStopsAfterTheFirstHinge() {
+        const RippleReach r = firstRippleReach(turnedLadder(12, 0.012));
+        QVERIFY2(r.failure.empty(), r.failure.c_str());
+        QCOMPARE(r.hinges, 11);
+        QCOMPARE(r.reached, 1);
+        QCOMPARE(int(r.flipTimes.size()), 1);
+        QCOMPARE(r.meanTimeBetweenFlips, 0.0);  // one flip has no time between flips
+        QCOMPARE(r.until, 1.0 + 0.2 * 12);      // the run of the fixed table in jladder reach
+    }
+
+    // The counts of the independent implementation docs/model.md section 15
+    // quotes, where the engine agrees with it (docs/ripple-reach.md).
+    void theLongThinLaddersAgreeWithTheReference() {
+        QCOMPARE(firstRippleReach(turnedLadder(25, 0.004)).reached, 7);
+        QCOMPARE(firstRippleReach(turnedLadder(25, 0.003)).reached, 23);
     }
 
     // Without a turn, nothing flips: the ladder hangs at rest.

@@ -8,9 +8,11 @@
 #include "jl/design/ripple_map.h"
 #include "jl/scene/scene_io.h"
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -37,6 +39,14 @@ const char* kHelp =
     "Writes CSV (stdout, or --csv FILE) and an SVG heat map (--svg FILE); the same command\n"
     "gives the same bytes whatever N. Files are replaced only once written whole.\n";
 
+// Standard output written and flushed, or a message: a full disk or a closed
+// pipe is a failed run, not a silent one.
+bool print(const std::string& text) {
+    if (std::fputs(text.c_str(), stdout) >= 0 && std::fflush(stdout) == 0) return true;
+    std::fprintf(stderr, "jladder reach: cannot write to standard output: %s\n", std::strerror(errno));
+    return false;
+}
+
 // The fixed table of the designs docs/model.md section 15 quotes.
 int table(const std::optional<std::string>& out) {
     struct Case {
@@ -60,10 +70,7 @@ int table(const std::optional<std::string>& out) {
         std::fputs(s.str().c_str(), stderr);
         text += s.str();
     }
-    if (!out) {
-        std::fputs(text.c_str(), stdout);
-        return 0;
-    }
+    if (!out) return print(text) ? 0 : 1;
     OutputFile f;
     if (!f.open(*out) || !f.write(text) || !f.commit()) {
         std::fprintf(stderr, "jladder reach: %s: %s\n", out->c_str(), f.error().c_str());
@@ -174,7 +181,7 @@ int reach(const std::vector<std::string>& args) {
     const std::string title = o.get("--title").value_or("How far the first ripple travels");
     bool ok = true;
     if (auto path = o.get("--csv")) ok = save(*path, csv) && ok;
-    else std::fputs(csv.c_str(), stdout);
+    else ok = print(csv) && ok;
     if (auto path = o.get("--svg")) ok = save(*path, rippleMapSvg(map, title)) && ok;
     return ok ? 0 : 1;
 }

@@ -27,7 +27,11 @@ Scene withParameter(Scene s, DesignParameter p, double value) {
     LadderSpec& l = *s.ladder;
     switch (p) {
         case DesignParameter::Blocks:
-            l.blocks = int(std::clamp(std::lround(value), long(range::kFewestBlocks), long(range::kMostBlocks)));
+            // Clamped before rounding: lround of a value beyond a long (or of
+            // a NaN) is unspecified.
+            l.blocks = std::isnan(value) ? range::kFewestBlocks
+                                         : int(std::lround(std::clamp(value, double(range::kFewestBlocks),
+                                                                      double(range::kMostBlocks))));
             break;
         case DesignParameter::Thickness:
             l.block.thickness = value;

@@ -39,6 +39,21 @@ bad --blocks 4:8:2 --thickness 6mm:12mm:6mm --width 40mm:50mm:10mm
 bad --blocks 4:8:2 --jobs 0
 bad --blocks 2:100000:1
 
+# A failed write: a message naming the file and exit 1; the SVG still written
+# whole when only the CSV fails, and standard output checked too.
+"$jladder" reach --blocks 4:4:1 --csv no-such-dir/map.csv --svg whole.svg >out.txt 2>err.txt
+got=$?
+[ "$got" = 1 ] || fail "a CSV in a missing directory: exit $got, wanted 1"
+grep -q "no-such-dir/map.csv" err.txt || fail "no message naming the CSV: $(cat err.txt)"
+grep -q "</svg>" whole.svg || fail "the SVG beside a failed CSV was not written whole"
+if [ -w /dev/full ]; then
+    "$jladder" reach --blocks 4:4:1 >/dev/full 2>err.txt
+    got=$?
+    [ "$got" = 1 ] || fail "CSV to a full disk: exit $got, wanted 1"
+    grep -q "standard output" err.txt || fail "no message for a full disk: $(cat err.txt)"
+fi
+ls ./*.partial-* >/dev/null 2>&1 && fail "a temporary file was left behind: $(ls)"
+
 # One axis: a line of designs.
 "$jladder" reach --blocks 4:6:2 --csv line.csv 2>err.txt || fail "one axis: exit $?"
 [ "$(wc -l <line.csv)" = 3 ] || fail "one axis: $(cat line.csv)"

@@ -41,7 +41,8 @@ struct DesignAxis {
 std::vector<double> axisValues(const DesignAxis& a);
 
 // The scene with one parameter set (the blocks count rounded and kept within
-// the ladder's range; a turn duration given to every scripted turn).
+// range::kFewestBlocks..kMostBlocks, a NaN taken as the fewest; a turn
+// duration given to every scripted turn).
 Scene withParameter(Scene s, DesignParameter p, double value);
 
 }  // namespace jl
