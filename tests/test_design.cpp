@@ -100,6 +100,18 @@ private slots:
         QVERIFY(firstRippleReach(turnedLadder(6, 0.012), &cancel).cancelled);
     }
 
+    // A map cancelled before it starts: every cell says so, none is a
+    // design that simply did not ripple.
+    void aCancelledMapSaysSoInEveryCell() {
+        std::atomic<bool> cancel{true};
+        const RippleMap m = computeRippleMap(turnedLadder(6, 0.012), {DesignParameter::Blocks, 4, 8, 2},
+                                             {DesignParameter::Thickness, 0.006, 0.012, 0.006}, 2, &cancel);
+        QVERIFY(m.cancelled);
+        QCOMPARE(int(m.cells.size()), 6);
+        for (const RippleReach& r : m.cells) QVERIFY(r.cancelled);
+        QVERIFY(rippleMapCsv(m).find("\"cancelled\"") != std::string::npos);
+    }
+
     void aMapIsTheSameOnAnyNumberOfThreads() {
         const DesignAxis x{DesignParameter::Blocks, 4, 8, 2}, y{DesignParameter::Thickness, 0.006, 0.012, 0.006};
         std::atomic<int> calls{0};

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <sstream>
 #include <thread>
 
@@ -13,6 +14,8 @@ RippleMap computeRippleMap(const Scene& base, const DesignAxis& x, const DesignA
     RippleMap m{x, y, axisValues(x), axisValues(y), {}, false};
     const size_t total = m.xs.size() * m.ys.size();
     m.cells.resize(total);
+    // A cell never started says so: cancelled until its run has written it.
+    for (RippleReach& r : m.cells) r.cancelled = true;
     std::atomic<size_t> next{0};
     std::atomic<int> done{0};
     auto work = [&] {
@@ -20,7 +23,15 @@ RippleMap computeRippleMap(const Scene& base, const DesignAxis& x, const DesignA
             if (cancel && cancel->load(std::memory_order_relaxed)) return;
             const size_t i = k % m.xs.size(), j = k / m.xs.size();
             const Scene s = withParameter(withParameter(base, x.parameter, m.xs[i]), y.parameter, m.ys[j]);
-            m.cells[k] = firstRippleReach(s, cancel);
+            // A design the engine cannot hold (memory for a huge ladder) is
+            // that cell's failure, not the end of the program.
+            try {
+                m.cells[k] = firstRippleReach(s, cancel);
+            } catch (const std::exception& e) {
+                m.cells[k] = RippleReach{};
+                m.cells[k].hinges = s.ladder ? s.ladder->blocks - 1 : 0;
+                m.cells[k].failure = e.what();
+            }
             const int d = ++done;
             if (progress) progress(d, int(total));
         }

@@ -18,12 +18,13 @@ struct RippleMap {
     DesignAxis x, y;
     std::vector<double> xs, ys;      // the axes' values
     std::vector<RippleReach> cells;  // row by row: cell (i, j) at j * xs.size() + i
-    bool cancelled = false;
+    bool cancelled = false;          // then some cells say cancelled: cut short or never run
     const RippleReach& at(size_t i, size_t j) const { return cells[j * xs.size() + i]; }
 };
 
 // `progress(done, total)` is called from the workers as cells finish (it must
 // be thread-safe); `cancel` is polled by every run. jobs < 1: one per core.
+// A run that throws (no memory for a huge ladder) is its cell's failure.
 RippleMap computeRippleMap(const Scene& base, const DesignAxis& x, const DesignAxis& y, int jobs,
                            const std::atomic<bool>* cancel = nullptr,
                            const std::function<void(int done, int total)>& progress = {});
