@@ -1,5 +1,7 @@
 #include "bench/chart.h"
 
+#include "jl/base/xml_text.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -25,17 +27,6 @@ std::string hex(Rgb c) {
     char s[8];
     std::snprintf(s, sizeof s, "#%02x%02x%02x", c.r, c.g, c.b);
     return s;
-}
-
-std::string escape(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        if (c == '<') out += "&lt;";
-        else if (c == '>') out += "&gt;";
-        else if (c == '&') out += "&amp;";
-        else out += c;
-    }
-    return out;
 }
 
 // Decades spanned by the finite positive values of one coordinate.
@@ -119,7 +110,7 @@ struct SvgPen {
     void text(double x, double y, const std::string& s, int size, int anchor, Rgb c) {
         static const char* anchors[] = {"start", "middle", "end"};
         out << "<text x='" << x << "' y='" << y + size / 3.0 << "' font-size='" << size << "' text-anchor='"
-            << anchors[anchor] << "' fill='" << hex(c) << "'>" << escape(s) << "</text>\n";
+            << anchors[anchor] << "' fill='" << hex(c) << "'>" << xmlEscaped(s) << "</text>\n";
     }
 };
 

@@ -32,7 +32,7 @@ const char* kHelp =
     "(the most quick cycles of one hinge in a row: a release and a close within 1 ms), in\n"
     "Markdown (stdout, or FILE).\n"
     "With axes: a design map. PARAMETER is one of blocks, thickness, length, width (lengths\n"
-    "in m, or with mm or cm), density (kg/m^3), hinge_damping (N m s/rad), turn_duration\n"
+    "in m, or with mm or cm), density (kg/m^3), hinge_damping (N m s), turn_duration\n"
     "(s, or ms); one axis gives a line, two a map. Every cell is a full simulation of the\n"
     "first ripple on BASE (default: 6 blocks of 60 x 12 x 45 mm, density 600, block 0 held\n"
     "and turned half a turn from 0.2 s over 0.3 s), run on N threads (default: every core).\n"

@@ -1,5 +1,7 @@
 #include "jl/design/ripple_map.h"
 
+#include "jl/base/xml_text.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -75,17 +77,6 @@ std::string csvText(const std::string& s) {
     return out + "\"";
 }
 
-std::string xml(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        if (c == '<') out += "&lt;";
-        else if (c == '>') out += "&gt;";
-        else if (c == '&') out += "&amp;";
-        else out += c;
-    }
-    return out;
-}
-
 std::string axisTitle(const DesignAxis& a) {
     const DesignParameterWord& w = describe(a.parameter);
     const std::string unit = isLength(a.parameter) ? "mm" : std::string(w.unit);
@@ -126,7 +117,7 @@ std::string rippleMapSvg(const RippleMap& m, const std::string& title) {
     std::ostringstream s;
     s << "<svg xmlns='http://www.w3.org/2000/svg' width='" << fixed(width, 0) << "' height='" << fixed(height, 0)
       << "' font-family='sans-serif' font-size='12'>\n<rect width='100%' height='100%' fill='white'/>\n"
-      << "<text x='" << fixed(left, 0) << "' y='24' font-size='15'>" << xml(title) << "</text>\n";
+      << "<text x='" << fixed(left, 0) << "' y='24' font-size='15'>" << xmlEscaped(title) << "</text>\n";
     // Rows from the bottom up, as a plot's y axis runs.
     for (size_t j = 0; j < m.ys.size(); ++j) {
         const double y0 = top + cell * double(m.ys.size() - 1 - j);
@@ -140,7 +131,7 @@ std::string rippleMapSvg(const RippleMap& m, const std::string& title) {
             s << "<rect x='" << fixed(x0, 1) << "' y='" << fixed(y0, 1) << "' width='" << fixed(cell, 0)
               << "' height='" << fixed(cell, 0) << "' fill='" << (failed ? "#d0d0d0" : colour(fraction))
               << "' stroke='white'><title>" << r.reached << " of " << r.hinges << " hinges"
-              << (failed ? "; " + xml(r.cancelled ? "cancelled" : r.failure) : "") << "</title></rect>\n"
+              << (failed ? "; " + xmlEscaped(r.cancelled ? "cancelled" : r.failure) : "") << "</title></rect>\n"
               << "<text x='" << fixed(x0 + cell / 2, 1) << "' y='" << fixed(y0 + cell / 2 + 4, 1)
               << "' text-anchor='middle' fill='" << (fraction > 0.6 ? "white" : "black") << "'>"
               << (failed ? std::string("!") : std::to_string(r.reached)) << "</text>\n";
@@ -151,9 +142,9 @@ std::string rippleMapSvg(const RippleMap& m, const std::string& title) {
         s << "<text x='" << fixed(left + cell * (double(i) + 0.5), 1) << "' y='" << fixed(bottom + 16, 1)
           << "' text-anchor='middle'>" << shown(m.x.parameter, m.xs[i]) << "</text>\n";
     s << "<text x='" << fixed(left + cell * double(m.xs.size()) / 2, 1) << "' y='" << fixed(bottom + 40, 1)
-      << "' text-anchor='middle'>" << xml(axisTitle(m.x)) << "</text>\n"
+      << "' text-anchor='middle'>" << xmlEscaped(axisTitle(m.x)) << "</text>\n"
       << "<text transform='translate(18 " << fixed(top + cell * double(m.ys.size()) / 2, 1)
-      << ") rotate(-90)' text-anchor='middle'>" << xml(axisTitle(m.y)) << "</text>\n";
+      << ") rotate(-90)' text-anchor='middle'>" << xmlEscaped(axisTitle(m.y)) << "</text>\n";
     // The legend: the fraction of hinges the first ripple flips.
     const double lx = left + cell * double(m.xs.size()) + 30;
     s << "<text x='" << fixed(lx, 1) << "' y='" << fixed(top - 8, 1) << "'>hinges flipped</text>\n";

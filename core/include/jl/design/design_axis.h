@@ -25,7 +25,7 @@ inline constexpr DesignParameterWord kDesignParameters[] = {
     {"length", DesignParameter::Length, "block length", "m"},
     {"width", DesignParameter::Width, "block width", "m"},
     {"density", DesignParameter::Density, "density", "kg/m^3"},
-    {"hinge_damping", DesignParameter::HingeDamping, "hinge damping", "N m s/rad"},
+    {"hinge_damping", DesignParameter::HingeDamping, "hinge damping", "N m s"},
     {"turn_duration", DesignParameter::TurnDuration, "turn duration", "s"},
 };
 const DesignParameterWord& describe(DesignParameter p);
