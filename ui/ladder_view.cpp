@@ -183,12 +183,26 @@ QPointF LadderView::pixelOf(const jl::Vec2& point) const {
 void LadderView::mousePressEvent(QMouseEvent* e) {
     lastMouse_ = e->position();
     if (e->button() == Qt::LeftButton && !walk_) {
-        if (const auto p = planePoint(e->position())) {
+        const auto p = planePoint(e->position());
+        if (p && blockAt(*p)) {
             dragging_ = true;
             grabbed_ = -1;
             emit dragBegun(*p);
+        } else {
+            orbiting_ = true;  // empty space: turn the view, as most 3-D programs do
         }
     }
+}
+
+bool LadderView::blockAt(const jl::Vec2& point) const {
+    constexpr double margin = 0.002;  // m
+    const size_t n = std::min(shapes_.size(), shownPoses_.size());
+    for (size_t i = 0; i < n; ++i) {
+        const jl::Vec2 local = jl::rotate(-shownPoses_[i].angle, point - shownPoses_[i].position);
+        if (std::abs(local.x()) <= shapes_[i].across / 2 + margin && std::abs(local.y()) <= shapes_[i].along / 2 + margin)
+            return true;
+    }
+    return false;
 }
 
 void LadderView::mouseMoveEvent(QMouseEvent* e) {
@@ -196,7 +210,7 @@ void LadderView::mouseMoveEvent(QMouseEvent* e) {
     lastMouse_ = e->position();
     if (dragging_) {  // until the release, whatever else the buttons do
         if (const auto p = planePoint(e->position())) emit dragMoved(*p);
-    } else if (e->buttons() & Qt::RightButton) {
+    } else if ((e->buttons() & Qt::RightButton) || (orbiting_ && (e->buttons() & Qt::LeftButton))) {
         if (walk_) camera_.lookAround(-float(delta.x()) * kLookDegreesPerPixel, float(delta.y()) * kLookDegreesPerPixel);
         else camera_.orbit(-float(delta.x()) * kOrbitDegreesPerPixel, float(delta.y()) * kOrbitDegreesPerPixel);
         updateCamera();
@@ -210,6 +224,7 @@ void LadderView::mouseMoveEvent(QMouseEvent* e) {
 }
 
 void LadderView::mouseReleaseEvent(QMouseEvent* e) {
+    if (e->button() == Qt::LeftButton) orbiting_ = false;
     if (e->button() == Qt::LeftButton && dragging_) {
         dragging_ = false;
         emit dragEnded();

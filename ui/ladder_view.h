@@ -37,7 +37,8 @@ public:
     // Keeps the direction of view and fits the whole ladder, as last shown, in the view.
     void frameLadder();
     const ViewCamera& viewCamera() const { return camera_; }
-    // Turns the viewer about the target, as a right-button drag does.
+    // Turns the viewer about the target, as a drag off the blocks (left or
+    // right button) does.
     void orbit(float yawDegrees, float pitchDegrees);
     void setWalkMode(bool on);
     bool walkMode() const { return walk_; }
@@ -47,6 +48,10 @@ public:
     std::optional<jl::Vec2> planePoint(const QPointF& pixel) const;
     // Where a point of the ladder's plane appears in the window (for tests and hints).
     QPointF pixelOf(const jl::Vec2& point) const;
+    // Whether a block as last shown covers this point of the plane (within
+    // 2 mm, so thin blocks stay easy to grab): a left drag there pushes the
+    // block, anywhere else it orbits the camera.
+    bool blockAt(const jl::Vec2& point) const;
 
 signals:
     void dragBegun(const jl::Vec2& point);
@@ -93,6 +98,7 @@ private:
     bool ribbonsShown_ = false;
     bool walk_ = false;
     bool dragging_ = false;
+    bool orbiting_ = false;  // a left drag that began off every block
     int grabbed_ = -1;
     QPointF lastMouse_;
     QSet<int> keysDown_;

@@ -177,7 +177,7 @@ private slots:
         controls->trigger();
         auto* box = w.findChild<QMessageBox*>("controlsHelp");
         QVERIFY(box && box->isVisible() && !box->isModal());
-        for (const char* words : {"Right-drag", "Wheel", "Frame the ladder", "Presentation mode", "Play", "Undo"})
+        for (const char* words : {"right-drag", "Left-drag off the blocks", "Wheel", "Frame the ladder", "Presentation mode", "Play", "Undo"})
             QVERIFY2(box->text().contains(words), words);
     }
 

@@ -7,6 +7,8 @@
 #include "ui/view_camera.h"
 #include "ui_test_support.h"
 
+#include <QMouseEvent>
+#include <QSignalSpy>
 #include <QSpinBox>
 #include <QTemporaryDir>
 #include <Qt3DRender/QCamera>
@@ -25,7 +27,9 @@ QString ladderFile(const QTemporaryDir& dir, int blocks) {
     const QString path = dir.filePath(QString("ladder-%1.yaml").arg(blocks));
     QFile f(path);
     if (!f.open(QIODevice::WriteOnly)) return {};
-    f.write(QString("format: jacobs-ladder/1\ntitle: framed\nladder:\n  blocks: %1\n  held: [0]\nduration: 1\n").arg(blocks).toUtf8());
+    f.write(QString("format: jacobs-ladder/1\ntitle: framed\nladder:\n  blocks: %1\n  held: [0]\nduration: 1\n")
+                .arg(blocks)
+                .toUtf8());
     return path;
 }
 
@@ -113,7 +117,8 @@ private slots:
         QVERIFY(c.eye().x() > 0.5f);  // a quarter turn: now looking from +x
         c.orbit(0, 500);              // pitch stops short of straight down (85 degrees)
         const float height = c.eye().y() - target.y();
-        QVERIFY2(height > 0.79f && height < 0.8f * std::sin(86.0f * 3.14159265f / 180), qPrintable(QString::number(height)));
+        QVERIFY2(height > 0.79f && height < 0.8f * std::sin(86.0f * 3.14159265f / 180),
+                 qPrintable(QString::number(height)));
         QVERIFY(std::abs(c.eye().x() - target.x()) + std::abs(c.eye().z() - target.z()) > 0.05f);
     }
 
@@ -165,6 +170,39 @@ private slots:
         QVERIFY(w.ladderView()->viewCamera().yaw() != 0);
         const QString problem = framingProblem(w);
         QVERIFY2(problem.isEmpty(), qPrintable(problem));
+    }
+
+    // A left drag that starts off every block orbits the camera (as in most
+    // 3-D programs) and pushes nothing; one that starts on a block pushes it.
+    void aLeftDragOffTheBlocksOrbitsAndOnABlockPushes() {
+        MainWindow w(jl::test::quietWindow());
+        QVERIFY(showScene(w, kClassic));
+        LadderView* view = w.ladderView();
+        QSignalSpy pushes(view, &LadderView::dragBegun);
+        auto send = [view](QEvent::Type type, QPointF at, Qt::MouseButton button, Qt::MouseButtons buttons) {
+            QMouseEvent e(type, at, view->mapToGlobal(at), button, buttons, Qt::NoModifier);
+            QCoreApplication::sendEvent(view, &e);
+        };
+        const jl::Vec2 beside = jl::Vec2(0.2, -0.15);
+        QVERIFY(!view->blockAt(beside));
+        const QPointF from = view->pixelOf(beside);
+        const float yaw = view->viewCamera().yaw();
+        send(QEvent::MouseButtonPress, from, Qt::LeftButton, Qt::LeftButton);
+        send(QEvent::MouseMove, from + QPointF(60, 0), Qt::NoButton, Qt::LeftButton);
+        send(QEvent::MouseButtonRelease, from + QPointF(60, 0), Qt::LeftButton, Qt::NoButton);
+        QVERIFY(std::abs(view->viewCamera().yaw() - yaw) > 5);
+        QCOMPARE(pushes.count(), 0);
+        QVERIFY(w.document()->scene().drags.empty());
+
+        const jl::Vec2 block3 = w.controller()->status()->frame->poses[3].position;
+        QVERIFY(view->blockAt(block3));
+        const QPointF on = view->pixelOf(block3);
+        const float turned = view->viewCamera().yaw();
+        send(QEvent::MouseButtonPress, on, Qt::LeftButton, Qt::LeftButton);
+        send(QEvent::MouseMove, on + QPointF(30, 0), Qt::NoButton, Qt::LeftButton);
+        send(QEvent::MouseButtonRelease, on + QPointF(30, 0), Qt::LeftButton, Qt::NoButton);
+        QCOMPARE(pushes.count(), 1);
+        QCOMPARE(view->viewCamera().yaw(), turned);  // a push does not turn the view
     }
 
     void aLongerLadderIsFramedAgain() {
