@@ -82,9 +82,25 @@ void LadderView::setScene(const jl::Scene& scene, bool resetCamera) {
     }
 }
 
+void LadderView::setFollow(bool on) {
+    follow_ = on;
+    followedCentre_.reset();
+}
+
 void LadderView::showFrame(const jl::Frame& frame) {
     if (!frame.dragging) grabbed_ = -1;
     shownPoses_ = frame.poses;
+    if (follow_ && !frame.poses.empty()) {
+        jl::Vec2 centre = jl::Vec2::Zero();
+        for (const jl::Pose& p : frame.poses) centre += p.position;
+        centre /= double(frame.poses.size());
+        if (followedCentre_) {
+            const jl::Vec2 d = centre - *followedCentre_;
+            camera_.shift(QVector3D(float(d.x()), float(d.y()), 0));
+            updateCamera();
+        }
+        followedCentre_ = centre;
+    }
     if (frameOnNextFrame_) {
         frameOnNextFrame_ = false;
         frameLadder();

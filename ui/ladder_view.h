@@ -42,6 +42,11 @@ public:
     void orbit(float yawDegrees, float pitchDegrees);
     void setWalkMode(bool on);
     bool walkMode() const { return walk_; }
+    // Follow the ladder: the camera moves with the blocks' centre, frame by
+    // frame, keeping its direction and distance (a ladder that swings away
+    // stays in view).
+    void setFollow(bool on);
+    bool follow() const { return follow_; }
 
     Qt3DRender::QRenderCapture* capture() const { return capture_; }
     // The point of the ladder's plane (z = 0) under a window pixel.
@@ -97,6 +102,8 @@ private:
     bool ribbonsVisible_ = true;
     bool ribbonsShown_ = false;
     bool walk_ = false;
+    bool follow_ = false;
+    std::optional<jl::Vec2> followedCentre_;  // the blocks' centre at the last frame followed
     bool dragging_ = false;
     bool orbiting_ = false;  // a left drag that began off every block
     int grabbed_ = -1;

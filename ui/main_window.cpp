@@ -132,6 +132,14 @@ void MainWindow::createActions() {
     frameAct_ = make(tr("&Frame the ladder"), {Qt::Key_F}, QStyle::SP_CustomBase, tr("Fit the whole ladder in the view, seen from where you are"));
     walkAct_ = make(tr("&Walk mode"), {Qt::Key_V}, QStyle::SP_CustomBase, tr("Walk around the room: W A S D to move, Q E down and up, drag to look, Esc to stop"));
     walkAct_->setCheckable(true);
+    followAct_ = make(tr("F&ollow the ladder"), {}, QStyle::SP_CustomBase, tr("Move the camera with the ladder, so a ladder that swings away stays in view"));
+    followAct_->setCheckable(true);
+    followAct_->setObjectName("followAction");
+    connect(followAct_, &QAction::toggled, this, [this](bool on) {
+        view_->setFollow(on);
+        QSettings().setValue("view/follow", on);
+    });
+    followAct_->setChecked(QSettings().value("view/follow", false).toBool());
 
     connect(newAct_, &QAction::triggered, this, &MainWindow::newFile);
     connect(openAct_, &QAction::triggered, this, &MainWindow::openDialog);
@@ -168,7 +176,7 @@ void MainWindow::createMenus() {
     sim->addSeparator();
     sim->addAction(tr("&Design map..."), this, [this] { showDesignMap(); })->setObjectName("designMapAction");
     viewMenu_ = menuBar()->addMenu(tr("&View"));
-    viewMenu_->addActions({resetViewAct_, frameAct_, walkAct_});
+    viewMenu_->addActions({resetViewAct_, frameAct_, followAct_, walkAct_});
     viewMenu_->addSeparator();
     for (QDockWidget* d : findChildren<QDockWidget*>()) viewMenu_->addAction(d->toggleViewAction());
     helpMenu_ = menuBar()->addMenu(tr("&Help"));

@@ -139,6 +139,7 @@ private:
     QAction* resetViewAct_;
     QAction* frameAct_;
     QAction* walkAct_;
+    QAction* followAct_;
 };
 
 }  // namespace jl::ui

@@ -32,8 +32,11 @@ public:
     void zoom(float steps);                           // wheel notches; > 0 closer
     void pan(float dx, float dy);                     // in fractions of the view's height
     void walk(float forward, float right, float up);  // m
+    // Moves target and eye together by `d` (m): following the ladder.
+    void shift(const QVector3D& d) { target_ += d; }
     void apply(Qt3DRender::QCamera* camera) const;
     QVector3D eye() const;
+    QVector3D target() const { return target_; }
     float distance() const { return distance_; }
     float yaw() const { return yaw_; }
 

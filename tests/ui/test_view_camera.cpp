@@ -205,6 +205,32 @@ private slots:
         QCOMPARE(view->viewCamera().yaw(), turned);  // a push does not turn the view
     }
 
+    // View > Follow the ladder: the camera moves with the blocks' centre;
+    // switched off, a ladder that moves leaves the camera where it is.
+    void followingMovesTheCameraWithTheLadder() {
+        MainWindow w(jl::test::quietWindow());
+        QVERIFY(showScene(w, kClassic));
+        LadderView* view = w.ladderView();
+        QAction* follow = w.findChild<QAction*>("followAction");
+        QVERIFY(follow && follow->isCheckable() && !follow->isChecked());
+        jl::Frame f = *w.controller()->status()->frame;
+        auto moved = [](jl::Frame g, const jl::Vec2& d) {
+            for (jl::Pose& p : g.poses) p.position += d;
+            return g;
+        };
+        view->showFrame(f);
+        const QVector3D still = view->viewCamera().target();
+        view->showFrame(moved(f, {0.1, -0.05}));
+        QCOMPARE(view->viewCamera().target(), still);
+        follow->setChecked(true);
+        view->showFrame(f);
+        const QVector3D before = view->viewCamera().target();
+        view->showFrame(moved(f, {0.1, -0.05}));
+        const QVector3D d = view->viewCamera().target() - before;
+        QVERIFY(std::abs(d.x() - 0.1f) < 1e-6f && std::abs(d.y() + 0.05f) < 1e-6f && std::abs(d.z()) < 1e-6f);
+        follow->setChecked(false);
+    }
+
     void aLongerLadderIsFramedAgain() {
         MainWindow w(jl::test::quietWindow());
         QVERIFY(showScene(w, kClassic));
