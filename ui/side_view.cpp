@@ -402,9 +402,20 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
         const std::pair<jl::HingeMode, QString> items[] = {{jl::HingeMode::Free, tr("free")},
                                                             {jl::HingeMode::OpenLocked, tr("locked open")},
                                                             {jl::HingeMode::Folded, tr("folded")}};
-        const double dot = 6 * ui, gap = 10 * ui;
+        // Narrower than the row: smaller type, never cut.
+        double fit = 1.0;
+        {
+            double width = 0;
+            for (const auto& [mode, text] : items) width += (12 + 4 + 10) * ui + m.horizontalAdvance(text);
+            fit = std::min(1.0, (target.width() - 2 * pad) / std::max(1.0, width - 10 * ui));
+        }
+        QFont small = font;
+        small.setPixelSize(std::max(6, int(std::lround(font.pixelSize() * fit))));
+        p.setFont(small);
+        const QFontMetricsF ms(small);
+        const double dot = 6 * ui * fit, gap = 10 * ui * fit, space = 4 * ui * fit;
         double width = 0;
-        for (const auto& [mode, text] : items) width += 2 * dot + 4 * ui + m.horizontalAdvance(text) + gap;
+        for (const auto& [mode, text] : items) width += 2 * dot + space + ms.horizontalAdvance(text) + gap;
         double x = target.right() - pad - width + gap;
         const double y = target.bottom() - pad - m.height() / 2;
         for (const auto& [mode, text] : items) {
@@ -412,9 +423,10 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
             p.setBrush(hingeColor(mode));
             p.drawEllipse(QPointF(x + dot, y), dot, dot);
             p.setPen(kInk);
-            p.drawText(QPointF(x + 2 * dot + 4 * ui, y + m.ascent() / 2 - m.descent() / 2), text);
-            x += 2 * dot + 4 * ui + m.horizontalAdvance(text) + gap;
+            p.drawText(QPointF(x + 2 * dot + space, y + ms.ascent() / 2 - ms.descent() / 2), text);
+            x += 2 * dot + space + ms.horizontalAdvance(text) + gap;
         }
+        p.setFont(font);
     }
     p.restore();
 }
