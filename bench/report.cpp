@@ -467,6 +467,8 @@ bool writeReport(const BenchResults& r, const std::filesystem::path& plots, cons
     return bool(md) && ok;
 }
 
+namespace {
+
 // One section alone, as `jladder bench --only NAME` writes it.
 bool writeSection(const char* name, bool quick, const std::filesystem::path& report, const std::string& section, bool ok) {
     std::ofstream md(report);
@@ -475,6 +477,8 @@ bool writeSection(const char* name, bool quick, const std::filesystem::path& rep
        << section;
     return bool(md) && ok;
 }
+
+}  // namespace
 
 bool writeModelsReport(const std::vector<BenchRow>& rows, bool quick, const std::filesystem::path& report) {
     bool ok = true;

@@ -86,14 +86,17 @@ QRectF SideView::plotArea(const QRectF& target, double ui) const {
     return target.adjusted(0, options_.clock ? band : 0, 0, -(band + (legend ? line : 0)));
 }
 
-double SideView::uiScale() const { return options_.scale * std::max(1.0, std::min(width(), height()) / 700.0); }
+// Type and lines grow with the picture (and with the options' scale).
+double SideView::uiScale(const QRectF& target) const {
+    return options_.scale * std::max(1.0, std::min(target.width(), target.height()) / 700);
+}
 
 // The mouse: the wheel zooms about the pointer, a drag pans, a double click
 // goes back to following the whole ladder. Zoomed or panned, the view stays
 // where the user put it.
 void SideView::wheelEvent(QWheelEvent* e) {
     if (framing_.isEmpty()) return;
-    const Mapping map(framing_, plotArea(rect(), uiScale()));
+    const Mapping map(framing_, plotArea(rect(), uiScale(rect())));
     const QPointF at = e->position();
     const jl::Vec2 fixed((at.x() - map.origin.x()) / map.scale, (map.origin.y() - at.y()) / map.scale);
     const double factor = std::pow(0.85, e->angleDelta().y() / 120.0);
@@ -115,7 +118,7 @@ void SideView::mousePressEvent(QMouseEvent* e) {
 
 void SideView::mouseMoveEvent(QMouseEvent* e) {
     if (!(e->buttons() & Qt::LeftButton) || framing_.isEmpty()) return QWidget::mouseMoveEvent(e);
-    const Mapping map(framing_, plotArea(rect(), uiScale()));
+    const Mapping map(framing_, plotArea(rect(), uiScale(rect())));
     const QPointF d = e->position() - dragFrom_;
     dragFrom_ = e->position();
     framing_.translate(-d.x() / map.scale, d.y() / map.scale);
@@ -220,7 +223,7 @@ void SideView::showFrame(std::shared_ptr<const jl::Frame> frame) {
 
 QPointF SideView::pixelOf(const jl::Vec2& point, const QRectF& target) const {
     if (framing_.isEmpty()) return target.center();
-    const double ui = options_.scale * std::max(1.0, std::min(target.width(), target.height()) / 700);
+    const double ui = uiScale(target);
     return Mapping(framing_, plotArea(target, ui))(point);
 }
 
@@ -245,7 +248,7 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
         p.restore();
         return;
     }
-    const double ui = options_.scale * std::max(1.0, std::min(target.width(), target.height()) / 700);
+    const double ui = uiScale(target);
     QFont font = p.font();
     font.setPixelSize(int(std::lround(12 * ui)));
     const Mapping map(framing_, plotArea(target, ui));

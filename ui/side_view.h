@@ -75,7 +75,7 @@ private:
     std::array<jl::Vec2, 4> corners(int block) const;  // in the plane, numbered as the engine numbers them
     void growFraming(const QRectF& need);
     QRectF plotArea(const QRectF& target, double ui) const;
-    double uiScale() const;
+    double uiScale(const QRectF& target) const;
 
     std::vector<BlockShape> shapes_;
     std::vector<std::array<jl::Vec2, 4>> cornerLocal_;  // ladder blocks, from jl::blockCorners

@@ -506,6 +506,7 @@ void Simulation::restore(const Snapshot& s) {
     dynamics_.evaluate(world_, t_);
     liveDrag_ = -1;
     pending_.clear();
+    gridDoneUpTo_ = std::min(gridDoneUpTo_, t_);  // grid instants after the restored time come again
     failure_.clear();
 }
 

@@ -73,7 +73,10 @@ public:
     // at that time, read off the step's dense output, as a frame to take. A
     // step that ends on a grid time leaves none: frame() is that frame. A
     // grid with every = 0 is off.
-    void setFrameGrid(const FrameGrid& grid) { grid_ = grid; }
+    void setFrameGrid(const FrameGrid& grid) {
+        grid_ = grid;
+        gridDoneUpTo_ = t_;  // instants up to now are the caller's (frame())
+    }
     const FrameGrid& frameGrid() const { return grid_; }
     std::vector<Frame> takeGridFrames() { return std::exchange(gridFrames_, {}); }
     const std::string& failure() const { return failure_; }
