@@ -39,8 +39,14 @@ inline Eigen::Matrix2d couplingOf(double im, double ii, const Vec2& r1, const Ve
 
 // W-weighted coupling of two points r1, r2 of one body: J1 W J2^T.
 Eigen::Matrix2d PinSolver::coupling(const World& w, int body, const Vec2& r1, const Vec2& r2) const {
+    const Eigen::Vector2d im = inverseMass(w, body);
+    return couplingOf(im[0], im[1], r1, r2);
+}
+
+Eigen::Vector2d PinSolver::inverseMass(const World& w, int body) const {
+    if (inverseMass_) return (*inverseMass_)[size_t(body)];
     const Body& b = w.body(body);
-    return couplingOf(b.invMass, b.invInertia, r1, r2);
+    return {b.invMass, b.invInertia};
 }
 
 void PinSolver::order(const World& w) {
@@ -116,6 +122,12 @@ void PinSolver::updateRotations(const World& w) {
         const double angle = w.q[3 * b + 2];
         rotation_[size_t(b)] = {std::cos(angle), std::sin(angle)};
     }
+}
+
+void PinSolver::assemble(const World& w, const std::vector<Eigen::Vector2d>& inverseMass) {
+    inverseMass_ = &inverseMass;
+    assemble(w);
+    inverseMass_ = nullptr;
 }
 
 void PinSolver::assemble(const World& w) {
@@ -208,8 +220,8 @@ void PinSolver::factorSparse(const World& w) {
     t.reserve(size_t(n) * 8);
     double scale = 0;
     for (int b = 0; b < w.bodyCount(); ++b) {
-        const Body& body = w.body(b);
-        const Eigen::Vector3d inverse(body.invMass, body.invMass, body.invInertia);
+        const Eigen::Vector2d im = inverseMass(w, b);
+        const Eigen::Vector3d inverse(im[0], im[0], im[1]);
         for (const Entry& r : byBody[size_t(b)])
             for (const Entry& c : byBody[size_t(b)]) {
                 const double m = r.g.dot(inverse.cwiseProduct(c.g));

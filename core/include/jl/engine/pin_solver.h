@@ -19,6 +19,11 @@ public:
     // Arms and matrix at the world's current positions, then factorise.
     // Re-derives the pin ordering only when the world's structure changed.
     void assemble(const World& w);
+    // The same with other inverse masses and inertias, (1/m, 1/I) per body,
+    // kinematic ones ignored: the linearly implicit integrator's matrix,
+    // whose bodies carry the stiffness and damping of one step as extra
+    // mass (docs/model.md section 6.4).
+    void assemble(const World& w, const std::vector<Eigen::Vector2d>& inverseMass);
     // Solves (J W J^T) x = r; r and x hold 2 entries per pin, in w.pins()
     // order, then 1 per weld (w.welds()).
     void solve(const Eigen::VectorXd& r, Eigen::VectorXd& x) const;
@@ -74,6 +79,7 @@ private:
     void order(const World& w);
     void updateRotations(const World& w);
     Eigen::Matrix2d coupling(const World& w, int body, const Vec2& r1, const Vec2& r2) const;
+    Eigen::Vector2d inverseMass(const World& w, int body) const;
     void factorChain(const World& w);
     void factorSparse(const World& w);
 
@@ -82,6 +88,7 @@ private:
     std::vector<PinRow> pins_;
     std::vector<WeldRow> welds_;
     bool forceSparse_ = false;
+    const std::vector<Eigen::Vector2d>* inverseMass_ = nullptr;  // during assemble: replaces the bodies'
     std::vector<Eigen::Vector2d> rotation_;  // (cos, sin) per body: one sincos per body, not per pin end
     // Chain mode: pins in path order, path starts, and links between neighbours.
     std::vector<std::array<int, 2>> pinsOfBody_;  // order(): the first two pins of each body
@@ -95,6 +102,16 @@ private:
     Eigen::SparseMatrix<double> matrix_;
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
     bool analysed_ = false;
+};
+
+// A pin solver used as scratch (assembled afresh before each use): a copy
+// of its owner, as an event's trial run makes, starts with an empty one
+// instead of copying the factorisation (which Eigen's sparse one forbids).
+struct ScratchPinSolver {
+    PinSolver solver;
+    ScratchPinSolver() = default;
+    ScratchPinSolver(const ScratchPinSolver&) {}
+    ScratchPinSolver& operator=(const ScratchPinSolver&) { return *this; }
 };
 
 }  // namespace jl

@@ -220,16 +220,7 @@ public:
     double restructureTolerance = 1e-12;
 
 private:
-    // The solver a restructure closes the pins with. Scratch only (reset
-    // before each use): a copy of the world, as an event's trial run makes,
-    // starts with an empty one instead of copying it.
-    struct RestructureSolver {
-        PinSolver solver;
-        RestructureSolver() = default;
-        RestructureSolver(const RestructureSolver&) {}
-        RestructureSolver& operator=(const RestructureSolver&) { return *this; }
-    };
-    RestructureSolver restructure_;
+    ScratchPinSolver restructure_;  // the solver a restructure closes the pins with
 
     std::optional<WorldError> closePins(const char* operation);
     std::optional<WorldError> checkParticle(ParticleId p) const;
