@@ -29,7 +29,7 @@ std::vector<Method> methods() {
     return out;
 }
 
-bool adaptive(Integrator k) { return k == Integrator::DormandPrince45; }
+bool adaptive(Integrator k) { return isAdaptive(k); }
 
 // Runs `once` until at least `minSeconds` of CPU time have passed; returns the
 // CPU seconds of one run. `once` returns false on failure (then one run only).

@@ -22,7 +22,7 @@ ExampleRow runScene(const std::string& name, Scene scene, double horizon) {
     row.scene = name;
     row.asked = std::min(horizon, scene.duration);
     row.integrator = std::string(integratorWord(scene.solver.integrator));
-    row.adaptive = scene.solver.integrator == Integrator::DormandPrince45;
+    row.adaptive = isAdaptive(scene.solver.integrator);
     row.tolerance = scene.solver.tolerance;
     row.blocks = scene.ladder ? scene.ladder->blocks : int(scene.bodies.size() + scene.particles.size());
     const double t0 = threadSeconds();

@@ -27,7 +27,7 @@ const char* kRunHelp =
     "  --events FILE        write the events as JSON [{\"t\",\"hinge\",\"event\",\"corner\"}]\n"
     "  --frames FILE        write block centres as CSV t,block,x,y,theta\n"
     "  --every DT           interval of --frames rows (default: the scene's frame interval)\n"
-    "  --integrator NAME    explicit_euler | symplectic_euler | rk4 | dormand_prince45\n"
+    "  --integrator NAME    explicit_euler | symplectic_euler | rk4 | dormand_prince45 | rosenbrock_w\n"
     "  --step DT            fixed step (s)\n"
     "  --tolerance TOL      adaptive integrator's tolerance\n"
     "  --event-policy P     located | end-of-step\n"

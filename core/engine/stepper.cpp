@@ -25,6 +25,12 @@ Stepper::Stepper(Integrator kind, double tolerance) : kind_(kind), tolerance_(to
                     {},
                     {{}, {0.5}, {0, 0.5}, {0, 0, 1}}};
         break;
+    case Integrator::RosenbrockW:
+        ros_ = rosenbrockTableau();
+        uq_.resize(Rosenbrock::stages);
+        uv_.resize(Rosenbrock::stages);
+        ul_.resize(Rosenbrock::stages);
+        break;
     case Integrator::DormandPrince45:
         tableau_ = {{0, 1.0 / 5, 3.0 / 10, 4.0 / 5, 8.0 / 9, 1, 1},
                     {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84, 0},
@@ -50,6 +56,7 @@ int Stepper::order() const {
     case Integrator::SymplecticEuler: return 1;
     case Integrator::RK4: return 4;
     case Integrator::DormandPrince45: return 5;
+    case Integrator::RosenbrockW: return 3;
     }
     return 1;
 }
@@ -58,6 +65,7 @@ int Stepper::order() const {
 // saved in q0_, v0_). Leaves the new state in w; returns the error norm
 // (adaptive) or 0.
 double Stepper::attempt(World& w, Dynamics& d, double t, double h, Ledger& ledger) {
+    if (kind_ == Integrator::RosenbrockW) return rosenbrockAttempt(w, d, t, h, ledger);
     const size_t stages = tableau_.c.size();
     for (size_t i = 0; i < stages; ++i) {
         if (i > 0) {
@@ -130,7 +138,7 @@ StepOutcome Stepper::advance(World& w, Dynamics& d, double t, double h, Ledger& 
     if (kind_ == Integrator::SymplecticEuler) {
         symplecticEuler(w, d, t, h, ledger);
         out.taken = h;
-    } else if (kind_ != Integrator::DormandPrince45 || exact) {
+    } else if (!isAdaptive(kind_) || exact) {
         attempt(w, d, t, h, ledger);
         out.taken = h;
     } else {
@@ -147,7 +155,9 @@ StepOutcome Stepper::advance(World& w, Dynamics& d, double t, double h, Ledger& 
                 trial *= 0.1;
                 continue;
             }
-            const double grow = err > 0 ? 0.9 * std::pow(err, -0.2) : 5.0;
+            // The error estimate is the embedded method's, O(h^(p+1)) for its order p.
+            const double exponent = kind_ == Integrator::RosenbrockW ? -1.0 / 3 : -0.2;
+            const double grow = err > 0 ? 0.9 * std::pow(err, exponent) : 5.0;
             if (err <= 1.0 || trial < 1e-12) {
                 out.taken = trial;
                 next_ = trial * std::clamp(grow, 0.2, 5.0);

@@ -238,7 +238,7 @@ bool Simulation::retryWithSmallerStep() {
     constexpr int kMostHalvings = 10;
     // The adaptive integrator chooses its own steps (by its tolerance): a
     // shorter first try would change nothing.
-    if (scene_.solver.step > 0 || scene_.solver.integrator == Integrator::DormandPrince45 ||
+    if (scene_.solver.step > 0 || isAdaptive(scene_.solver.integrator) ||
         stats_.stepHalvings >= kMostHalvings)
         return false;
     restoreStepStart();
@@ -271,7 +271,7 @@ std::string gapText(double metres) {
 std::string Simulation::blowUpAdvice(double h) const {
     char step[32];
     std::snprintf(step, sizeof step, "%.3g s", h);
-    if (scene_.solver.integrator == Integrator::DormandPrince45) {
+    if (isAdaptive(scene_.solver.integrator)) {
         char tolerance[32];
         std::snprintf(tolerance, sizeof tolerance, "%.3g", scene_.solver.tolerance);
         return std::string("the adaptive integrator's tolerance ") + tolerance +
@@ -289,7 +289,7 @@ std::string Simulation::blowUpAdvice(double h) const {
 bool Simulation::takeStep(double limit) {
     if (!failure_.empty()) return false;
     const SolverSpec& solver = scene_.solver;
-    const bool adaptive = solver.integrator == Integrator::DormandPrince45;
+    const bool adaptive = isAdaptive(solver.integrator);
     double h = adaptive && stepper_.nextStep() > 0 ? stepper_.nextStep() : fixedStep();
     const double chosen = h;
     const double scheduled = std::min(nextScheduledTime(), limit);

@@ -1,9 +1,14 @@
 // The engine's time integrators, by name: the stepper runs them, the scene
-// names one, the stability bounds know each one's limit.
+// names one, the stability bounds know each one's limit. All are explicit
+// but RosenbrockW, which is linearly implicit in the ladder's stiff part
+// (docs/model.md section 6.4).
 #pragma once
 
 namespace jl {
 
-enum class Integrator { ExplicitEuler, SymplecticEuler, RK4, DormandPrince45 };
+enum class Integrator { ExplicitEuler, SymplecticEuler, RK4, DormandPrince45, RosenbrockW };
+
+// Methods that choose their own step from a local error tolerance.
+constexpr bool isAdaptive(Integrator i) { return i == Integrator::DormandPrince45 || i == Integrator::RosenbrockW; }
 
 }  // namespace jl

@@ -1,5 +1,6 @@
 // Time integration of a world's bodies and energy ledger: explicit Euler (the
-// paper's), symplectic Euler, classical RK4 and adaptive Dormand-Prince 5(4).
+// paper's), symplectic Euler, classical RK4, adaptive Dormand-Prince 5(4) and
+// the adaptive, linearly implicit Rosenbrock-W method ROS34PW2.
 #pragma once
 
 #include "jl/engine/dynamics.h"
@@ -48,7 +49,19 @@ private:
         std::vector<double> c, b, e;           // e = b - b_embedded (adaptive only)
         std::vector<std::vector<double>> a;    // lower triangle
     };
+    // The linearly implicit method (linearly_implicit.cpp), in the
+    // transformed form of Hairer and Wanner: stage increments u_i solve
+    // (I/(h gamma) - W) u_i = F(Y_i) + sum_j c_ij u_j / h.
+    struct Rosenbrock {
+        static constexpr int stages = 4;
+        double gamma = 0;
+        double a[4][4] = {}, c[4][4] = {}, alpha[4] = {}, m[4] = {}, e[4] = {};
+    };
+    static Rosenbrock rosenbrockTableau();
     double attempt(World& w, Dynamics& d, double t, double h, Ledger& ledger);
+    double rosenbrockAttempt(World& w, Dynamics& d, double t, double h, Ledger& ledger);
+    void stiffMass(const World& w, Dynamics& d, double s);
+    void solveStiff(const World& w, Eigen::VectorXd& z);
     void symplecticEuler(World& w, Dynamics& d, double t, double h, Ledger& ledger);
     double errorNorm(const World& w) const;
 
@@ -59,6 +72,14 @@ private:
     std::vector<Eigen::VectorXd> kq_, kv_;   // stage velocities and accelerations
     std::vector<Eigen::Vector3d> kl_;        // stage ledger rates
     Eigen::VectorXd q0_, v0_, errQ_, errV_;
+    // Rosenbrock: the tableau, stage increments and the step's matrix.
+    Rosenbrock ros_;
+    std::vector<Eigen::VectorXd> uq_, uv_;
+    std::vector<Eigen::Vector3d> ul_;
+    Eigen::VectorXd rq_, rv_, z_, mask_, keep_, jv_, jz_, rhs_, mu_, jmu_;
+    std::vector<double> stiffness_;              // d(moment)/d(angle) per body, N m/rad
+    std::vector<Eigen::Vector2d> stiffInverse_;  // (1/m', 1/I') per body
+    ScratchPinSolver stiff_;  // assembled at the start of every step
 };
 
 }  // namespace jl
