@@ -226,7 +226,11 @@ void RunPlots::showStatus(const SimStatus& s) {
         traces_.truncateAfter(head + s.interval * 0.5);
         scheduleRefresh();
     }
-    if (s.frame && (traces_.count() == 0 || s.frame->time > traces_.endTime())) append(*s.frame);
+    // Every frame of the run, in order, from the first: never only the ones
+    // that were on screen (a seek or an edit computes many between two looks).
+    if (s.newFrames)
+        for (const auto& f : *s.newFrames)
+            if (traces_.count() == 0 || f->time > traces_.endTime()) append(*f);
     setEvents(s.events);
     setCursorTime(s.frame ? s.frame->time : 0);
 }

@@ -61,6 +61,7 @@ void SimController::poll() {
     if (shown_ && s->serial == shown_->serial) return;
     shown_ = std::move(s);
     emit statusChanged(shown_);
+    if (shown_->newFrames) worker_->taken(shown_->firstNewFrame + shown_->newFrames->size());
 }
 
 }  // namespace jl::ui

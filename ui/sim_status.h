@@ -27,6 +27,12 @@ struct SimStatus {
     double stepsPerSecond = 0;  // solver steps per wall second, lately
     std::uint64_t headHash = 0; // Simulation::stateHash() at the head
     std::string failure;        // non-empty: the run stopped and says why
+    // Every frame the run made that the window has not taken yet, in time
+    // order, the first numbered firstNewFrame in a count that never restarts
+    // (SimController takes them with SimWorker::taken): the plots sample
+    // every frame of the run, not only those on screen when the window looked.
+    std::shared_ptr<const std::vector<std::shared_ptr<const jl::Frame>>> newFrames;
+    std::uint64_t firstNewFrame = 0;
     std::uint64_t serial = 0;   // grows with every publication
     std::uint64_t loadSerial = 0; // grows with every scene load
 };

@@ -136,6 +136,9 @@ void SimWorker::apply(const cmd::Load& c) {
     events_ = std::make_shared<std::vector<jl::Event>>();
     eventsChanged_ = true;
     ++loadSerial_;
+    feedFirst_ += feed_.size();  // the old run's frames: no longer anyone's
+    feed_.clear();
+    feedChanged_ = true;
     history_.reset(c.scene.solver.frameInterval, budget_);
     cursor_ = 0;
     shown_.reset();
@@ -151,6 +154,7 @@ void SimWorker::apply(const cmd::Load& c) {
     auto first = std::make_shared<const jl::Frame>(sim_->frame());
     for (const auto& e : first->events) events_->push_back(e);
     history_.append(first, sim_->snapshot(), 0);
+    feed(first);
     shown_ = first;
     headHash_ = sim_->stateHash();
     rebasePace();
@@ -245,6 +249,7 @@ bool SimWorker::simulateNextFrame() {
         eventsChanged_ = true;
     }
     history_.append(f, history_.isKeyframeIndex(next) ? sim_->snapshot() : nullptr, next);
+    feed(f);
     headHash_ = sim_->stateHash();
     cursor_ = next;
     shown_ = std::move(f);
@@ -329,6 +334,10 @@ void SimWorker::discardFuture() {
     if (cursor_ > 0 && !advance(*sim_, cursor_ * history_.interval())) return fail(sim_->failure());
     (void)sim_->frame();  // its events are already in the log
     history_.truncateAfter(cursor_);
+    while (!feed_.empty() && feed_.back()->time > tc) {
+        feed_.pop_back();
+        feedChanged_ = true;
+    }
     std::erase_if(*events_, [tc](const jl::Event& e) { return e.time > tc; });
     eventsChanged_ = true;
     headHash_ = sim_->stateHash();
@@ -358,8 +367,24 @@ void SimWorker::measure() {
     rateSteps_ = steps;
 }
 
+void SimWorker::feed(std::shared_ptr<const jl::Frame> f) {
+    feed_.push_back(std::move(f));
+    feedChanged_ = true;
+}
+
 void SimWorker::publish() {
+    for (const std::uint64_t taken = taken_.load(std::memory_order_relaxed); feedFirst_ < taken && !feed_.empty();) {
+        feed_.pop_front();
+        ++feedFirst_;
+        feedChanged_ = true;
+    }
+    if (feedChanged_) {
+        publishedFeed_ = std::make_shared<const std::vector<std::shared_ptr<const jl::Frame>>>(feed_.begin(), feed_.end());
+        feedChanged_ = false;
+    }
     auto s = std::make_shared<SimStatus>();
+    s->newFrames = publishedFeed_;
+    s->firstNewFrame = feedFirst_;
     s->frame = shown_;
     if (eventsChanged_) {
         publishedEvents_ = std::make_shared<const std::vector<jl::Event>>(*events_);

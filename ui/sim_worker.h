@@ -51,6 +51,9 @@ public:
     void markFinished();
     bool waitFinished(std::chrono::milliseconds limit);
     std::shared_ptr<const SimStatus> status() const;
+    // The window has taken the new frames numbered below `count`
+    // (SimStatus::firstNewFrame): the next publication leaves them out.
+    void taken(std::uint64_t count) { taken_.store(count, std::memory_order_relaxed); }
     // The thread body; returns after a Quit command.
     void run();
 
@@ -81,6 +84,7 @@ private:
     mutable std::mutex statusMutex_;
     std::shared_ptr<const SimStatus> status_ = std::make_shared<SimStatus>();
     std::atomic<bool> abort_{false};
+    std::atomic<std::uint64_t> taken_{0};
     std::mutex finishMutex_;
     std::condition_variable finished_;
     bool done_ = false;
@@ -99,6 +103,13 @@ private:
     double speed_ = 1.0;
     std::string failure_;
     std::shared_ptr<const jl::Frame> shown_;
+    // Frames appended to the history and not yet taken by the window; the
+    // first is number feedFirst_ (SimStatus::newFrames).
+    void feed(std::shared_ptr<const jl::Frame> f);
+    std::deque<std::shared_ptr<const jl::Frame>> feed_;
+    std::uint64_t feedFirst_ = 0;
+    std::shared_ptr<const std::vector<std::shared_ptr<const jl::Frame>>> publishedFeed_;
+    bool feedChanged_ = true;
     std::shared_ptr<std::vector<jl::Event>> events_ = std::make_shared<std::vector<jl::Event>>();
     std::shared_ptr<const std::vector<jl::Event>> publishedEvents_;
     std::shared_ptr<const jl::Scene> recorded_;

@@ -3,6 +3,7 @@
 // running simulation, a click in a plot moves the timeline, the Lessons and
 // Teach menus sit before Help, presentation mode hides the chrome and comes back.
 #include "ui/lessons.h"
+#include "ui/pacing.h"
 #include "ui/presentation_mode.h"
 #include "ui/run_plots.h"
 #include "ui/scene_text_dialog.h"
@@ -13,6 +14,7 @@
 
 #include <QApplication>
 #include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QGraphicsScene>
 #include <QGraphicsTextItem>
 #include <QLineEdit>
@@ -100,6 +102,47 @@ private slots:
         const double pixel = (chart->timeAxis()->max() - chart->timeAxis()->min()) / chart->chart()->plotArea().width();
         QVERIFY(jl::test::waitForStatus(
             f.sim, [&](const SimStatus& st) { return std::abs(st.frame->time - 0.3) < 1.5 * pixel + st.interval; }));
+    }
+
+    // The plots hold a sample of every frame of the run from t = 0, at the
+    // frames' own times: after a seek far ahead, after an edit (which makes
+    // the run again up to the moment on screen) and after "next event",
+    // though the window saw only a few of those frames on screen.
+    void thePlotsHoldEveryFrameOfTheRunFromTheStart() {
+        Fixture f;
+        auto dense = [&](const char* when) {
+            QTest::qWait(100);  // the controller's poll hands the frames to the plots
+            const auto s = f.sim->status();
+            const RunTraces& traces = f.teaching.plots()->traces();
+            if (traces.count() != s->frameCount) {
+                qWarning("%s: %d samples for %d frames", when, traces.count(), s->frameCount);
+                return false;
+            }
+            // Frame i is the state at the end of the step that reaches i * interval.
+            for (int i = 0; i < traces.count(); ++i)
+                if (const double t = traces.time()[size_t(i)]; t < i * s->interval - 1e-9 || t >= (i + 1) * s->interval) {
+                    qWarning("%s: sample %d at %.6f s", when, i, traces.time()[size_t(i)]);
+                    return false;
+                }
+            return true;
+        };
+        f.sim->seek(2.0);
+        QVERIFY(f.showsTime(2.0));
+        QVERIFY(dense("seek"));
+
+        const auto before = jl::test::loadsSoFar(f.sim);
+        f.window.findChild<QDoubleSpinBox*>("thickness")->setValue(10.0);  // mm
+        QCOMPARE(f.window.document()->scene().ladder->block.thickness, 0.010);
+        const int index = f.sim->status()->frameIndex;
+        QVERIFY(jl::test::waitForStatus(
+            f.sim, [&](const SimStatus& s) { return s.loadSerial > before && s.frameIndex == index && !s.playing; }));
+        QVERIFY(dense("edit"));
+
+        const int head = f.sim->status()->frameCount;
+        f.teaching.pacing()->runToNextEvent();
+        QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus& s) { return s.frameCount > head + 1 && !s.playing; }));
+        QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus&) { return !f.teaching.pacing()->seekingEvent(); }));
+        QVERIFY(dense("next event"));
     }
 
     void lessonsAndTeachMenusSitBeforeHelp() {
