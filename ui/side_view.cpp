@@ -18,6 +18,7 @@ namespace {
 const QColor kBackground(252, 252, 249);
 const QColor kGrid(232, 232, 226);
 const QColor kInk(40, 40, 46);
+const QColor kCornerInk(90, 40, 120);  // corner numbers: apart from block numbers at a glance
 
 // Text with a pale halo, readable on wood, ribbon and background alike.
 void haloText(QPainter& p, const QPointF& centre, const QString& text, const QColor& ink) {
@@ -346,7 +347,7 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
                 const double a = r.dot(along), b = r.dot(across);
                 const jl::Vec2 spot = centre + along * (a - std::copysign(std::min(inset, std::abs(a)), a)) + across * (b * 0.5);
                 const QPointF at = map(spot);
-                haloText(p, at, QString::number(k), QColor(90, 40, 120));
+                haloText(p, at, QString::number(k), kCornerInk);
             }
         }
     }
@@ -371,6 +372,15 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
         p.setPen(QPen(Qt::white, 1.2 * ui));
         p.setBrush(hingeColor(h.mode));
         p.drawEllipse(map(h.position), r, r);
+    }
+    // Blocks too thin on screen for a number at each corner (a whole ladder
+    // in a small view): each hinge says at which corner k its blocks meet.
+    if (options_.cornerNumbers && cornerFont < 7 && blockPixels > 14) {
+        QFont small = font;
+        small.setPixelSize(int(std::lround(9.5 * ui)));
+        p.setFont(small);
+        for (const jl::HingeFrame& h : frame_->hinges)
+            haloText(p, map(h.position) + QPointF(r + 6 * ui, 0), QString::number(h.corner), kCornerInk);
     }
     if (frame_->dragging) {
         p.setPen(QPen(QColor(200, 30, 30), 2 * ui, Qt::DashLine, Qt::RoundCap));

@@ -352,6 +352,36 @@ private slots:
         QVERIFY(view.render(target.size().toSize()) != plain);
     }
 
+    // In a view of the default dock's size the whole ladder is small, too
+    // thin for a number at every corner: each hinge then shows its corner
+    // number beside its dot, in the corner numbers' colour.
+    void theSideViewShowsCornerNumbersAtItsDefaultSize() {
+        const jl::Scene scene = loadExample("classic.yaml");
+        const Run run = runHeadless(scene, 0.0);
+        SideView view;
+        view.setScene(scene);
+        view.showFrame(run.frames.front());
+        const QSize size(360, 280);
+        SideViewOptions numbered;
+        numbered.cornerNumbers = true;
+        view.setOptions(numbered);
+        const QImage image = view.render(size);
+        const QRectF target(QPointF(0, 0), QSizeF(size));
+        auto purpleNear = [&](const QPointF& at) {
+            int found = 0;
+            for (int y = int(at.y()) - 8; y <= int(at.y()) + 8; ++y)
+                for (int x = int(at.x()); x <= int(at.x()) + 22; ++x) {
+                    if (!image.rect().contains(x, y)) continue;
+                    const QColor c = image.pixelColor(x, y);
+                    // Purple: blue well above green, red between (the ink is 90, 40, 120).
+                    if (c.blue() > c.green() + 30 && c.red() > c.green() + 15 && c.blue() < 200) ++found;
+                }
+            return found;
+        };
+        for (const jl::HingeFrame& h : run.frames.front().hinges)
+            QVERIFY2(purpleNear(view.pixelOf(h.position, target)) >= 3, qPrintable(QString::number(h.corner)));
+    }
+
     void exportsWriteWhatTheyPromise() {
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
