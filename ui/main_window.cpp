@@ -22,11 +22,14 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QStatusBar>
 #include <QStyle>
+#include <QShowEvent>
 #include <QTimer>
 #include <QToolBar>
 #include <QVBoxLayout>
@@ -268,8 +271,21 @@ void MainWindow::createDocks() {
     simulationPanel_ = new SimulationPanel(doc_, this);
     scriptPanel_ = new ScriptPanel(doc_, this);
     eventsPanel_ = new EventsPanel(this);
-    ladderDock_ = dock(tr("Ladder"), "ladderDock", ladderPanel_, Qt::LeftDockWidgetArea);
-    QDockWidget* simDock = dock(tr("Simulation"), "simulationDock", simulationPanel_, Qt::LeftDockWidgetArea);
+    // The long forms scroll rather than hold the window up: the left column
+    // would otherwise be as tall as the Ladder form (600 px) and leave the
+    // plots too little height.
+    auto scrolled = [this](QWidget* form) {
+        auto* area = new QScrollArea(this);
+        area->setWidget(form);
+        area->setWidgetResizable(true);
+        area->setFrameShape(QFrame::NoFrame);
+        // Only up and down: the column keeps the form's width.
+        area->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+        area->setMinimumWidth(form->minimumSizeHint().width() + area->verticalScrollBar()->sizeHint().width());
+        return area;
+    };
+    ladderDock_ = dock(tr("Ladder"), "ladderDock", scrolled(ladderPanel_), Qt::LeftDockWidgetArea);
+    QDockWidget* simDock = dock(tr("Simulation"), "simulationDock", scrolled(simulationPanel_), Qt::LeftDockWidgetArea);
     scriptDock_ = dock(tr("Script"), "scriptDock", scriptPanel_, Qt::RightDockWidgetArea);
     QDockWidget* scriptDock = scriptDock_;
     eventsDock_ = dock(tr("Events"), "eventsDock", eventsPanel_, Qt::RightDockWidgetArea);
@@ -455,11 +471,28 @@ void MainWindow::syncRecordedDrags(const SimStatus& s) {
                 s.recorded->drags, tr("Push a block"));
 }
 
+// The default sizes of the docks, asked for once the window is shown at its
+// size (before, the layout shares out whatever size the window had then,
+// and the result depended on the screen): the side view gets most of its
+// column, the plots room for the energy chart's eight names.
+void MainWindow::showEvent(QShowEvent* e) {
+    QMainWindow::showEvent(e);
+    if (!arrangeOnShow_) return;
+    arrangeOnShow_ = false;
+    QTimer::singleShot(0, this, &MainWindow::arrangeDocks);
+}
+
+void MainWindow::arrangeDocks() {
+    QDockWidget* side = teaching_->sideViewDock();
+    resizeDocks({side, eventsDock_}, {460, 260}, Qt::Vertical);
+    resizeDocks({teaching_->plotsDock()}, {270}, Qt::Vertical);
+}
+
 void MainWindow::readSettings() {
     QSettings settings;
     if (!restoreGeometry(settings.value("window/geometry").toByteArray())) resize(1440, 900);
     fitToScreen(this);  // saved on a larger screen, or the default on a small one
-    restoreState(settings.value("window/state").toByteArray());
+    arrangeOnShow_ = !restoreState(settings.value("window/state").toByteArray());
     setSpeed(settings.value("simulation/speed", 1.0).toDouble());
     const int budgetMb = settings.value("simulation/historyMegabytes", 512).toInt();
     sim_->setMemoryBudget(std::size_t(budgetMb) << 20);

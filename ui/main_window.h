@@ -57,6 +57,7 @@ public:
 
 protected:
     void closeEvent(QCloseEvent* e) override;
+    void showEvent(QShowEvent* e) override;
     void dragEnterEvent(QDragEnterEvent* e) override;
     void dropEvent(QDropEvent* e) override;
 
@@ -71,6 +72,8 @@ private:
     void showFailure(const QString& failure);
     void showControls();
     void readSettings();
+    void arrangeDocks();
+    bool arrangeOnShow_ = false;  // no saved arrangement: the first show makes the default one
     void writeSettings() const;
 
     void newFile();

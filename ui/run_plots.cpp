@@ -169,6 +169,8 @@ void RunPlots::rebuildChosenCurves() {
         speedCurves_.push_back(charts_[2]->addCurve(tr("block %1").arg(blocks_[i]), curveColor(int(i))));
     hingeField_->setText(indexListText(hinges_));
     blockField_->setText(indexListText(blocks_));
+    charts_[1]->fitLegend();
+    charts_[2]->fitLegend();
 }
 
 double RunPlots::span() const {

@@ -3,6 +3,9 @@
 #include "ui/event_colors.h"
 
 #include <QChart>
+#include <QFontMetricsF>
+#include <QGraphicsLayout>
+#include <QLegend>
 #include <QLegendMarker>
 #include <QLineSeries>
 #include <QMouseEvent>
@@ -153,7 +156,7 @@ void TimeChart::setLarge(bool large) {
         return f;
     };
     chart()->setTitleFont(scaled(fonts_.title));
-    chart()->legend()->setFont(scaled(fonts_.legend));
+    fitLegend();
     for (QValueAxis* a : {timeAxis_, valueAxis_}) {
         a->setLabelsFont(scaled(fonts_.labels));
         a->setTitleFont(scaled(fonts_.axisTitle));
@@ -171,6 +174,26 @@ void TimeChart::setLarge(bool large) {
     // never lowers it: the large type's minimum would outlast presentation
     // mode and hold the window taller than the screen.
     setMinimumSize(kMinimumSize);
+}
+
+void TimeChart::fitLegend() {
+    QLegend* legend = chart()->legend();
+    QFont font = fonts_.legend;
+    font.setPointSizeF(font.pointSizeF() * (large_ ? 1.5 : 1.0));
+    if (chart()->layout()) chart()->layout()->activate();
+    // The legend's size hint does not follow its entries (Qt 6.4): one row
+    // is a line of its type plus the marker's padding, 7 px.
+    const double room = legend->geometry().height() - 8;
+    const int rows = int(legend->markers().size());
+    // Steps of 15 %, down to 7 points (smaller is not read from a desk).
+    while (room > 0 && rows * (QFontMetricsF(font).height() + 7) > room && font.pointSizeF() * 0.85 >= 7)
+        font.setPointSizeF(font.pointSizeF() * 0.85);
+    legend->setFont(font);
+}
+
+void TimeChart::resizeEvent(QResizeEvent* e) {
+    QChartView::resizeEvent(e);
+    fitLegend();
 }
 
 QPointF TimeChart::viewPointOf(double t, double value) const {

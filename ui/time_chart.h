@@ -35,6 +35,9 @@ public:
     void setEvents(std::shared_ptr<const std::vector<jl::Event>> events);
     // Large fonts and lines for a projector (presentation mode).
     void setLarge(bool large);
+    // The legend's type, smaller while its entries would not fit the
+    // chart's height (eight energy curves in a low dock): every name shows.
+    void fitLegend();
 
     double timeAtViewPoint(const QPointF& viewPoint) const;
     QPointF viewPointOf(double t, double value) const;
@@ -54,6 +57,7 @@ protected:
     void drawForeground(QPainter* painter, const QRectF& rect) override;
     void mousePressEvent(QMouseEvent* e) override;
     void mouseMoveEvent(QMouseEvent* e) override;
+    void resizeEvent(QResizeEvent* e) override;
 
 private:
     static constexpr QSize kMinimumSize{0, 120};  // a chart still readable in a low dock

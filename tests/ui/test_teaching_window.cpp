@@ -17,10 +17,12 @@
 #include <QDoubleSpinBox>
 #include <QGraphicsScene>
 #include <QGraphicsTextItem>
+#include <QLegend>
 #include <QLineEdit>
 #include <QMenuBar>
 #include <QPlainTextEdit>
 #include <QScreen>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QTimer>
 #include <QToolBar>
@@ -143,6 +145,34 @@ private slots:
         QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus& s) { return s.frameCount > head + 1 && !s.playing; }));
         QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus&) { return !f.teaching.pacing()->seekingEvent(); }));
         QVERIFY(dense("next event"));
+    }
+
+    // At the default window size every curve's name shows in full in its
+    // chart's legend: eight in the energy chart, five in the fold angles.
+    void everyCurveNameShowsInTheLegends() {
+        QSettings().clear();  // a first start: no arrangement saved by an earlier window
+        MainWindow window(jl::test::quietWindow());  // at its first size, 1440 x 900
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        const auto before = jl::test::loadsSoFar(window.controller());
+        window.openFile(QString(JL_SOURCE_DIR) + "/examples/classic.yaml");
+        QVERIFY(jl::test::loadedAfter(window.controller(), before));
+        QTest::qWait(200);
+        QCOMPARE(window.size(), QSize(1440, 900));
+        RunPlots* plots = window.teaching()->plots();
+        for (TimeChart* chart : {plots->energyChart(), plots->foldChart()}) {
+            QLegend* legend = chart->chart()->legend();
+            const QRectF box = legend->sceneBoundingRect();
+            QStringList shown, cut;
+            for (QGraphicsItem* item : chart->scene()->items())
+                if (auto* text = dynamic_cast<QGraphicsTextItem*>(item); text && legend->isAncestorOf(text)) {
+                    shown << text->toPlainText();
+                    if (!box.contains(text->sceneBoundingRect()) || text->toPlainText().contains(QChar(0x2026)))
+                        cut << text->toPlainText();
+                }
+            QCOMPARE(shown.size(), int(chart->chart()->series().size()));
+            QVERIFY2(cut.isEmpty(), qPrintable(chart->chart()->title() + ": " + cut.join(", ")));
+        }
     }
 
     void lessonsAndTeachMenusSitBeforeHelp() {
