@@ -1,5 +1,6 @@
 #include "ui/timeline.h"
 
+#include <QFontMetricsF>
 #include <QMouseEvent>
 #include <QPainter>
 
@@ -49,10 +50,50 @@ double Timeline::span() const {
     return s;
 }
 
-QRectF Timeline::track() const { return QRectF(8, 6, width() - 16, height() - 24); }
+QFont Timeline::labelFont() const {
+    QFont f = font();
+    f.setPointSizeF(f.pointSizeF() * 0.85);
+    return f;
+}
+
+// Below the track, a row for the labels as tall as their type (larger on a projector).
+QRectF Timeline::track() const {
+    const double labels = QFontMetricsF(labelFont()).height() + 5;
+    return QRectF(8, 6, width() - 16, std::max(8.0, height() - 6 - labels));
+}
+
+QSize Timeline::sizeHint() const { return {600, int(std::ceil(6 + 20 + QFontMetricsF(labelFont()).height() + 5))}; }
 double Timeline::xOf(double t) const { return track().left() + track().width() * std::clamp(t / span(), 0.0, 1.0); }
 double Timeline::timeAt(int x) const {
     return std::clamp((x - track().left()) / track().width(), 0.0, 1.0) * span();
+}
+
+std::vector<Timeline::Label> Timeline::labels() const {
+    const QRectF r = track();
+    const QFontMetricsF m(labelFont());
+    // Ticks every 0.1, 0.5, 1, 5 ... s, at least as far apart as the widest label.
+    const double sp = span();
+    const double room = std::max(48.0, m.horizontalAdvance(QString::number(sp, 'g', 4) + " s") + 12);
+    double tick = 0.1;
+    while (r.width() * tick / sp < room) tick *= (QString::number(tick).contains('5') ? 2 : 5);
+    std::vector<Label> out;
+    for (double t = 0; t <= sp + 1e-9; t += tick) {
+        Label l;
+        l.tick = xOf(t);
+        l.text = QString::number(t, 'g', 4) + " s";
+        // Centred under its tick, but never past either end of the widget
+        // (the first and last labels would lose their outer halves).
+        const double w = m.horizontalAdvance(l.text) + 2;
+        const double left = std::clamp(l.tick - w / 2, 0.0, std::max(0.0, width() - w));
+        l.box = QRectF(left, r.bottom() + 3, w, m.height());
+        out.push_back(l);
+    }
+    return out;
+}
+
+void Timeline::changeEvent(QEvent* e) {
+    QWidget::changeEvent(e);
+    if (e->type() == QEvent::FontChange) updateGeometry();  // the labels' row follows the type
 }
 
 void Timeline::paintEvent(QPaintEvent*) {
@@ -65,20 +106,12 @@ void Timeline::paintEvent(QPaintEvent*) {
     p.setPen(pal.color(QPalette::Mid));
     p.drawRect(r);
 
-    // Ticks every 0.1, 0.5, 1, 5 ... s so labels never crowd.
-    const double sp = span();
-    double tick = 0.1;
-    while (r.width() * tick / sp < 48) tick *= (QString::number(tick).contains('5') ? 2 : 5);
-    QFont f = font();
-    f.setPointSizeF(f.pointSizeF() * 0.85);
-    p.setFont(f);
-    for (double t = 0; t <= sp + 1e-9; t += tick) {
-        const double x = xOf(t);
+    p.setFont(labelFont());
+    for (const Label& l : labels()) {
         p.setPen(pal.color(QPalette::Mid));
-        p.drawLine(QPointF(x, r.bottom()), QPointF(x, r.bottom() + 3));
+        p.drawLine(QPointF(l.tick, r.bottom()), QPointF(l.tick, r.bottom() + 3));
         p.setPen(pal.color(QPalette::WindowText));
-        p.drawText(QRectF(x - 30, r.bottom() + 3, 60, 14), Qt::AlignHCenter | Qt::AlignTop,
-                   QString::number(t, 'g', 4) + " s");
+        p.drawText(l.box, Qt::AlignHCenter | Qt::AlignTop, l.text);
     }
     if (events_) {
         for (const jl::Event& e : *events_) {

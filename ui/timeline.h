@@ -4,6 +4,8 @@
 
 #include "jl/sim/frame.h"
 
+#include <QRectF>
+#include <QString>
 #include <QWidget>
 
 #include <memory>
@@ -17,13 +19,22 @@ public:
     explicit Timeline(QWidget* parent = nullptr);
     void setDuration(double seconds);  // the scene's suggested length
     void setState(double cursor, double recorded, std::shared_ptr<const std::vector<jl::Event>> events);
-    QSize sizeHint() const override { return {600, 44}; }
+    QSize sizeHint() const override;
+    // The time labels under the track: their tick's x, their text and where
+    // they are drawn (always inside the widget, whatever the type's size).
+    struct Label {
+        double tick = 0;
+        QString text;
+        QRectF box;
+    };
+    std::vector<Label> labels() const;
 
 signals:
     void seekRequested(double time);
 
 protected:
     void paintEvent(QPaintEvent*) override;
+    void changeEvent(QEvent* e) override;
     void mousePressEvent(QMouseEvent* e) override;
     void mouseMoveEvent(QMouseEvent* e) override;
 
@@ -32,6 +43,7 @@ private:
     double xOf(double t) const;
     double timeAt(int x) const;
     QRectF track() const;
+    QFont labelFont() const;
 
     double duration_ = 5, cursor_ = 0, recorded_ = 0;
     std::shared_ptr<const std::vector<jl::Event>> events_;

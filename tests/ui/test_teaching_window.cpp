@@ -10,6 +10,7 @@
 #include "ui/side_view.h"
 #include "ui/teaching_docks.h"
 #include "ui/time_chart.h"
+#include "ui/timeline.h"
 #include "ui_test_support.h"
 
 #include <QApplication>
@@ -238,6 +239,18 @@ private slots:
         QCOMPARE(f.teaching.sideView()->options().scale, 2.0);
         // The plots get room for their large type: no tick label cut to "...".
         QTRY_VERIFY(f.window.findChild<QDockWidget*>("plotsDock")->height() >= f.window.height() / 3 - 2);
+        // The timeline's labels, in large type, stay whole inside it and apart.
+        auto* timeline = f.window.findChild<Timeline*>();
+        QVERIFY(timeline);
+        QTest::qWait(50);
+        const std::vector<Timeline::Label> labels = timeline->labels();
+        QVERIFY(labels.size() >= 3);
+        for (size_t i = 0; i < labels.size(); ++i) {
+            QVERIFY2(QRectF(timeline->rect()).contains(labels[i].box),
+                     qPrintable(labels[i].text + QString(" at %1..%2 of %3 x %4").arg(labels[i].box.left()).arg(labels[i].box.right())
+                                    .arg(timeline->width()).arg(timeline->height())));
+            if (i > 0) QVERIFY(labels[i].box.left() >= labels[i - 1].box.right());
+        }
         QTest::qWait(200);
         for (TimeChart* c :
              {f.teaching.plots()->energyChart(), f.teaching.plots()->foldChart(), f.teaching.plots()->speedChart()})
