@@ -382,6 +382,35 @@ private slots:
             QVERIFY2(purpleNear(view.pixelOf(h.position, target)) >= 3, qPrintable(QString::number(h.corner)));
     }
 
+    // The legend row (free, locked open, folded) in presentation type in a
+    // narrow view: smaller type, but all three entries whole inside the view.
+    void theSideViewLegendFitsANarrowView() {
+        const jl::Scene scene = loadExample("classic.yaml");
+        const Run run = runHeadless(scene, 0.0);
+        SideView view;
+        view.setScene(scene);
+        view.showFrame(run.frames.front());
+        SideViewOptions large;
+        large.scale = 2.0;
+        view.setOptions(large);
+        const QImage image = view.render(QSize(260, 420));
+        auto columnsOf = [&](const QColor& want) {
+            std::pair<int, int> range{image.width(), -1};
+            for (int y = image.height() - 60; y < image.height(); ++y)
+                for (int x = 0; x < image.width(); ++x) {
+                    const QColor c = image.pixelColor(x, y);
+                    if (std::abs(c.red() - want.red()) + std::abs(c.green() - want.green()) + std::abs(c.blue() - want.blue()) < 30)
+                        range = {std::min(range.first, x), std::max(range.second, x)};
+                }
+            return range;
+        };
+        const auto free = columnsOf(hingeColor(jl::HingeMode::Free));
+        const auto folded = columnsOf(hingeColor(jl::HingeMode::Folded));
+        QVERIFY2(free.second >= 0 && free.first >= 2, qPrintable(QString("free dot from x = %1").arg(free.first)));
+        QVERIFY2(folded.second >= 0 && folded.second < image.width() - 2, qPrintable(QString("folded dot to x = %1").arg(folded.second)));
+        QVERIFY(free.second < folded.first);
+    }
+
     void exportsWriteWhatTheyPromise() {
         QTemporaryDir dir;
         QVERIFY(dir.isValid());

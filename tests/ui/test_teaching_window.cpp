@@ -18,6 +18,7 @@
 #include <QDoubleSpinBox>
 #include <QGraphicsScene>
 #include <QGraphicsTextItem>
+#include <QLabel>
 #include <QLegend>
 #include <QLineEdit>
 #include <QMenuBar>
@@ -25,6 +26,7 @@
 #include <QScreen>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QStatusBar>
 #include <QTimer>
 #include <QToolBar>
 #include <QValueAxis>
@@ -149,8 +151,9 @@ private slots:
     }
 
     // At the default window size every curve's name shows in full in its
-    // chart's legend: eight in the energy chart, five in the fold angles.
-    void everyCurveNameShowsInTheLegends() {
+    // chart's legend (eight in the energy chart, five in the fold angles),
+    // and every number of the status bar in full in its place.
+    void everyNameAndNumberShowsWholeAtTheDefaultSize() {
         QSettings().clear();  // a first start: no arrangement saved by an earlier window
         MainWindow window(jl::test::quietWindow());  // at its first size, 1440 x 900
         window.show();
@@ -174,6 +177,19 @@ private slots:
             QCOMPARE(shown.size(), int(chart->chart()->series().size()));
             QVERIFY2(cut.isEmpty(), qPrintable(chart->chart()->title() + ": " + cut.join(", ")));
         }
+        // The status bar's numbers, in the middle of the run, each whole in its place.
+        window.controller()->seek(2.0);
+        QVERIFY(jl::test::waitForStatus(window.controller(), [](const SimStatus& st) { return st.frame->time >= 2.0; }));
+        QTest::qWait(100);
+        int labels = 0;
+        for (QLabel* label : window.statusBar()->findChildren<QLabel*>()) {
+            if (!label->isVisible() || label->text().isEmpty()) continue;
+            ++labels;
+            const int needed = label->fontMetrics().horizontalAdvance(label->text());
+            QVERIFY2(needed <= label->contentsRect().width(),
+                     qPrintable(label->text() + QString(": %1 px in %2").arg(needed).arg(label->contentsRect().width())));
+        }
+        QVERIFY(labels >= 3);
     }
 
     void lessonsAndTeachMenusSitBeforeHelp() {
