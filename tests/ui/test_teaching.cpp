@@ -64,6 +64,17 @@ bool near(const QColor& a, const QColor& b, int tolerance = 4) {
 
 QString colorText(const QColor& c) { return QString("(%1, %2, %3)").arg(c.red()).arg(c.green()).arg(c.blue()); }
 
+// The classic ladder hanging at rest, in a side view of its own.
+struct ClassicAtRest {
+    jl::Scene scene = loadExample("classic.yaml");
+    Run run = runHeadless(scene, 0.0);
+    SideView view;
+    ClassicAtRest() {
+        view.setScene(scene);
+        view.showFrame(run.frames.front());
+    }
+};
+
 }  // namespace
 
 class TeachingTest : public QObject {
@@ -334,11 +345,9 @@ private slots:
     void theSideViewUsesTheEnginesCornerNumbers() {
         // Hinge j sits at corner 0 (j odd) or 3 (j even) of both blocks: the
         // view's corner k of block j must be where the engine puts hinge j.
-        const jl::Scene scene = loadExample("classic.yaml");
-        const Run run = runHeadless(scene, 0.0);
-        SideView view;
-        view.setScene(scene);
-        view.showFrame(run.frames.front());
+        ClassicAtRest c;
+        const Run& run = c.run;
+        SideView& view = c.view;
         const QRectF target(0, 0, 600, 800);
         for (size_t j = 1; j <= run.frames.front().hinges.size(); ++j) {
             const jl::HingeFrame& h = run.frames.front().hinges[j - 1];
@@ -356,11 +365,9 @@ private slots:
     // thin for a number at every corner: each hinge then shows its corner
     // number beside its dot, in the corner numbers' colour.
     void theSideViewShowsCornerNumbersAtItsDefaultSize() {
-        const jl::Scene scene = loadExample("classic.yaml");
-        const Run run = runHeadless(scene, 0.0);
-        SideView view;
-        view.setScene(scene);
-        view.showFrame(run.frames.front());
+        ClassicAtRest c;
+        const Run& run = c.run;
+        SideView& view = c.view;
         const QSize size(360, 280);
         SideViewOptions numbered;
         numbered.cornerNumbers = true;
@@ -385,11 +392,8 @@ private slots:
     // The legend row (free, locked open, folded) in presentation type in a
     // narrow view: smaller type, but all three entries whole inside the view.
     void theSideViewLegendFitsANarrowView() {
-        const jl::Scene scene = loadExample("classic.yaml");
-        const Run run = runHeadless(scene, 0.0);
-        SideView view;
-        view.setScene(scene);
-        view.showFrame(run.frames.front());
+        ClassicAtRest c;
+        SideView& view = c.view;
         SideViewOptions large;
         large.scale = 2.0;
         view.setOptions(large);
