@@ -287,6 +287,26 @@ private slots:
         QVERIFY(loadScene((root / "big.yaml").string()).scene);
     }
 
+    // Text that no scene has is refused before the YAML reader spends time on
+    // it: a line of megabytes, a value longer than any description, a title
+    // longer than a title bar (each with its place in the file).
+    void overlongTextIsRefusedWithItsPlace() {
+        const std::string head = "format: jacobs-ladder/1\nladder: {blocks: 6}\n";
+        expectOne(parseScene(head + "title: " + std::string(2u << 20, 'a') + "\n", "s.yaml"),
+                  "this line is 2048 KiB long, more than the 1024 KiB");
+        std::string description = "description: \"";
+        for (int i = 0; i < 2000; ++i) description += "a line of words, forty characters long.\n  ";
+        expectOne(parseScene(head + description + "\"\n", "s.yaml"), "this value is 78 KiB long, more than the 64 KiB");
+        const std::string accents = "title: \"" + [] {
+            std::string s;
+            for (int i = 0; i < 200; ++i) s += "\xc3\xa9";  // 200 characters, 400 bytes
+            return s;
+        }() + "\"\n";
+        QVERIFY(parseScene(head + accents, "s.yaml").scene);
+        expectOne(parseScene(head + "description: \"" + std::string(20'001, 'w') + "\"\n", "s.yaml"),
+                  "description: at most 20000 characters, got 20001");
+    }
+
     void limitsAreConfigurable() {
         LoadLimits limits;
         limits.maxBlocks = 10;

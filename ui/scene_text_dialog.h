@@ -3,6 +3,8 @@
 // the simulation running as it was: words change no physics.
 #pragma once
 
+#include "jl/scene/load_limits.h"
+
 #include <QDialog>
 
 class QLineEdit;
@@ -23,8 +25,9 @@ public:
     // would not load), the title on one line; both within sane lengths.
     static QString cleanTitle(const QString& text);
     static QString cleanDescription(const QString& text);
-    static constexpr int kLongestTitle = 200;
-    static constexpr int kLongestDescription = 20000;
+    // The scene file's limits (a longer text would make a file that does not load).
+    static constexpr int kLongestTitle = int(jl::kMostTitleCharacters);
+    static constexpr int kLongestDescription = int(jl::kMostDescriptionCharacters);
 
     void accept() override;  // pushes the change if anything changed
 

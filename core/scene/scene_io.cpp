@@ -34,8 +34,8 @@ SceneLoad parseChecked(std::string_view text, const LoadLimits& limits, Problems
         problems.add(1, 1, "the file is empty; a scene starts with 'format: jacobs-ladder/1'");
         return failed(problems);
     }
-    if (!checkText(text, problems)) return failed(problems);
-    const bool readable = checkStructure(text, limits.maxNodes, problems);
+    if (!checkText(text, limits, problems)) return failed(problems);
+    const bool readable = checkStructure(text, limits, problems);
     if (!readable) return failed(problems);
     const YAML::Node root = YAML::Load(std::string(text));
     std::optional<Scene> scene = readScene(root, limits, problems);

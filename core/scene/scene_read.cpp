@@ -172,8 +172,8 @@ std::optional<Scene> readScene(const YAML::Node& root, const LoadLimits& limits,
     if (!f.isMap()) return std::nullopt;
     Scene scene;
     readFormat(f);
-    f.text("title", scene.title);
-    f.text("description", scene.description);
+    f.text("title", scene.title, kMostTitleCharacters);
+    f.text("description", scene.description, kMostDescriptionCharacters);
     if (f.has("ladder")) readLadder(f.value("ladder"), limits, problems, scene.ladder.emplace());
     const int blocks = scene.ladder ? scene.ladder->blocks : 0;
     Names names;

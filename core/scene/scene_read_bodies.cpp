@@ -89,7 +89,7 @@ namespace {
 // Names are how pins and springs find things, so they must be unique and
 // must not look like the built-in references.
 void readName(Fields& f, std::string& name, Names& names) {
-    f.text("name", name);
+    f.text("name", name, kMostNameCharacters);
     if (name.empty()) return;
     if (name == "world" || name.starts_with("block:"))
         f.errorAt("name", "'" + name + "' is reserved ('world' and 'block:N' are built-in references)");
@@ -161,7 +161,7 @@ PointRef readPointRef(Fields& parent, std::string_view key, int blocks, const Na
     if (!parent.require(key)) return ref;
     Fields f(parent.problems(), parent.value(key), {"body", "local"});
     if (f.require("body")) {
-        f.text("body", ref.on);
+        f.text("body", ref.on, kMostNameCharacters);
         checkReference(f, ref.on, blocks, names);
     }
     f.point("local", ref.local, range::coordinate);

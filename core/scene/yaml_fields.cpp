@@ -295,9 +295,20 @@ void Fields::flag(std::string_view key, bool& out) {
         if (const auto v = readFlag(problems_, value(key))) out = *v;
 }
 
-void Fields::text(std::string_view key, std::string& out) {
-    if (has(key))
-        if (const auto v = readText(problems_, value(key))) out = *v;
+void Fields::text(std::string_view key, std::string& out, std::size_t mostCharacters) {
+    if (!has(key)) return;
+    const Located at = value(key);
+    const auto v = readText(problems_, at);
+    if (!v) return;
+    // Every byte but a UTF-8 continuation byte (10xxxxxx) starts a character.
+    const auto characters = std::size_t(std::count_if(v->begin(), v->end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
+    if (characters > mostCharacters) {
+        report(problems_, at.mark,
+                      at.path + ": at most " + std::to_string(mostCharacters) + " characters, got " +
+                          std::to_string(characters));
+        return;
+    }
+    out = *v;
 }
 
 void Fields::chooseFrom(std::string_view key, const std::vector<std::string_view>& words, int& index) {

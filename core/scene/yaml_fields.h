@@ -79,7 +79,8 @@ public:
     void color(std::string_view key, Color& out);
     void color(std::string_view key, std::optional<Color>& out);
     void flag(std::string_view key, bool& out);
-    void text(std::string_view key, std::string& out);
+    // At most `mostCharacters` characters (UTF-8 code points).
+    void text(std::string_view key, std::string& out, std::size_t mostCharacters);
     // A word from a fixed set (jl/scene/scene_fields.h), e.g. integrator: rk4.
     template <class E>
     void choice(std::string_view key, E& out, std::span<const Word<E>> words);

@@ -73,7 +73,20 @@ std::pair<int, int> position(std::string_view text, std::size_t offset) {
 
 }  // namespace
 
-bool checkText(std::string_view text, Problems& problems) {
+bool checkText(std::string_view text, const LoadLimits& limits, Problems& problems) {
+    for (std::size_t start = 0; start < text.size();) {
+        const std::size_t end = std::min(text.find('\n', start), text.size());
+        if (end - start > limits.maxLineBytes) {
+            const auto [line, column] = position(text, start);
+            problems.add(line, column,
+                         "this line is " + std::to_string((end - start) >> 10) + " KiB long, more than the " +
+                             std::to_string(limits.maxLineBytes >> 10) +
+                             " KiB a scene file's line may have; a scene's longest value, its description, is at most " +
+                             std::to_string(kMostDescriptionCharacters) + " characters");
+            return false;
+        }
+        start = end + 1;
+    }
     if (const auto fault = firstTextFault(text)) {
         const auto [line, column] = position(text, fault->offset);
         const unsigned char c = static_cast<unsigned char>(text[fault->offset]);
@@ -119,7 +132,8 @@ std::string writtenTag(const std::string& tag) {
 // Walks parse events keeping, per open mapping, the keys seen so far.
 class StructureCheck : public YAML::EventHandler {
 public:
-    StructureCheck(std::size_t maxNodes, Problems& problems) : maxNodes_(maxNodes), problems_(problems) {}
+    StructureCheck(const LoadLimits& limits, Problems& problems)
+        : maxNodes_(limits.maxNodes), maxScalar_(limits.maxScalarBytes), problems_(problems) {}
 
     bool refused() const { return refused_; }
 
@@ -136,7 +150,10 @@ public:
     }
     void OnScalar(const YAML::Mark& mark, const std::string& tag, YAML::anchor_t, const std::string& value) override {
         checkTag(mark, tag);
-        checkEscapes(mark, value);
+        if (value.size() > maxScalar_)
+            refuse(mark, "this value is " + std::to_string(value.size() >> 10) + " KiB long, more than the " +
+                             std::to_string(maxScalar_ >> 10) + " KiB a scene file's value may have");
+        else checkEscapes(mark, value);
         node(mark, value);
     }
     void OnSequenceStart(const YAML::Mark& mark, const std::string& tag, YAML::anchor_t,
@@ -215,7 +232,7 @@ private:
                                           " (written as an escape) is not allowed in a scene file");
     }
 
-    std::size_t maxNodes_;
+    std::size_t maxNodes_, maxScalar_;
     std::size_t count_ = 0;
     YAML::Mark documentStart_;
     bool refused_ = false;
@@ -254,9 +271,9 @@ std::size_t commentInBrackets(std::string_view text) {
 
 }  // namespace
 
-bool checkStructure(std::string_view text, std::size_t maxNodes, Problems& problems) {
+bool checkStructure(std::string_view text, const LoadLimits& limits, Problems& problems) {
     std::istringstream stream{std::string(text)};
-    StructureCheck check(maxNodes, problems);
+    StructureCheck check(limits, problems);
     try {
         YAML::Parser parser(stream);
         int documents = 0;
