@@ -1,11 +1,11 @@
 #include "bench/chart.h"
 
+#include "bench/save_text.h"
 #include "jl/base/xml_text.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 
 namespace jl::bench {
@@ -157,11 +157,11 @@ void draw(const Chart& c, SvgPen& pen) {
 bool writeChart(const Chart& chart, const std::filesystem::path& dir, const std::string& name) {
     SvgPen svg;
     draw(chart, svg);
-    std::ofstream f(dir / (name + ".svg"));
+    std::ostringstream f;
     f << "<svg xmlns='http://www.w3.org/2000/svg' width='" << kWidth << "' height='" << kHeight
       << "' font-family='sans-serif'>\n<rect width='100%' height='100%' fill='white'/>\n"
       << svg.out.str() << "</svg>\n";
-    return bool(f);
+    return saveText(dir / (name + ".svg"), f.str());
 }
 
 }  // namespace jl::bench

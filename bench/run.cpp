@@ -7,30 +7,31 @@
 #include "bench/models.h"
 #include "bench/peers.h"
 #include "bench/report.h"
+#include "bench/save_text.h"
 #include "bench/stability.h"
 
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
+#include <sstream>
 
 namespace jl::bench {
 
 namespace {
 
 bool writeCsv(const std::vector<BenchRow>& rows, const std::filesystem::path& path) {
-    std::ofstream f(path);
+    std::ostringstream f;
     f << "study,method,blocks,parameter,cost_cpu_s_per_sim_s,error,finished,note\n";
     f.precision(6);
     for (const BenchRow& r : rows)
         f << r.study << ',' << r.method << ',' << r.blocks << ',' << r.parameter << ',' << r.cost << ',' << r.error << ','
           << (r.finished ? 1 : 0) << ",\"" << r.note << "\"\n";
-    return bool(f);
+    return saveText(path, f.str());
 }
 
 bool writeEventCostCsv(const std::vector<EventCostRow>& rows, const std::filesystem::path& path) {
-    std::ofstream f(path);
+    std::ostringstream f;
     f << "blocks,window_from_s,window_to_s,steps,mean_step_s,events,instants,kinds,window_cpu_s,repetitions,repeatable,"
          "plain_step_s,plain_steps,plain_repetitions,plain_events,plain_step_cpu_s,event_cpu_s,cpu_per_event_s,"
          "cpu_per_instant_s,event_share,plain_steps_per_event,turning_steps,turning_events,turning_step_cpu_s,"
@@ -45,11 +46,11 @@ bool writeEventCostCsv(const std::vector<EventCostRow>& rows, const std::filesys
           << r.perEvent << ',' << r.perInstant << ',' << r.eventShare << ',' << r.perEvent / r.plainStepCpu << ','
           << r.controlSteps << ',' << r.controlEvents << ',' << r.controlStepCpu << ',' << r.perEventControl << ','
           << r.eventfulSteps << ',' << r.eventfulCpu << ',' << r.perEventInStep << ",\"" << r.failure << "\"\n";
-    return bool(f);
+    return saveText(path, f.str());
 }
 
 bool writeExamplesCsv(const ExamplesStudy& s, const std::filesystem::path& path) {
-    std::ofstream f(path);
+    std::ostringstream f;
     f << "scene,blocks,asked_s,simulated_s,cpu_s,cpu_s_per_sim_s,faster_than_real_time,steps,integrator,adaptive,"
          "tolerance,automatic_step,smallest_step_s,largest_step_s,step_halvings,hinge_events,failure\n";
     f.precision(6);
@@ -59,11 +60,11 @@ bool writeExamplesCsv(const ExamplesStudy& s, const std::filesystem::path& path)
           << r.integrator << "\"," << (r.adaptive ? 1 : 0) << ',' << r.tolerance << ',' << (r.automaticStep ? 1 : 0)
           << ',' << r.smallestStep << ',' << r.largestStep << ',' << r.stepHalvings << ',' << r.hingeEvents << ",\""
           << r.failure << "\"\n";
-    return bool(f);
+    return saveText(path, f.str());
 }
 
 bool writeStabilityCsv(const StabilityStudy& s, const std::filesystem::path& path) {
-    std::ofstream f(path);
+    std::ostringstream f;
     f << "blocks,omega_max_engine,omega_max_reference,omega_hand_upper,omega_hand_airy,lanczos_steps,ritz_residual,"
          "rk4_dt_limit_predicted,symplectic_euler_dt_limit_predicted,dormand_prince45_dt_limit_predicted,horizon_s,"
          "rk4_seeded_stays,rk4_seeded_grows,rk4_hanging_runs,rk4_hanging_fails,rk4_turned_runs,rk4_turned_fails,"
@@ -78,7 +79,7 @@ bool writeStabilityCsv(const StabilityStudy& s, const std::filesystem::path& pat
           << r.turnedFail << ',' << r.hangingCost << ',' << r.turnedCost << ',' << r.handTension << ','
           << r.peakTension << ',' << r.peakTime << ',' << r.turnedPeakLimit << ',' << r.dopriSteps << ','
           << r.dopriRejected << ',' << r.dopriMeanStep << ',' << r.dopriCost << '\n';
-    return bool(f);
+    return saveText(path, f.str());
 }
 
 // One series per method: cost against error.

@@ -22,6 +22,13 @@ namespace jl::cli {
 
 namespace {
 
+bool save(const std::string& path, const std::string& text) {
+    const std::string error = writeWholeFile(path, text);
+    if (error.empty()) return true;
+    std::fprintf(stderr, "jladder reach: %s: %s\n", path.c_str(), error.c_str());
+    return false;
+}
+
 const char* kHelp =
     "usage: jladder reach [--out FILE]\n"
     "       jladder reach --PARAMETER FROM:TO:STEP [--PARAMETER FROM:TO:STEP] [--scene BASE.yaml]\n"
@@ -71,12 +78,7 @@ int table(const std::optional<std::string>& out) {
         text += s.str();
     }
     if (!out) return print(text) ? 0 : 1;
-    OutputFile f;
-    if (!f.open(*out) || !f.write(text) || !f.commit()) {
-        std::fprintf(stderr, "jladder reach: %s: %s\n", out->c_str(), f.error().c_str());
-        return 1;
-    }
-    return 0;
+    return save(*out, text) ? 0 : 1;
 }
 
 // "12mm" -> 0.012: a number, then the unit the parameter allows (none: SI).
@@ -120,12 +122,6 @@ std::optional<DesignAxis> axis(const std::string& text, DesignParameter p, std::
     return x;
 }
 
-bool save(const std::string& path, const std::string& text) {
-    OutputFile f;
-    if (f.open(path) && f.write(text) && f.commit()) return true;
-    std::fprintf(stderr, "jladder reach: %s: %s\n", path.c_str(), f.error().c_str());
-    return false;
-}
 
 }  // namespace
 

@@ -194,4 +194,10 @@ void OutputFile::discard() {
     buffer_.clear();
 }
 
+std::string writeWholeFile(const std::string& path, std::string_view text) {
+    OutputFile file;
+    if (file.open(path) && file.write(text) && file.commit()) return {};
+    return file.error().empty() ? std::string("cannot write the file") : file.error();
+}
+
 }  // namespace jl

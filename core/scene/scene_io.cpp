@@ -120,8 +120,8 @@ std::optional<Diagnostic> saveScene(const Scene& scene, const std::string& path)
         return Diagnostic{path, 0, 0, std::string("cannot save: ") + e.what()};
     }
     if (text.empty()) return Diagnostic{path, 0, 0, "cannot save: the scene could not be written as YAML"};
-    OutputFile file;
-    if (!file.open(path) || !file.write(text) || !file.commit()) return Diagnostic{path, 0, 0, "cannot save: " + file.error()};
+    if (const std::string error = writeWholeFile(path, text); !error.empty())
+        return Diagnostic{path, 0, 0, "cannot save: " + error};
     return std::nullopt;
 }
 

@@ -56,6 +56,10 @@ private:
     bool direct_ = false;
 };
 
+// The whole file at once: `text` written to `path` through an OutputFile.
+// Empty when it worked; else what failed ("cannot write the file: ...").
+std::string writeWholeFile(const std::string& path, std::string_view text);
+
 // The file `path` stands for, every symbolic link followed, even one that
 // points to a file not made yet (what a rename would replace).
 std::string resolvedPath(const std::string& path);
