@@ -1,5 +1,6 @@
 #include "app/jladder/options.h"
 
+#include "jl/base/output_file.h"
 #include "jl/scene/scalar_text.h"
 #include "jl/scene/scene_fields.h"
 #include "jl/scene/scene_ranges.h"
@@ -7,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 namespace jl::cli {
 
@@ -102,6 +104,13 @@ std::string jsonString(const std::string& s) {
         }
     }
     return out + "\"";
+}
+
+bool sameFile(const std::string& a, const std::string& b) {
+    std::error_code ec;
+    const bool aExists = std::filesystem::exists(a, ec), bExists = std::filesystem::exists(b, ec);
+    if (aExists && bExists) return std::filesystem::equivalent(a, b, ec) && !ec;
+    return !aExists && !bExists && resolvedPath(a) == resolvedPath(b);
 }
 
 }  // namespace jl::cli

@@ -33,6 +33,10 @@ Options parse(const std::vector<std::string>& args, const std::vector<std::strin
 // Applies --integrator, --step, --tolerance, --event-policy to the scene.
 bool applySolverOptions(Options& o, SolverSpec& solver);
 
+// Two names for one file: the same file (through links and hard links), or,
+// for files not made yet, the same name once links are followed.
+bool sameFile(const std::string& a, const std::string& b);
+
 std::string jsonString(const std::string& s);
 // A number as JSON reads it back exactly; null when it is not finite (JSON
 // has no NaN or infinity, and a bare "nan" breaks every parser).

@@ -22,6 +22,22 @@ namespace jl::cli {
 
 namespace {
 
+// All the files or none: each is written to its temporary first, and only
+// when every one has all its bytes are they renamed into place (a full disk
+// shows at the writes, so a failed second file leaves the first as it was).
+bool saveAll(const std::vector<std::pair<std::string, std::string>>& files) {
+    std::vector<OutputFile> out(files.size());
+    auto failed = [&](std::size_t i) {
+        std::fprintf(stderr, "jladder reach: %s: %s\n", files[i].first.c_str(), out[i].error().c_str());
+        return false;
+    };
+    for (std::size_t i = 0; i < files.size(); ++i)
+        if (!out[i].open(files[i].first) || !out[i].write(files[i].second) || !out[i].flush()) return failed(i);
+    for (std::size_t i = 0; i < files.size(); ++i)
+        if (!out[i].commit()) return failed(i);
+    return true;
+}
+
 bool save(const std::string& path, const std::string& text) {
     const std::string error = writeWholeFile(path, text);
     if (error.empty()) return true;
@@ -44,7 +60,8 @@ const char* kHelp =
     "first ripple on BASE (default: 6 blocks of 60 x 12 x 45 mm, density 600, block 0 held\n"
     "and turned half a turn from 0.2 s over 0.3 s), run on N threads (default: every core).\n"
     "Writes CSV (stdout, or --csv FILE) and an SVG heat map (--svg FILE); the same command\n"
-    "gives the same bytes whatever N. Files are replaced only once written whole.\n";
+    "gives the same bytes whatever N. Files are replaced only once both are written whole;\n"
+    "neither may be the --scene file.\n";
 
 // Standard output written and flushed, or a message: a full disk or a closed
 // pipe is a failed run, not a silent one.
@@ -145,6 +162,14 @@ int reach(const std::vector<std::string>& args) {
         jobs = std::atoi(j->c_str());
         if (jobs < 1 || jobs > 256) o.error = "--jobs takes a whole number from 1 to 256";
     }
+    // An output may not be the base scene, nor both outputs one file.
+    const auto csvPath = o.get("--csv"), svgPath = o.get("--svg"), scenePath = o.get("--scene");
+    for (const auto& [option, path] : {std::pair{"--csv", csvPath}, std::pair{"--svg", svgPath}})
+        if (o.error.empty() && path && scenePath && sameFile(*path, *scenePath))
+            o.error = std::string(option) + " " + *path + " is the scene file " + *scenePath + "; writing it would destroy the scene";
+    if (o.error.empty() && csvPath && svgPath && sameFile(*csvPath, *svgPath) &&
+        !(writtenDirectly(*csvPath) && writtenDirectly(*svgPath)))
+        o.error = "--csv and --svg name the same file (" + *csvPath + "); one would overwrite the other, give each its own";
     if (!o.error.empty()) {
         std::fprintf(stderr, "jladder reach: %s\n", o.error.c_str());
         return 2;
@@ -175,11 +200,11 @@ int reach(const std::vector<std::string>& args) {
     std::fputc('\n', stderr);
     const std::string csv = rippleMapCsv(map);
     const std::string title = o.get("--title").value_or("How far the first ripple travels");
-    bool ok = true;
-    if (auto path = o.get("--csv")) ok = save(*path, csv) && ok;
-    else ok = print(csv) && ok;
-    if (auto path = o.get("--svg")) ok = save(*path, rippleMapSvg(map, title)) && ok;
-    return ok ? 0 : 1;
+    std::vector<std::pair<std::string, std::string>> files;
+    if (auto path = o.get("--csv")) files.emplace_back(*path, csv);
+    else if (!print(csv)) return 1;
+    if (auto path = o.get("--svg")) files.emplace_back(*path, rippleMapSvg(map, title));
+    return saveAll(files) ? 0 : 1;
 }
 
 }  // namespace jl::cli

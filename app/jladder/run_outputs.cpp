@@ -10,17 +10,6 @@ namespace jl::cli {
 
 namespace {
 
-namespace fs = std::filesystem;
-
-// Two names for one file: the same file (through links and hard links), or,
-// for files not made yet, the same name once links are followed.
-bool sameFile(const std::string& a, const std::string& b) {
-    std::error_code ec;
-    const bool aExists = fs::exists(a, ec), bExists = fs::exists(b, ec);
-    if (aExists && bExists) return fs::equivalent(a, b, ec) && !ec;
-    return !aExists && !bExists && resolvedPath(a) == resolvedPath(b);
-}
-
 std::string eventJson(const Event& e) {
     return "{\"t\":" + jsonNumber(e.time) + ",\"hinge\":" + std::to_string(e.hinge) + ",\"event\":\"" +
            toString(e.kind) + "\",\"corner\":" + std::to_string(e.corner) + ",\"text\":" + jsonString(e.text) + "}";
@@ -121,7 +110,7 @@ bool RunOutputs::finish(bool complete, const char* command) {
         if (o.file.direct()) continue;
         const std::string partial = o.path + ".partial";
         std::error_code ec;
-        const bool existed = fs::exists(o.path, ec);
+        const bool existed = std::filesystem::exists(o.path, ec);
         if (o.file.keepAs(partial)) {
             std::fprintf(stderr, "%s: the run did not complete: %s is %s; what the run wrote of it is in %s\n", command,
                          o.path.c_str(), existed ? "left as it was" : "not made", partial.c_str());

@@ -39,13 +39,21 @@ bad --blocks 4:8:2 --thickness 6mm:12mm:6mm --width 40mm:50mm:10mm
 bad --blocks 4:8:2 --jobs 0
 bad --blocks 2:100000:1
 
-# A failed write: a message naming the file and exit 1; the SVG still written
-# whole when only the CSV fails, and standard output checked too.
-"$jladder" reach --blocks 4:4:1 --csv no-such-dir/map.csv --svg whole.svg >out.txt 2>err.txt
+# A failed write: a message naming the file and exit 1; both files or
+# neither, so the SVG from before stays as it was when the CSV cannot be
+# written; and standard output checked too.
+echo "the old map" > whole.svg
+"$jladder" reach --blocks 4:4:1 --svg whole.svg --csv no-such-dir/map.csv >out.txt 2>err.txt
 got=$?
 [ "$got" = 1 ] || fail "a CSV in a missing directory: exit $got, wanted 1"
 grep -q "no-such-dir/map.csv" err.txt || fail "no message naming the CSV: $(cat err.txt)"
-grep -q "</svg>" whole.svg || fail "the SVG beside a failed CSV was not written whole"
+[ "$(cat whole.svg)" = "the old map" ] || fail "the SVG was replaced though the CSV beside it failed"
+# An output that is the base scene, or both outputs one file: refused.
+printf "format: jacobs-ladder/1\nladder: {blocks: 4}\n" > base.yaml
+"$jladder" reach --blocks 4:4:1 --scene base.yaml --csv base.yaml >out.txt 2>err.txt
+[ $? = 2 ] && grep -q "destroy the scene" err.txt || fail "--csv over the base scene was not refused: $(cat err.txt)"
+"$jladder" reach --blocks 4:4:1 --csv same.out --svg same.out >out.txt 2>err.txt
+[ $? = 2 ] && grep -q "name the same file" err.txt || fail "--csv and --svg as one file were not refused: $(cat err.txt)"
 if [ -w /dev/full ]; then
     "$jladder" reach --blocks 4:4:1 >/dev/full 2>err.txt
     got=$?
