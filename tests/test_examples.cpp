@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <set>
 
@@ -109,6 +110,28 @@ private slots:
                  qPrintable(QString::number(r.worstResidual)));
         QVERIFY(r.impactLossNeverFell);
         QVERIFY(chatter(r.events).longest <= 3);
+    }
+
+    // The scene-format page's complete example is a scene like the others:
+    // it loads, runs its whole duration through every scripted action (the
+    // hold at 3 s included) with books that balance and pins that hold.
+    void theFormatPagesCompleteExampleRuns() {
+        std::ifstream page(std::string(JL_SOURCE_DIR) + "/docs/scene-format.md");
+        const std::string text((std::istreambuf_iterator<char>(page)), std::istreambuf_iterator<char>());
+        const std::size_t section = text.find("## A complete example");
+        QVERIFY(section != std::string::npos);
+        const std::size_t start = text.find("```yaml\n", section), end = text.find("```", start + 8);
+        QVERIFY(start != std::string::npos && end != std::string::npos);
+        const SceneLoad load = parseScene(text.substr(start + 8, end - start - 8), "docs/scene-format.md");
+        for (const Diagnostic& d : load.errors) qWarning("%s", d.format().c_str());
+        QVERIFY(load.scene);
+        auto built = Simulation::build(*load.scene);
+        for (const std::string& e : built.errors) qWarning("%s", e.c_str());
+        QVERIFY(built.simulation);
+        const Run r = runUntil(*built.simulation, load.scene->duration);
+        QVERIFY2(r.failure.empty(), r.failure.c_str());
+        QVERIFY2(r.worstBalance < 1e-6, qPrintable(QString::number(r.worstBalance)));
+        QVERIFY(r.worstResidual <= load.scene->solver.projectionTolerance * 1.0000001);
     }
 
     // "All five hinges flip in order: the first three about 0.14 s apart,
