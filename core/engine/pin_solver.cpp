@@ -38,15 +38,9 @@ inline Eigen::Matrix2d couplingOf(double im, double ii, const Vec2& r1, const Ve
 }  // namespace
 
 // W-weighted coupling of two points r1, r2 of one body: J1 W J2^T.
-Eigen::Matrix2d PinSolver::coupling(const World& w, int body, const Vec2& r1, const Vec2& r2) const {
-    const Eigen::Vector2d im = inverseMass(w, body);
+Eigen::Matrix2d PinSolver::coupling(int body, const Vec2& r1, const Vec2& r2) const {
+    const Eigen::Vector2d& im = inverse_[size_t(body)];
     return couplingOf(im[0], im[1], r1, r2);
-}
-
-Eigen::Vector2d PinSolver::inverseMass(const World& w, int body) const {
-    if (inverseMass_) return (*inverseMass_)[size_t(body)];
-    const Body& b = w.body(body);
-    return {b.invMass, b.invInertia};
 }
 
 void PinSolver::order(const World& w) {
@@ -116,23 +110,27 @@ void PinSolver::order(const World& w) {
     version_ = w.structureVersion();
 }
 
-void PinSolver::updateRotations(const World& w) {
+// One pass over the bodies: each one's turn and its inverse mass and
+// inertia, side by side in flat arrays for the passes over the pins (a
+// Body, with its list of parts, is a long stride to read two numbers from).
+void PinSolver::updateBodies(const World& w, const std::vector<Eigen::Vector2d>* inverseMass) {
     rotation_.resize(size_t(w.bodyCount()));
+    inverse_.resize(size_t(w.bodyCount()));
     for (int b = 0; b < w.bodyCount(); ++b) {
         const double angle = w.q[3 * b + 2];
         rotation_[size_t(b)] = {std::cos(angle), std::sin(angle)};
+        const Body& body = w.body(b);
+        inverse_[size_t(b)] = inverseMass ? (*inverseMass)[size_t(b)] : Eigen::Vector2d(body.invMass, body.invInertia);
     }
 }
 
-void PinSolver::assemble(const World& w, const std::vector<Eigen::Vector2d>& inverseMass) {
-    inverseMass_ = &inverseMass;
-    assemble(w);
-    inverseMass_ = nullptr;
-}
+void PinSolver::assemble(const World& w) { assemble(w, nullptr); }
 
-void PinSolver::assemble(const World& w) {
+void PinSolver::assemble(const World& w, const std::vector<Eigen::Vector2d>& inverseMass) { assemble(w, &inverseMass); }
+
+void PinSolver::assemble(const World& w, const std::vector<Eigen::Vector2d>* inverseMass) {
     if (version_ != w.structureVersion()) order(w);
-    updateRotations(w);
+    updateBodies(w, inverseMass);
     auto turn = [&](int body, const Vec2& r) {
         const Eigen::Vector2d& cs = rotation_[size_t(body)];
         return Vec2(cs[0] * r.x() - cs[1] * r.y(), cs[1] * r.x() + cs[0] * r.y());
@@ -154,12 +152,12 @@ void PinSolver::assemble(const World& w) {
         welds_[i] = {p.bodyA, p.bodyB, p.dynA, p.dynB, welds[i].arm};
     }
     if (chain_)
-        factorChain(w);
+        factorChain();
     else
         factorSparse(w);
 }
 
-void PinSolver::factorChain(const World& w) {
+void PinSolver::factorChain() {
     const size_t n = sequence_.size();
     invPivot_.resize(n);
     lower_.resize(n);
@@ -169,8 +167,8 @@ void PinSolver::factorChain(const World& w) {
         for (size_t i = begin; i < end; ++i) {
             const PinRow& p = pins_[size_t(sequence_[i])];
             Eigen::Matrix2d d = Eigen::Matrix2d::Zero();
-            if (p.dynA) d += coupling(w, p.bodyA, p.rA, p.rA);
-            if (p.dynB) d += coupling(w, p.bodyB, p.rB, p.rB);
+            if (p.dynA) d += coupling(p.bodyA, p.rA, p.rA);
+            if (p.dynB) d += coupling(p.bodyB, p.rB, p.rB);
             if (i > begin) {
                 // Eliminate the previous pin: S_i = D_i - B^T S_{i-1}^{-1} B.
                 lower_[i] = upper_[i - 1].transpose() * invPivot_[i - 1];
@@ -182,7 +180,7 @@ void PinSolver::factorChain(const World& w) {
                 const PinRow& next = pins_[size_t(sequence_[i + 1])];
                 const Vec2& r1 = p.bodyA == l.body ? p.rA : p.rB;
                 const Vec2& r2 = next.bodyA == l.body ? next.rA : next.rB;
-                upper_[i] = l.signPrev * l.signNext * coupling(w, l.body, r1, r2);
+                upper_[i] = l.signPrev * l.signNext * coupling(l.body, r1, r2);
             }
         }
     }
@@ -220,7 +218,7 @@ void PinSolver::factorSparse(const World& w) {
     t.reserve(size_t(n) * 8);
     double scale = 0;
     for (int b = 0; b < w.bodyCount(); ++b) {
-        const Eigen::Vector2d im = inverseMass(w, b);
+        const Eigen::Vector2d& im = inverse_[size_t(b)];
         const Eigen::Vector3d inverse(im[0], im[0], im[1]);
         for (const Entry& r : byBody[size_t(b)])
             for (const Entry& c : byBody[size_t(b)]) {

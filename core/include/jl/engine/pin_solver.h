@@ -76,11 +76,11 @@ private:
         int body;
         double signPrev, signNext;  // +1 if the body is the pin's A side
     };
+    void assemble(const World& w, const std::vector<Eigen::Vector2d>* inverseMass);
     void order(const World& w);
-    void updateRotations(const World& w);
-    Eigen::Matrix2d coupling(const World& w, int body, const Vec2& r1, const Vec2& r2) const;
-    Eigen::Vector2d inverseMass(const World& w, int body) const;
-    void factorChain(const World& w);
+    void updateBodies(const World& w, const std::vector<Eigen::Vector2d>* inverseMass);
+    Eigen::Matrix2d coupling(int body, const Vec2& r1, const Vec2& r2) const;
+    void factorChain();
     void factorSparse(const World& w);
 
     long long version_ = -1;
@@ -88,8 +88,8 @@ private:
     std::vector<PinRow> pins_;
     std::vector<WeldRow> welds_;
     bool forceSparse_ = false;
-    const std::vector<Eigen::Vector2d>* inverseMass_ = nullptr;  // during assemble: replaces the bodies'
     std::vector<Eigen::Vector2d> rotation_;  // (cos, sin) per body: one sincos per body, not per pin end
+    std::vector<Eigen::Vector2d> inverse_;   // (1/m, 1/I) per body, or the ones assemble was given
     // Chain mode: pins in path order, path starts, and links between neighbours.
     std::vector<std::array<int, 2>> pinsOfBody_;  // order(): the first two pins of each body
     std::vector<int> pinCountOfBody_;
