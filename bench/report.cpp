@@ -447,9 +447,11 @@ bool writeReport(const BenchResults& r, const std::filesystem::path& plots, cons
     for (const BenchRow& s : r.scaling)
         scaling << "| " << s.method << " | " << s.blocks << " | " << s.note << " | " << num(s.error) << " | "
                 << num(s.cost) << " |\n";
-    for (const BenchRow& l : r.longLadder)
-        longLadder << "- " << l.blocks << " blocks, " << l.method << (l.method.find("rosenbrock") != std::string::npos ? ", tolerance " : ", dt = ")
-                   << num(l.parameter) << (l.method.find("rosenbrock") != std::string::npos ? "" : " s") << ": " << l.note << "\n";
+    for (const BenchRow& l : r.longLadder) {
+        const bool tolerance = l.method.find("rosenbrock") != std::string::npos || l.method.find("dormand") != std::string::npos;
+        longLadder << "- " << l.blocks << " blocks, " << l.method << (tolerance ? ", tolerance " : ", dt = ")
+                   << num(l.parameter) << (tolerance ? "" : " s") << ": " << l.note << "\n";
+    }
     const std::string text = filled("performance",
                                     {{"quick_flag", r.quick ? " --quick" : ""},
                                      {"out", plots.generic_string()},
