@@ -449,8 +449,10 @@ bool writeReport(const BenchResults& r, const std::filesystem::path& plots, cons
                 << num(s.cost) << " |\n";
     for (const BenchRow& l : r.longLadder) {
         const bool tolerance = l.method.find("rosenbrock") != std::string::npos || l.method.find("dormand") != std::string::npos;
-        longLadder << "- " << l.blocks << " blocks, " << l.method << (tolerance ? ", tolerance " : ", dt = ")
-                   << num(l.parameter) << (tolerance ? "" : " s") << ": " << l.note << "\n";
+        longLadder << "- " << l.blocks << " blocks, " << l.method;
+        if (tolerance) longLadder << ", tolerance " << num(l.parameter);
+        else if (l.parameter > 0) longLadder << ", dt = " << num(l.parameter) << " s";
+        longLadder << ": " << l.note << "\n";
     }
     const std::string text = filled("performance",
                                     {{"quick_flag", r.quick ? " --quick" : ""},
