@@ -99,8 +99,17 @@ bool RunOutputs::event(const Event& e) {
 
 bool RunOutputs::finish(bool complete, const char* command) {
     bool ok = true;
+    // All the files or none: every one has all its bytes with the system
+    // before the first is renamed into place, so that a failure in the last
+    // (a full disk) does not leave the others replaced.
     for (Output& o : outputs_) {
         if (o.table == Table::Events && !o.file.failed()) put(o, "\n]\n");
+        if (complete && !o.file.flush()) {
+            if (error_.empty()) error_ = o.path + ": " + o.file.error();
+            ok = complete = false;
+        }
+    }
+    for (Output& o : outputs_) {
         if (complete && o.file.commit()) continue;
         if (complete) {
             if (error_.empty()) error_ = o.path + ": " + o.file.error();

@@ -111,6 +111,10 @@ bool OutputFile::open(const std::string& path) {
     error_.clear();
     buffer_.clear();
     direct_ = false;
+    if (path.empty()) {  // a temporary would be made in the current directory, and no rename could place it
+        error_ = "no file name given";
+        return false;
+    }
     if (const auto fd = openDescriptor(path)) {
         direct_ = true;
         fd_ = ::fcntl(*fd, F_DUPFD_CLOEXEC, 3);

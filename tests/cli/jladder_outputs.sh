@@ -66,6 +66,18 @@ expect_message "No space left"
 "$jladder" run scene.yaml --until 0.5 >/dev/full 2>err.txt
 [ $? = 1 ] || fail "a summary written to /dev/full is a success"
 expect_message "cannot write the summary"
+
+# All outputs or none: when one cannot be written, the others stay as they
+# were (here the events, through a link, would have replaced another scene).
+cp scene.yaml other.yaml && ln -s other.yaml other-link.yaml
+expect 1 "$jladder" run pristine.yaml --until 0.2 --events other-link.yaml --frames /dev/full
+expect_message "No space left on device"
+same other.yaml scene.yaml
+[ -L other-link.yaml ] || fail "the link to the other scene was replaced by a file"
+expect 1 "$jladder" run pristine.yaml --until 0.2 --events other-link.yaml --frames ""
+expect_message "no file name given"
+same other.yaml scene.yaml
+
 expect 1 "$jladder" run scene.yaml --until 0.5 --frames no/such/dir/frames.csv
 expect_message "no/such/dir"
 
