@@ -8,8 +8,8 @@
 #   - leave the scene it read as it was (and a link it read a link), and
 #     every file that was there before a failed call as it was.
 # Usage: fuzz_jladder_cli.sh JLADDER SOURCE_DIR WORK_DIR
-# (JL_FUZZ_ITERATIONS=N for a longer run; the seed is fixed, so a failure
-# comes back the same way).
+# (JL_FUZZ_ITERATIONS=N for a longer run, JL_FUZZ_VERBOSE=1 to list the
+# calls; the seed is fixed, so a failure comes back the same way).
 set -u
 jladder=$1 source=$2 work=$3
 iterations=${JL_FUZZ_ITERATIONS:-300}
@@ -27,7 +27,14 @@ inputs() {
 }
 sums() { sha256sum scene.yaml small.yaml precious.txt; }
 
-pick() { local a=("$@"); printf '%s' "${a[RANDOM % ${#a[@]}]}"; }
+# pick NAME CHOICES...: sets NAME to one of the choices. Not in a $(...):
+# bash seeds RANDOM afresh in every subshell, and the run would not repeat.
+pick() {
+    local -n chosen=$1
+    shift
+    local choices=("$@")
+    chosen=${choices[RANDOM % ${#choices[@]}]}
+}
 
 numbers=(0.05 0.3 0 -1 nan inf -inf 1e300 1e-300 abc "" 1e-6 0.1 100001 1e308 0x10 "1 2")
 paths=(out.csv out.json scene.yaml link.yaml adir missing/dir/out.csv /dev/full /dev/null precious.txt "")
@@ -38,47 +45,48 @@ failures=0
 for ((i = 0; i < iterations; i++)); do
     inputs
     before=$(sums)
-    command=$(pick run run run export validate reach)
+    pick command run run run export validate reach
     args=("$command")
     input=""
     case $command in
     run | export)
-        input=$(pick small.yaml small.yaml scene.yaml link.yaml missing.yaml adir /dev/null)
+        pick input small.yaml small.yaml scene.yaml link.yaml missing.yaml adir /dev/null
         args+=("$input")
         for ((k = RANDOM % 5; k > 0; k--)); do
             case $((RANDOM % 9)) in
-            0 | 1) args+=(--until "$(pick "${numbers[@]}")") ;;
-            2) args+=(--step "$(pick "${numbers[@]}")") ;;
-            3) args+=(--every "$(pick "${numbers[@]}")") ;;
-            4) args+=(--tolerance "$(pick "${numbers[@]}")") ;;
-            5) args+=(--integrator "$(pick "${words[@]}")") ;;
-            6) args+=(--event-policy "$(pick "${policies[@]}")") ;;
-            7) args+=(--frames "$(pick "${paths[@]}")") ;;
-            8) args+=(--events "$(pick "${paths[@]}")") ;;
+            0 | 1) pick v "${numbers[@]}" && args+=(--until "$v") ;;
+            2) pick v "${numbers[@]}" && args+=(--step "$v") ;;
+            3) pick v "${numbers[@]}" && args+=(--every "$v") ;;
+            4) pick v "${numbers[@]}" && args+=(--tolerance "$v") ;;
+            5) pick v "${words[@]}" && args+=(--integrator "$v") ;;
+            6) pick v "${policies[@]}" && args+=(--event-policy "$v") ;;
+            7) pick v "${paths[@]}" && args+=(--frames "$v") ;;
+            8) pick v "${paths[@]}" && args+=(--events "$v") ;;
             esac
         done
         # Mostly a run that can finish quickly, so the outputs get written.
         ((RANDOM % 3)) && args+=(--until 0.2)
         ;;
     validate)
-        input=$(pick small.yaml scene.yaml link.yaml missing.yaml adir /dev/null precious.txt)
+        pick input small.yaml scene.yaml link.yaml missing.yaml adir /dev/null precious.txt
         args+=("$input")
         ;;
     reach)
-        args+=(--blocks "$(pick 4:6:2 4 2:3:1 0:5:1 4:1000000:1 a:b:c 6:4:1 "")")
-        ((RANDOM % 2)) && args+=(--thickness "$(pick 6mm 6mm:12mm:6mm 1e300mm -1mm nanmm 6)")
-        ((RANDOM % 2)) && args+=(--csv "$(pick "${paths[@]}")")
-        ((RANDOM % 2)) && args+=(--svg "$(pick "${paths[@]}")")
-        ((RANDOM % 3)) || args+=(--jobs "$(pick 1 2 0 -1 1000000 x)")
+        pick v 4:6:2 4 2:3:1 0:5:1 4:1000000:1 a:b:c 6:4:1 "" && args+=(--blocks "$v")
+        ((RANDOM % 2)) && pick v 6mm 6mm:12mm:6mm 1e300mm -1mm nanmm 6 && args+=(--thickness "$v")
+        ((RANDOM % 2)) && pick v "${paths[@]}" && args+=(--csv "$v")
+        ((RANDOM % 2)) && pick v "${paths[@]}" && args+=(--svg "$v")
+        ((RANDOM % 3)) || { pick v 1 2 0 -1 1000000 x && args+=(--jobs "$v"); }
         if ((RANDOM % 3 == 0)); then
-            input=$(pick small.yaml scene.yaml missing.yaml adir)
+            pick input small.yaml scene.yaml missing.yaml adir
             args+=(--scene "$input")
         fi
         ;;
     esac
     # Now and then an option twice, or one that does not exist.
-    ((RANDOM % 7)) || args+=("$(pick --until --frames --bogus -x --)")
+    ((RANDOM % 7)) || { pick v --until --frames --bogus -x -- && args+=("$v"); }
 
+    [ -n "${JL_FUZZ_VERBOSE:-}" ] && echo "$i: jladder ${args[*]}"
     input_sum=""
     [ -f "$input" ] && input_sum=$(sha256sum < "$input")
     timeout -k 5 60 "$jladder" "${args[@]}" > stdout.txt 2> stderr.txt
