@@ -1,15 +1,15 @@
 // labels: ui
 // Teaching and analysis: the plots draw the engine's numbers and the energy
-// books balance, clicks seek, the side view draws blocks where the engine
-// says they are, exports write what they promise, lessons list the examples.
+// books balance, clicks seek, exports write what they promise, lessons list
+// the examples (the side view has tests/ui/test_side_view.cpp).
 #include "jl/sim/simulation.h"
 #include "ui/events_panel.h"
 #include "ui/exporter.h"
 #include "ui/lessons.h"
 #include "ui/pacing.h"
 #include "ui/run_plots.h"
-#include "ui/side_view.h"
 #include "ui/time_chart.h"
+#include "example_runs.h"
 #include "ui_test_support.h"
 
 #include <QApplication>
@@ -21,61 +21,12 @@
 #include <QSvgRenderer>
 #include <QTemporaryDir>
 #include <QValueAxis>
-#include <QWheelEvent>
 #include <QtTest>
 
 #include <cmath>
 #include <numbers>
 
 using namespace jl::ui;
-
-namespace {
-
-QString example(const char* name) { return QString(JL_SOURCE_DIR) + "/examples/" + name; }
-
-jl::Scene loadExample(const char* name) {
-    const jl::SceneLoad load = jl::loadScene(example(name).toStdString());
-    if (!load.scene) qFatal("%s does not load", name);
-    return *load.scene;
-}
-
-// The engine's frames at the scene's frame interval, as the timeline records them.
-struct Run {
-    std::vector<jl::Frame> frames;
-    std::vector<jl::Event> events;
-};
-Run runHeadless(const jl::Scene& scene, double until) {
-    auto built = jl::Simulation::build(scene);
-    if (!built.simulation) qFatal("the scene does not build");
-    Run r;
-    const double dt = scene.solver.frameInterval;
-    for (int i = 0; i * dt <= until + 1e-12; ++i) {
-        built.simulation->advanceTo(i * dt);
-        r.frames.push_back(built.simulation->frame());
-        for (const jl::Event& e : r.frames.back().events) r.events.push_back(e);
-    }
-    return r;
-}
-
-bool near(const QColor& a, const QColor& b, int tolerance = 4) {
-    return std::abs(a.red() - b.red()) <= tolerance && std::abs(a.green() - b.green()) <= tolerance &&
-           std::abs(a.blue() - b.blue()) <= tolerance;
-}
-
-QString colorText(const QColor& c) { return QString("(%1, %2, %3)").arg(c.red()).arg(c.green()).arg(c.blue()); }
-
-// The classic ladder hanging at rest, in a side view of its own.
-struct ClassicAtRest {
-    jl::Scene scene = loadExample("classic.yaml");
-    Run run = runHeadless(scene, 0.0);
-    SideView view;
-    ClassicAtRest() {
-        view.setScene(scene);
-        view.showFrame(run.frames.front());
-    }
-};
-
-}  // namespace
 
 class TeachingTest : public QObject {
     Q_OBJECT
@@ -239,180 +190,6 @@ private slots:
         panel.setEvents(std::make_shared<const std::vector<jl::Event>>(events));
         QCOMPARE(list->count(), 6);
         QCOMPARE(list->item(2)->text(), rows[2]);
-    }
-
-    void theSideViewDrawsEachBlockWhereTheEngineSaysItIs() {
-        const jl::Scene scene = loadExample("classic.yaml");
-        const Run run = runHeadless(scene, 0.7);
-        const jl::Frame& f = run.frames.back();
-        // The ladder has moved from where it hung: the check is not of a still picture.
-        QVERIFY((f.poses[3].position - run.frames.front().poses[3].position).norm() > 0.01);
-        SideView view;
-        SideViewOptions look;
-        look.blockNumbers = false;  // the number would sit on the centre pixel
-        view.setOptions(look);
-        view.setScene(scene);
-        view.showFrame(f);
-        const QSize size(600, 800);
-        const QImage image = view.render(size);
-        QCOMPARE(image.size(), size);
-        const QColor wood(200, 162, 107);  // "#c8a26b" in classic.yaml
-        const QRectF target(QPointF(0, 0), QSizeF(size));
-        for (size_t i = 0; i < f.poses.size(); ++i) {
-            const QPoint at = view.pixelOf(f.poses[i].position, target).toPoint();
-            QVERIFY(image.rect().contains(at));
-            const QColor c = image.pixelColor(at);
-            QVERIFY2(near(c, wood),
-                     qPrintable(QString("block %1 at %2,%3 is %4").arg(i).arg(at.x()).arg(at.y()).arg(colorText(c))));
-        }
-        // Well outside the ladder: the background (or a grid line), never wood.
-        // The middle of the framing's left or right edge, whichever is further from every block.
-        const QRectF shown = view.framing();
-        auto clearance = [&f](const jl::Vec2& p) {
-            double d = 1e9;
-            for (const jl::Pose& b : f.poses) d = std::min(d, (b.position - p).norm());
-            return d;
-        };
-        const jl::Vec2 left(shown.left() + 0.05 * shown.width(), shown.center().y());
-        const jl::Vec2 right(shown.right() - 0.05 * shown.width(), shown.center().y());
-        const jl::Vec2 away = clearance(left) > clearance(right) ? left : right;
-        QVERIFY2(clearance(away) > 0.05, qPrintable(QString::number(clearance(away))));
-        const QPoint awayPixel = view.pixelOf(away, target).toPoint();
-        QVERIFY(image.rect().contains(awayPixel));
-        const QColor c = image.pixelColor(awayPixel);
-        QVERIFY2(near(c, QColor(252, 252, 249)) || near(c, QColor(232, 232, 226)), qPrintable(colorText(c)));
-        // Hinges are drawn in the colour of their mode.
-        int checked = 0;
-        for (const jl::HingeFrame& h : f.hinges) {
-            bool alone = true;
-            for (const jl::HingeFrame& o : f.hinges)
-                if (&o != &h && (o.position - h.position).norm() < 0.006) alone = false;
-            if (!alone) continue;
-            const QColor hc = image.pixelColor(view.pixelOf(h.position, target).toPoint());
-            QVERIFY2(near(hc, hingeColor(h.mode), 6),
-                     qPrintable(QString("%1 hinge is %2").arg(jl::toString(h.mode)).arg(colorText(hc))));
-            ++checked;
-        }
-        QVERIFY(checked >= 3);
-    }
-
-    // The wheel zooms about the pointer, a drag pans, and the view then stays
-    // where the user put it; a double click follows the whole ladder again.
-    // The clock and the legend keep clear of the drawing.
-    void theSideViewZoomsPansAndFollowsAgain() {
-        const jl::Scene scene = loadExample("classic.yaml");
-        const Run run = runHeadless(scene, 0.7);
-        SideView view;
-        view.resize(400, 500);
-        view.setScene(scene);
-        view.showFrame(run.frames.front());
-        view.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&view));
-        const QRectF whole = view.framing();
-        QVERIFY(view.following());
-        // Nothing drawn under the clock's band or the legend's row.
-        const QRectF target(QPointF(0, 0), QSizeF(view.size()));
-        for (const jl::Pose& b : run.frames.front().poses) {
-            const QPointF at = view.pixelOf(b.position, target);
-            QVERIFY2(at.y() > 30 && at.y() < view.height() - 50, qPrintable(QString::number(at.y())));
-        }
-        // Zoom in about block 3: it stays under the pointer, the framing shrinks.
-        const jl::Vec2 block3 = run.frames.front().poses[3].position;
-        const QPointF pointer = view.pixelOf(block3, target);
-        QWheelEvent wheel(pointer, view.mapToGlobal(pointer), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
-                          Qt::NoScrollPhase, false);
-        QApplication::sendEvent(&view, &wheel);
-        QVERIFY(view.framing().width() < 0.9 * whole.width());
-        QVERIFY(!view.following());
-        QVERIFY((view.pixelOf(block3, target) - pointer).manhattanLength() < 1.0);
-        // Later frames do not move a view the user has zoomed.
-        const QRectF zoomed = view.framing();
-        view.showFrame(run.frames.back());
-        QCOMPARE(view.framing(), zoomed);
-        // A drag of 40 px to the right moves the picture with the mouse.
-        QTest::mousePress(&view, Qt::LeftButton, {}, QPoint(200, 250));
-        QMouseEvent move(QEvent::MouseMove, QPointF(240, 250), view.mapToGlobal(QPointF(240, 250)), Qt::NoButton,
-                         Qt::LeftButton, Qt::NoModifier);
-        QApplication::sendEvent(&view, &move);
-        QTest::mouseRelease(&view, Qt::LeftButton, {}, QPoint(240, 250));
-        QVERIFY(std::abs(view.pixelOf(block3, target).x() - pointer.x() - 40) < 1.0);
-        // A double click: the whole ladder in view again, following.
-        QTest::mouseDClick(&view, Qt::LeftButton, {}, QPoint(200, 250));
-        QVERIFY(view.following());
-        QVERIFY(view.framing().contains(view.extentOf(run.frames.back())));
-    }
-
-    void theSideViewUsesTheEnginesCornerNumbers() {
-        // Hinge j sits at corner 0 (j odd) or 3 (j even) of both blocks: the
-        // view's corner k of block j must be where the engine puts hinge j.
-        ClassicAtRest c;
-        const Run& run = c.run;
-        SideView& view = c.view;
-        const QRectF target(0, 0, 600, 800);
-        for (size_t j = 1; j <= run.frames.front().hinges.size(); ++j) {
-            const jl::HingeFrame& h = run.frames.front().hinges[j - 1];
-            QCOMPARE(h.corner, j % 2 == 1 ? 0 : 3);
-        }
-        // Drawn with corner numbers and arrows, the picture still renders (and differs).
-        const QImage plain = view.render(target.size().toSize());
-        SideViewOptions all;
-        all.cornerNumbers = all.orientation = true;
-        view.setOptions(all);
-        QVERIFY(view.render(target.size().toSize()) != plain);
-    }
-
-    // In a view of the default dock's size the whole ladder is small, too
-    // thin for a number at every corner: each hinge then shows its corner
-    // number beside its dot, in the corner numbers' colour.
-    void theSideViewShowsCornerNumbersAtItsDefaultSize() {
-        ClassicAtRest c;
-        const Run& run = c.run;
-        SideView& view = c.view;
-        const QSize size(360, 280);
-        SideViewOptions numbered;
-        numbered.cornerNumbers = true;
-        view.setOptions(numbered);
-        const QImage image = view.render(size);
-        const QRectF target(QPointF(0, 0), QSizeF(size));
-        auto purpleNear = [&](const QPointF& at) {
-            int found = 0;
-            for (int y = int(at.y()) - 8; y <= int(at.y()) + 8; ++y)
-                for (int x = int(at.x()); x <= int(at.x()) + 22; ++x) {
-                    if (!image.rect().contains(x, y)) continue;
-                    const QColor c = image.pixelColor(x, y);
-                    // Purple: blue well above green, red between (the ink is 90, 40, 120).
-                    if (c.blue() > c.green() + 30 && c.red() > c.green() + 15 && c.blue() < 200) ++found;
-                }
-            return found;
-        };
-        for (const jl::HingeFrame& h : run.frames.front().hinges)
-            QVERIFY2(purpleNear(view.pixelOf(h.position, target)) >= 3, qPrintable(QString::number(h.corner)));
-    }
-
-    // The legend row (free, locked open, folded) in presentation type in a
-    // narrow view: smaller type, but all three entries whole inside the view.
-    void theSideViewLegendFitsANarrowView() {
-        ClassicAtRest c;
-        SideView& view = c.view;
-        SideViewOptions large;
-        large.scale = 2.0;
-        view.setOptions(large);
-        const QImage image = view.render(QSize(260, 420));
-        auto columnsOf = [&](const QColor& want) {
-            std::pair<int, int> range{image.width(), -1};
-            for (int y = image.height() - 60; y < image.height(); ++y)
-                for (int x = 0; x < image.width(); ++x) {
-                    const QColor c = image.pixelColor(x, y);
-                    if (std::abs(c.red() - want.red()) + std::abs(c.green() - want.green()) + std::abs(c.blue() - want.blue()) < 30)
-                        range = {std::min(range.first, x), std::max(range.second, x)};
-                }
-            return range;
-        };
-        const auto free = columnsOf(hingeColor(jl::HingeMode::Free));
-        const auto folded = columnsOf(hingeColor(jl::HingeMode::Folded));
-        QVERIFY2(free.second >= 0 && free.first >= 2, qPrintable(QString("free dot from x = %1").arg(free.first)));
-        QVERIFY2(folded.second >= 0 && folded.second < image.width() - 2, qPrintable(QString("folded dot to x = %1").arg(folded.second)));
-        QVERIFY(free.second < folded.first);
     }
 
     void exportsWriteWhatTheyPromise() {
