@@ -87,9 +87,9 @@ void Stepper::stiffMass(const World& w, Dynamics& d, double s) {
 // (J M'^{-1} J^T) mu = J (z - y), and x = y + M'^{-1} J^T mu.
 void Stepper::solveStiff(const World& w, Eigen::VectorXd& z) {
     z.array() *= mask_.array();  // held and dead bodies do not move by it
-    jv_ = keep_.cwiseProduct(z);
-    jz_ = z - jv_;
-    stiff_.solver.multiplyJ(jz_, rhs_);
+    kept_ = keep_.cwiseProduct(z);
+    rest_ = z - kept_;
+    stiff_.solver.multiplyJ(rest_, rhs_);
     stiff_.solver.solve(rhs_, mu_);
     jmu_.setZero(z.size());
     stiff_.solver.addJTranspose(mu_, jmu_);
@@ -98,7 +98,7 @@ void Stepper::solveStiff(const World& w, Eigen::VectorXd& z) {
         jmu_.segment<2>(3 * b) *= im[0];
         jmu_[3 * b + 2] *= im[1];
     }
-    z = jv_ + jmu_;
+    z = kept_ + jmu_;
 }
 
 double Stepper::rosenbrockAttempt(World& w, Dynamics& d, double t, double h, Ledger& ledger) {

@@ -76,7 +76,7 @@ private:
     Rosenbrock ros_;
     std::vector<Eigen::VectorXd> uq_, uv_;
     std::vector<Eigen::Vector3d> ul_;
-    Eigen::VectorXd rq_, rv_, z_, mask_, keep_, jv_, jz_, rhs_, mu_, jmu_;
+    Eigen::VectorXd rq_, rv_, z_, mask_, keep_, kept_, rest_, rhs_, mu_, jmu_;
     std::vector<double> stiffness_;              // d(moment)/d(angle) per body, N m/rad
     std::vector<Eigen::Vector2d> stiffInverse_;  // (1/m', 1/I') per body
     ScratchPinSolver stiff_;  // assembled at the start of every step
