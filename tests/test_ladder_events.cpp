@@ -175,6 +175,40 @@ private slots:
         if (eventTolerance <= 1e-10) QVERIFY(std::abs(error) < 1e-10);
     }
 
+    // The same lock at a tight and a loose event tolerance: the instant is
+    // narrowed on the step's interpolant, angles alone, and the state there
+    // read off it, so the step that records the lock evaluates the dynamics
+    // as often whatever the tolerance, and only a few times more than a
+    // plain step (its start, for the interpolant, and resolve's passes). The
+    // step used to be run again to the instant: four more evaluations, and
+    // a re-run for every trial where the interpolant disagreed.
+    void locatingALockRunsNoStepAgain() {
+        std::vector<long long> extra;
+        for (const char* tolerance : {"1e-6", "1e-12"}) {
+            auto sim = simulate("format: jacobs-ladder/1\n"
+                                "solver: {integrator: rk4, step: 1e-3, event_tolerance: " + std::string(tolerance) + "}\n"
+                                "ladder: {blocks: 2, held: [0], initial: {fold_angles: [1.2]}}\n");
+            QVERIFY(sim);
+            long long before = sim->frame().solver.evaluations, plain = 0, eventful = -1;
+            while (eventful < 0 && sim->time() < 0.2) {
+                QVERIFY(sim->stepOnce());
+                const Frame f = sim->frame();  // takes the step's events with it
+                const long long now = f.solver.evaluations;
+                bool locked = false;
+                for (const Event& e : f.events) locked = locked || e.kind == EventKind::Lock;
+                if (locked) eventful = now - before;
+                else plain = now - before;
+                before = now;
+            }
+            QVERIFY(eventful > 0 && plain > 0);
+            qInfo("event tolerance %s s: the step with the lock evaluates %lld times, a plain step %lld", tolerance,
+                  eventful, plain);
+            extra.push_back(eventful - plain);
+        }
+        QCOMPARE(extra[0], extra[1]);
+        QVERIFY2(extra[0] <= 4, qPrintable(QString::number(extra[0])));
+    }
+
     // The same cantilever with a spring from a point above pulling block 1
     // up at its centre: the contact carries what gravity and the spring
     // together need, N = N0 * M / M0 with M the moment of gravity and spring

@@ -16,17 +16,33 @@ void StepInterpolant::setStart(double h, const Eigen::VectorXd& q0, const Eigen:
     a0_ = a0;
 }
 
+namespace {
+
 // The quintic Hermite basis on s in [0, 1]: the weights of q0, h v0, h^2 a0,
-// h^2 a1, h v1 and q1, and their derivatives in s.
-void StepInterpolant::at(double tau, Eigen::VectorXd& q, Eigen::VectorXd& v) const {
-    const double s = h_ > 0 ? tau / h_ : 0, s2 = s * s, s3 = s2 * s, s4 = s3 * s, s5 = s4 * s;
+// h^2 a1, h v1 and q1.
+struct Weights {
+    double w0, w1, w2, w3, w4, w5;
+};
+
+Weights positionWeights(double s) {
+    const double s2 = s * s, s3 = s2 * s, s4 = s3 * s, s5 = s4 * s;
+    return {1 - 10 * s3 + 15 * s4 - 6 * s5, s - 6 * s3 + 8 * s4 - 3 * s5, 0.5 * (s2 - 3 * s3 + 3 * s4 - s5),
+            0.5 * (s3 - 2 * s4 + s5),       -4 * s3 + 7 * s4 - 3 * s5,     10 * s3 - 15 * s4 + 6 * s5};
+}
+
+}  // namespace
+
+double StepInterpolant::coordinateAt(double tau, Eigen::Index i) const {
     const double h = h_, hh = h_ * h_;
-    const double w0 = 1 - 10 * s3 + 15 * s4 - 6 * s5;
-    const double w1 = s - 6 * s3 + 8 * s4 - 3 * s5;
-    const double w2 = 0.5 * (s2 - 3 * s3 + 3 * s4 - s5);
-    const double w3 = 0.5 * (s3 - 2 * s4 + s5);
-    const double w4 = -4 * s3 + 7 * s4 - 3 * s5;
-    const double w5 = 10 * s3 - 15 * s4 + 6 * s5;
+    const auto [w0, w1, w2, w3, w4, w5] = positionWeights(h_ > 0 ? tau / h_ : 0);
+    return w0 * q0_[i] + (w1 * h) * v0_[i] + (w2 * hh) * a0_[i] + (w3 * hh) * a1_[i] + (w4 * h) * v1_[i] + w5 * q1_[i];
+}
+
+// The weights of positionWeights and their derivatives in s.
+void StepInterpolant::at(double tau, Eigen::VectorXd& q, Eigen::VectorXd& v) const {
+    const double s = h_ > 0 ? tau / h_ : 0, s2 = s * s, s3 = s2 * s, s4 = s3 * s;
+    const double h = h_, hh = h_ * h_;
+    const auto [w0, w1, w2, w3, w4, w5] = positionWeights(s);
     const double d0 = -30 * s2 + 60 * s3 - 30 * s4;
     const double d1 = 1 - 18 * s2 + 32 * s3 - 15 * s4;
     const double d2 = 0.5 * (2 * s - 9 * s2 + 12 * s3 - 5 * s4);

@@ -351,6 +351,19 @@ void Ladder::angleEventFunctions(const World& w, std::vector<double>& out) const
     }
 }
 
+double Ladder::angleEventFunction(const World& w, int k) const {
+    const int j = k / 2 + 1;
+    if (hinge(j).mode != HingeMode::Free) return kNoEvent;
+    const double phi = foldAngle(w, j);
+    const double zero = hinge(j).releaseGap - kAngleTolerance;
+    return k % 2 == 0 ? phi - zero : kPi - phi - zero;
+}
+
+std::array<int, 2> Ladder::angleEventBodies(const World& w, int k) const {
+    const int j = k / 2 + 1;
+    return {w.part(block(j - 1)).body, w.part(block(j)).body};
+}
+
 // ---- events ----
 
 // Turns the lower block's body about the hinge so phi is exactly `target`

@@ -311,9 +311,13 @@ std::vector<Event> Ladder::resolve(World& w, Dynamics& d, double t, double* loss
         unsettled = false;
         break;
     }
-    if (unsettled) capped(t, "the contacts (" + std::to_string(events.size()) + " events at one instant)");
-    d.evaluate(w, t);
-    updateAngles(w);
+    // A settled pass ends on an evaluation of the state it leaves: another
+    // would be a whole-ladder pass for nothing.
+    if (unsettled) {
+        capped(t, "the contacts (" + std::to_string(events.size()) + " events at one instant)");
+        d.evaluate(w, t);
+        updateAngles(w);
+    }
     for (Event& e : events) e.text = words(e.kind, e.hinge);
     return events;
 }

@@ -19,6 +19,9 @@ public:
     // Exact for motion polynomial of degree 5 in time; error O(h^6) in
     // position and O(h^5) in velocity otherwise.
     void at(double tau, Eigen::VectorXd& q, Eigen::VectorXd& v) const;
+    // Coordinate i of the position alone (the same polynomial): a trial that
+    // reads a few coordinates costs a few, not the whole world.
+    double coordinateAt(double tau, Eigen::Index i) const;
 
 private:
     double h_ = 0;

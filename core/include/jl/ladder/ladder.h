@@ -93,6 +93,11 @@ public:
     // Only the fold-angle functions of free hinges (the others 1, no event): they
     // need positions alone, no evaluation of the dynamics.
     void angleEventFunctions(const World& w, std::vector<double>& out) const;
+    // Entry k of angleEventFunctions alone (hinge k / 2 + 1; phi for even k,
+    // pi - phi for odd k): it reads the angles of the two bodies
+    // angleEventBodies gives, and nothing else.
+    double angleEventFunction(const World& w, int k) const;
+    std::array<int, 2> angleEventBodies(const World& w, int k) const;
 
     // Applies whatever events the state calls for (limits crossed, contacts
     // pulling), impacts included, until none remains. Returns what happened.

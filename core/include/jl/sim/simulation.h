@@ -119,7 +119,6 @@ private:
     bool locateEvent(double& taken, double fEnd, double forcesAtEnd);
     double smallestEventFunction(double t, double* forces = nullptr);
     void restoreStepStart();
-    bool rerunStep(double h);
     void emitGridFrames(double taken);
     void record(const Event& e);
     bool booksDiverged() const;
@@ -160,6 +159,8 @@ private:
     Eigen::VectorXd stepStartQ_, stepStartV_;  // the state the step started from
     Ledger stepStartLedger_;
     std::vector<double> eventValues_;
+    Powers lastPowers_;  // of smallestEventFunction's evaluation
+    std::vector<int> crossed_;  // locateEvent: the event functions past their event at the step's end
     StepInterpolant interpolant_;
     FrameGrid grid_;
     double gridDoneUpTo_ = 0;         // s, grid frames are emitted after this time
