@@ -109,7 +109,7 @@ RunPlots::RunPlots(QWidget* parent) : QWidget(parent) {
     auto* charts = chartsLayout_;
     charts->setContentsMargins(0, 0, 0, 0);
     charts->setSpacing(0);
-    charts_[0] = new TimeChart(tr("Energy and its books"), tr("J"), chartsArea_);
+    charts_[0] = new TimeChart(tr("Energy and its books"), tr("energy (J)"), chartsArea_);
     charts_[1] = new TimeChart(tr("Fold angles"), tr("degrees"), chartsArea_);
     charts_[2] = new TimeChart(tr("Angular speeds"), tr("rad/s"), chartsArea_);
     // The admissible fold angles: open (0) to face to face (180).
@@ -255,7 +255,7 @@ void RunPlots::refresh() {
     for (double v : traces_.energy(EnergyTrace::Balance)) books = std::max(books, std::abs(v));
     charts_[0]->chart()->setTitle(traces_.count() == 0 ? tr("Energy and its books")
                                                         : tr("Energy and its books (they balance to %1 J)").arg(books, 0, 'g', 2));
-    charts_[0]->valueAxis()->setTitleText(energyScale_ == 1 ? tr("J") : energyScale_ == 1e3 ? tr("mJ") : tr("µJ"));
+    charts_[0]->valueAxis()->setTitleText(energyScale_ == 1 ? tr("energy (J)") : energyScale_ == 1e3 ? tr("energy (mJ)") : tr("energy (µJ)"));
     for (int e = 0; e < int(EnergyTrace::Count); ++e) {
         std::vector<QPointF> pts = decimate(t, traces_.energy(EnergyTrace(e)), 0, t1, buckets(charts_[0]));
         for (QPointF& p : pts) p.setY(p.y() * energyScale_);
