@@ -391,8 +391,12 @@ void Ladder::join(World& w, int j, int k) {
         error_ = "hinge " + std::to_string(j) + " could not join corner " + std::to_string(k) + ": " + e->message;
 }
 
+// Parting a corner splits a rigid pair (or takes a weld's second point
+// away): every block keeps its pose and velocity, which met the pins before
+// and still meet the fewer pins after, so there is nothing to project (it
+// would be a pass over the whole ladder at every flip and unlock).
 void Ladder::part(World& w, int j, int k) {
-    if (auto e = w.separate(hinge(j).own[size_t(k)]))
+    if (auto e = w.separate(hinge(j).own[size_t(k)], false))
         error_ = "hinge " + std::to_string(j) + " could not part corner " + std::to_string(k) + ": " + e->message;
 }
 
