@@ -115,8 +115,16 @@ std::optional<WorldError> World::combine(ParticleId p, ParticleId q, bool consis
 // failed, said in words. The structure has changed by then: a caller that
 // gets this error stops (the simulation keeps its last good frame).
 std::optional<WorldError> World::closePins(const char* operation) {
+    return pinsLeftOpen(operation, makeConsistent(*this, restructure_.solver, restructureTolerance));
+}
+
+std::optional<WorldError> World::closePinGaps(const char* operation) {
+    restructure_.solver.reset();
+    return pinsLeftOpen(operation, projectPositions(*this, restructure_.solver, restructureTolerance));
+}
+
+std::optional<WorldError> World::pinsLeftOpen(const char* operation, const ProjectionResult& r) {
     constexpr double kFailedGap = 1e-9;  // m
-    const ProjectionResult r = makeConsistent(*this, restructure_.solver, restructureTolerance);
     if (r.converged || r.residual <= kFailedGap) return std::nullopt;
     return WorldError{std::string(operation) + ": the pins could not be closed after the change of structure (gap " +
                       std::to_string(r.residual) + " m after " + std::to_string(r.iterations) + " iterations)"};

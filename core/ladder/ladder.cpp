@@ -385,10 +385,13 @@ void Ladder::snap(World& w, int j, double target) {
     hinges_[size_t(j - 1)].foldAngle = target;
 }
 
+// Only the positions are closed here: joins happen in impacts, which set
+// every velocity afterwards with the impact's own projection.
 void Ladder::join(World& w, int j, int k) {
     const Hinge& h = hinge(j);
-    if (auto e = w.combine(h.own[size_t(k)], h.own[size_t(4 + k)]))
-        error_ = "hinge " + std::to_string(j) + " could not join corner " + std::to_string(k) + ": " + e->message;
+    auto e = w.combine(h.own[size_t(k)], h.own[size_t(4 + k)], false);
+    if (!e) e = w.closePinGaps("combine");
+    if (e) error_ = "hinge " + std::to_string(j) + " could not join corner " + std::to_string(k) + ": " + e->message;
 }
 
 // Parting a corner splits a rigid pair (or takes a weld's second point

@@ -14,6 +14,8 @@
 
 namespace jl {
 
+struct ProjectionResult;
+
 using PartId = int;
 using ParticleId = int;
 
@@ -147,6 +149,10 @@ public:
     // Both also return an error, in words, if the projection after the
     // change could not close the pins; the structure has changed then.
     std::optional<WorldError> separate(ParticleId p, bool consistent = true);
+    // After a combine with `consistent = false` by a caller that sets the
+    // velocities itself (an impact projects them with its own impulses):
+    // the pins closed by moving positions alone; the error as for combine.
+    std::optional<WorldError> closePinGaps(const char* operation);
     bool isLive(ParticleId p) const;
     bool validParticle(ParticleId p) const { return p >= 0 && p < int(particles_.size()); }
     bool validPart(PartId p) const { return p >= 0 && p < int(parts_.size()); }
@@ -223,6 +229,7 @@ private:
     ScratchPinSolver restructure_;  // the solver a restructure closes the pins with
 
     std::optional<WorldError> closePins(const char* operation);
+    static std::optional<WorldError> pinsLeftOpen(const char* operation, const ProjectionResult& r);
     std::optional<WorldError> checkParticle(ParticleId p) const;
     void regroup(const std::vector<int>& touchedBodies);
     std::vector<std::vector<PartId>> rigidGroups(const std::vector<PartId>& parts) const;
