@@ -14,8 +14,9 @@ Powers Dynamics::evaluate(World& w, double t) {
     // Pin acceleration: J a + sum(sigma * -omega^2 r) = 0. Kinematic bodies
     // already hold their prescribed a; dynamic ones start from a = W f.
     const std::vector<Pin>& pins = w.pins();
+    const std::vector<unsigned char>& kinematic = w.kinematicFlags();
     for (int b = 0; b < w.bodyCount(); ++b)
-        if (!w.body(b).kinematic) w.a.segment<3>(3 * b) = w.invMassDiag.segment<3>(3 * b).cwiseProduct(force_.segment<3>(3 * b));
+        if (!kinematic[size_t(b)]) w.a.segment<3>(3 * b) = w.invMassDiag.segment<3>(3 * b).cwiseProduct(force_.segment<3>(3 * b));
     solver_.multiplyJ(w.a, rhs_);
     for (size_t i = 0; i < pins.size(); ++i) {
         const double wa = w.v[3 * pins[i].bodyA + 2], wb = w.v[3 * pins[i].bodyB + 2];
@@ -31,13 +32,13 @@ Powers Dynamics::evaluate(World& w, double t) {
     jv_ = force_;
     solver_.addJTranspose(lambda_, jv_);
     for (int b = 0; b < w.bodyCount(); ++b)
-        if (!w.body(b).kinematic) w.a.segment<3>(3 * b) = w.invMassDiag.segment<3>(3 * b).cwiseProduct(jv_.segment<3>(3 * b));
+        if (!kinematic[size_t(b)]) w.a.segment<3>(3 * b) = w.invMassDiag.segment<3>(3 * b).cwiseProduct(jv_.segment<3>(3 * b));
 
     // Power of the pins at held bodies: force on the free side times the
     // velocity of the (shared) point.
     for (size_t i = 0; i < pins.size(); ++i) {
         const Pin& p = pins[i];
-        const bool ka = w.body(p.bodyA).kinematic, kb = w.body(p.bodyB).kinematic;
+        const bool ka = kinematic[size_t(p.bodyA)], kb = kinematic[size_t(p.bodyB)];
         if (ka == kb) continue;
         const Vec2 l = lambda_.segment<2>(2 * Eigen::Index(i));
         if (ka) {
@@ -52,16 +53,16 @@ Powers Dynamics::evaluate(World& w, double t) {
     const std::vector<Weld>& welds = w.welds();
     for (size_t i = 0; i < welds.size(); ++i) {
         const Pin& p = pins[size_t(welds[i].pin)];
-        const bool ka = w.body(p.bodyA).kinematic, kb = w.body(p.bodyB).kinematic;
+        const bool ka = kinematic[size_t(p.bodyA)], kb = kinematic[size_t(p.bodyB)];
         if (ka == kb) continue;
         const double moment = welds[i].arm * lambda_[weldRows + Eigen::Index(i)];  // on A; -moment on B
         powers.held += ka ? -moment * w.v[3 * p.bodyA + 2] : moment * w.v[3 * p.bodyB + 2];
     }
     // Blocks locked to a held block move with it: the hand supplies the rate
     // of change of their kinetic and potential energy.
-    for (int b = 1; b < w.bodyCount(); ++b) {
+    for (int b : w.kinematicBodies()) {
+        if (b == 0) continue;  // the ground
         const Body& body = w.body(b);
-        if (!body.alive || !body.kinematic) continue;
         const double omega = w.v[3 * b + 2], alpha = w.a[3 * b + 2];
         for (PartId id : body.parts) {
             const Part& part = w.part(id);

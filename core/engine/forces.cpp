@@ -96,17 +96,10 @@ AppliedWrench appliedOnPart(const World& w, PartId p, const Vec2& about) {
 }
 
 void accumulateForces(const World& w, Eigen::VectorXd& force, Powers& powers) {
-    force.setZero(w.q.size());
-    for (int b = 0; b < w.bodyCount(); ++b) {
-        const Body& body = w.body(b);
-        if (!body.alive || body.kinematic) continue;
-        // The body's origin is its centre of mass: gravity has no torque.
-        force.segment<2>(3 * b) += body.mass * w.gravity;
-    }
-    for (PartId p = 1; p < w.partCount(); ++p) {
+    force = w.weights();
+    for (PartId p : w.dampedParts()) {
         const Part& part = w.part(p);
-        if (part.linearDamping <= 0 && part.angularDamping <= 0) continue;
-        if (w.body(part.body).kinematic) continue;
+        if (p == World::ground || w.body(part.body).kinematic) continue;
         const Twist vel = w.partVelocity(p);
         const Vec2 x = w.partPose(p).position;
         applyAt(w, p, x, -part.linearDamping * vel.linear, force, powers);

@@ -111,16 +111,17 @@ void PinSolver::order(const World& w) {
 }
 
 // One pass over the bodies: each one's turn and its inverse mass and
-// inertia, side by side in flat arrays for the passes over the pins (a
-// Body, with its list of parts, is a long stride to read two numbers from).
+// inertia, side by side in flat arrays for the passes over the pins (read
+// from the world's flat inverse masses: a Body, with its list of parts, is
+// a long stride to read two numbers from).
 void PinSolver::updateBodies(const World& w, const std::vector<Eigen::Vector2d>* inverseMass) {
     rotation_.resize(size_t(w.bodyCount()));
     inverse_.resize(size_t(w.bodyCount()));
     for (int b = 0; b < w.bodyCount(); ++b) {
         const double angle = w.q[3 * b + 2];
         rotation_[size_t(b)] = {std::cos(angle), std::sin(angle)};
-        const Body& body = w.body(b);
-        inverse_[size_t(b)] = inverseMass ? (*inverseMass)[size_t(b)] : Eigen::Vector2d(body.invMass, body.invInertia);
+        inverse_[size_t(b)] = inverseMass ? (*inverseMass)[size_t(b)]
+                                          : Eigen::Vector2d(w.invMassDiag[3 * b], w.invMassDiag[3 * b + 2]);
     }
 }
 

@@ -61,6 +61,16 @@ ParticleId World::addParticle(PartId part, const Vec2& local) {
     return id;
 }
 
+void World::setDamping(PartId p, double linear, double angular) {
+    parts_[p].linearDamping = linear;
+    parts_[p].angularDamping = angular;
+    const auto at = std::lower_bound(dampedParts_.begin(), dampedParts_.end(), p);
+    const bool listed = at != dampedParts_.end() && *at == p;
+    const bool damped = linear > 0 || angular > 0;
+    if (damped && !listed) dampedParts_.insert(at, p);
+    if (!damped && listed) dampedParts_.erase(at);
+}
+
 ParticleId World::anchor(const Vec2& worldPoint) { return addParticle(ground, worldPoint); }
 
 int World::addSpring(const Spring& s) {
@@ -160,9 +170,8 @@ void World::release(PartId part) {
 }
 
 void World::updateKinematics(double t) {
-    for (int b = 0; b < bodyCount(); ++b) {
-        const Body& body = bodies_[b];
-        if (!body.alive || !body.kinematic) continue;
+    for (int b : kinematicBodies()) {
+        const Body& body = bodies_[size_t(b)];
         const PartId lead = *std::find_if(body.parts.begin(), body.parts.end(),
                                           [&](PartId p) { return parts_[p].drive.has_value(); });
         const Part& part = parts_[lead];
@@ -417,6 +426,41 @@ int World::makeBody(const std::vector<PartId>& g, const std::vector<Pose>& poses
 void World::shrinkToFit() {
     const Eigen::Index n = 3 * Eigen::Index(bodies_.size());
     for (Eigen::VectorXd* x : {&q, &v, &a, &invMassDiag}) x->conservativeResize(n);
+}
+
+void World::indexBodies() const {
+    if (indexedVersion_ == structureVersion_ && indexedGravity_ == gravity && weights_.size() == q.size()) return;
+    indexedVersion_ = structureVersion_;
+    indexedGravity_ = gravity;
+    kinematicBodies_.clear();
+    kinematicFlags_.assign(bodies_.size(), 0);
+    weights_.setZero(q.size());
+    for (int b = 0; b < bodyCount(); ++b) {
+        const Body& body = bodies_[size_t(b)];
+        if (!body.alive) continue;
+        if (body.kinematic) {
+            kinematicBodies_.push_back(b);
+            kinematicFlags_[size_t(b)] = 1;
+        } else {
+            // The body's origin is its centre of mass: its weight has no torque.
+            weights_.segment<2>(3 * b) = body.mass * gravity;
+        }
+    }
+}
+
+const std::vector<int>& World::kinematicBodies() const {
+    indexBodies();
+    return kinematicBodies_;
+}
+
+const std::vector<unsigned char>& World::kinematicFlags() const {
+    indexBodies();
+    return kinematicFlags_;
+}
+
+const Eigen::VectorXd& World::weights() const {
+    indexBodies();
+    return weights_;
 }
 
 const std::vector<Pin>& World::pins() const {

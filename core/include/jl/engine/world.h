@@ -157,10 +157,10 @@ public:
     bool validParticle(ParticleId p) const { return p >= 0 && p < int(particles_.size()); }
     bool validPart(PartId p) const { return p >= 0 && p < int(parts_.size()); }
 
-    void setDamping(PartId p, double linear, double angular) {
-        parts_[p].linearDamping = linear;
-        parts_[p].angularDamping = angular;
-    }
+    void setDamping(PartId p, double linear, double angular);
+    // The parts with air damping, in order: the forces visit these alone (a
+    // Part is a long stride, and on a long ladder most have none).
+    const std::vector<PartId>& dampedParts() const { return dampedParts_; }
 
     // ---- holding ----
     void hold(PartId part, const Drive& drive);  // the part follows the path
@@ -178,6 +178,14 @@ public:
     const Part& part(PartId p) const { return parts_[p]; }
     const Particle& particle(ParticleId p) const { return particles_[p]; }
     const std::vector<Pin>& pins() const;  // re-derived after a change of structure
+    // What the passes of every evaluation ask of each body, in flat arrays
+    // re-derived after a change of structure (a Body, with its list of
+    // parts, is a long stride to read a flag from): the alive kinematic
+    // bodies, a flag per body (1: kinematic), and each alive dynamic body's
+    // weight m g (3 per body, as force; the length of q).
+    const std::vector<int>& kinematicBodies() const;
+    const std::vector<unsigned char>& kinematicFlags() const;
+    const Eigen::VectorXd& weights() const;
     const std::vector<Weld>& welds() const; // empty unless weld mode; with pins()
     // Constraint rows: 2 per pin, then 1 per weld.
     int constraintRows() const { return int(2 * pins().size() + welds().size()); }
@@ -237,6 +245,7 @@ private:
                  const std::vector<Twist>& partVelocities);
     int allocateBody();
     void rebuildPins() const;
+    void indexBodies() const;
     void weldSharedPairs() const;
 
     std::vector<Part> parts_;
@@ -246,11 +255,18 @@ private:
     mutable std::vector<Pin> pins_;
     mutable std::vector<Weld> welds_;
     mutable bool pinsStale_ = false;
+    // indexBodies: valid for this structure, gravity and length of q.
+    mutable long long indexedVersion_ = -1;
+    mutable Vec2 indexedGravity_ = Vec2::Zero();
+    mutable std::vector<int> kinematicBodies_;
+    mutable std::vector<unsigned char> kinematicFlags_;
+    mutable Eigen::VectorXd weights_;
     std::vector<Spring> springs_;
     std::vector<RotaryDamper> dampers_;
     std::vector<UserDrag> drags_;
     std::vector<AppliedLoad> loads_;
     std::vector<int> freeBodies_;
+    std::vector<PartId> dampedParts_;  // ascending
     long long structureVersion_ = 0;
     bool weldRigidPairs_ = false;
 
