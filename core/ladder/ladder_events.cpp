@@ -25,10 +25,10 @@ constexpr double kTouch = Ladder::kTouchBand;  // rad: this close to a limit tou
 // moving away: not hit, whatever the sign of the rounding in phi.
 bool Ladder::touchingLimit(const World& w, int j, bool folded, bool resting) const {
     const double phi = hinge(j).foldAngle;
-    const double gap = folded ? kPi - phi : phi;           // >= 0 admissible
-    const double rate = folded ? -foldRate(w, j) : foldRate(w, j);  // < 0 closing
+    const double gap = folded ? kPi - phi : phi;  // >= 0 admissible
     if (gap < -kTouch) return true;
-    if (gap > kTouch) return false;
+    if (gap > kTouch) return false;  // nearly every hinge, in every round: no rate needed
+    const double rate = folded ? -foldRate(w, j) : foldRate(w, j);  // < 0 closing
     if (rate < -restingRate_) return true;
     return resting && rate <= restingRate_ && (folded ? -foldAcceleration(w, j) : foldAcceleration(w, j)) < 0;
 }
