@@ -295,7 +295,7 @@ std::vector<BenchRow> scalingStudy(const BenchPlan& plan) {
             const long long steps = std::clamp<long long>((long long)(blockSteps / n), 20, 2000);
             BenchRow row{"scaling", m.name, n, h, 0, 0, true, ""};
             double t = 0;
-            long long taken = 0;
+            long long taken = 0, rejected = 0;
             // One step to warm the caches and size the work vectors.
             advanceAndProject(w, d, s, t, h, ledger, 1e-10);
             t += h;
@@ -307,13 +307,21 @@ std::vector<BenchRow> scalingStudy(const BenchPlan& plan) {
                     break;
                 }
                 t += ms.step.taken;
+                rejected += ms.step.rejected;
             }
             const double cpu = threadSeconds() - start;
             // error column: ns per block-step; cost: CPU s per simulated s.
+            // A step the adaptive methods' error control rejects is as much
+            // work as one it accepts, and counts as one: this is the cost of
+            // a step's work per block, whatever the controller does with it
+            // (it rejects most while it finds its step, which is all that a
+            // run of 20 steps sees).
             row.cost = cpu / std::max(t - h, 1e-300);
-            row.error = 1e9 * cpu / (double(n) * double(std::max<long long>(taken, 1)));
+            row.error = 1e9 * cpu / (double(n) * double(std::max<long long>(taken + rejected, 1)));
             char note[96];
-            std::snprintf(note, sizeof note, "%lld steps%s", taken, row.finished ? "" : ", stopped: a step failed");
+            std::snprintf(note, sizeof note, "%lld steps%s%s", taken,
+                          rejected > 0 ? (" + " + std::to_string(rejected) + " rejected").c_str() : "",
+                          row.finished ? "" : ", stopped: a step failed");
             row.note = note;
             std::fprintf(stderr, "  scaling %-18s N=%-7d %5lld steps  %8.1f ns/block-step\n", m.name.c_str(), n, taken, row.error);
             rows.push_back(row);

@@ -72,11 +72,12 @@ void Stepper::stiffMass(const World& w, Dynamics& d, double s) {
         stiffness_[size_t(pins[i].bodyA)] -= d.solver().armA(int(i)).dot(l);
         stiffness_[size_t(pins[i].bodyB)] += d.solver().armB(int(i)).dot(l);
     }
+    // From the world's flat inverse masses (zero for held and dead bodies,
+    // which then keep zeros): a Body is a long stride to read two numbers from.
     for (int b = 0; b < bodies; ++b) {
-        const Body& body = w.body(b);
-        if (!body.alive || body.kinematic) continue;
-        const double raise = 1 + s * body.invInertia * std::max(0.0, -stiffness_[size_t(b)]);
-        stiffInverse_[size_t(b)] = {body.invMass, body.invInertia / raise};
+        const double invMass = w.invMassDiag[3 * b], invInertia = w.invMassDiag[3 * b + 2];
+        const double raise = 1 + s * invInertia * std::max(0.0, -stiffness_[size_t(b)]);
+        stiffInverse_[size_t(b)] = {invMass, invInertia / raise};
         keep_.segment<3>(3 * b) = mask_.segment<3>(3 * b).cwiseProduct(Eigen::Vector3d(1, 1, 1 / raise));
     }
     stiff_.solver.assemble(w, stiffInverse_);

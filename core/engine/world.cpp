@@ -321,6 +321,7 @@ void World::regroup(const std::vector<int>& touchedBodies) {
     }
     for (int b : olds) {
         bodies_[b] = Body{};
+        invMassDiag.segment<3>(3 * b).setZero();  // dead until reused: no mass to move
         if (b != 0) freeBodies_.push_back(b);
     }
     for (const std::vector<PartId>& g : rigidGroups(parts)) {
