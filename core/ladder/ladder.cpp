@@ -340,23 +340,27 @@ double Ladder::eventFunctions(const World& w, const Dynamics& d, std::vector<dou
     return smallestForce;
 }
 
+// Free hinge j's two functions at fold angle phi: events where phi crosses 0
+// or pi, measured from where a release left it (releaseGap).
+std::array<double, 2> Ladder::limitFunctions(int j, double phi) const {
+    const double zero = hinge(j).releaseGap - kAngleTolerance;
+    return {phi - zero, kPi - phi - zero};
+}
+
 void Ladder::angleEventFunctions(const World& w, std::vector<double>& out) const {
     out.assign(2 * hinges_.size(), kNoEvent);
     for (int j = 1; j < blockCount(); ++j) {
         if (hinge(j).mode != HingeMode::Free) continue;
-        const double phi = foldAngle(w, j);  // events where phi crosses 0 or pi
-        const double zero = hinge(j).releaseGap - kAngleTolerance;
-        out[2 * size_t(j - 1)] = phi - zero;
-        out[2 * size_t(j - 1) + 1] = kPi - phi - zero;
+        const auto [open, folded] = limitFunctions(j, foldAngle(w, j));
+        out[2 * size_t(j - 1)] = open;
+        out[2 * size_t(j - 1) + 1] = folded;
     }
 }
 
 double Ladder::angleEventFunction(const World& w, int k) const {
     const int j = k / 2 + 1;
     if (hinge(j).mode != HingeMode::Free) return kNoEvent;
-    const double phi = foldAngle(w, j);
-    const double zero = hinge(j).releaseGap - kAngleTolerance;
-    return k % 2 == 0 ? phi - zero : kPi - phi - zero;
+    return limitFunctions(j, foldAngle(w, j))[size_t(k % 2)];
 }
 
 std::array<int, 2> Ladder::angleEventBodies(const World& w, int k) const {

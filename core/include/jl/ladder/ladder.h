@@ -143,6 +143,7 @@ public:
     std::vector<RibbonFrame> ribbons(const World& w) const;
 
 private:
+    std::array<double, 2> limitFunctions(int j, double phi) const;  // phi - z, pi - phi - z
     struct Wrench {
         Vec2 force = Vec2::Zero();
         double moment = 0;  // about the hinge point
