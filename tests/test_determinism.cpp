@@ -1,7 +1,11 @@
 // labels: physics;engine
 // The same scene and inputs give bit-identical states, whatever the caller's
 // frame rate, after a snapshot and restore, and when a recorded drag replays.
+#include "jl/engine/kept_evaluation.h"
+#include "jl/engine/motion.h"
 #include "tests/scene_run.h"
+
+#include <cmath>
 
 #include <QtTest>
 
@@ -44,6 +48,94 @@ private slots:
         sim->restore(*snap);
         sim->advanceTo(1.3);
         QCOMPARE(sim->stateHash(), straight);
+    }
+
+    // A step's first stage taken from the previous step's end evaluation
+    // (KeptEvaluation) is the same evaluation: the motion and the books come
+    // out bit for bit as when every stage is evaluated, one evaluation a
+    // step cheaper, for every explicit method (the adaptive one too, whose
+    // rejected trials also share their first stage).
+    void theFirstStageTakenFromTheLastStepsEndChangesNothing() {
+        auto sim = simulateFile(kClassic);
+        QVERIFY(sim);
+        sim->advanceTo(0.55);  // mid-cascade: the hand turning, blocks swinging
+        for (Integrator kind : {Integrator::ExplicitEuler, Integrator::SymplecticEuler, Integrator::RK4,
+                                Integrator::DormandPrince45}) {
+            struct Run {
+                World w;
+                Dynamics d;
+                Stepper s;
+                Ledger ledger;
+                KeptEvaluation kept;
+            };
+            Run plain{sim->world(), {}, Stepper(kind, 1e-7), {}, {}};
+            Run reusing{sim->world(), {}, Stepper(kind, 1e-7), {}, {}};
+            const double h = kind == Integrator::ExplicitEuler || kind == Integrator::SymplecticEuler ? 1e-4 : 1e-3;
+            double tPlain = 0.55, tReusing = 0.55;
+            const int steps = 100;
+            for (int i = 0; i < steps; ++i) {
+                for (Run* r : {&plain, &reusing}) {
+                    double& t = r == &plain ? tPlain : tReusing;
+                    const Powers* atStart = r == &reusing ? r->kept.recall(r->w, t) : nullptr;
+                    QCOMPARE(atStart != nullptr, r == &reusing && i > 0);
+                    const MotionStep m = advanceAndProject(r->w, r->d, r->s, t, h, r->ledger, 1e-10, false, atStart);
+                    QVERIFY(m.ok());
+                    t += m.step.taken;
+                    // The end state evaluated, as the simulation does for its event functions.
+                    r->kept.keep(r->w, t, r->d.evaluate(r->w, t));
+                }
+            }
+            QCOMPARE(tReusing, tPlain);
+            QVERIFY(reusing.w.q == plain.w.q);
+            QVERIFY(reusing.w.v == plain.w.v);
+            QCOMPARE(reusing.ledger.held, plain.ledger.held);
+            QCOMPARE(reusing.ledger.damping, plain.ledger.damping);
+            QCOMPARE(reusing.d.evaluations(), plain.d.evaluations() - (steps - 1));
+        }
+    }
+
+    // Recalled only for the very same inputs: time, positions, velocities,
+    // gravity, and nothing else of the world changed.
+    void aKeptEvaluationIsRecalledOnlyForTheSameInputs() {
+        auto sim = simulateFile(kClassic);
+        QVERIFY(sim);
+        sim->advanceTo(0.3);
+        World w = sim->world();
+        Dynamics d;
+        KeptEvaluation kept;
+        const double t = sim->time();
+        kept.keep(w, t, d.evaluate(w, t));
+        const Eigen::VectorXd a = w.a;
+        w.a.setZero();
+        QVERIFY(kept.recall(w, t) != nullptr);
+        QVERIFY(w.a == a);  // put back
+        QVERIFY(kept.recall(w, std::nextafter(t, 1.0)) == nullptr);
+        {
+            World moved = w;
+            moved.q[4] = std::nextafter(moved.q[4], 1.0);
+            QVERIFY(kept.recall(moved, t) == nullptr);
+        }
+        {
+            World pushed = w;
+            pushed.v[5] += 1e-12;
+            QVERIFY(kept.recall(pushed, t) == nullptr);
+        }
+        {
+            World heavier = w;
+            heavier.gravity.y() -= 0.01;
+            QVERIFY(kept.recall(heavier, t) == nullptr);
+        }
+        {
+            World dragged = w;
+            (void)dragged.drags();  // a reference to change them through: the world may have changed
+            QVERIFY(kept.recall(dragged, t) == nullptr);
+        }
+        {
+            World copy = w;  // a copy is the same world
+            QVERIFY(kept.recall(copy, t) != nullptr);
+        }
+        kept.forget();
+        QVERIFY(kept.recall(w, t) == nullptr);
     }
 
     // A drag during a run is recorded into the scene; running that scene

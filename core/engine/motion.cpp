@@ -5,10 +5,10 @@
 namespace jl {
 
 MotionStep advanceAndProject(World& w, Dynamics& d, Stepper& s, double t, double h, Ledger& ledger,
-                             double tolerance, bool exact) {
+                             double tolerance, bool exact, const Powers* atStart) {
     MotionStep m;
     const Ledger l0 = ledger;
-    m.step = s.advance(w, d, t, h, ledger, exact);
+    m.step = s.advance(w, d, t, h, ledger, exact, atStart);
     if (!m.step.finite) return m;
     m.projection = projectPositions(w, d.solver(), tolerance);
     if (m.projection.converged) {

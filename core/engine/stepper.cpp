@@ -64,10 +64,10 @@ int Stepper::order() const {
 // One explicit Runge-Kutta step of size h from the state in w (which must be
 // saved in q0_, v0_). Leaves the new state in w; returns the error norm
 // (adaptive) or 0.
-double Stepper::attempt(World& w, Dynamics& d, double t, double h, Ledger& ledger) {
+double Stepper::attempt(World& w, Dynamics& d, double t, double h, Ledger& ledger, bool firstKnown) {
     if (kind_ == Integrator::RosenbrockW) return rosenbrockAttempt(w, d, t, h, ledger);
     const size_t stages = tableau_.c.size();
-    for (size_t i = 0; i < stages; ++i) {
+    for (size_t i = firstKnown ? 1 : 0; i < stages; ++i) {
         if (i > 0) {
             w.q = q0_;
             w.v = v0_;
@@ -121,8 +121,8 @@ double Stepper::errorNorm(const World& w) const {
     return n > 0 ? std::sqrt(sum / double(n)) : 0.0;
 }
 
-void Stepper::symplecticEuler(World& w, Dynamics& d, double t, double h, Ledger& ledger) {
-    const Eigen::Vector3d r = rates(d.evaluate(w, t));
+void Stepper::symplecticEuler(World& w, Dynamics& d, double t, double h, Ledger& ledger, const Powers* atStart) {
+    const Eigen::Vector3d r = rates(atStart ? *atStart : d.evaluate(w, t));
     w.v.noalias() += h * w.a;
     w.q.noalias() += h * w.v;
     ledger.held += h * r[0];
@@ -130,16 +130,26 @@ void Stepper::symplecticEuler(World& w, Dynamics& d, double t, double h, Ledger&
     ledger.damping += h * r[2];
 }
 
-StepOutcome Stepper::advance(World& w, Dynamics& d, double t, double h, Ledger& ledger, bool exact) {
+StepOutcome Stepper::advance(World& w, Dynamics& d, double t, double h, Ledger& ledger, bool exact,
+                             const Powers* atStart) {
     StepOutcome out;
     q0_ = w.q;
     v0_ = w.v;
     const Ledger start = ledger;
+    // The first stage of every explicit Runge-Kutta trial is the start state
+    // itself: given, or evaluated by the first trial and kept for the rest.
+    bool firstKnown = false;
+    if (atStart && kind_ != Integrator::RosenbrockW && kind_ != Integrator::SymplecticEuler) {
+        kq_[0] = w.v;
+        kv_[0] = w.a;
+        kl_[0] = rates(*atStart);
+        firstKnown = true;
+    }
     if (kind_ == Integrator::SymplecticEuler) {
-        symplecticEuler(w, d, t, h, ledger);
+        symplecticEuler(w, d, t, h, ledger, atStart);
         out.taken = h;
     } else if (!isAdaptive(kind_) || exact) {
-        attempt(w, d, t, h, ledger);
+        attempt(w, d, t, h, ledger, firstKnown);
         out.taken = h;
     } else {
         double trial = next_ > 0 ? std::min(next_, h) : h;
@@ -149,7 +159,8 @@ StepOutcome Stepper::advance(World& w, Dynamics& d, double t, double h, Ledger& 
             w.q = q0_;
             w.v = v0_;
             ledger = start;
-            const double err = attempt(w, d, t, trial, ledger);
+            const double err = attempt(w, d, t, trial, ledger, firstKnown);
+            firstKnown = kind_ != Integrator::RosenbrockW;
             if (!std::isfinite(err) && trial > 1e-12) {  // diverged inside the step: much smaller
                 ++out.rejected;
                 trial *= 0.1;

@@ -1,5 +1,7 @@
 #include "jl/engine/world.h"
 
+#include <atomic>
+
 #include "jl/engine/projection.h"
 
 #include <algorithm>
@@ -9,6 +11,11 @@
 #include <numeric>
 
 namespace jl {
+
+std::uint64_t World::freshRevision() {
+    static std::atomic<std::uint64_t> next{1};
+    return next.fetch_add(1, std::memory_order_relaxed);
+}
 
 World::World() {
     // Part 0 is the ground: held still forever, alone in kinematic body 0.
@@ -27,6 +34,7 @@ World::World() {
 
 PartId World::addBox(double mass, const Vec2& size, double width, const Pose& pose, const Twist& velocity,
                      std::optional<double> inertia) {
+    touch();
     Part p;
     p.mass = mass;
     p.inertia = inertia ? *inertia : mass * size.squaredNorm() / 12.0;
@@ -41,6 +49,7 @@ PartId World::addBox(double mass, const Vec2& size, double width, const Pose& po
 }
 
 PartId World::addPoint(double mass, const Vec2& position, const Vec2& velocity) {
+    touch();
     Part p;
     p.mass = mass;
     p.isPoint = true;
@@ -53,6 +62,7 @@ PartId World::addPoint(double mass, const Vec2& position, const Vec2& velocity) 
 }
 
 ParticleId World::addParticle(PartId part, const Vec2& local) {
+    touch();
     Particle p;
     p.at.push_back({part, local});
     particles_.push_back(p);
@@ -62,6 +72,7 @@ ParticleId World::addParticle(PartId part, const Vec2& local) {
 }
 
 void World::setDamping(PartId p, double linear, double angular) {
+    touch();
     parts_[p].linearDamping = linear;
     parts_[p].angularDamping = angular;
     const auto at = std::lower_bound(dampedParts_.begin(), dampedParts_.end(), p);
@@ -74,11 +85,13 @@ void World::setDamping(PartId p, double linear, double angular) {
 ParticleId World::anchor(const Vec2& worldPoint) { return addParticle(ground, worldPoint); }
 
 int World::addSpring(const Spring& s) {
+    touch();
     springs_.push_back(s);
     return int(springs_.size()) - 1;
 }
 
 int World::addRotaryDamper(const RotaryDamper& d) {
+    touch();
     dampers_.push_back(d);
     return int(dampers_.size()) - 1;
 }
@@ -94,6 +107,7 @@ std::optional<WorldError> World::checkParticle(ParticleId p) const {
 }
 
 std::optional<WorldError> World::combine(ParticleId p, ParticleId q, bool consistent) {
+    touch();
     if (auto e = checkParticle(p)) return e;
     if (auto e = checkParticle(q)) return e;
     if (p == q) return WorldError{"cannot combine a particle with itself"};
@@ -129,6 +143,7 @@ std::optional<WorldError> World::closePins(const char* operation) {
 }
 
 std::optional<WorldError> World::closePinGaps(const char* operation) {
+    touch();
     restructure_.solver.reset();
     return pinsLeftOpen(operation, projectPositions(*this, restructure_.solver, restructureTolerance));
 }
@@ -141,6 +156,7 @@ std::optional<WorldError> World::pinsLeftOpen(const char* operation, const Proje
 }
 
 std::optional<WorldError> World::separate(ParticleId p, bool consistent) {
+    touch();
     if (auto e = checkParticle(p)) return e;
     Particle& pp = particles_[p];
     if (pp.absorbed.empty())
@@ -158,12 +174,14 @@ std::optional<WorldError> World::separate(ParticleId p, bool consistent) {
 }
 
 void World::hold(PartId part, const Drive& d) {
+    touch();
     parts_[part].drive = d;
     regroup({parts_[part].body});
     makeConsistent(*this, restructure_.solver, restructureTolerance);
 }
 
 void World::release(PartId part) {
+    touch();
     if (part == ground || !parts_[part].drive) return;
     parts_[part].drive.reset();
     regroup({parts_[part].body});
@@ -225,6 +243,7 @@ Vec2 World::particleVelocity(ParticleId p) const {
 }
 
 void World::setPartState(PartId p, const Pose& pose, const Twist& velocity) {
+    touch();
     const int b = parts_[p].body;
     const Pose bp = pose.compose(parts_[p].inBody.inverse());
     const Vec2 r = bp.position - pose.position;
@@ -241,6 +260,7 @@ std::vector<Twist> World::partVelocities() const {
 }
 
 void World::setPartVelocities(const std::vector<Twist>& velocities) {
+    touch();
     for (int b = 1; b < bodyCount(); ++b) {
         const Body& body = bodies_[b];
         if (!body.alive || body.kinematic) continue;
@@ -425,6 +445,7 @@ int World::makeBody(const std::vector<PartId>& g, const std::vector<Pose>& poses
 }
 
 void World::shrinkToFit() {
+    touch();
     const Eigen::Index n = 3 * Eigen::Index(bodies_.size());
     for (Eigen::VectorXd* x : {&q, &v, &a, &invMassDiag}) x->conservativeResize(n);
 }

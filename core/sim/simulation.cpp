@@ -5,6 +5,7 @@
 #include "jl/engine/projection.h"
 
 #include <algorithm>
+#include <utility>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -462,8 +463,8 @@ Frame Simulation::frame() {
         if (world_.body(b).alive && !world_.body(b).kinematic) ++f.solver.bodies;
     f.events = std::move(pending_);
     pending_.clear();
-    if (!world_.drags().empty()) {
-        const UserDrag& g = world_.drags().front();
+    if (const auto& drags = std::as_const(world_).drags(); !drags.empty()) {
+        const UserDrag& g = drags.front();
         f.dragging = true;
         f.dragFrom = world_.pointPosition(g.part, g.local);
         f.dragTo = g.target;

@@ -316,7 +316,10 @@ bool Simulation::takeStep(double limit) {
     stepStartV_ = world_.v;
     stepStartLedger_ = ledger_;
     const double next0 = stepper_.nextStep();
-    MotionStep m = advanceAndProject(world_, dynamics_, stepper_, t_, h, ledger_, solver.projectionTolerance);
+    // The last step's end, evaluated for its event functions, is this
+    // step's first stage when nothing has changed since.
+    const Powers* atStart = keptEnd_.recall(world_, t_);
+    MotionStep m = advanceAndProject(world_, dynamics_, stepper_, t_, h, ledger_, solver.projectionTolerance, false, atStart);
     if (!m.ok()) {
         if (retryWithSmallerStep()) return true;
         fail(m.step.finite ? "the projection onto the pins did not converge (gap " + gapText(m.projection.residual) +
@@ -336,6 +339,7 @@ bool Simulation::takeStep(double limit) {
     if (ladder_) {
         double forces = 0;
         const double fEnd = smallestEventFunction(t_ + taken, &forces);
+        keptEnd_.keep(world_, t_ + taken, lastPowers_);
         if (fEnd < 0) {
             if (solver.events == EventPolicy::Located && taken > solver.eventTolerance) {
                 if (!locateEvent(taken, fEnd, forces)) return false;

@@ -33,8 +33,11 @@ public:
     // Advances w from time t. Fixed-step methods take exactly h; the adaptive
     // method takes at most h, choosing its own step to meet the tolerance.
     // `exact`: the adaptive method takes exactly h too (to re-run part of an
-    // accepted step when locating an event).
-    StepOutcome advance(World& w, Dynamics& d, double t, double h, Ledger& ledger, bool exact = false);
+    // accepted step when locating an event). `atStart`: w.a already holds
+    // the accelerations at (t, w.q, w.v) and these are their powers, so the
+    // first stage needs no evaluation (KeptEvaluation).
+    StepOutcome advance(World& w, Dynamics& d, double t, double h, Ledger& ledger, bool exact = false,
+                        const Powers* atStart = nullptr);
 
     Integrator kind() const { return kind_; }
     int order() const;
@@ -58,11 +61,13 @@ private:
         double a[4][4] = {}, c[4][4] = {}, alpha[4] = {}, m[4] = {}, e[4] = {};
     };
     static Rosenbrock rosenbrockTableau();
-    double attempt(World& w, Dynamics& d, double t, double h, Ledger& ledger);
+    // `firstKnown`: the first stage (the step's start) is already in
+    // kq_[0], kv_[0] and kl_[0].
+    double attempt(World& w, Dynamics& d, double t, double h, Ledger& ledger, bool firstKnown);
     double rosenbrockAttempt(World& w, Dynamics& d, double t, double h, Ledger& ledger);
     void stiffMass(const World& w, Dynamics& d, double s);
     void solveStiff(const World& w, Eigen::VectorXd& z);
-    void symplecticEuler(World& w, Dynamics& d, double t, double h, Ledger& ledger);
+    void symplecticEuler(World& w, Dynamics& d, double t, double h, Ledger& ledger, const Powers* atStart);
     double errorNorm(const World& w) const;
 
     Integrator kind_;

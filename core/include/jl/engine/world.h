@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -131,8 +132,14 @@ public:
     ParticleId anchor(const Vec2& worldPoint);               // a point on the ground
     int addSpring(const Spring& s);
     int addRotaryDamper(const RotaryDamper& d);
-    void setRotaryDamping(int id, double damping) { dampers_[size_t(id)].damping = damping; }
-    std::vector<AppliedLoad>& loads() { return loads_; }
+    void setRotaryDamping(int id, double damping) {
+        touch();
+        dampers_[size_t(id)].damping = damping;
+    }
+    std::vector<AppliedLoad>& loads() {
+        touch();
+        return loads_;
+    }
     const std::vector<AppliedLoad>& loads() const { return loads_; }
     static constexpr PartId ground = 0;
 
@@ -168,7 +175,10 @@ public:
     // Poses, velocities and accelerations of kinematic bodies at time t.
     void updateKinematics(double t);
     bool isHeld(PartId part) const { return parts_[part].drive.has_value(); }
-    Drive* drive(PartId part) { return parts_[part].drive ? &*parts_[part].drive : nullptr; }
+    Drive* drive(PartId part) {
+        touch();
+        return parts_[part].drive ? &*parts_[part].drive : nullptr;
+    }
 
     // ---- state ----
     int bodyCount() const { return int(bodies_.size()); }
@@ -194,11 +204,17 @@ public:
     // needs"): false (default) merges parts that share two particles into
     // one body; true keeps every extended part its own body and holds such
     // pairs together with a pin and a weld instead. Set before building.
-    void setWeldRigidPairs(bool on) { weldRigidPairs_ = on; }
+    void setWeldRigidPairs(bool on) {
+        touch();
+        weldRigidPairs_ = on;
+    }
     bool weldsRigidPairs() const { return weldRigidPairs_; }
     const std::vector<Spring>& springs() const { return springs_; }
     const std::vector<RotaryDamper>& rotaryDampers() const { return dampers_; }
-    std::vector<UserDrag>& drags() { return drags_; }
+    std::vector<UserDrag>& drags() {
+        touch();
+        return drags_;
+    }
     const std::vector<UserDrag>& drags() const { return drags_; }
 
     Pose bodyPose(int b) const { return {q.segment<2>(3 * b), q[3 * b + 2]}; }
@@ -227,6 +243,12 @@ public:
 
     // Bumped by every change of structure (bodies or pins).
     long long structureVersion() const { return structureVersion_; }
+    // A number no state of any world has had before, taken anew by every
+    // change other than to q, v, a and gravity (every non-const member but
+    // updateKinematics, the accessors handing out references included): two
+    // worlds with one revision differ at most in those, so an evaluation
+    // kept with its q, v and time still holds if they are equal.
+    std::uint64_t revision() const { return revision_; }
 
     // How closely combine, separate and hold close the pins (m): to
     // rounding, tighter than a step's projection, so that a lock or a grab
@@ -234,6 +256,9 @@ public:
     double restructureTolerance = 1e-12;
 
 private:
+    static std::uint64_t freshRevision();
+    void touch() { revision_ = freshRevision(); }
+
     ScratchPinSolver restructure_;  // the solver a restructure closes the pins with
 
     std::optional<WorldError> closePins(const char* operation);
@@ -268,6 +293,7 @@ private:
     std::vector<int> freeBodies_;
     std::vector<PartId> dampedParts_;  // ascending
     long long structureVersion_ = 0;
+    std::uint64_t revision_ = freshRevision();
     bool weldRigidPairs_ = false;
 
 };

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "jl/engine/dynamics.h"
+#include "jl/engine/kept_evaluation.h"
 #include "jl/engine/step_interpolant.h"
 #include "jl/engine/stepper.h"
 #include "jl/engine/world.h"
@@ -96,7 +97,10 @@ public:
     // Solve every step's constraints with the sparse factorisation, even a
     // plain chain the O(N) elimination would take: so the benchmark can
     // compare the two models of a rigid pair (solver.rigid_pairs) on one solver.
-    void useSparseSolver(bool on) { dynamics_.solver().setForceSparse(on); }
+    void useSparseSolver(bool on) {
+        dynamics_.solver().setForceSparse(on);
+        keptEnd_.forget();  // the other solver may differ in the last bit
+    }
 
     std::shared_ptr<const Snapshot> snapshot() const;
     void restore(const Snapshot& s);
@@ -136,6 +140,7 @@ private:
     Scene scene_;
     World world_;
     Dynamics dynamics_;
+    KeptEvaluation keptEnd_;  // the dynamics at the end of the last step
     Stepper stepper_;
     Ledger ledger_;
     std::optional<Ladder> ladder_;
