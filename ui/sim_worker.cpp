@@ -151,6 +151,10 @@ void SimWorker::apply(const cmd::Load& c) {
         fail(joinLines(built.errors));
         return;
     }
+    // Frame i is the state at exactly i * interval, read off the step that
+    // passes that time (the frame times never shape the steps).
+    sim_->setFrameGrid(frameGrid());
+    carried_.clear();
     auto first = std::make_shared<const jl::Frame>(sim_->frame());
     for (const auto& e : first->events) events_->push_back(e);
     history_.append(first, sim_->snapshot(), 0);
@@ -164,17 +168,21 @@ void SimWorker::apply(const cmd::Seek& c) {
     setNiceness(8);  // a seek simulates flat out
     if (!sim_ || history_.count() == 0) return;
     const int index = std::max(0, int(std::floor(c.time / history_.interval() + 1e-6)));
-    if (index > history_.head()) simulateTo(index);
-    else showFrame(index);
+    // A step can give more than one frame: the head may pass the one asked for.
+    if (index <= history_.head() || simulateTo(index)) showFrame(index);
     rebasePace();
 }
 
 void SimWorker::apply(const cmd::DragBegin& c) {
     if (!sim_ || !failure_.empty()) return;
+    // Pushing a block in the past rewrites what follows: simulate on from
+    // the frame on screen (the view found a block there, in that frame).
+    if (cursor_ < history_.head()) {
+        discardFuture();
+        if (!failure_.empty()) return;
+    }
     const auto hit = sim_->pick(c.point);
     if (!hit) return;
-    // Pushing a block in the past rewrites what follows: simulate on from here.
-    if (cursor_ < history_.head()) discardFuture();
     sim_->beginDrag(hit->first, hit->second, c.point);
     if (!playing_) shown_ = std::make_shared<const jl::Frame>(sim_->frame());
 }
@@ -220,14 +228,56 @@ void SimWorker::advancePaced() {
     if (desired - cursor_ * dt > kMaxLag) rebasePace();
 }
 
-// Simulation::advanceTo, one step at a time so that closing the program
-// never waits for a long stretch of simulation (the steps are the same).
-bool SimWorker::advance(jl::Simulation& sim, double t) {
-    while (sim.time() < t && sim.failure().empty()) {
-        if (abort_) return false;
-        if (!sim.stepOnce()) break;
+// Steps `sim` (its frame grid set to frameGrid()) until it has given frame
+// `index`, one step at a time so that closing the program never waits for a
+// long stretch of simulation. Every frame it gives on the way (a long step
+// can pass more than one frame time) goes to `take` in order, at exactly its
+// grid time, with the events since the frame before it. False on a failure
+// (the simulation keeps its last good state) or when aborted.
+bool SimWorker::framesThrough(jl::Simulation& sim, int index, std::vector<jl::Event>& carried,
+                              const std::function<void(int, FramePtr)>& take) {
+    const jl::FrameGrid grid = sim.frameGrid();
+    const auto hand = [&](jl::Frame f) {
+        const double k = grid.nearest(f.time);
+        f.time = grid.at(k);  // within rounding of it: the grid's time, exactly
+        const auto after = std::find_if(carried.begin(), carried.end(),
+                                        [&](const jl::Event& e) { return e.time > f.time + 1e-9 * grid.every; });
+        f.events.assign(carried.begin(), after);
+        carried.erase(carried.begin(), after);
+        take(int(k), std::make_shared<const jl::Frame>(std::move(f)));
+        return int(k);
+    };
+    for (int last = -1; last < index;) {
+        if (abort_ || !sim.failure().empty()) return false;
+        if (!sim.stepOnce()) return false;
+        // A step records its events at its ends (a located event ends it;
+        // scripted actions start it): each frame inside the step takes those
+        // not later than itself.
+        std::vector<jl::Event> events = sim.takeEvents();
+        carried.insert(carried.end(), events.begin(), events.end());
+        for (jl::Frame& f : sim.takeGridFrames()) last = hand(std::move(f));
+        if (grid.on(sim.time())) last = hand(sim.frame());
     }
-    return sim.failure().empty();
+    return true;
+}
+
+// Puts `sim` in the state of the last keyframe from which frame `index` can
+// be simulated again, and returns that keyframe's index (-1: none). A
+// keyframe holds the state at the end of the step that passed its frame's
+// time, so it can lie a little after that time, and after `index`'s too.
+int SimWorker::restoreKeyframeFor(jl::Simulation& sim, int index) {
+    const double t = index * history_.interval();
+    for (int k = history_.keyframeAtOrBefore(index).first; k >= 0; k -= history_.keyframeEvery()) {
+        const auto [at, key] = history_.keyframeAtOrBefore(k);
+        if (!key) return -1;
+        sim.restore(*key);
+        if (sim.time() <= t + 1e-9 * history_.interval()) {
+            sim.setFrameGrid(frameGrid());
+            (void)sim.takeGridFrames();
+            return at;
+        }
+    }
+    return -1;
 }
 
 bool SimWorker::simulateNextFrame() {
@@ -236,23 +286,26 @@ bool SimWorker::simulateNextFrame() {
         return false;
     }
     const int next = history_.count();
-    const bool ok = advance(*sim_, next * history_.interval());
+    FramePtr first;
+    const bool ok = framesThrough(*sim_, next, carried_, [&](int k, FramePtr f) {
+        if (k != history_.count()) return;  // the grid gives each frame once, in order
+        if (!f->events.empty()) {
+            events_->insert(events_->end(), f->events.begin(), f->events.end());
+            eventsChanged_ = true;
+        }
+        history_.append(f, history_.isKeyframeIndex(k) ? sim_->snapshot() : nullptr, k);
+        feed(f);
+        if (k == next) first = f;
+    });
     if (abort_) return false;
-    if (!ok) {
+    if (!ok || !first) {
         fail(sim_->failure().empty() ? std::string("the solver stopped") : sim_->failure());
         showFrame(history_.head());  // the last good frame
         return false;
     }
-    auto f = std::make_shared<const jl::Frame>(sim_->frame());
-    if (!f->events.empty()) {
-        events_->insert(events_->end(), f->events.begin(), f->events.end());
-        eventsChanged_ = true;
-    }
-    history_.append(f, history_.isKeyframeIndex(next) ? sim_->snapshot() : nullptr, next);
-    feed(f);
     headHash_ = sim_->stateHash();
     cursor_ = next;
-    shown_ = std::move(f);
+    shown_ = std::move(first);
     dirty_ = true;
     return true;
 }
@@ -285,27 +338,33 @@ void SimWorker::showFrame(int index) {
 // An evicted frame: re-simulate it on a scratch copy from the keyframe before
 // it; the head simulation stays where it is.
 std::shared_ptr<const jl::Frame> SimWorker::regenerate(int index) {
-    const auto [k, key] = history_.keyframeAtOrBefore(index);
-    if (!key) return nullptr;
     auto built = jl::Simulation::build(sim_->scene());
     if (!built.simulation) return nullptr;
     jl::Simulation& s = *built.simulation;
-    s.restore(*key);
-    std::shared_ptr<const jl::Frame> result;
-    if (k == index) result = std::make_shared<const jl::Frame>(s.frame());
-    for (int i = k + 1; i <= index; ++i) {
-        if (!advance(s, i * history_.interval())) return nullptr;
-        auto f = std::make_shared<const jl::Frame>(s.frame());
-        history_.restoreFrame(i, f, index);
-        if (i == index) result = std::move(f);
+    s.setFrameGrid(frameGrid());
+    if (restoreKeyframeFor(s, index) < 0) return nullptr;
+    FramePtr result;
+    const jl::FrameGrid grid = frameGrid();
+    if (grid.on(s.time()) && int(grid.nearest(s.time())) == index) {
+        jl::Frame f = s.frame();
+        f.time = grid.at(index);
+        result = std::make_shared<const jl::Frame>(std::move(f));
+        history_.restoreFrame(index, result, index);
+        return result;
     }
+    std::vector<jl::Event> ignored;  // already in the log
+    if (!framesThrough(s, index, ignored, [&](int k, FramePtr f) {
+            history_.restoreFrame(k, f, index);
+            if (k == index) result = std::move(f);
+        }))
+        return nullptr;
     return result;
 }
 
 // The head moves back to the cursor: frames, events and recorded drags after
 // it are dropped and the simulation is put in the cursor's state.
 void SimWorker::discardFuture() {
-    const double tc = shown_ ? shown_->time : cursor_ * history_.interval();
+    const double tc = cursor_ * history_.interval();
     jl::Scene scene = sim_->scene();
     bool dragsChanged = false;
     for (auto it = scene.drags.begin(); it != scene.drags.end();) {
@@ -327,12 +386,10 @@ void SimWorker::discardFuture() {
         auto built = jl::Simulation::build(scene);
         if (!built.simulation) return fail(joinLines(built.errors));
         sim_ = std::move(built.simulation);
-    } else {
-        const auto [k, key] = history_.keyframeAtOrBefore(cursor_);
-        if (key) sim_->restore(*key);
+        sim_->setFrameGrid(frameGrid());
+    } else if (restoreKeyframeFor(*sim_, cursor_) < 0) {
+        return fail("the recorded run could not be resumed at this frame");
     }
-    if (cursor_ > 0 && !advance(*sim_, cursor_ * history_.interval())) return fail(sim_->failure());
-    (void)sim_->frame();  // its events are already in the log
     history_.truncateAfter(cursor_);
     while (!feed_.empty() && feed_.back()->time > tc) {
         feed_.pop_back();
@@ -340,6 +397,23 @@ void SimWorker::discardFuture() {
     }
     std::erase_if(*events_, [tc](const jl::Event& e) { return e.time > tc; });
     eventsChanged_ = true;
+    // On to the end of the step that passes the frame on screen, not
+    // shortened to land on it: a replay of the drag that follows must take
+    // the very same steps (it lands on the drag's first instant, where the
+    // step ended). The frames that step passes after the cursor's are this
+    // run's frames too, and so are the events after the cursor's time.
+    carried_.clear();
+    std::vector<jl::Event> since;
+    if (sim_->time() < tc &&
+        !framesThrough(*sim_, cursor_, since, [&](int k, FramePtr f) {
+            if (k <= cursor_ || k != history_.count()) return;  // already on record
+            events_->insert(events_->end(), f->events.begin(), f->events.end());
+            history_.append(f, history_.isKeyframeIndex(k) ? sim_->snapshot() : nullptr, cursor_);
+            feed(std::move(f));
+        }))
+        return fail(sim_->failure().empty() ? std::string("the run could not be resumed at this frame") : sim_->failure());
+    std::erase_if(since, [tc](const jl::Event& e) { return e.time <= tc; });  // already in the log
+    carried_ = std::move(since);
     headHash_ = sim_->stateHash();
     recorded_ = std::make_shared<const jl::Scene>(sim_->scene());
 }

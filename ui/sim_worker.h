@@ -11,6 +11,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <deque>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <variant>
@@ -65,7 +66,11 @@ private:
     void apply(const cmd::DragBegin& c);
     void play();
     void advancePaced();
-    bool advance(jl::Simulation& sim, double t);
+    using FramePtr = std::shared_ptr<const jl::Frame>;
+    bool framesThrough(jl::Simulation& sim, int index, std::vector<jl::Event>& carried,
+                       const std::function<void(int, FramePtr)>& take);
+    int restoreKeyframeFor(jl::Simulation& sim, int index);
+    jl::FrameGrid frameGrid() const { return {0.0, history_.interval()}; }
     bool simulateNextFrame();
     bool simulateTo(int index);
     void showFrame(int index);
@@ -103,6 +108,9 @@ private:
     double speed_ = 1.0;
     std::string failure_;
     std::shared_ptr<const jl::Frame> shown_;
+    // Events the head simulation has recorded after the last frame it gave:
+    // they go with the next frame (its time is not earlier than theirs).
+    std::vector<jl::Event> carried_;
     // Frames appended to the history and not yet taken by the window; the
     // first is number feedFirst_ (SimStatus::newFrames).
     void feed(std::shared_ptr<const jl::Frame> f);

@@ -2,6 +2,7 @@
 // The simulation behind the window: play, pause, step, scrub, a mouse drag
 // that is recorded and replays bit for bit, and a window that stays
 // responsive while a long ladder simulates flat out.
+#include "jl/sim/recording.h"
 #include "jl/sim/simulation.h"
 #include "ui/ladder_view.h"
 #include "ui_test_support.h"
@@ -16,15 +17,34 @@ using namespace jl::ui;
 
 namespace {
 
-// The same run the window makes, done directly on the engine: frame i is the
-// state after advancing to i * interval.
+// The same run the window makes, done directly on the engine: the state
+// at the end of the step that passes i * interval...
 std::unique_ptr<jl::Simulation> engineAt(const jl::Scene& scene, int index) {
     auto built = jl::Simulation::build(scene);
     if (!built.simulation) qFatal("the scene does not build");
     built.simulation->advanceTo(index * scene.solver.frameInterval);
     return std::move(built.simulation);
 }
-jl::Frame engineFrameAt(const jl::Scene& scene, int index) { return engineAt(scene, index)->frame(); }
+// ...and frame i, the state at exactly i * interval, as the command line's
+// recording takes it (from the dense output of the step that passes it).
+jl::Frame engineFrameAt(const jl::Scene& scene, int index) {
+    struct Keep : jl::RecordTarget {
+        double at = 0;
+        jl::Frame kept;
+        bool frame(const jl::Frame& f) override {
+            if (f.time == at) kept = f;
+            return true;
+        }
+        bool event(const jl::Event&) override { return true; }
+    } keep;
+    const double every = scene.solver.frameInterval;
+    keep.at = jl::FrameGrid{0, every}.at(index);
+    auto built = jl::Simulation::build(scene);
+    if (!built.simulation) qFatal("the scene does not build");
+    (void)jl::record(*built.simulation, (index + 1) * every, jl::FrameGrid{0, every}, &keep);
+    if (keep.kept.time != keep.at) qFatal("no frame at %g s", keep.at);
+    return keep.kept;
+}
 std::uint64_t engineHashAt(const jl::Scene& scene, int index) { return engineAt(scene, index)->stateHash(); }
 
 bool samePoses(const jl::Frame& a, const jl::Frame& b) {
@@ -125,6 +145,57 @@ private slots:
         QVERIFY(!samePoses(*f.sim->status()->frame, engineFrameAt(jl::test::swingingLadder(), 30)));
     }
 
+    // Frame i is the state at exactly i * interval, read off the step that
+    // passes it, even where one step passes several frame times; each event
+    // comes with the first frame not earlier than it; and a frame simulated
+    // again after eviction is the same.
+    void framesLieAtExactTimesEvenWhenAStepPassesSeveral() {
+        jl::Scene scene = jl::test::swingingLadder();
+        scene.solver.step = 0.001;
+        scene.solver.frameInterval = 0.0004;  // two or three frames per step
+        jl::ScriptAction turn;
+        turn.at = 0.0102;  // inside a step
+        turn.angle = 1.0;
+        turn.duration = 0.1;
+        scene.script.push_back(turn);
+        // The worker alone: nobody takes the frames it hands on, so all stay.
+        SimController sim;
+        sim.load(scene);
+        const jl::FrameGrid grid{0, scene.solver.frameInterval};
+        const auto goTo = [&](int index) {
+            sim.seek(grid.at(index) + grid.every / 4);
+            return jl::test::waitForStatus(&sim, [index](const SimStatus& st) { return st.frameIndex == index; });
+        };
+        const bool reached = goTo(300);
+        const auto s = sim.status();
+        QVERIFY2(reached, qPrintable(QString("frame %1 of %2, %3").arg(s->frameIndex).arg(s->frameCount).arg(QString::fromStdString(s->failure))));
+        QCOMPARE(s->frame->time, grid.at(300));
+        QVERIFY(samePoses(*s->frame, engineFrameAt(scene, 300)));
+        QVERIFY(s->events && s->events->size() >= 2);  // the hand's turn, and its end
+        // Every frame handed on lies on the grid, in order, and holds the
+        // events inside (frame before, itself].
+        QCOMPARE(s->firstNewFrame, std::uint64_t(0));
+        const auto& frames = *s->newFrames;
+        QCOMPARE(int(frames.size()), 301);
+        size_t events = 0;
+        for (int i = 0; i <= 300; ++i) {
+            const jl::Frame& fr = *frames[size_t(i)];
+            QCOMPARE(fr.time, grid.at(i));
+            for (const jl::Event& e : fr.events) {
+                QVERIFY2(e.time <= fr.time + 1e-12 && (i == 0 || e.time > grid.at(i - 1) + 1e-12),
+                         qPrintable(QString("event at %1 s in the frame at %2 s").arg(e.time).arg(fr.time)));
+                ++events;
+            }
+        }
+        QCOMPARE(events, s->events->size());
+        // Evicted and simulated again from a keyframe: the same frame.
+        sim.setMemoryBudget(1);
+        QVERIFY(goTo(299));
+        QVERIFY(goTo(137));
+        QCOMPARE(sim.status()->frame->time, grid.at(137));
+        QVERIFY(samePoses(*sim.status()->frame, *frames[137]));
+    }
+
     void scrubbingBackShowsThePosesRecordedThen() {
         const jl::Scene scene = jl::test::swingingLadder();
         Fixture f(scene);
@@ -187,6 +258,41 @@ private slots:
         // The drag is part of the document now (saved with it, undoable).
         QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus&) { return f.window.document()->scene().drags == s->recorded->drags; }));
         QVERIFY(f.window.document()->isModified());
+    }
+
+    // A push at an earlier frame rewrites the run from that frame: the block
+    // grabbed is the one shown there, and the recorded scene replays it.
+    void aDragAtAnEarlierFrameRewritesTheRunFromThere() {
+        const jl::Scene scene = jl::test::swingingLadder();
+        Fixture f(scene);
+        LadderView* view = f.window.ladderView();
+        QVERIFY(QTest::qWaitForWindowExposed(view));
+        QVERIFY(f.goTo(45));
+        QVERIFY(f.goTo(12));
+        const jl::Vec2 centre = f.sim->status()->frame->poses[3].position;
+        const QPoint at = view->pixelOf(centre).toPoint();
+        // The window shows frame 12 once it has taken the status the worker published.
+        QTRY_VERIFY(view->blockAt(*view->planePoint(at)));
+        QTest::mousePress(view, Qt::LeftButton, {}, at);
+        const bool pressed = jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.dragging && s.frameCount == 13 && s.frameIndex == 12; });
+        const auto p = f.sim->status();
+        QVERIFY2(pressed, qPrintable(QString("dragging %1, frame %2 of %3, %4").arg(p->dragging).arg(p->frameIndex).arg(p->frameCount).arg(QString::fromStdString(p->failure))));
+        QCOMPARE(f.sim->status()->recorded->drags.size(), size_t(0));  // recorded when it ends
+        QVERIFY(f.goTo(20));
+        QTest::mouseMove(view, at + QPoint(60, -30));
+        QVERIFY(f.goTo(30));
+        QTest::mouseRelease(view, Qt::LeftButton, {}, at + QPoint(60, -30));
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return !s.dragging; }));
+        QVERIFY(f.goTo(60));
+        const auto s = f.sim->status();
+        QCOMPARE(int(s->recorded->drags.size()), 1);
+        QCOMPARE(s->recorded->drags[0].block, 3);
+        // From the end of the step that passes frame 12 (a step is 1 ms here).
+        const double frame12 = jl::FrameGrid{0, s->interval}.at(12);
+        QVERIFY(s->recorded->drags[0].samples.front().t >= frame12);
+        QVERIFY(s->recorded->drags[0].samples.front().t < frame12 + 0.001 + 1e-12);
+        QCOMPARE(engineHashAt(*s->recorded, 60), s->headHash);
+        QVERIFY(samePoses(*s->frame, engineFrameAt(*s->recorded, 60)));
     }
 
     // The scene's duration is the lesson's length: playing stops there (the

@@ -11,9 +11,11 @@
 
 namespace jl {
 
-// Frame i is the state after advancing to time i * interval (frame 0 is the
-// built scene). Frames may be evicted to stay within the budget; keyframes
-// are kept, so any evicted frame can be re-simulated from the one before it.
+// Frame i is the state at exactly time i * interval (frame 0 is the built
+// scene). Frames may be evicted to stay within the budget; keyframes are
+// kept, so any evicted frame can be re-simulated from one before it. A
+// keyframe is the simulation's state at the end of the step that gave its
+// frame, so it may lie a little after that frame's time.
 class FrameHistory {
 public:
     using FramePtr = std::shared_ptr<const Frame>;
