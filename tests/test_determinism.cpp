@@ -76,13 +76,16 @@ private slots:
             for (int i = 0; i < steps; ++i) {
                 for (Run* r : {&plain, &reusing}) {
                     double& t = r == &plain ? tPlain : tReusing;
-                    const Powers* atStart = r == &reusing ? r->kept.recall(r->w, t) : nullptr;
+                    const Powers* atStart = r == &reusing ? r->kept.recall(r->w, r->d, t) : nullptr;
                     QCOMPARE(atStart != nullptr, r == &reusing && i > 0);
                     const MotionStep m = advanceAndProject(r->w, r->d, r->s, t, h, r->ledger, 1e-10, false, atStart);
                     QVERIFY(m.ok());
                     t += m.step.taken;
                     // The end state evaluated, as the simulation does for its event functions.
-                    r->kept.keep(r->w, t, r->d.evaluate(r->w, t));
+                    {
+                        const Powers p = r->d.evaluate(r->w, t);
+                        r->kept.keep(r->w, r->d, t, p);
+                    }
                 }
             }
             QCOMPARE(tReusing, tPlain);
@@ -104,38 +107,48 @@ private slots:
         Dynamics d;
         KeptEvaluation kept;
         const double t = sim->time();
-        kept.keep(w, t, d.evaluate(w, t));
-        const Eigen::VectorXd a = w.a;
+        {
+            const Powers p = d.evaluate(w, t);
+            kept.keep(w, d, t, p);
+        }
+        const Eigen::VectorXd a = w.a, lambda = d.pinForces();
         w.a.setZero();
-        QVERIFY(kept.recall(w, t) != nullptr);
-        QVERIFY(w.a == a);  // put back
-        QVERIFY(kept.recall(w, std::nextafter(t, 1.0)) == nullptr);
+        {
+            World other = w;  // the dynamics last evaluated elsewhere
+            other.v.array() += 0.5;
+            (void)d.evaluate(other, t);
+            QVERIFY(d.pinForces() != lambda);
+        }
+        QVERIFY(kept.recall(w, d, t) != nullptr);
+        QVERIFY(w.a == a);  // put back, with the pin forces
+        QVERIFY(d.pinForces() == lambda);
+        QVERIFY(kept.recall(w, d, std::nextafter(t, 1.0)) == nullptr);
         {
             World moved = w;
             moved.q[4] = std::nextafter(moved.q[4], 1.0);
-            QVERIFY(kept.recall(moved, t) == nullptr);
+            QVERIFY(kept.recall(moved, d, t) == nullptr);
         }
         {
             World pushed = w;
             pushed.v[5] += 1e-12;
-            QVERIFY(kept.recall(pushed, t) == nullptr);
+            QVERIFY(kept.recall(pushed, d, t) == nullptr);
         }
         {
             World heavier = w;
             heavier.gravity.y() -= 0.01;
-            QVERIFY(kept.recall(heavier, t) == nullptr);
+            QVERIFY(kept.recall(heavier, d, t) == nullptr);
         }
         {
             World dragged = w;
             (void)dragged.drags();  // a reference to change them through: the world may have changed
-            QVERIFY(kept.recall(dragged, t) == nullptr);
+            QVERIFY(kept.recall(dragged, d, t) == nullptr);
         }
         {
             World copy = w;  // a copy is the same world
-            QVERIFY(kept.recall(copy, t) != nullptr);
+            QVERIFY(kept.recall(copy, d, t) != nullptr);
         }
         kept.forget();
-        QVERIFY(kept.recall(w, t) == nullptr);
+        QVERIFY(kept.recall(w, d, t) == nullptr);
     }
 
     // A drag during a run is recorded into the scene; running that scene

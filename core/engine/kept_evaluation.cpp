@@ -4,7 +4,7 @@
 
 namespace jl {
 
-void KeptEvaluation::keep(const World& w, double t, const Powers& powers) {
+void KeptEvaluation::keep(const World& w, const Dynamics& d, double t, const Powers& powers) {
     kept_ = true;
     t_ = t;
     revision_ = w.revision();
@@ -12,16 +12,19 @@ void KeptEvaluation::keep(const World& w, double t, const Powers& powers) {
     q_ = w.q;
     v_ = w.v;
     a_ = w.a;
+    forces_.force = d.appliedForces();
+    forces_.lambda = d.pinForces();
     powers_ = powers;
 }
 
-const Powers* KeptEvaluation::recall(World& w, double t) const {
+const Powers* KeptEvaluation::recall(World& w, Dynamics& d, double t) const {
     // Exact comparisons on purpose: only the very same inputs give the very
     // same evaluation.
     if (!kept_ || t != t_ || w.revision() != revision_ || w.gravity != gravity_ || w.q.size() != q_.size() ||
         w.v.size() != v_.size() || w.q != q_ || w.v != v_)
         return nullptr;
     w.a = a_;
+    d.restoreLast(forces_);
     return &powers_;
 }
 

@@ -86,11 +86,15 @@ void Simulation::emitGridFrames(double taken) {
     const Dynamics::Last dynamicsAtEnd = dynamics_.last();
     const Eigen::VectorXd q1 = world_.q, v1 = world_.v, a1saved = world_.a;
     const Ledger ledgerAtEnd = ledger_;
-    const Powers p1 = dynamics_.evaluate(world_, t1);
+    // Both ends as the step evaluated them, when it did (not at a located
+    // instant, which only the interpolant gave).
+    const Powers* kept = keptEnd_.recall(world_, dynamics_, t1);
+    const Powers p1 = kept ? *kept : dynamics_.evaluate(world_, t1);
     interpolant_.setEnd(world_.q, world_.v, world_.a);
     world_.q = stepStartQ_;
     world_.v = stepStartV_;
-    const Powers p0 = dynamics_.evaluate(world_, t0);
+    kept = keptStart_.recall(world_, dynamics_, t0);
+    const Powers p0 = kept ? *kept : dynamics_.evaluate(world_, t0);
     interpolant_.setStart(taken, world_.q, world_.v, world_.a);
     for (; grid_.at(k) < t1 - eps; k += 1) {
         const double t = grid_.at(k);
@@ -120,6 +124,11 @@ void Simulation::emitGridFrames(double taken) {
 // the smallest of the contact-force ones.
 double Simulation::smallestEventFunction(double t, double* forces) {
     lastPowers_ = dynamics_.evaluate(world_, t);
+    return eventFunctionsNow(forces);
+}
+
+// The same in the state the world and the dynamics hold, evaluated already.
+double Simulation::eventFunctionsNow(double* forces) {
     const double f = ladder_->eventFunctions(world_, dynamics_, eventValues_);
     if (forces) *forces = f;
     return eventValues_.empty() ? 1.0 : *std::min_element(eventValues_.begin(), eventValues_.end());
@@ -154,8 +163,14 @@ bool Simulation::locateEvent(double& taken, double fEnd, double forcesAtEnd) {
     const Ledger ledgerAtEnd = ledger_;
     interpolant_.setEnd(world_.q, world_.v, world_.a);
     restoreStepStart();
-    double forcesAtStart = 0;
-    const double fStart = smallestEventFunction(t_, &forcesAtStart);
+    // The start as the step found it (the last step's end), or evaluated.
+    double forcesAtStart = 0, fStart = 0;
+    if (const Powers* kept = keptStart_.recall(world_, dynamics_, t_)) {
+        lastPowers_ = *kept;
+        fStart = eventFunctionsNow(&forcesAtStart);
+    } else {
+        fStart = smallestEventFunction(t_, &forcesAtStart);
+    }
     const Powers p0 = lastPowers_;
     interpolant_.setStart(taken, stepStartQ_, stepStartV_, world_.a);
     const bool anglesOnly = forcesAtStart >= 0 && forcesAtEnd >= 0;
@@ -318,7 +333,10 @@ bool Simulation::takeStep(double limit) {
     const double next0 = stepper_.nextStep();
     // The last step's end, evaluated for its event functions, is this
     // step's first stage when nothing has changed since.
-    const Powers* atStart = keptEnd_.recall(world_, t_);
+    std::swap(keptStart_, keptEnd_);
+    keptEnd_.forget();
+    const Powers* atStart = keptStart_.recall(world_, dynamics_, t_);
+    if (!atStart) keptStart_.forget();
     MotionStep m = advanceAndProject(world_, dynamics_, stepper_, t_, h, ledger_, solver.projectionTolerance, false, atStart);
     if (!m.ok()) {
         if (retryWithSmallerStep()) return true;
@@ -339,7 +357,7 @@ bool Simulation::takeStep(double limit) {
     if (ladder_) {
         double forces = 0;
         const double fEnd = smallestEventFunction(t_ + taken, &forces);
-        keptEnd_.keep(world_, t_ + taken, lastPowers_);
+        keptEnd_.keep(world_, dynamics_, t_ + taken, lastPowers_);
         if (fEnd < 0) {
             if (solver.events == EventPolicy::Located && taken > solver.eventTolerance) {
                 if (!locateEvent(taken, fEnd, forces)) return false;

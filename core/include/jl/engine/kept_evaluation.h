@@ -18,12 +18,14 @@ class World;
 
 class KeptEvaluation {
 public:
-    // Keeps what Dynamics::evaluate(w, t) has just given: w.a and `powers`.
-    void keep(const World& w, double t, const Powers& powers);
+    // Keeps what d.evaluate(w, t) has just given: w.a, `powers`, and the
+    // applied and pin forces d holds.
+    void keep(const World& w, const Dynamics& d, double t, const Powers& powers);
     // If w holds the kept state at time t with nothing else changed (same
-    // World::revision, gravity, q and v, bit for bit), puts the kept
-    // accelerations back into w.a and returns the powers; otherwise null.
-    const Powers* recall(World& w, double t) const;
+    // World::revision, gravity, q and v, bit for bit), leaves w and d as
+    // that evaluation left them (w.a, d's forces) and returns the powers;
+    // otherwise null, with w and d untouched.
+    const Powers* recall(World& w, Dynamics& d, double t) const;
     void forget() { kept_ = false; }
 
 private:
@@ -32,6 +34,7 @@ private:
     std::uint64_t revision_ = 0;
     Vec2 gravity_ = Vec2::Zero();
     Eigen::VectorXd q_, v_, a_;
+    Dynamics::Last forces_;
     Powers powers_;
 };
 

@@ -122,6 +122,7 @@ private:
     bool takeStep(double limit);
     bool locateEvent(double& taken, double fEnd, double forcesAtEnd);
     double smallestEventFunction(double t, double* forces = nullptr);
+    double eventFunctionsNow(double* forces);
     void restoreStepStart();
     void emitGridFrames(double taken);
     void record(const Event& e);
@@ -140,7 +141,10 @@ private:
     Scene scene_;
     World world_;
     Dynamics dynamics_;
-    KeptEvaluation keptEnd_;  // the dynamics at the end of the last step
+    // The dynamics evaluated at a step's ends: the end of one step is the
+    // start of the next, and locating an event or reading frames off a step
+    // needs both ends again.
+    KeptEvaluation keptStart_, keptEnd_;
     Stepper stepper_;
     Ledger ledger_;
     std::optional<Ladder> ladder_;
