@@ -291,7 +291,7 @@ std::vector<Event> Ladder::resolve(World& w, Dynamics& d, double t, double* loss
     std::vector<int> released;  // in this pass: free even at a limit
     bool unsettled = true;
     for (int guard = 0; guard < 8 * blockCount() + 8; ++guard) {
-        d.evaluate(w, t);
+        settled_ = d.evaluate(w, t);
         updateAngles(w);
         std::vector<int> hits;
         for (int j = 1; j < blockCount(); ++j)
@@ -315,7 +315,7 @@ std::vector<Event> Ladder::resolve(World& w, Dynamics& d, double t, double* loss
     // would be a whole-ladder pass for nothing.
     if (unsettled) {
         capped(t, "the contacts (" + std::to_string(events.size()) + " events at one instant)");
-        d.evaluate(w, t);
+        settled_ = d.evaluate(w, t);
         updateAngles(w);
     }
     for (Event& e : events) e.text = words(e.kind, e.hinge);

@@ -386,6 +386,8 @@ bool Simulation::takeStep(double limit) {
                 fail("an impact produced a non-finite state");
                 return false;
             }
+            // The settled state is the next step's start, evaluated already.
+            keptEnd_.keep(world_, dynamics_, t_ + taken, ladder_->settledPowers());
         } else {
             emitGridFrames(taken);
         }

@@ -102,6 +102,9 @@ public:
     // Applies whatever events the state calls for (limits crossed, contacts
     // pulling), impacts included, until none remains. Returns what happened.
     std::vector<Event> resolve(World& w, Dynamics& d, double t, double* impactLoss, double* heldWork);
+    // resolve ends on an evaluation of the state it leaves (w.a and d's
+    // forces are that evaluation's): these are its powers.
+    const Powers& settledPowers() const { return settled_; }
 
     // An impulse P at a point (block frame) of block i that the hand does not
     // hold itself, taken up like an impact: with every constraint active; a
@@ -196,6 +199,7 @@ private:
     };
     std::vector<std::array<FoldLinear, 4>> foldLinear_;
     std::string error_;
+    Powers settled_;  // of resolve's last evaluation
 };
 
 }  // namespace jl
