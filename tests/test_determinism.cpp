@@ -3,6 +3,7 @@
 // frame rate, after a snapshot and restore, and when a recorded drag replays.
 #include "jl/engine/kept_evaluation.h"
 #include "jl/engine/motion.h"
+#include "jl/sim/recording.h"
 #include "tests/scene_run.h"
 
 #include <cmath>
@@ -149,6 +150,28 @@ private slots:
         }
         kept.forget();
         QVERIFY(kept.recall(w, d, t) == nullptr);
+    }
+
+    // A recording (jladder run, the exports) writes numbers only: its frames
+    // leave the ribbons out, and the simulation draws them again afterwards.
+    void aRecordingsFramesLeaveTheRibbonsOut() {
+        auto sim = simulateFile(kClassic);
+        QVERIFY(sim);
+        QVERIFY(!sim->frame().ribbons.empty());
+        struct Count : RecordTarget {
+            int frames = 0, withRibbons = 0;
+            bool frame(const Frame& f) override {
+                ++frames;
+                withRibbons += !f.ribbons.empty();
+                return true;
+            }
+            bool event(const Event&) override { return true; }
+        } count;
+        const Recording r = record(*sim, 0.5, FrameGrid{0, 0.05}, &count);
+        QVERIFY(r.complete());
+        QCOMPARE(count.frames, 11);
+        QCOMPARE(count.withRibbons, 0);
+        QVERIFY(!sim->frame().ribbons.empty());
     }
 
     // A drag during a run is recorded into the scene; running that scene

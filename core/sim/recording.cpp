@@ -17,6 +17,9 @@ void account(Recording& r, const Frame& f) {
 
 Recording record(Simulation& sim, double until, const FrameGrid& grid, RecordTarget* target, const std::function<int()>& interruption) {
     Recording r;
+    // Numbers only: no ribbons to draw in these frames.
+    const bool ribbons = sim.ribbonsInFrames();
+    sim.setRibbonsInFrames(false);
     const auto handOn = [&](const std::vector<Event>& events) {
         for (const Event& e : events) {
             ++r.events;
@@ -54,6 +57,7 @@ Recording record(Simulation& sim, double until, const FrameGrid& grid, RecordTar
     }
     sim.setFrameGrid(before);
     const Frame last = sim.frame();
+    sim.setRibbonsInFrames(ribbons);
     r.failure = last.failure;
     r.time = sim.time();
     r.steps = last.solver.steps;

@@ -445,7 +445,7 @@ Frame Simulation::frame() {
     }
     if (ladder_) {
         f.hinges = ladder_->hingeFrames(world_);
-        f.ribbons = ladder_->ribbons(world_);
+        if (ribbonsInFrames_) f.ribbons = ladder_->ribbons(world_);
     }
     const Energy e = energy(world_);
     f.energy.kinetic = e.kinetic;

@@ -44,6 +44,10 @@ public:
 
     // The current state as a frame; events since the previous call move into it.
     Frame frame();
+    // Whether frames carry the ribbons (two per hinge, to draw): a recording
+    // that only writes numbers leaves them out (they were 7 % of a run).
+    void setRibbonsInFrames(bool on) { ribbonsInFrames_ = on; }
+    bool ribbonsInFrames() const { return ribbonsInFrames_; }
     // Just the events since the previous call (a frame costs O(N) trig: a
     // recorder that needs every event but not every frame takes these).
     std::vector<Event> takeEvents() { return std::exchange(pending_, {}); }
@@ -145,6 +149,7 @@ private:
     // start of the next, and locating an event or reading frames off a step
     // needs both ends again.
     KeptEvaluation keptStart_, keptEnd_;
+    bool ribbonsInFrames_ = true;
     Stepper stepper_;
     Ledger ledger_;
     std::optional<Ladder> ladder_;
