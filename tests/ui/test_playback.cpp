@@ -293,6 +293,26 @@ private slots:
         QVERIFY(s->recorded->drags[0].samples.front().t < frame12 + 0.001 + 1e-12);
         QCOMPARE(engineHashAt(*s->recorded, 60), s->headHash);
         QVERIFY(samePoses(*s->frame, engineFrameAt(*s->recorded, 60)));
+
+        // Back inside that drag: a second push there cuts the first one short
+        // (the run is rebuilt from the scene with the drag cut) and replays too.
+        QVERIFY(f.goTo(25));
+        const jl::Vec2 second = f.sim->status()->frame->poses[2].position;
+        const QPoint at2 = view->pixelOf(second).toPoint();
+        QTRY_VERIFY(view->blockAt(*view->planePoint(at2)));
+        QTest::mousePress(view, Qt::LeftButton, {}, at2);
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& st) { return st.dragging && st.frameCount == 26; }));
+        QVERIFY(f.goTo(40));
+        QTest::mouseRelease(view, Qt::LeftButton, {}, at2 + QPoint(-50, 0));
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& st) { return !st.dragging; }));
+        QVERIFY(f.goTo(70));
+        const auto again = f.sim->status();
+        QCOMPARE(int(again->recorded->drags.size()), 2);
+        const double frame25 = jl::FrameGrid{0, again->interval}.at(25);
+        QCOMPARE(again->recorded->drags[0].end, frame25);
+        QCOMPARE(again->recorded->drags[1].block, 2);
+        QCOMPARE(engineHashAt(*again->recorded, 70), again->headHash);
+        QVERIFY(samePoses(*again->frame, engineFrameAt(*again->recorded, 70)));
     }
 
     // The scene's duration is the lesson's length: playing stops there (the
