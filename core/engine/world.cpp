@@ -1,10 +1,9 @@
 #include "jl/engine/world.h"
 
-#include <atomic>
-
 #include "jl/engine/projection.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <map>
 #include <numbers>

@@ -5,12 +5,12 @@
 #include "jl/engine/projection.h"
 
 #include <algorithm>
-#include <utility>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <limits>
 #include <map>
+#include <utility>
 
 namespace jl {
 

@@ -13,6 +13,8 @@
 #include <QTimer>
 #include <QtTest>
 
+#include <optional>
+
 using namespace jl::ui;
 
 namespace {
@@ -63,6 +65,18 @@ struct Fixture {
         const auto before = jl::test::loadsSoFar(sim);
         window.document()->reset(scene, QString());
         if (!jl::test::loadedAfter(sim, before)) qFatal("the scene was not loaded");
+    }
+    // Where block `block` of the frame on screen is drawn, once the view
+    // shows that frame (it takes the worker's status a moment later):
+    // nothing if it never does.
+    std::optional<QPoint> blockOnScreen(int block) {
+        LadderView* view = window.ladderView();
+        const QPoint at = view->pixelOf(sim->status()->frame->poses[size_t(block)].position).toPoint();
+        const bool shown = QTest::qWaitFor([&] {
+            const auto p = view->planePoint(at);
+            return p && view->blockAt(*p);
+        });
+        return shown ? std::optional<QPoint>(at) : std::nullopt;
     }
     // Simulates (paused) up to frame `index` and waits until it is on screen.
     bool goTo(int index) {
@@ -218,8 +232,9 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(view));
         QVERIFY(f.goTo(12));
         const jl::Vec2 centre = f.sim->status()->frame->poses[3].position;
-        const QPoint at = view->pixelOf(centre).toPoint();
-        QVERIFY(view->planePoint(at).has_value());
+        const auto on = f.blockOnScreen(3);
+        QVERIFY(on);
+        const QPoint at = *on;
         QVERIFY(((*view->planePoint(at)) - centre).norm() < 0.003);  // picking ray hits where the block is
 
         QTest::mousePress(view, Qt::LeftButton, {}, at);
@@ -269,10 +284,9 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(view));
         QVERIFY(f.goTo(45));
         QVERIFY(f.goTo(12));
-        const jl::Vec2 centre = f.sim->status()->frame->poses[3].position;
-        const QPoint at = view->pixelOf(centre).toPoint();
-        // The window shows frame 12 once it has taken the status the worker published.
-        QTRY_VERIFY(view->blockAt(*view->planePoint(at)));
+        const auto on = f.blockOnScreen(3);
+        QVERIFY(on);
+        const QPoint at = *on;
         QTest::mousePress(view, Qt::LeftButton, {}, at);
         const bool pressed = jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.dragging && s.frameCount == 13 && s.frameIndex == 12; });
         const auto p = f.sim->status();
@@ -297,9 +311,9 @@ private slots:
         // Back inside that drag: a second push there cuts the first one short
         // (the run is rebuilt from the scene with the drag cut) and replays too.
         QVERIFY(f.goTo(25));
-        const jl::Vec2 second = f.sim->status()->frame->poses[2].position;
-        const QPoint at2 = view->pixelOf(second).toPoint();
-        QTRY_VERIFY(view->blockAt(*view->planePoint(at2)));
+        const auto on2 = f.blockOnScreen(2);
+        QVERIFY(on2);
+        const QPoint at2 = *on2;
         QTest::mousePress(view, Qt::LeftButton, {}, at2);
         QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& st) { return st.dragging && st.frameCount == 26; }));
         QVERIFY(f.goTo(40));

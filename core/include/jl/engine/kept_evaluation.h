@@ -2,7 +2,8 @@
 // by evaluating its end state (the ladder's event functions need the pin
 // forces there), and the next step's first stage is that same state at the
 // same time. Evaluating it again would give the same numbers bit for bit
-// and cost a whole-ladder pass: a sixth of an RK4 step of a ladder.
+// and cost a whole-ladder pass: one of the five evaluations an RK4 step of
+// a ladder made.
 #pragma once
 
 #include "jl/base/geometry.h"
