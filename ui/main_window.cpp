@@ -365,7 +365,8 @@ void MainWindow::createStatusBar() {
     warningLabel_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     statusBar()->addWidget(warningLabel_, 1);
     timeLabel_ = label("time", tr("Simulated time of the frame on screen, and how far the run has been recorded."), 150);
-    rateLabel_ = label("rate", tr("Real-time factor (simulated seconds per second) and solver steps per second."), 190);
+    rateLabel_ = label("rate", tr("Real-time factor (simulated seconds per second) and solver steps per second; "
+                                  "after an edit, the moment on screen the run is going back to."), 190);
     energyLabel_ = label("energy", tr("Kinetic plus potential energy; in brackets, what the energy books fail to explain."), 190);
     residualLabel_ = label("residual", tr("Largest gap left in a hinge pin after the last step."), 130);
     stepLabel_ = label("step", tr("The integrator's step: the scene's own, or (auto) the engine's choice: at most 1 ms, "
@@ -420,15 +421,26 @@ void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {
     }
     const double t = s->frame ? s->frame->time : 0;
     timeLabel_->setText(tr("t = %1 s  (of %2 s)").arg(t, 0, 'f', 3).arg(s->headTime, 0, 'f', 2));
-    rateLabel_->setText(s->playing ? tr("%1× real time · %2 steps/s").arg(s->realTimeFactor, 0, 'f', 2).arg(s->stepsPerSecond, 0, 'f', 0)
-                                   : tr("paused at frame %1 of %2").arg(s->frameIndex).arg(s->frameCount - 1));
+    // A long ladder can take a while to run again up to the moment an edit
+    // was made at: say so, rather than "paused" while the frames move on.
+    if (s->seekingTo >= 0)
+        rateLabel_->setText(tr("running to t = %1 s").arg(s->seekingTo, 0, 'f', 3));
+    else if (s->playing)
+        rateLabel_->setText(tr("%1× real time · %2 steps/s").arg(s->realTimeFactor, 0, 'f', 2).arg(s->stepsPerSecond, 0, 'f', 0));
+    else
+        rateLabel_->setText(tr("paused at frame %1 of %2").arg(s->frameIndex).arg(s->frameCount - 1));
     if (s->frame) {
         const jl::EnergyFrame& e = s->frame->energy;
         energyLabel_->setText(tr("E = %1  (books %2)").arg(energyText(e.total()), energyText(e.balance())));
         residualLabel_->setText(tr("gap %1 m").arg(s->frame->solver.residual, 0, 'e', 1));
         const jl::SolverFrame& solver = s->frame->solver;
         const QString step = QString::number(solver.lastStep * 1e3, 'g', 3);
-        stepLabel_->setText(solver.automaticStep ? tr("step %1 ms (auto)").arg(step) : tr("step %1 ms").arg(step));
+        // Before the first step there is no step to show (the engine's own
+        // is chosen at each step, from the forces of that moment).
+        if (solver.steps == 0)
+            stepLabel_->setText(tr("no step yet"));
+        else
+            stepLabel_->setText(solver.automaticStep ? tr("step %1 ms (auto)").arg(step) : tr("step %1 ms").arg(step));
     }
     if (!s->failure.empty()) {
         const QString failure = QString::fromStdString(s->failure);

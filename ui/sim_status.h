@@ -21,6 +21,9 @@ struct SimStatus {
     double interval = 1.0 / 60.0;  // s between frames
     double headTime = 0;     // s, simulated so far
     bool playing = false;
+    // A seek (or an edit run again up to the moment on screen) still on its
+    // way: the time it is simulating to, s; negative when none is.
+    double seekingTo = -1;
     bool dragging = false;
     double speed = 1.0;
     double realTimeFactor = 0;  // simulated seconds per wall second, lately

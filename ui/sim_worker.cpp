@@ -314,16 +314,22 @@ bool SimWorker::simulateNextFrame() {
 // command (a pause, another seek) end it where it got to.
 bool SimWorker::simulateTo(int index) {
     auto lastShown = Clock::now();
-    while (history_.head() < index) {
-        if (!simulateNextFrame()) return false;
-        if (Clock::now() - lastShown > kWorkSlice * 4) {
-            publish();
-            lastShown = Clock::now();
-            std::lock_guard lock(queueMutex_);
-            if (!queue_.empty()) return false;
+    seekingTo_ = index * history_.interval();
+    const bool reached = [&] {
+        while (history_.head() < index) {
+            if (!simulateNextFrame()) return false;
+            if (Clock::now() - lastShown > kWorkSlice * 4) {
+                publish();
+                lastShown = Clock::now();
+                std::lock_guard lock(queueMutex_);
+                if (!queue_.empty()) return false;
+            }
         }
-    }
-    return true;
+        return true;
+    }();
+    seekingTo_ = -1;
+    dirty_ = true;
+    return reached;
 }
 
 void SimWorker::showFrame(int index) {
@@ -472,6 +478,7 @@ void SimWorker::publish() {
     const auto head = history_.frame(history_.head());
     s->headTime = head ? head->time : history_.head() * history_.interval();
     s->playing = playing_;
+    s->seekingTo = seekingTo_;
     s->dragging = sim_ && sim_->dragging();
     s->speed = speed_;
     s->realTimeFactor = realTimeFactor_;

@@ -100,6 +100,7 @@ private:
     FrameHistory history_;
     int cursor_ = 0;
     bool playing_ = false;
+    double seekingTo_ = -1;  // s, while simulateTo is on its way there
     // Playing stops once at the scene's duration; Play from there goes on past it.
     double duration_ = 0;  // s, 0: none
     bool stoppedAtEnd_ = false;

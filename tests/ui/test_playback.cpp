@@ -159,6 +159,30 @@ private slots:
         QVERIFY(!samePoses(*f.sim->status()->frame, engineFrameAt(jl::test::swingingLadder(), 30)));
     }
 
+    // On a long ladder the run up to the moment on screen takes a while: the
+    // status bar says where it is running to instead of "paused" while the
+    // frames move on, and says "paused" again once it is there. Before the
+    // first step there is no step to show.
+    void anEditOnALongLadderSaysWhereItIsRunningTo() {
+        jl::Scene scene;
+        scene.ladder = jl::LadderSpec{};
+        scene.ladder->blocks = 1000;
+        Fixture f(scene);
+        auto* rate = f.window.findChild<QLabel*>("rate");
+        auto* step = f.window.findChild<QLabel*>("step");
+        QTRY_COMPARE(step->text(), QString("no step yet"));
+        QVERIFY(f.goTo(60));
+        QTRY_VERIFY(step->text().endsWith("ms (auto)"));
+        const auto before = jl::test::loadsSoFar(f.sim);
+        f.window.findChild<QDoubleSpinBox*>("thickness")->setValue(4.0);  // mm
+        QVERIFY(jl::test::waitForStatus(f.sim, [before](const SimStatus& s) { return s.loadSerial > before && s.seekingTo > 0; }));
+        QTRY_COMPARE(rate->text(), QString("running to t = 1.000 s"));
+        QVERIFY(jl::test::waitForStatus(f.sim, [before](const SimStatus& s) {
+            return s.loadSerial > before && s.frameIndex == 60 && s.seekingTo < 0;
+        }));
+        QTRY_COMPARE(rate->text(), QString("paused at frame 60 of 60"));
+    }
+
     // Frame i is the state at exactly i * interval, read off the step that
     // passes it, even where one step passes several frame times; each event
     // comes with the first frame not earlier than it; and a frame simulated
