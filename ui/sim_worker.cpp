@@ -35,6 +35,11 @@ void SimWorker::post(SimCommand c) {
     wake_.notify_one();
 }
 
+bool SimWorker::commandWaiting() const {
+    std::lock_guard lock(queueMutex_);
+    return !queue_.empty();
+}
+
 std::shared_ptr<const SimStatus> SimWorker::status() const {
     std::lock_guard lock(statusMutex_);
     return status_;
@@ -62,7 +67,7 @@ void SimWorker::run() {
         {
             std::unique_lock lock(queueMutex_);
             if (queue_.empty()) {
-                const double wait = playing_ ? nextFrameWaitSeconds() : 0.1;
+                const double wait = playing_ ? nextFrameWaitSeconds() : framesWanted_ > 0 ? 0.0 : 0.1;
                 if (wait > 0)
                     wake_.wait_for(lock, std::chrono::duration<double>(wait), [this] { return !queue_.empty(); });
             }
@@ -76,6 +81,8 @@ void SimWorker::run() {
                 if (quit_) return;
             }
             if (playing_) advancePaced();
+            else if (framesWanted_ > 0 && simulateNextFrame()) --framesWanted_;
+            if (!failure_.empty()) framesWanted_ = 0;
         } catch (const std::exception& e) {
             fail(std::string("internal error: ") + e.what());
         } catch (...) {
@@ -90,6 +97,11 @@ void SimWorker::apply(const SimCommand& c) {
     std::visit(
         [this](const auto& v) {
             using T = std::decay_t<decltype(v)>;
+            // Frames asked for one by one: a new way to go cancels those not yet made.
+            if constexpr (!std::is_same_v<T, cmd::StepForward> && !std::is_same_v<T, cmd::Speed> &&
+                          !std::is_same_v<T, cmd::Budget> && !std::is_same_v<T, cmd::DragMove> &&
+                          !std::is_same_v<T, cmd::DragEnd> && !std::is_same_v<T, cmd::DragBegin>)
+                framesWanted_ = 0;
             if constexpr (std::is_same_v<T, cmd::Load> || std::is_same_v<T, cmd::Seek> ||
                           std::is_same_v<T, cmd::DragBegin>) {
                 apply(v);
@@ -99,8 +111,10 @@ void SimWorker::apply(const SimCommand& c) {
                 playing_ = false;
             } else if constexpr (std::is_same_v<T, cmd::StepForward>) {
                 playing_ = false;
+                // One frame on: shown at once when recorded, else simulated
+                // between commands (see run()).
                 if (cursor_ < history_.head()) showFrame(cursor_ + 1);
-                else simulateNextFrame();
+                else if (sim_ && failure_.empty()) ++framesWanted_;
             } else if constexpr (std::is_same_v<T, cmd::StepBack>) {
                 playing_ = false;
                 if (cursor_ > 0) showFrame(cursor_ - 1);
@@ -141,6 +155,7 @@ void SimWorker::apply(const cmd::Load& c) {
     feedChanged_ = true;
     history_.reset(c.scene.solver.frameInterval, budget_);
     cursor_ = 0;
+    midFrame_ = false;
     shown_.reset();
     recorded_ = std::make_shared<const jl::Scene>(c.scene);
     duration_ = c.scene.duration;
@@ -177,7 +192,8 @@ void SimWorker::apply(const cmd::DragBegin& c) {
     if (!sim_ || !failure_.empty()) return;
     // Pushing a block in the past rewrites what follows: simulate on from
     // the frame on screen (the view found a block there, in that frame).
-    if (cursor_ < history_.head()) {
+    // So does pushing it while the next frame was half done.
+    if (cursor_ < history_.head() || midFrame_) {
         discardFuture();
         if (!failure_.empty()) return;
     }
@@ -233,9 +249,11 @@ void SimWorker::advancePaced() {
 // long stretch of simulation. Every frame it gives on the way (a long step
 // can pass more than one frame time) goes to `take` in order, at exactly its
 // grid time, with the events since the frame before it. False on a failure
-// (the simulation keeps its last good state) or when aborted.
+// (the simulation keeps its last good state) or when aborted; false too,
+// with no failure, when `interruptible` and a command has come in (after one
+// step at least, so that a stream of commands still lets the run advance).
 bool SimWorker::framesThrough(jl::Simulation& sim, int index, std::vector<jl::Event>& carried,
-                              const std::function<void(int, FramePtr)>& take) {
+                              const std::function<void(int, FramePtr)>& take, bool interruptible) {
     const jl::FrameGrid grid = sim.frameGrid();
     const auto hand = [&](jl::Frame f) {
         const double k = grid.nearest(f.time);
@@ -247,8 +265,9 @@ bool SimWorker::framesThrough(jl::Simulation& sim, int index, std::vector<jl::Ev
         take(int(k), std::make_shared<const jl::Frame>(std::move(f)));
         return int(k);
     };
-    for (int last = -1; last < index;) {
+    for (int last = -1, steps = 0; last < index; ++steps) {
         if (abort_ || !sim.failure().empty()) return false;
+        if (interruptible && steps > 0 && commandWaiting()) return false;
         if (!sim.stepOnce()) return false;
         // A step records its events at its ends (a located event ends it;
         // scripted actions start it): each frame inside the step takes those
@@ -287,6 +306,7 @@ bool SimWorker::simulateNextFrame() {
     }
     const int next = history_.count();
     FramePtr first;
+    midFrame_ = true;
     const bool ok = framesThrough(*sim_, next, carried_, [&](int k, FramePtr f) {
         if (k != history_.count()) return;  // the grid gives each frame once, in order
         if (!f->events.empty()) {
@@ -296,13 +316,17 @@ bool SimWorker::simulateNextFrame() {
         history_.append(f, history_.isKeyframeIndex(k) ? sim_->snapshot() : nullptr, k);
         feed(f);
         if (k == next) first = f;
-    });
+    }, true);
     if (abort_) return false;
+    // A command came in: the frame is finished later, from where it got to
+    // (the steps do not depend on when they are taken).
+    if (!ok && sim_->failure().empty()) return false;
     if (!ok || !first) {
         fail(sim_->failure().empty() ? std::string("the solver stopped") : sim_->failure());
         showFrame(history_.head());  // the last good frame
         return false;
     }
+    midFrame_ = false;
     headHash_ = sim_->stateHash();
     cursor_ = next;
     shown_ = std::move(first);
@@ -420,6 +444,7 @@ void SimWorker::discardFuture() {
         return fail(sim_->failure().empty() ? std::string("the run could not be resumed at this frame") : sim_->failure());
     std::erase_if(since, [tc](const jl::Event& e) { return e.time <= tc; });  // already in the log
     carried_ = std::move(since);
+    midFrame_ = false;
     headHash_ = sim_->stateHash();
     recorded_ = std::make_shared<const jl::Scene>(sim_->scene());
 }

@@ -68,7 +68,8 @@ private:
     void advancePaced();
     using FramePtr = std::shared_ptr<const jl::Frame>;
     bool framesThrough(jl::Simulation& sim, int index, std::vector<jl::Event>& carried,
-                       const std::function<void(int, FramePtr)>& take);
+                       const std::function<void(int, FramePtr)>& take, bool interruptible = false);
+    bool commandWaiting() const;
     int restoreKeyframeFor(jl::Simulation& sim, int index);
     jl::FrameGrid frameGrid() const { return {0.0, history_.interval()}; }
     bool simulateNextFrame();
@@ -96,7 +97,13 @@ private:
 
     // The worker's own; touched only on its thread.
     std::size_t budget_;
-    std::unique_ptr<jl::Simulation> sim_;  // always at the head of the history
+    // At the head of the history: at the end of the step that gave the last
+    // frame, or some steps past it when a command came in between two steps
+    // of the next frame (midFrame_; a frame of a 100,000-block ladder takes
+    // seconds, and a pause must not wait for it).
+    std::unique_ptr<jl::Simulation> sim_;
+    bool midFrame_ = false;
+    int framesWanted_ = 0;  // Step forward pressed at the head, frames not yet made
     FrameHistory history_;
     int cursor_ = 0;
     bool playing_ = false;

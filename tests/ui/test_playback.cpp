@@ -183,6 +183,33 @@ private slots:
         QTRY_COMPARE(rate->text(), QString("paused at frame 60 of 60"));
     }
 
+    // A frame of a very long ladder takes seconds: a pause comes between two
+    // steps, not at the end of the frame, and the frame is finished later
+    // from where it stopped, the same as if it had never been interrupted.
+    // Step forward pressed twice at the head makes two frames.
+    void aPauseComesBetweenTwoStepsAndTheFrameIsFinishedLater() {
+        jl::Scene scene;
+        scene.ladder = jl::LadderSpec{};
+        scene.ladder->blocks = 2000;
+        scene.solver.frameInterval = 1.0;  // s: a frame of a thousand steps or so, a second or more
+        Fixture f(scene);
+        f.sim->stepForward();  // simulated flat out (playing would wait until the frame is due)
+        QTest::qWait(200);
+        const auto before = f.sim->status()->serial;
+        f.sim->pause();
+        QVERIFY(jl::test::waitForStatus(f.sim, [before](const SimStatus& s) { return s.serial > before; }));
+        QCOMPARE(f.sim->status()->frameCount, 1);  // paused inside the first frame, not after it
+        QTest::qWait(300);
+        QCOMPARE(f.sim->status()->frameCount, 1);  // and it stays paused there
+        f.sim->stepForward();
+        f.sim->stepForward();
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.frameIndex == 2; }, 60000));
+        const auto s = f.sim->status();
+        QCOMPARE(s->frameCount, 3);
+        QCOMPARE(engineHashAt(scene, 2), s->headHash);
+        QVERIFY(samePoses(*s->frame, engineFrameAt(scene, 2)));
+    }
+
     // Frame i is the state at exactly i * interval, read off the step that
     // passes it, even where one step passes several frame times; each event
     // comes with the first frame not earlier than it; and a frame simulated
