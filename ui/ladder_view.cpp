@@ -248,7 +248,12 @@ void LadderView::mouseReleaseEvent(QMouseEvent* e) {
 }
 
 void LadderView::wheelEvent(QWheelEvent* e) {
-    camera_.zoom(float(e->angleDelta().y()) / 120.0f);
+    const float steps = float(e->angleDelta().y()) / 120.0f;
+    // Toward the point of the ladder's plane under the pointer; walking, or
+    // with the plane out of sight, toward the middle of the view.
+    const auto p = walk_ ? std::nullopt : planePoint(e->position());
+    if (p) camera_.zoomAbout(steps, QVector3D(float(p->x()), float(p->y()), 0));
+    else camera_.zoom(steps);
     updateCamera();
 }
 

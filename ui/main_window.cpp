@@ -66,7 +66,7 @@ MainWindow::MainWindow(Options options) : options_(options) {
     viewContainer_->setObjectName("ladderView");
     viewContainer_->setFocusPolicy(Qt::StrongFocus);
     viewContainer_->setMinimumSize(320, 240);
-    viewContainer_->setToolTip(tr("Left-drag a block to push it; left-drag elsewhere (or right-drag) to orbit; wheel to zoom; middle-drag to pan; Home resets the view; F frames the ladder."));
+    viewContainer_->setToolTip(tr("Left-drag a block to push it; left-drag elsewhere (or right-drag) to orbit; wheel to zoom toward the pointer; middle-drag to pan; Home resets the view; F frames the ladder."));
     timeline_ = new Timeline(this);
     auto* centre = new QWidget(this);
     auto* box = new QVBoxLayout(centre);
@@ -210,7 +210,7 @@ void MainWindow::showControls() {
         "<tr><td><b>Left-drag a block</b></td><td>push it with a spring (a held block: move the hand); recorded, so a replay repeats it</td></tr>"
         "<tr><td><b>Left-drag off the blocks, or right-drag</b></td><td>orbit the camera about the ladder</td></tr>"
         "<tr><td><b>Middle-drag</b></td><td>pan</td></tr>"
-        "<tr><td><b>Wheel</b></td><td>zoom</td></tr>"
+        "<tr><td><b>Wheel</b></td><td>zoom toward the pointer</td></tr>"
         "<tr><td><b>Walk mode</b></td><td>W A S D to move, Q E down and up, drag to look, Esc to stop</td></tr>"
         "<tr><td><b>Timeline, plots</b></td><td>click or drag to see that moment</td></tr>");
     auto* box = findChild<QMessageBox*>("controlsHelp");

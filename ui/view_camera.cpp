@@ -76,6 +76,14 @@ void ViewCamera::lookAround(float dyawDeg, float dpitchDeg) {
 
 void ViewCamera::zoom(float steps) { distance_ = std::clamp(distance_ * std::pow(0.88f, steps), 0.02f, 5000.0f); }
 
+void ViewCamera::zoomAbout(float steps, const QVector3D& point) {
+    const float before = distance_;
+    zoom(steps);
+    // Eye and target scaled about the point by the same factor: the line
+    // from the eye to the point keeps its direction, so its pixel stays.
+    target_ = point + (target_ - point) * (distance_ / before);
+}
+
 void ViewCamera::pan(float dx, float dy) {
     const QVector3D forward = -direction();
     const QVector3D right = QVector3D::crossProduct(forward, {0, 1, 0}).normalized();

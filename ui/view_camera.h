@@ -30,6 +30,10 @@ public:
     void orbit(float dyawDeg, float dpitchDeg);
     void lookAround(float dyawDeg, float dpitchDeg);  // turns about the eye (walk mode)
     void zoom(float steps);                           // wheel notches; > 0 closer
+    // The same, toward (or away from) `point`, which stays where it is on
+    // the screen: the whole view scales about it (the wheel under the
+    // pointer, to look at the top of a long ladder without losing it).
+    void zoomAbout(float steps, const QVector3D& point);
     void pan(float dx, float dy);                     // in fractions of the view's height
     void walk(float forward, float right, float up);  // m
     // Moves target and eye together by `d` (m): following the ladder.

@@ -122,6 +122,29 @@ private slots:
         QVERIFY(std::abs(c.eye().x() - target.x()) + std::abs(c.eye().z() - target.z()) > 0.05f);
     }
 
+    // The wheel zooms toward the point under the pointer: that point stays
+    // on the same pixel while the eye comes closer to it (in a long ladder,
+    // the top stays in view as one zooms in on it).
+    void theWheelZoomsTowardThePointUnderThePointer() {
+        MainWindow w(jl::test::quietWindow());
+        QVERIFY(showScene(w, kClassic));
+        LadderView* view = w.ladderView();
+        const jl::Vec2 top = w.controller()->status()->frame->poses[0].position;
+        const QPointF at = view->pixelOf(top);
+        const QVector3D point(float(top.x()), float(top.y()), 0);
+        const float before = (view->viewCamera().eye() - point).length();
+        QWheelEvent wheel(at, view->mapToGlobal(at), {}, QPoint(0, 120 * 5), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase,
+                          false);
+        QCoreApplication::sendEvent(view, &wheel);
+        const float after = (view->viewCamera().eye() - point).length();
+        QVERIFY2(std::abs(after / before - std::pow(0.88f, 5.0f)) < 1e-4f, qPrintable(QString::number(after / before)));
+        const QPointF still = view->pixelOf(top);
+        QVERIFY2((still - at).manhattanLength() < 0.5, qPrintable(QString("moved from (%1, %2) to (%3, %4)")
+                                                                       .arg(at.x()).arg(at.y()).arg(still.x()).arg(still.y())));
+        const auto p = view->planePoint(at);
+        QVERIFY(p && (*p - top).norm() < 1e-4);
+    }
+
     void walkingMovesTheEyeLevelAndLookingAroundKeepsIt() {
         ViewCamera c;
         jl::ViewSpec v;
@@ -153,7 +176,9 @@ private slots:
 
         // Turned, moved off and zoomed right in: F brings the whole ladder back, seen from there.
         w.ladderView()->orbit(70, 25);
-        QWheelEvent wheel(QPointF(100, 100), QPointF(100, 100), {}, QPoint(0, 120 * 12), Qt::NoButton, Qt::NoModifier,
+        // (the wheel zooms toward the point under the pointer: a block's centre)
+        const QPointF middle = w.ladderView()->pixelOf(w.controller()->status()->frame->poses[size_t(blocks / 2)].position);
+        QWheelEvent wheel(middle, w.ladderView()->mapToGlobal(middle), {}, QPoint(0, 120 * 12), Qt::NoButton, Qt::NoModifier,
                           Qt::NoScrollPhase, false);
         QCoreApplication::sendEvent(w.ladderView(), &wheel);
         QVERIFY(!framingProblem(w).isEmpty());
