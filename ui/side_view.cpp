@@ -255,11 +255,7 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
     const Mapping map(framing_, plotArea(target, ui));
 
     // A grid of round lengths, at least ~80 px apart: the scale at a glance.
-    double cell = 0.01;
-    for (double c : {0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 50.0}) {
-        cell = c;
-        if (c * map.scale >= 80 * ui) break;
-    }
+    const double cell = gridCell(map.scale, 80 * ui);
     p.setPen(QPen(kGrid, 1));
     for (double x = std::floor((framing_.left() - 1) / cell) * cell; x <= framing_.right() + 1; x += cell) {
         const double px = map(jl::Vec2(x, 0)).x();
@@ -406,8 +402,7 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
         p.drawLine(a, b);
         p.drawLine(a, a - QPointF(0, 4 * ui));
         p.drawLine(b, b - QPointF(0, 4 * ui));
-        const QString length = cell < 1 ? tr("%1 cm").arg(std::lround(cell * 100)) : tr("%1 m").arg(cell);
-        p.drawText(QPointF(b.x() + 4 * ui, a.y()), length);
+        p.drawText(QPointF(b.x() + 4 * ui, a.y()), lengthText(cell));
     }
     // The legend: one row at the bottom right, clear of the ladder (the
     // drawing keeps out of the top and bottom bands).
@@ -442,6 +437,20 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
         p.setFont(font);
     }
     p.restore();
+}
+
+double gridCell(double pixelsPerMetre, double leastPixels) {
+    // 1e6 m (a thousand kilometres) ends the search for a degenerate scale.
+    for (double decade = 0.01; decade < 1e6; decade *= 10)
+        for (const double mantissa : {1.0, 2.0, 5.0})
+            if (mantissa * decade * pixelsPerMetre >= leastPixels) return mantissa * decade;
+    return 1e6;
+}
+
+QString lengthText(double metres) {
+    if (metres < 1) return SideView::tr("%1 cm").arg(std::lround(metres * 100));
+    if (metres < 1000) return SideView::tr("%1 m").arg(std::lround(metres));
+    return SideView::tr("%1 km").arg(metres / 1000);
 }
 
 }  // namespace jl::ui

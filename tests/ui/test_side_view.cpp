@@ -192,6 +192,33 @@ private slots:
 
     // The legend row (free, locked open, folded) in presentation type in a
     // narrow view: smaller type, but all three entries whole inside the view.
+    // The grid keeps its cells some 80 px apart at any length of ladder (it
+    // stopped at 50 m cells, and a 10,000-block ladder, 600 m, was a grey
+    // band of lines), and the scale bar says kilometres where it should.
+    void theGridStaysReadableOnAnyLengthOfLadder() {
+        QCOMPARE(gridCell(1000.0, 80), 0.1);   // 1 px per mm: 10 cm cells
+        QCOMPARE(gridCell(1.0, 80), 100.0);
+        QCOMPARE(gridCell(0.05, 80), 2000.0);  // 6 km in 300 px
+        QCOMPARE(lengthText(0.05), QString("5 cm"));
+        QCOMPARE(lengthText(20.0), QString("20 m"));
+        QCOMPARE(lengthText(2000.0), QString("2 km"));
+
+        jl::Scene scene;
+        scene.ladder = jl::LadderSpec{};
+        scene.ladder->blocks = 10000;
+        SideView view;
+        view.setScene(scene);
+        view.showFrame(runHeadless(scene, 0.0).frames.front());
+        const QImage image = view.render(QSize(400, 500));
+        // Grid lines crossing a row above the ladder's top, clear of the clock:
+        // runs of pixels that are not the background.
+        const QColor background = image.pixelColor(2, 60);
+        int lines = 0;
+        for (int x = 1; x < image.width(); ++x)
+            lines += !near(image.pixelColor(x, 60), background, 3) && near(image.pixelColor(x - 1, 60), background, 3);
+        QVERIFY2(lines >= 1 && lines <= 6, qPrintable(QString("%1 grid lines across 400 px").arg(lines)));
+    }
+
     void theSideViewLegendFitsANarrowView() {
         ClassicAtRest c;
         SideView& view = c.view;
