@@ -90,6 +90,7 @@ void LadderView::setFollow(bool on) {
 void LadderView::showFrame(const jl::Frame& frame) {
     if (!frame.dragging) grabbed_ = -1;
     shownPoses_ = frame.poses;
+    shownTime_ = frame.time;
     if (follow_ && !frame.poses.empty()) {
         jl::Vec2 centre = jl::Vec2::Zero();
         for (const jl::Pose& p : frame.poses) centre += p.position;
@@ -200,25 +201,26 @@ void LadderView::mousePressEvent(QMouseEvent* e) {
     lastMouse_ = e->position();
     if (e->button() == Qt::LeftButton && !walk_) {
         const auto p = planePoint(e->position());
-        if (p && blockAt(*p)) {
+        const auto grab = p ? grabAt(*p) : std::nullopt;
+        if (grab) {
             dragging_ = true;
             grabbed_ = -1;
-            emit dragBegun(*p);
+            emit dragBegun(*p, grab->block, grab->local, shownTime_);
         } else {
             orbiting_ = true;  // empty space: turn the view, as most 3-D programs do
         }
     }
 }
 
-bool LadderView::blockAt(const jl::Vec2& point) const {
+std::optional<LadderView::Grab> LadderView::grabAt(const jl::Vec2& point) const {
     constexpr double margin = 0.002;  // m
     const size_t n = std::min(shapes_.size(), shownPoses_.size());
-    for (size_t i = 0; i < n; ++i) {
+    for (size_t i = n; i-- > 0;) {
         const jl::Vec2 local = jl::rotate(-shownPoses_[i].angle, point - shownPoses_[i].position);
         if (std::abs(local.x()) <= shapes_[i].across / 2 + margin && std::abs(local.y()) <= shapes_[i].along / 2 + margin)
-            return true;
+            return Grab{int(i), local};
     }
-    return false;
+    return std::nullopt;
 }
 
 void LadderView::mouseMoveEvent(QMouseEvent* e) {

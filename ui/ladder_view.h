@@ -56,10 +56,20 @@ public:
     // Whether a block as last shown covers this point of the plane (within
     // 2 mm, so thin blocks stay easy to grab): a left drag there pushes the
     // block, anywhere else it orbits the camera.
-    bool blockAt(const jl::Vec2& point) const;
+    bool blockAt(const jl::Vec2& point) const { return grabAt(point).has_value(); }
+    // The block there, as last shown, and the point in its own frame: the
+    // last block that covers it, as the engine's pick takes it.
+    struct Grab {
+        int block = -1;
+        jl::Vec2 local = jl::Vec2::Zero();
+    };
+    std::optional<Grab> grabAt(const jl::Vec2& point) const;
+    double shownTime() const { return shownTime_; }  // s, the frame drawn
 
 signals:
-    void dragBegun(const jl::Vec2& point);
+    // A push begun on `block` at `local` (its own frame) in the frame of
+    // time `shownTime` that the view showed at the press.
+    void dragBegun(const jl::Vec2& point, int block, const jl::Vec2& local, double shownTime);
     void dragMoved(const jl::Vec2& target);
     void dragEnded();
     // Keys the view does not use, for the main window's shortcuts (this
@@ -93,6 +103,7 @@ private:
     jl::ViewSpec view_;
     std::vector<BlockShape> shapes_;
     std::vector<jl::Pose> shownPoses_;
+    double shownTime_ = 0;
     // The ladder is framed again on the first frame after a load or a change
     // of size: only a frame says where the blocks are.
     bool frameOnNextFrame_ = false;

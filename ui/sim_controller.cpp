@@ -50,7 +50,9 @@ void SimController::restart() { worker_->post(cmd::Restart{}); }
 void SimController::seek(double time) { worker_->post(cmd::Seek{time}); }
 void SimController::setSpeed(double factor) { worker_->post(cmd::Speed{factor}); }
 void SimController::setMemoryBudget(std::size_t bytes) { worker_->post(cmd::Budget{bytes}); }
-void SimController::beginDrag(const jl::Vec2& point) { worker_->post(cmd::DragBegin{point}); }
+void SimController::beginDrag(const jl::Vec2& point, int block, const jl::Vec2& local, double shownTime) {
+    worker_->post(cmd::DragBegin{point, block, local, shownTime});
+}
 void SimController::moveDrag(const jl::Vec2& target) { worker_->post(cmd::DragMove{target}); }
 void SimController::endDrag() { worker_->post(cmd::DragEnd{}); }
 

@@ -190,6 +190,13 @@ void SimWorker::apply(const cmd::Seek& c) {
 
 void SimWorker::apply(const cmd::DragBegin& c) {
     if (!sim_ || !failure_.empty()) return;
+    // The push happens in the frame the window showed at the press: playing,
+    // the worker may already be a frame or two further on (and a block that
+    // swings fast is then somewhere else).
+    if (c.shownTime >= 0 && history_.count() > 0) {
+        const int shown = int(std::lround(c.shownTime / history_.interval()));
+        if (shown != cursor_ && shown >= 0 && shown <= history_.head()) showFrame(shown);
+    }
     // Pushing a block in the past rewrites what follows: simulate on from
     // the frame on screen (the view found a block there, in that frame).
     // So does pushing it while the next frame was half done.
@@ -197,7 +204,7 @@ void SimWorker::apply(const cmd::DragBegin& c) {
         discardFuture();
         if (!failure_.empty()) return;
     }
-    const auto hit = sim_->pick(c.point);
+    const auto hit = c.block >= 0 ? std::make_optional(std::make_pair(c.block, c.local)) : sim_->pick(c.point);
     if (!hit) return;
     sim_->beginDrag(hit->first, hit->second, c.point);
     if (!playing_) shown_ = std::make_shared<const jl::Frame>(sim_->frame());

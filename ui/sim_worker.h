@@ -28,7 +28,15 @@ struct Restart {};
 struct Seek { double time; };
 struct Speed { double factor; };
 struct Budget { std::size_t bytes; };
-struct DragBegin { jl::Vec2 point; };
+// A push at `point`: on `block` (-1: the block there, picked in the worker's
+// state) at `local` in its frame, in the frame of time `shownTime` that the
+// window showed at the press (negative: the frame the worker is at).
+struct DragBegin {
+    jl::Vec2 point;
+    int block = -1;
+    jl::Vec2 local = jl::Vec2::Zero();
+    double shownTime = -1;
+};
 struct DragMove { jl::Vec2 target; };
 struct DragEnd {};
 struct Quit {};

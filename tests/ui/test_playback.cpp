@@ -380,6 +380,41 @@ private slots:
         QVERIFY(samePoses(*again->frame, engineFrameAt(*again->recorded, 70)));
     }
 
+    // The window draws the worker's frames a moment after the worker makes
+    // them, and playing moves on meanwhile: a press grabs the block as the
+    // window showed it, in the frame it showed, not where the block is in
+    // the frame the worker has reached.
+    void aPushLandsInTheFrameOnScreenWhenTheWorkerIsAhead() {
+        const jl::Scene scene = jl::test::swingingLadder();
+        Fixture f(scene);
+        LadderView* view = f.window.ladderView();
+        QVERIFY(QTest::qWaitForWindowExposed(view));
+        QVERIFY(f.goTo(30));
+        // The window still shows frame 12 while the worker is at frame 30.
+        const jl::Frame frame12 = engineFrameAt(scene, 12);
+        view->showFrame(frame12);
+        const QPoint at = view->pixelOf(frame12.poses[3].position).toPoint();
+        const auto plane = view->planePoint(at);
+        QVERIFY(plane);
+        const auto grab = view->grabAt(*plane);
+        QVERIFY(grab && grab->block == 3);
+        QTest::mousePress(view, Qt::LeftButton, {}, at);
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.dragging && s.frameCount == 13 && s.frameIndex == 12; }));
+        QVERIFY(f.goTo(20));
+        QTest::mouseRelease(view, Qt::LeftButton, {}, at + QPoint(40, 0));
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return !s.dragging; }));
+        QVERIFY(f.goTo(40));
+        const auto s = f.sim->status();
+        QCOMPARE(int(s->recorded->drags.size()), 1);
+        const jl::DragRecord& d = s->recorded->drags[0];
+        QCOMPARE(d.block, 3);
+        QCOMPARE(d.point[0], grab->local.x());
+        QCOMPARE(d.point[1], grab->local.y());
+        const double t12 = jl::FrameGrid{0, s->interval}.at(12);
+        QVERIFY(d.samples.front().t >= t12 && d.samples.front().t < t12 + 0.001 + 1e-12);
+        QCOMPARE(engineHashAt(*s->recorded, 40), s->headHash);
+    }
+
     // The scene's duration is the lesson's length: playing stops there (the
     // classic cascade used to run on to 40 s), and Play goes on past it.
     void playingStopsAtTheScenesDurationThenGoesOnWhenAsked() {
