@@ -423,8 +423,10 @@ void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {
     timeLabel_->setText(tr("t = %1 s  (of %2 s)").arg(t, 0, 'f', 3).arg(s->headTime, 0, 'f', 2));
     // A long ladder can take a while to run again up to the moment an edit
     // was made at: say so, rather than "paused" while the frames move on.
-    if (s->seekingTo >= 0)
-        rateLabel_->setText(tr("running to t = %1 s").arg(s->seekingTo, 0, 'f', 3));
+    if (s->seekingTo > 0)
+        rateLabel_->setText(tr("running to t = %1 s (%2 %)")
+                                .arg(s->seekingTo, 0, 'f', 3)
+                                .arg(std::floor(100 * std::clamp(s->headTime / s->seekingTo, 0.0, 1.0)), 0, 'f', 0));
     else if (s->playing)
         rateLabel_->setText(tr("%1× real time · %2 steps/s").arg(s->realTimeFactor, 0, 'f', 2).arg(s->stepsPerSecond, 0, 'f', 0));
     else
