@@ -64,7 +64,6 @@ public:
         jl::Vec2 local = jl::Vec2::Zero();
     };
     std::optional<Grab> grabAt(const jl::Vec2& point) const;
-    double shownTime() const { return shownTime_; }  // s, the frame drawn
 
 signals:
     // A push begun on `block` at `local` (its own frame) in the frame of
@@ -103,7 +102,7 @@ private:
     jl::ViewSpec view_;
     std::vector<BlockShape> shapes_;
     std::vector<jl::Pose> shownPoses_;
-    double shownTime_ = 0;
+    double shownTime_ = 0;  // s, the frame drawn
     // The ladder is framed again on the first frame after a load or a change
     // of size: only a frame says where the blocks are.
     bool frameOnNextFrame_ = false;

@@ -366,7 +366,7 @@ void MainWindow::createStatusBar() {
     statusBar()->addWidget(warningLabel_, 1);
     timeLabel_ = label("time", tr("Simulated time of the frame on screen, and how far the run has been recorded."), 150);
     rateLabel_ = label("rate", tr("Real-time factor (simulated seconds per second) and solver steps per second; "
-                                  "after an edit, the moment on screen the run is going back to."), 190);
+                                  "after an edit, how far the run back to the moment on screen has got."), 190);
     energyLabel_ = label("energy", tr("Kinetic plus potential energy; in brackets, what the energy books fail to explain."), 190);
     residualLabel_ = label("residual", tr("Largest gap left in a hinge pin after the last step."), 130);
     stepLabel_ = label("step", tr("The integrator's step: the scene's own, or (auto) the engine's choice: at most 1 ms, "
