@@ -341,23 +341,20 @@ bool SimWorker::simulateNextFrame() {
     return true;
 }
 
-// A seek far ahead can take long: show the way there, and let any new
-// command (a pause, another seek) end it where it got to.
+// A seek far ahead can take long: show the way there. Any new command (a
+// pause, another seek) ends it where it got to: simulateNextFrame stops
+// between two steps when one is waiting.
 bool SimWorker::simulateTo(int index) {
     auto lastShown = Clock::now();
     seekingTo_ = index * history_.interval();
-    const bool reached = [&] {
-        while (history_.head() < index) {
-            if (!simulateNextFrame()) return false;
-            if (Clock::now() - lastShown > kWorkSlice * 4) {
-                publish();
-                lastShown = Clock::now();
-                std::lock_guard lock(queueMutex_);
-                if (!queue_.empty()) return false;
-            }
+    bool reached = true;
+    while (reached && history_.head() < index) {
+        reached = simulateNextFrame();
+        if (Clock::now() - lastShown > kWorkSlice * 4) {
+            publish();
+            lastShown = Clock::now();
         }
-        return true;
-    }();
+    }
     seekingTo_ = -1;
     dirty_ = true;
     return reached;

@@ -37,10 +37,10 @@ struct Recording {
 // Runs `sim` to exactly `until` (the last step shortened to land on it),
 // handing every event to `target` and a frame (without ribbons) at t = 0
 // and then at exactly each instant of `grid` up to `until` (energy books
-// checked on each; the
-// frame times never change the steps), and keeping the largest pin gap after every step. Ends early on a
-// failure, a refusal of the target or when `interruption` (asked between two
-// steps) returns non-zero.
+// checked on each; the frame times never change the steps), and keeping the
+// largest pin gap after every step. Ends early on a failure, a refusal of
+// the target or when `interruption` (asked between two steps) returns
+// non-zero.
 Recording record(Simulation& sim, double until, const FrameGrid& grid, RecordTarget* target,
                  const std::function<int()>& interruption = {});
 
