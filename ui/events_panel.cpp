@@ -26,10 +26,21 @@ QString runInWords(const jl::Event& first, const jl::Event& last, int count) {
 
 }  // namespace
 
-QString eventInWords(const jl::Event& e) {
+namespace {
+QString whatHappened(const jl::Event& e) {
     QString what = QString::fromStdString(e.text);
     if (what.isEmpty()) what = QObject::tr("hinge %1: %2").arg(e.hinge).arg(QString::fromUtf8(jl::toString(e.kind)));
-    return QString("%1 s: %2").arg(e.time, 0, 'f', 3).arg(what);
+    return what;
+}
+}  // namespace
+
+QString eventInWords(const jl::Event& e) { return QString("%1 s: %2").arg(e.time, 0, 'f', 3).arg(whatHappened(e)); }
+
+QString eventsInWords(const std::vector<jl::Event>& events) {
+    if (events.empty()) return {};
+    QStringList what;
+    for (const jl::Event& e : events) what << whatHappened(e);
+    return QString("%1 s: %2").arg(events.front().time, 0, 'f', 3).arg(what.join("; "));
 }
 
 EventsPanel::EventsPanel(QWidget* parent) : QWidget(parent) {
@@ -37,11 +48,11 @@ EventsPanel::EventsPanel(QWidget* parent) : QWidget(parent) {
     box->setContentsMargins(0, 0, 0, 0);
     list_ = new QListWidget(this);
     list_->setObjectName("events");
-    list_->setToolTip(tr("What happened at each hinge, in order; click one to see that moment."));
+    list_->setToolTip(tr("What happened at each hinge, in order; click one to see the ladder at that instant."));
     list_->setUniformItemSizes(true);
     box->addWidget(list_);
     connect(list_, &QListWidget::itemClicked, this, [this](QListWidgetItem* item) {
-        emit seekRequested(item->data(Qt::UserRole).toDouble());
+        emit instantRequested(item->data(Qt::UserRole).toDouble());
     });
 }
 

@@ -1,4 +1,4 @@
-// The Events dock: the event log in words; choosing an event seeks there.
+// The Events dock: the event log in words; choosing an event shows its instant.
 #pragma once
 
 #include "jl/sim/frame.h"
@@ -15,6 +15,8 @@ class QListWidgetItem;
 namespace jl::ui {
 
 QString eventInWords(const jl::Event& e);
+// Events of one instant: "0.512 s: block 1 folds ...; block 2 flips ...".
+QString eventsInWords(const std::vector<jl::Event>& events);
 
 class EventsPanel : public QWidget {
     Q_OBJECT
@@ -23,7 +25,7 @@ public:
     void setEvents(std::shared_ptr<const std::vector<jl::Event>> events);
 
 signals:
-    void seekRequested(double time);
+    void instantRequested(double time);
 
 private:
     // A pair resting against each other with almost no force locks and

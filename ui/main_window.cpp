@@ -46,6 +46,11 @@ constexpr int kSpeedTicks = 200;
 int speedToTick(double s) { return int(std::lround(kSpeedTicks * std::log(s / kMinSpeed) / std::log(kMaxSpeed / kMinSpeed))); }
 double tickToSpeed(int t) { return kMinSpeed * std::pow(kMaxSpeed / kMinSpeed, double(t) / kSpeedTicks); }
 
+// Paused on an event's instant, which lies between two recorded frames.
+bool atInstant(const SimStatus& s) {
+    return !s.playing && s.frame && std::abs(s.frame->time - s.frameIndex * s.interval) > 1e-9 * s.interval;
+}
+
 QString energyText(double joules) {
     if (std::abs(joules) < 1) return QString("%1 mJ").arg(joules * 1000, 0, 'f', 3);
     return QString("%1 J").arg(joules, 0, 'f', 4);
@@ -88,7 +93,7 @@ MainWindow::MainWindow(Options options) : options_(options) {
     connect(doc_, &Document::pathChanged, this, &MainWindow::updateTitle);
     connect(sim_, &SimController::statusChanged, this, &MainWindow::onStatus);
     connect(timeline_, &Timeline::seekRequested, sim_, &SimController::seek);
-    connect(eventsPanel_, &EventsPanel::seekRequested, sim_, &SimController::seek);
+    connect(eventsPanel_, &EventsPanel::instantRequested, sim_, &SimController::showInstant);
     connect(simulationPanel_, &SimulationPanel::historyMegabytesChanged, this, [this](int mb) {
         sim_->setMemoryBudget(std::size_t(mb) << 20);
         QSettings().setValue("simulation/historyMegabytes", mb);
@@ -412,7 +417,7 @@ void MainWindow::onSceneChanged(SceneChange change) {
 
 void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {
     if (s->frame) view_->showFrame(*s->frame);
-    timeline_->setState(s->frameIndex * s->interval, s->headTime, s->events);
+    timeline_->setState(s->frame ? s->frame->time : s->frameIndex * s->interval, s->headTime, s->events);
     eventsPanel_->setEvents(s->events);
     if (s->playing != playing_) {
         playing_ = s->playing;
@@ -429,6 +434,8 @@ void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {
                                 .arg(std::floor(100 * std::clamp(s->headTime / s->seekingTo, 0.0, 1.0)), 0, 'f', 0));
     else if (s->playing)
         rateLabel_->setText(tr("%1× real time · %2 steps/s").arg(s->realTimeFactor, 0, 'f', 2).arg(s->stepsPerSecond, 0, 'f', 0));
+    else if (atInstant(*s))
+        rateLabel_->setText(tr("paused between frames %1 and %2").arg(s->frameIndex).arg(s->frameIndex + 1));
     else
         rateLabel_->setText(tr("paused at frame %1 of %2").arg(s->frameIndex).arg(s->frameCount - 1));
     if (s->frame) {
@@ -452,7 +459,10 @@ void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {
         if (failure != shownFailure_) showFailure(failure);
     } else {
         warningLabel_->setStyleSheet({});
-        warningLabel_->setText(s->dragging ? tr("Pushing a block: release the button to let go.") : QString());
+        QString note;
+        if (s->dragging) note = tr("Pushing a block: release the button to let go.");
+        else if (atInstant(*s)) note = eventsInWords(s->frame->events);
+        warningLabel_->setText(note);
     }
     syncRecordedDrags(*s);
 }

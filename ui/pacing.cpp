@@ -3,7 +3,6 @@
 #include "ui/sim_controller.h"
 
 #include <algorithm>
-#include <cmath>
 
 namespace jl::ui {
 
@@ -24,18 +23,12 @@ Pacing::Pacing(SimController* sim, QObject* parent) : QObject(parent), sim_(sim)
     connect(sim_, &SimController::statusChanged, this, &Pacing::onStatus);
 }
 
-void Pacing::showFrameAfter(double eventTime, double interval) {
-    // Frame i holds the state at i * interval: the first one after the event shows what it did.
-    const double index = std::ceil(eventTime / interval - 1e-9);
-    sim_->seek(index * interval + interval / 4);
-}
-
 void Pacing::runToNextEvent(double limit) {
     const auto s = sim_->status();
     if (!s || !s->frame) return;
     sim_->pause();
     const double now = s->frame->time;
-    if (const jl::Event* e = firstEventAfter(*s, now)) return showFrameAfter(e->time, s->interval);
+    if (const jl::Event* e = firstEventAfter(*s, now)) return sim_->showInstant(e->time);
     searching_ = true;
     searchFrom_ = now;
     searchUntil_ = std::max(now, s->headTime) + limit;
@@ -56,7 +49,7 @@ void Pacing::onStatus(std::shared_ptr<const SimStatus> s) {
         }
         if (const jl::Event* e = firstEventAfter(*s, searchFrom_)) {
             searching_ = false;
-            return showFrameAfter(e->time, s->interval);
+            return sim_->showInstant(e->time);
         }
         // Wait until the stretch asked for is on screen, then ask for the next.
         if (s->frame->time + s->interval < requested_ - 1e-9) return;

@@ -16,9 +16,10 @@ class Pacing : public QObject {
 public:
     explicit Pacing(SimController* sim, QObject* parent = nullptr);
 
-    // Shows the first frame after the next event past the frame on screen:
-    // at once if it is recorded, else simulating on (in short stretches, so
-    // the window stays live) until one happens or `limit` seconds pass.
+    // Shows the ladder at the instant of the next event after the moment on
+    // screen (the state just after it: a lock locked, a flip flipped),
+    // simulating on first if needed (in short stretches, so the window stays
+    // live) until one happens or `limit` seconds pass.
     void runToNextEvent(double limit = 10.0);
     bool seekingEvent() const { return searching_; }
 
@@ -36,7 +37,6 @@ signals:
 
 private:
     void onStatus(std::shared_ptr<const jl::ui::SimStatus> s);
-    void showFrameAfter(double eventTime, double interval);
     void searchFurther(const SimStatus& s);
 
     SimController* sim_;

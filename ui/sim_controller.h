@@ -31,6 +31,8 @@ public:
     void stepBack();
     void restart();
     void seek(double time);  // s; beyond the head it simulates up to there
+    // The state at exactly `time` (an event's instant), between two frames.
+    void showInstant(double time);
     void setSpeed(double factor);  // 0.01 .. 4
     void setMemoryBudget(std::size_t bytes);
     // The mouse spring: `point` and `target` lie in the ladder's plane (m).

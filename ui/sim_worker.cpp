@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <optional>
 
 #ifdef __linux__
 #include <sys/resource.h>
@@ -103,7 +104,7 @@ void SimWorker::apply(const SimCommand& c) {
                           !std::is_same_v<T, cmd::DragEnd> && !std::is_same_v<T, cmd::DragBegin>)
                 framesWanted_ = 0;
             if constexpr (std::is_same_v<T, cmd::Load> || std::is_same_v<T, cmd::Seek> ||
-                          std::is_same_v<T, cmd::DragBegin>) {
+                          std::is_same_v<T, cmd::ShowInstant> || std::is_same_v<T, cmd::DragBegin>) {
                 apply(v);
             } else if constexpr (std::is_same_v<T, cmd::Play>) {
                 play();
@@ -117,7 +118,9 @@ void SimWorker::apply(const SimCommand& c) {
                 else if (sim_ && failure_.empty()) ++framesWanted_;
             } else if constexpr (std::is_same_v<T, cmd::StepBack>) {
                 playing_ = false;
-                if (cursor_ > 0) showFrame(cursor_ - 1);
+                // From an instant between two frames, back is the frame before it.
+                if (showingInstant()) showFrame(cursor_);
+                else if (cursor_ > 0) showFrame(cursor_ - 1);
             } else if constexpr (std::is_same_v<T, cmd::Restart>) {
                 if (history_.count() > 0) showFrame(0);
                 rebasePace();
@@ -188,13 +191,66 @@ void SimWorker::apply(const cmd::Seek& c) {
     rebasePace();
 }
 
+void SimWorker::apply(const cmd::ShowInstant& c) {
+    setNiceness(8);
+    if (!sim_ || history_.count() == 0) return;
+    const jl::FrameGrid grid = frameGrid();
+    if (c.time <= 0 || grid.on(c.time)) return apply(cmd::Seek{c.time});
+    const int before = int(std::floor(c.time / grid.every));
+    // The run must have passed the instant: its drags are recorded up to the
+    // head, and the keyframe to start from must be there.
+    if (before >= history_.head() && !simulateTo(before + 1)) return;
+    showFrame(before);
+    if (auto f = instantFrame(c.time, before)) shown_ = std::move(f);
+    rebasePace();
+}
+
+// The state at `time`, between frames `before` and `before + 1`, simulated
+// on a scratch copy from the keyframe before it (as an evicted frame is):
+// the steps do not depend on where frames are read, so this is the run's
+// own state at that instant, bit for bit. An event's instant ends a step,
+// so the state there is the settled one, after the event; the frame carries
+// the events of that instant.
+std::shared_ptr<const jl::Frame> SimWorker::instantFrame(double time, int before) {
+    auto built = jl::Simulation::build(sim_->scene());
+    if (!built.simulation) return nullptr;
+    jl::Simulation& s = *built.simulation;
+    if (restoreKeyframeFor(s, before) < 0) return nullptr;
+    // A grid through the instant: the state there is read off the step
+    // that passes it, or is the step's end.
+    const jl::FrameGrid at{time, history_.interval()};
+    s.setFrameGrid(at);
+    std::vector<jl::Event> events;
+    std::optional<jl::Frame> found;
+    while (!found && !abort_) {
+        if (!s.stepOnce()) return nullptr;
+        for (const jl::Event& e : s.takeEvents()) events.push_back(e);
+        for (jl::Frame& f : s.takeGridFrames())
+            if (at.nearest(f.time) == 0) found = std::move(f);
+        if (!found && at.on(s.time()) && at.nearest(s.time()) == 0) found = s.frame();
+        if (!found && s.time() > time) return nullptr;
+    }
+    if (!found) return nullptr;
+    found->time = time;
+    found->events.clear();
+    for (const jl::Event& e : events)
+        if (std::abs(e.time - time) <= 1e-9 * at.every) found->events.push_back(e);
+    return std::make_shared<const jl::Frame>(std::move(*found));
+}
+
+bool SimWorker::showingInstant() const {
+    return shown_ && history_.count() > 0 && std::abs(shown_->time - cursor_ * history_.interval()) > 1e-9 * history_.interval();
+}
+
 void SimWorker::apply(const cmd::DragBegin& c) {
     if (!sim_ || !failure_.empty()) return;
     // The push happens in the frame the window showed at the press: playing,
     // the worker may already be a frame or two further on (and a block that
     // swings fast is then somewhere else).
+    // (An event's instant on screen lies between two frames: the push
+    // starts from the frame before it, since history holds only frames.)
     if (c.shownTime >= 0 && history_.count() > 0) {
-        const int shown = int(std::lround(c.shownTime / history_.interval()));
+        const int shown = int(std::floor(c.shownTime / history_.interval() + 1e-6));
         if (shown != cursor_ && shown >= 0 && shown <= history_.head()) showFrame(shown);
     }
     // Pushing a block in the past rewrites what follows: simulate on from

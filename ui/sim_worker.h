@@ -26,6 +26,9 @@ struct StepForward {};
 struct StepBack {};
 struct Restart {};
 struct Seek { double time; };
+// The state at exactly `time` (an event's instant), which lies between two
+// frames: shown without being recorded; the cursor is the frame before it.
+struct ShowInstant { double time; };
 struct Speed { double factor; };
 struct Budget { std::size_t bytes; };
 // A push at `point`: on `block` (-1: the block there, picked in the worker's
@@ -43,7 +46,7 @@ struct Quit {};
 }  // namespace cmd
 
 using SimCommand = std::variant<cmd::Load, cmd::Play, cmd::Pause, cmd::StepForward, cmd::StepBack,
-                                cmd::Restart, cmd::Seek, cmd::Speed, cmd::Budget, cmd::DragBegin,
+                                cmd::Restart, cmd::Seek, cmd::ShowInstant, cmd::Speed, cmd::Budget, cmd::DragBegin,
                                 cmd::DragMove, cmd::DragEnd, cmd::Quit>;
 
 class SimWorker {
@@ -71,6 +74,7 @@ private:
     void apply(const SimCommand& c);
     void apply(const cmd::Load& c);
     void apply(const cmd::Seek& c);
+    void apply(const cmd::ShowInstant& c);
     void apply(const cmd::DragBegin& c);
     void play();
     void advancePaced();
@@ -84,6 +88,8 @@ private:
     bool simulateTo(int index);
     void showFrame(int index);
     std::shared_ptr<const jl::Frame> regenerate(int index);
+    std::shared_ptr<const jl::Frame> instantFrame(double time, int before);
+    bool showingInstant() const;
     void discardFuture();
     void fail(const std::string& why);
     void rebasePace();

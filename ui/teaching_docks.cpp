@@ -68,7 +68,7 @@ void TeachingDocks::createMenus() {
         connect(a, &QAction::triggered, this, slot);
         return a;
     };
-    add(tr("Run to the next &event"), Qt::Key_N, tr("Show the moment just after the next event, simulating on if needed"),
+    add(tr("Run to the next &event"), Qt::Key_N, tr("Show the ladder at the instant of the next event, simulating on if needed"),
         [this] { pacing_->runToNextEvent(); });
     add(tr("&Loop a stretch"), Qt::Key_L,
         tr("Press once where the loop starts and once where it ends; press again to stop looping"), [this] { markLoop(); });

@@ -2,6 +2,7 @@
 // The simulation behind the window: play, pause, step, scrub, a mouse drag
 // that is recorded and replays bit for bit, and a window that stays
 // responsive while a long ladder simulates flat out.
+#include "example_runs.h"
 #include "jl/sim/recording.h"
 #include "jl/sim/simulation.h"
 #include "ui/ladder_view.h"
@@ -13,6 +14,7 @@
 #include <QTimer>
 #include <QtTest>
 
+#include <cmath>
 #include <optional>
 
 using namespace jl::ui;
@@ -413,6 +415,69 @@ private slots:
         const double t12 = jl::FrameGrid{0, s->interval}.at(12);
         QVERIFY(d.samples.front().t >= t12 && d.samples.front().t < t12 + 0.001 + 1e-12);
         QCOMPARE(engineHashAt(*s->recorded, 40), s->headHash);
+    }
+
+    // Choosing an event shows the ladder at its instant, which lies between
+    // two frames (the classic's frames are 17 ms apart, in which a block
+    // that locks turns tens of degrees): the hinge is exactly at its limit
+    // there, the state is the engine's own at that instant, bit for bit,
+    // and the frames either side stay as they were.
+    void anEventIsShownAtItsInstant() {
+        const jl::Scene scene = loadExample("classic.yaml");
+        Fixture f(scene);
+        // A run straight through on the engine, stopping at each event:
+        // the first lock after the first keyframe (0.5 s) that is not undone
+        // at the same instant, and the state there.
+        auto built = jl::Simulation::build(scene);
+        jl::Simulation& engine = *built.simulation;
+        std::optional<jl::Event> lock;
+        std::optional<jl::Frame> atLock;
+        while (!lock && engine.time() < 3.0) {
+            QVERIFY(engine.advanceToNextEvent(3.0) || engine.time() >= 3.0);
+            const std::vector<jl::Event> events = engine.takeEvents();
+            for (const jl::Event& e : events)
+                if (e.kind == jl::EventKind::Lock && e.time > 0.55 && events.back().kind == jl::EventKind::Lock &&
+                    !jl::FrameGrid{0, scene.solver.frameInterval}.on(e.time))
+                    lock = e;
+            if (lock) atLock = engine.frame();
+        }
+        QVERIFY(lock && atLock && engine.time() == lock->time);
+        const double dt = scene.solver.frameInterval;
+        const int before = int(std::floor(lock->time / dt));
+
+        f.sim->showInstant(lock->time);
+        QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus& s) { return s.frame && s.frame->time == lock->time; }));
+        const auto s = f.sim->status();
+        QCOMPARE(s->frameIndex, before);
+        QVERIFY(!s->playing);
+        QVERIFY(samePoses(*s->frame, *atLock));
+        // The hinge is at its limit, locked end to end (fold angle 0); in the
+        // frame before it was not yet.
+        const jl::HingeFrame& h = s->frame->hinges[size_t(lock->hinge - 1)];
+        QCOMPARE(h.mode, jl::HingeMode::OpenLocked);
+        QVERIFY2(std::abs(h.foldAngle) < 1e-9, qPrintable(QString::number(h.foldAngle, 'g', 3)));
+        const jl::Frame frameBefore = engineFrameAt(scene, before);
+        const double foldBefore = frameBefore.hinges[size_t(lock->hinge - 1)].foldAngle;
+        QVERIFY2(foldBefore > 1e-3, qPrintable(QString::number(foldBefore, 'g', 3)));
+        qInfo("hinge %d locks at %.6f s; fold angle %.3g rad there, %.3g rad at the frame before (%.6f s)", lock->hinge,
+              lock->time, h.foldAngle, foldBefore, jl::FrameGrid{0, dt}.at(before));
+        // The frame carries what happened there, and the status bar says it.
+        QVERIFY(!s->frame->events.empty());
+        QCOMPARE(s->frame->events.front().time, lock->time);
+        auto* note = f.window.findChild<QLabel*>("warning");
+        QTRY_VERIFY(note->text().contains(QString::fromStdString(lock->text)));
+        QVERIFY(note->text().startsWith(QString::number(lock->time, 'f', 3)));
+
+        // Step back: the frame before the instant; forward twice: the frames after it.
+        f.sim->stepBack();
+        QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus& st) { return st.frame->time == jl::FrameGrid{0, dt}.at(before); }));
+        QVERIFY(samePoses(*f.sim->status()->frame, frameBefore));
+        QTRY_VERIFY(note->text().isEmpty());
+        f.sim->showInstant(lock->time);
+        QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus& st) { return st.frame->time == lock->time; }));
+        f.sim->stepForward();
+        QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus& st) { return st.frameIndex == before + 1 && st.frame->time != lock->time; }));
+        QVERIFY(samePoses(*f.sim->status()->frame, engineFrameAt(scene, before + 1)));
     }
 
     // The scene's duration is the lesson's length: playing stops there (the

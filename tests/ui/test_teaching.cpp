@@ -141,7 +141,7 @@ private slots:
             list->item(2)->text(),
             QString("%1 s: %2").arg(run.events[2].time, 0, 'f', 3).arg(QString::fromStdString(run.events[2].text)));
         QVERIFY(!run.events[2].text.empty());
-        QSignalSpy seeks(&panel, &EventsPanel::seekRequested);
+        QSignalSpy seeks(&panel, &EventsPanel::instantRequested);
         list->scrollToItem(list->item(2));
         QTest::mouseClick(list->viewport(), Qt::LeftButton, {}, list->visualItemRect(list->item(2)).center());
         QCOMPARE(seeks.size(), 1);
@@ -181,7 +181,7 @@ private slots:
                  qPrintable(rows[2]));
         QVERIFY2(rows[3].contains("block 2 flips"), qPrintable(rows[3]));
         QVERIFY(rows[4].startsWith("1.000 s:") && rows[5].startsWith("1.005 s:"));
-        QSignalSpy seeks(&panel, &EventsPanel::seekRequested);
+        QSignalSpy seeks(&panel, &EventsPanel::instantRequested);
         QTest::mouseClick(list->viewport(), Qt::LeftButton, {}, list->visualItemRect(list->item(2)).center());
         QCOMPARE(seeks.size(), 1);
         QCOMPARE(seeks.first().at(0).toDouble(), 0.300);
@@ -317,10 +317,13 @@ private slots:
         QVERIFY(panel.text().contains("flip-flop"));
     }
 
-    void runToTheNextEventShowsTheFrameAfterIt() {
+    // N shows the ladder at the instant of the next event (between two
+    // frames), simulating on when none is recorded yet; N again, the next
+    // instant after that one (events of one instant come together).
+    void runToTheNextEventShowsItsInstant() {
         const jl::Scene scene = loadExample("classic.yaml");
         const Run run = runHeadless(scene, 1.0);
-        QVERIFY(!run.events.empty());
+        QVERIFY(run.events.size() >= 2);
         SimController sim;
         Pacing pacing(&sim);
         const auto before = jl::test::loadsSoFar(&sim);
@@ -329,22 +332,27 @@ private slots:
         const double dt = scene.solver.frameInterval;
         // Nothing recorded yet: it simulates on until the first event happens.
         pacing.runToNextEvent();
-        const int first = int(std::ceil(run.events[0].time / dt - 1e-9));
+        const double first = run.events[0].time;
         QVERIFY(jl::test::waitForStatus(
-            &sim, [&](const SimStatus& s) { return !pacing.seekingEvent() && s.frameIndex == first; }));
-        // The next one after the frame on screen (the first may share a frame with others).
+            &sim, [&](const SimStatus& s) { return !pacing.seekingEvent() && s.frame->time == first; }));
+        // (the hand's turn starts at 0.2 s, a frame's time: that frame)
+        const jl::FrameGrid grid{0, dt};
+        QCOMPARE(sim.status()->frameIndex, int(grid.on(first) ? grid.nearest(first) : std::floor(first / dt)));
         const jl::Event* next = nullptr;
         for (const jl::Event& e : run.events)
-            if (e.time > sim.status()->frame->time + 1e-9) {
+            if (e.time > first) {
                 next = &e;
                 break;
             }
         QVERIFY(next);
         pacing.runToNextEvent();
-        const int second = int(std::ceil(next->time / dt - 1e-9));
         QVERIFY(jl::test::waitForStatus(
-            &sim, [&](const SimStatus& s) { return !pacing.seekingEvent() && s.frameIndex == second; }));
+            &sim, [&](const SimStatus& s) { return !pacing.seekingEvent() && s.frame->time == next->time; }));
         QVERIFY(!sim.status()->playing);
+        QVERIFY(!sim.status()->frame->events.empty());
+        QCOMPARE(sim.status()->frame->events.front().time, next->time);
+        QVERIFY(!grid.on(next->time));
+        QCOMPARE(sim.status()->frameIndex, int(std::floor(next->time / dt)));
     }
 
     void aLoopReturnsToItsStart() {
