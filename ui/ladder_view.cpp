@@ -128,11 +128,10 @@ void LadderView::resetView() {
     camera_.reset(view_, extent_);
     // A scene that says where to look is looked at there; otherwise the
     // whole ladder, now and again when its first frame is shown.
+    // (A framing still due from an earlier scene is dropped: this one says where to look.)
     const jl::ViewSpec unsaid;
-    if (view_.target == unsaid.target && view_.distance == unsaid.distance) {
-        frameLadder();
-        frameOnNextFrame_ = true;
-    }
+    frameOnNextFrame_ = view_.target == unsaid.target && view_.distance == unsaid.distance;
+    if (frameOnNextFrame_) frameLadder();
     updateCamera();
 }
 

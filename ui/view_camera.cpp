@@ -21,9 +21,13 @@ void ViewCamera::reset(const jl::ViewSpec& view, double extent) {
     distance_ = float(view.distance);
     yaw_ = float(view.yaw);  // the file's, or the three-quarter default of jl::ViewSpec
     pitch_ = float(view.pitch);
-    // A default view on a ladder longer than it shows: frame the whole ladder.
+    // A default view on a ladder longer than it shows: frame the whole
+    // ladder. A scene that says where to look is looked at there (a long
+    // ladder's lesson may be at its top, where the blocks show).
+    const jl::ViewSpec unsaid;
+    const bool said = view.target != unsaid.target || view.distance != unsaid.distance;
     const float visible = 2 * distance_ * std::tan(radians(kFieldOfView / 2));
-    if (extent > visible * 0.9) {
+    if (!said && extent > visible * 0.9) {
         distance_ = float(extent) * 1.15f / (2 * std::tan(radians(kFieldOfView / 2)));
         target_.setY(-float(extent) / 2);
     }

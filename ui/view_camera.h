@@ -22,7 +22,7 @@ public:
     // sticks without the faces and ribbons that show each flip.
     static constexpr float kFieldOfView = 40.0f;  // degrees, vertical
 
-    // From the scene's view, widened to show a ladder reaching `extent` below the hand.
+    // From the scene's view; the default one widened to show a ladder reaching `extent` below the hand.
     void reset(const jl::ViewSpec& view, double extent);
     // Keeps the direction of view and moves the target and the distance so
     // every point is in a view of width/height `aspect`, with a margin.

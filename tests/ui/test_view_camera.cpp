@@ -108,6 +108,47 @@ private slots:
         QVERIFY(visible > 60.0f && visible < 75.0f);
     }
 
+    // A scene that says where to look is looked at there, however long its
+    // ladder: the long-ladder example opens on its top blocks (a 12 m
+    // ladder framed whole is a line one block thick), also after another
+    // scene whose whole ladder was still to be framed on its first frame.
+    void aSceneThatSaysWhereToLookIsLookedAtThereHoweverLong() {
+        ViewCamera c;
+        jl::ViewSpec top;
+        top.target = {0, -0.15};
+        top.distance = 0.6;
+        c.reset(top, 12.0);
+        QCOMPARE(c.distance(), 0.6f);
+        QCOMPARE(c.target(), QVector3D(0, -0.15f, 0));
+
+        MainWindow w(jl::test::quietWindow());
+        QVERIFY(showScene(w, kClassic));
+        QVERIFY(showScene(w, QStringLiteral(JL_SOURCE_DIR "/examples/long-ladder.yaml")));
+        QCOMPARE(w.document()->scene().view.distance, 0.6);
+        QCOMPARE(w.ladderView()->viewCamera().distance(), 0.6f);
+        // Blocks 0 and 1 are in view, and the ladder runs out of it.
+        QVERIFY(framingProblem(w).contains("out of view"));
+        const auto poses = w.controller()->status()->frame->poses;
+        for (const size_t b : {size_t(0), size_t(1)}) {
+            const QPointF p = w.ladderView()->pixelOf(poses[b].position);
+            QVERIFY2(p.x() > 0 && p.x() < w.ladderView()->width() && p.y() > 0 && p.y() < w.ladderView()->height(),
+                     qPrintable(QString("block %1 at %2, %3").arg(b).arg(p.x()).arg(p.y())));
+        }
+        // A scene with the default view, then at once (before any frame of
+        // it) one that says where to look: the first frame does not frame
+        // the whole ladder as the first scene asked.
+        jl::Scene unsaid = w.document()->scene();
+        unsaid.view = {};
+        w.ladderView()->setScene(unsaid, true);
+        w.ladderView()->setScene(w.document()->scene(), true);
+        w.ladderView()->showFrame(*w.controller()->status()->frame);
+        QCOMPARE(w.ladderView()->viewCamera().distance(), 0.6f);
+        // F still frames the whole of it.
+        QTest::keyClick(w.ladderView(), Qt::Key_F);
+        const QString problem = framingProblem(w);
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
+    }
+
     void orbitingKeepsTheDistanceToTheTarget() {
         ViewCamera c;
         c.reset(jl::ViewSpec{}, 0.36);
