@@ -7,6 +7,21 @@
 
 namespace jl::ui {
 
+namespace {
+// The estimate runs beside the simulation, on a machine that may have two
+// cores: at most this many block-seconds of simulated time. A design of 200
+// blocks runs whole (40 s); one of 1,000 blocks its first 10 s of 200 (a
+// whole run is a hundred CPU seconds); 10,000 blocks their first second
+// (a whole run, 2,000 s simulated, would take hours).
+constexpr double kBlockSeconds = 10000;
+
+double scriptEnd(const jl::Scene& scene) {
+    double end = 0;
+    for (const jl::ScriptAction& a : scene.script) end = std::max(end, a.at + std::max(0.0, a.duration));
+    return end;
+}
+}  // namespace
+
 ReachEstimate::ReachEstimate(QWidget* parent) : QLabel(parent) {
     setObjectName("reachEstimate");
     setWordWrap(true);
@@ -42,15 +57,32 @@ void ReachEstimate::estimate(const jl::Scene& scene) {
         setText({});
         return;
     }
-    const QByteArray key = ReachCache::designKey(scene);
+    const QByteArray whole = ReachCache::designKey(scene);
+    // A first look at a long design is a different run from its whole run:
+    // the cache keeps them apart (the design map must never show a first look).
+    const int blocks = scene.ladder->blocks;
+    const double longest = std::min(jl::rippleRunTime(scene), kBlockSeconds / std::max(1, blocks));
+    const QByteArray key = longest < jl::rippleRunTime(scene) ? whole + "@" + QByteArray::number(longest) : whole;
     if (key == key_) return;
     key_ = key;
     design_ = scene;
+    longest_ = longest;
     if (stop_) stop_->store(true);  // the older design's run is of no use now
-    if (const auto r = ReachCache::shared().find(key)) {
+    for (const QByteArray& k : {whole, key})
+        if (const auto r = ReachCache::shared().find(k)) {
+            settle_->stop();
+            computing_ = false;
+            show(*r);
+            return;
+        }
+    // Too long to see even the turn and what follows it within the budget.
+    if (longest < scriptEnd(scene) + 0.5) {
         settle_->stop();
         computing_ = false;
-        show(*r);
+        setText(tr("First ripple: not estimated for a ladder of %1 blocks, which would take long to run; the design map "
+                   "runs any design whole.")
+                    .arg(blocks));
+        emit estimated();
         return;
     }
     computing_ = true;
@@ -62,11 +94,16 @@ void ReachEstimate::start() {
     runKey_ = key_;
     stop_ = std::make_shared<std::atomic<bool>>(false);
     watcher_.setFuture(QtConcurrent::run(
-        &pool_, [design = design_, stop = stop_] { return jl::firstRippleReach(design, stop.get()); }));
+        &pool_, [design = design_, stop = stop_, longest = longest_] { return jl::firstRippleReach(design, stop.get(), longest); }));
 }
 
 void ReachEstimate::show(const jl::RippleReach& r) {
-    QString text = r.reached >= r.hinges && r.hinges > 0
+    QString text = !r.whole ? tr("In the first %1 s (a whole run of this design is %2 s), the first ripple reaches hinge %3 of %4")
+                                  .arg(r.until, 0, 'g', 3)
+                                  .arg(jl::rippleRunTime(design_), 0, 'f', 0)
+                                  .arg(r.reached)
+                                  .arg(r.hinges)
+                   : r.reached >= r.hinges && r.hinges > 0
                        ? tr("The first ripple reaches the bottom: hinge %1 of %2").arg(r.reached).arg(r.hinges)
                        : tr("The first ripple reaches hinge %1 of %2").arg(r.reached).arg(r.hinges);
     if (r.reached >= 2) text += tr(", one flip every %1 s").arg(r.meanTimeBetweenFlips, 0, 'f', 3);

@@ -52,7 +52,7 @@ int longestQuickRow(const std::vector<Event>& events) {
     return longest;
 }
 
-RippleReach firstRippleReach(const Scene& scene, const std::atomic<bool>* cancel) {
+RippleReach firstRippleReach(const Scene& scene, const std::atomic<bool>* cancel, double longest) {
     RippleReach r;
     if (!scene.ladder) {
         r.failure = "the scene has no ladder";
@@ -61,6 +61,10 @@ RippleReach firstRippleReach(const Scene& scene, const std::atomic<bool>* cancel
     const int n = scene.ladder->blocks;
     r.hinges = n - 1;
     r.until = rippleRunTime(scene);
+    if (longest < r.until) {
+        r.until = longest;
+        r.whole = false;
+    }
     Simulation::Built built = Simulation::build(scene);
     if (!built.simulation) {
         r.failure = built.errors.empty() ? "the scene does not build" : built.errors.front();

@@ -215,6 +215,43 @@ private slots:
         QTest::qWait(300);
         QCOMPARE(shown.count(), 1);
     }
+
+    // The estimate runs beside the simulation: a long design is run for its
+    // first seconds only (a whole run of 1,000 blocks is 200 s simulated,
+    // a hundred CPU seconds; of 10,000 blocks, hours), and says so; that
+    // first look is not what the design map shows for the design. A ladder
+    // too long to see even the turn in that budget is not estimated.
+    void aLongDesignIsEstimatedFromItsFirstSeconds() {
+        MainWindow w(jl::test::quietWindow());
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        auto* estimate = w.findChild<ReachEstimate*>("reachEstimate");
+        QSignalSpy shown(estimate, &ReachEstimate::estimated);
+        auto setBlocks = [&w](int n) {
+            jl::LadderSpec l = *w.document()->scene().ladder;
+            setBlockCount(l, n);
+            changeScene(w.document(), ladderField("blocks"), l, "blocks");
+        };
+        setBlocks(1000);
+        QVERIFY(shown.wait(120000));
+        const jl::Scene design = w.document()->scene();
+        const double whole = jl::rippleRunTime(design);
+        QVERIFY(whole > 200);
+        const jl::RippleReach first = jl::firstRippleReach(design, nullptr, 10.0);
+        QVERIFY(!first.whole);
+        QCOMPARE(first.until, 10.0);
+        const QString expected = QString("In the first 10 s (a whole run of this design is %1 s), the first ripple "
+                                         "reaches hinge %2 of 999")
+                                     .arg(whole, 0, 'f', 0)
+                                     .arg(first.reached);
+        QVERIFY2(estimate->text().startsWith(expected), qPrintable(estimate->text()));
+        QVERIFY(!ReachCache::shared().find(ReachCache::designKey(design)));
+
+        setBlocks(20000);
+        QTRY_COMPARE(shown.count(), 2);
+        QVERIFY(!estimate->computing());
+        QVERIFY2(estimate->text().contains("not estimated for a ladder of 20000 blocks"), qPrintable(estimate->text()));
+    }
 };
 
 QTEST_MAIN(DesignMapTest)

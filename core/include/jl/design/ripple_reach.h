@@ -8,6 +8,7 @@
 #include "jl/scene/scene.h"
 
 #include <atomic>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,7 @@ struct RippleReach {
     int events = 0;                    // every hinge event of the run
     int quickRow = 0;                  // chatter: the most quick cycles of one hinge in a row
     double until = 0;                  // s, how long the run was
+    bool whole = true;                 // false: stopped before rippleRunTime (a first look)
     std::string failure;               // the engine's, if the run stopped
     bool cancelled = false;
 };
@@ -35,9 +37,11 @@ Scene turnedLadder(int blocks, double thickness);
 // ended, then 0.5 s, then 0.2 s per block (a ripple takes about 0.13 s per hinge).
 double rippleRunTime(const Scene& scene);
 
-// Runs `scene` (a ladder with its script) for rippleRunTime and measures the
-// first ripple; `cancel` (may be null) is polled between steps.
-RippleReach firstRippleReach(const Scene& scene, const std::atomic<bool>* cancel = nullptr);
+// Runs `scene` (a ladder with its script) for rippleRunTime, or `longest`
+// seconds if that is shorter, and measures the first ripple; `cancel` (may
+// be null) is polled between steps.
+RippleReach firstRippleReach(const Scene& scene, const std::atomic<bool>* cancel = nullptr,
+                             double longest = std::numeric_limits<double>::infinity());
 
 // The chatter measure of docs/model.md section 8.6: a release of a hinge
 // (unlock, flip, unfold, bounce) followed by a close of the same hinge (lock,
