@@ -43,12 +43,21 @@ namespace {
 // The speed slider is logarithmic: 0.01x at the left, 4x at the right.
 constexpr double kMinSpeed = 0.01, kMaxSpeed = 4.0;
 constexpr int kSpeedTicks = 200;
+// A run's rate is read over this many seconds before it says how long is left.
+constexpr double kSecondsBeforeTimeLeft = 2.0;
 int speedToTick(double s) { return int(std::lround(kSpeedTicks * std::log(s / kMinSpeed) / std::log(kMaxSpeed / kMinSpeed))); }
 double tickToSpeed(int t) { return kMinSpeed * std::pow(kMaxSpeed / kMinSpeed, double(t) / kSpeedTicks); }
 
 // Paused on an event's instant, which lies between two recorded frames.
 bool atInstant(const SimStatus& s) {
     return !s.playing && s.frame && std::abs(s.frame->time - s.frameIndex * s.interval) > 1e-9 * s.interval;
+}
+
+// "about 40 s", "about 8 min", "about 2.5 h": how long a run still needs.
+QString durationText(double seconds) {
+    if (seconds < 90) return QObject::tr("about %1 s").arg(std::max(1.0, std::round(seconds)));
+    if (seconds < 5400) return QObject::tr("about %1 min").arg(std::round(seconds / 60));
+    return QObject::tr("about %1 h").arg(std::round(seconds / 360) / 10);
 }
 
 QString energyText(double joules) {
@@ -427,12 +436,19 @@ void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {
     const double t = s->frame ? s->frame->time : 0;
     timeLabel_->setText(tr("t = %1 s  (of %2 s)").arg(t, 0, 'f', 3).arg(s->headTime, 0, 'f', 2));
     // A long ladder can take a while to run again up to the moment an edit
-    // was made at: say so, rather than "paused" while the frames move on.
-    if (s->seekingTo > 0)
-        rateLabel_->setText(tr("running to t = %1 s (%2 %)")
-                                .arg(s->seekingTo, 0, 'f', 3)
-                                .arg(std::floor(100 * std::clamp(s->headTime / s->seekingTo, 0.0, 1.0)), 0, 'f', 0));
-    else if (s->playing)
+    // was made at: say so, rather than "paused" while the frames move on,
+    // and, once it has run a few seconds, about how long it still needs.
+    if (s->seekingTo <= 0) seeking_.to = -1;
+    if (s->seekingTo > 0) {
+        const auto now = std::chrono::steady_clock::now();
+        if (seeking_.to != s->seekingTo) seeking_ = {s->seekingTo, s->headTime, now};
+        QString done = tr("%1 %").arg(std::floor(100 * std::clamp(s->headTime / s->seekingTo, 0.0, 1.0)), 0, 'f', 0);
+        const double wall = std::chrono::duration<double>(now - seeking_.since).count();
+        const double ran = s->headTime - seeking_.fromTime;
+        if (wall >= kSecondsBeforeTimeLeft && ran > 0)
+            done = tr("%1, %2 left").arg(done, durationText((s->seekingTo - s->headTime) * wall / ran));
+        rateLabel_->setText(tr("running to t = %1 s (%2)").arg(s->seekingTo, 0, 'f', 3).arg(done));
+    } else if (s->playing)
         rateLabel_->setText(tr("%1× real time · %2 steps/s").arg(s->realTimeFactor, 0, 'f', 2).arg(s->stepsPerSecond, 0, 'f', 0));
     else if (atInstant(*s))
         rateLabel_->setText(tr("paused between frames %1 and %2").arg(s->frameIndex).arg(s->frameIndex + 1));

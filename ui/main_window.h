@@ -7,6 +7,7 @@
 
 #include <QMainWindow>
 
+#include <chrono>
 #include <memory>
 
 class QAction;
@@ -125,6 +126,12 @@ private:
     std::uint64_t loadsPosted_ = 0;
     std::uint64_t shownLoad_ = 0;
     bool playing_ = false;
+    // The run up to the moment of an edit under way: where it goes, and
+    // where the head was and when it was first seen, to say how long is left.
+    struct Seeking {
+        double to = -1, fromTime = 0;
+        std::chrono::steady_clock::time_point since;
+    } seeking_;
     double speed_ = 1.0;
 
     QAction* newAct_;

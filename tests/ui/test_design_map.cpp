@@ -32,6 +32,13 @@ bool sameReach(const jl::RippleReach& a, const jl::RippleReach& b) {
     return a.hinges == b.hinges && a.reached == b.reached && a.flipTimes == b.flipTimes &&
            a.meanTimeBetweenFlips == b.meanTimeBetweenFlips && a.failure == b.failure && a.cancelled == b.cancelled;
 }
+
+// An edit of the block count, as the Ladder panel makes it.
+void setBlocks(MainWindow& w, int n) {
+    jl::LadderSpec l = *w.document()->scene().ladder;
+    setBlockCount(l, n);
+    changeScene(w.document(), ladderField("blocks"), l, "blocks");
+}
 }  // namespace
 
 class DesignMapTest : public QObject {
@@ -192,19 +199,14 @@ private slots:
         auto* estimate = w.findChild<ReachEstimate*>("reachEstimate");
         QVERIFY(estimate);
         QSignalSpy shown(estimate, &ReachEstimate::estimated);
-        auto setBlocks = [&w](int n) {
-            jl::LadderSpec l = *w.document()->scene().ladder;
-            setBlockCount(l, n);
-            changeScene(w.document(), ladderField("blocks"), l, "blocks");
-        };
         // A long ladder first: its run starts, and is outdated by the next edit.
-        setBlocks(300);
+        setBlocks(w, 300);
         QVERIFY(estimate->computing());
         QVERIFY(estimate->text().contains("computing"));
         QTest::qWait(600);
         QCOMPARE(shown.count(), 0);
         // Seven blocks: a design no earlier test ran, so it is computed.
-        setBlocks(7);
+        setBlocks(w, 7);
         QVERIFY(shown.wait(60000));
         QVERIFY(!estimate->computing());
         const jl::RippleReach core = jl::firstRippleReach(w.document()->scene(), nullptr);
@@ -227,12 +229,7 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         auto* estimate = w.findChild<ReachEstimate*>("reachEstimate");
         QSignalSpy shown(estimate, &ReachEstimate::estimated);
-        auto setBlocks = [&w](int n) {
-            jl::LadderSpec l = *w.document()->scene().ladder;
-            setBlockCount(l, n);
-            changeScene(w.document(), ladderField("blocks"), l, "blocks");
-        };
-        setBlocks(1000);
+        setBlocks(w, 1000);
         QVERIFY(shown.wait(120000));
         const jl::Scene design = w.document()->scene();
         const double whole = jl::rippleRunTime(design);
@@ -247,7 +244,7 @@ private slots:
         QVERIFY2(estimate->text().startsWith(expected), qPrintable(estimate->text()));
         QVERIFY(!ReachCache::shared().find(ReachCache::designKey(design)));
 
-        setBlocks(20000);
+        setBlocks(w, 20000);
         QTRY_COMPARE(shown.count(), 2);
         QVERIFY(!estimate->computing());
         QVERIFY2(estimate->text().contains("not estimated for a ladder of 20000 blocks"), qPrintable(estimate->text()));

@@ -51,6 +51,14 @@ jl::Frame engineFrameAt(const jl::Scene& scene, int index) {
 }
 std::uint64_t engineHashAt(const jl::Scene& scene, int index) { return engineAt(scene, index)->stateHash(); }
 
+// A ladder of `blocks` default blocks hanging at rest (no script).
+jl::Scene hangingLadder(int blocks) {
+    jl::Scene scene;
+    scene.ladder = jl::LadderSpec{};
+    scene.ladder->blocks = blocks;
+    return scene;
+}
+
 bool samePoses(const jl::Frame& a, const jl::Frame& b) {
     if (a.poses.size() != b.poses.size()) return false;
     for (size_t i = 0; i < a.poses.size(); ++i)
@@ -79,6 +87,12 @@ struct Fixture {
             return p && view->blockAt(*p);
         });
         return shown ? std::optional<QPoint>(at) : std::nullopt;
+    }
+    // An edit in the Ladder panel (the blocks' thickness, in mm); the loads so far before it.
+    std::uint64_t editThickness(double mm) {
+        const auto before = jl::test::loadsSoFar(sim);
+        window.findChild<QDoubleSpinBox*>("thickness")->setValue(mm);
+        return before;
     }
     // Simulates (paused) up to frame `index` and waits until it is on screen.
     bool goTo(int index) {
@@ -166,17 +180,13 @@ private slots:
     // frames move on, and says "paused" again once it is there. Before the
     // first step there is no step to show.
     void anEditOnALongLadderSaysWhereItIsRunningTo() {
-        jl::Scene scene;
-        scene.ladder = jl::LadderSpec{};
-        scene.ladder->blocks = 1000;
-        Fixture f(scene);
+        Fixture f(hangingLadder(1000));
         auto* rate = f.window.findChild<QLabel*>("rate");
         auto* step = f.window.findChild<QLabel*>("step");
         QTRY_COMPARE(step->text(), QString("no step yet"));
         QVERIFY(f.goTo(60));
         QTRY_VERIFY(step->text().endsWith("ms (auto)"));
-        const auto before = jl::test::loadsSoFar(f.sim);
-        f.window.findChild<QDoubleSpinBox*>("thickness")->setValue(4.0);  // mm
+        const auto before = f.editThickness(4.0);
         QVERIFY(jl::test::waitForStatus(f.sim, [before](const SimStatus& s) { return s.loadSerial > before && s.seekingTo > 0; }));
         QTRY_VERIFY2(rate->text().startsWith("running to t = 1.000 s ("), qPrintable(rate->text()));
         QVERIFY(jl::test::waitForStatus(f.sim, [before](const SimStatus& s) {
@@ -185,14 +195,39 @@ private slots:
         QTRY_COMPARE(rate->text(), QString("paused at frame 60 of 60"));
     }
 
+    // A run that takes more than a few seconds to get back to the moment of
+    // an edit also says about how long it still needs (here 10,000 blocks,
+    // a few seconds per 0.1 s simulated).
+    void aLongRunToAnEditSaysAboutHowLongIsLeft() {
+        Fixture f(hangingLadder(10000));
+        auto* rate = f.window.findChild<QLabel*>("rate");
+        QVERIFY(f.goTo(18));
+        const auto before = f.editThickness(4.0);
+        const QRegularExpression left(R"(^running to t = 0\.300 s \(\d+ %, about \d+ (s|min) left\)$)");
+        QVERIFY(jl::test::waitForStatus(f.sim, [before](const SimStatus& s) { return s.loadSerial > before && s.seekingTo > 0; }));
+        QTRY_VERIFY(rate->text().startsWith("running to t = 0.300 s (") && !rate->text().contains("left"));
+        QTRY_VERIFY2_WITH_TIMEOUT(left.match(rate->text()).hasMatch(), qPrintable(rate->text()), 60000);
+        const QRegularExpressionMatch said = left.match(rate->text());
+        const QString amount = said.captured(0).section("about ", 1).section(' ', 0, 0);
+        const double predicted = amount.toDouble() * (said.captured(1) == "min" ? 60 : 1);
+        QElapsedTimer clock;
+        clock.start();
+        QVERIFY(jl::test::waitForStatus(f.sim, [before](const SimStatus& s) {
+            return s.loadSerial > before && s.frameIndex == 18 && s.seekingTo < 0;
+        }, 120000));
+        // An estimate, from the run's own pace: right to within a few seconds here.
+        const double took = clock.elapsed() / 1000.0;
+        qInfo("said \"%s\"; it took %.1f s more", qPrintable(said.captured(0)), took);
+        QVERIFY2(std::abs(took - predicted) < std::max(3.0, predicted), qPrintable(QString::number(took)));
+        QTRY_COMPARE(rate->text(), QString("paused at frame 18 of 18"));
+    }
+
     // A frame of a very long ladder takes seconds: a pause comes between two
     // steps, not at the end of the frame, and the frame is finished later
     // from where it stopped, the same as if it had never been interrupted.
     // Step forward pressed twice at the head makes two frames.
     void aPauseComesBetweenTwoStepsAndTheFrameIsFinishedLater() {
-        jl::Scene scene;
-        scene.ladder = jl::LadderSpec{};
-        scene.ladder->blocks = 2000;
+        jl::Scene scene = hangingLadder(2000);
         scene.solver.frameInterval = 1.0;  // s: a frame of a thousand steps or so, a second or more
         Fixture f(scene);
         f.sim->stepForward();  // simulated flat out (playing would wait until the frame is due)
