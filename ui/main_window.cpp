@@ -102,6 +102,7 @@ MainWindow::MainWindow(Options options) : options_(options) {
     connect(doc_, &Document::pathChanged, this, &MainWindow::updateTitle);
     connect(sim_, &SimController::statusChanged, this, &MainWindow::onStatus);
     connect(timeline_, &Timeline::seekRequested, sim_, &SimController::seek);
+    connect(timeline_, &Timeline::instantRequested, sim_, &SimController::showInstant);
     connect(eventsPanel_, &EventsPanel::instantRequested, sim_, &SimController::showInstant);
     connect(simulationPanel_, &SimulationPanel::historyMegabytesChanged, this, [this](int mb) {
         sim_->setMemoryBudget(std::size_t(mb) << 20);

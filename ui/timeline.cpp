@@ -1,8 +1,12 @@
 #include "ui/timeline.h"
 
+#include "ui/events_panel.h"
+
 #include <QFontMetricsF>
+#include <QHelpEvent>
 #include <QMouseEvent>
 #include <QPainter>
+#include <QToolTip>
 
 #include <algorithm>
 #include <cmath>
@@ -10,6 +14,8 @@
 namespace jl::ui {
 
 namespace {
+constexpr double kMarkReach = 3;  // px either side of an event's mark that still hit it
+
 QColor markColor(jl::EventKind k) {
     switch (k) {
     case jl::EventKind::FlipFlop: return QColor(214, 96, 40);
@@ -27,7 +33,7 @@ Timeline::Timeline(QWidget* parent) : QWidget(parent) {
     setMinimumHeight(40);
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
     setToolTip(tr("Simulated time: the shaded part is recorded; press or drag to see any moment. "
-                  "Marks: orange flip-flop, blue fold, green lock, grey unlock or unfold."));
+                  "Marks: orange flip-flop, blue fold, green lock, grey unlock or unfold; press one to see that instant."));
 }
 
 void Timeline::setDuration(double seconds) {
@@ -127,8 +133,45 @@ void Timeline::paintEvent(QPaintEvent*) {
     p.drawPolygon(QPolygonF({QPointF(cx - 5, r.top() - 5), QPointF(cx + 5, r.top() - 5), QPointF(cx, r.top() + 2)}));
 }
 
+const jl::Event* Timeline::eventNear(double x) const {
+    if (!events_ || events_->empty()) return nullptr;
+    // Events are in time order: only those whose marks fall within reach.
+    const double from = timeAt(int(std::floor(x - kMarkReach))), to = timeAt(int(std::ceil(x + kMarkReach)));
+    auto it = std::lower_bound(events_->begin(), events_->end(), from,
+                               [](const jl::Event& e, double t) { return e.time < t; });
+    const jl::Event* best = nullptr;
+    double bestDistance = kMarkReach;
+    for (; it != events_->end() && it->time <= to; ++it)
+        if (const double d = std::abs(xOf(it->time) - x); d <= bestDistance) {
+            bestDistance = d;
+            best = &*it;
+            if (d == 0) break;
+        }
+    return best;
+}
+
 void Timeline::mousePressEvent(QMouseEvent* e) {
-    if (e->button() == Qt::LeftButton) emit seekRequested(timeAt(int(e->position().x())));
+    if (e->button() != Qt::LeftButton) return;
+    const double x = e->position().x();
+    if (const jl::Event* hit = eventNear(x)) emit instantRequested(hit->time);
+    else emit seekRequested(timeAt(int(x)));
+}
+
+bool Timeline::event(QEvent* e) {
+    if (e->type() == QEvent::ToolTip) {
+        const auto* help = static_cast<QHelpEvent*>(e);
+        if (const jl::Event* hit = eventNear(help->pos().x())) {
+            // Every event of that instant, as the Events dock says them.
+            const auto at = [](const jl::Event& a, const jl::Event& b) { return a.time < b.time; };
+            const auto [first, last] = std::equal_range(events_->begin(), events_->end(), *hit, at);
+            const std::vector<jl::Event> same(first, last);
+            QToolTip::showText(help->globalPos(), eventsInWords(same) + tr("\n(click: show this instant)"), this);
+        } else {
+            QToolTip::showText(help->globalPos(), toolTip(), this);
+        }
+        return true;
+    }
+    return QWidget::event(e);
 }
 
 void Timeline::mouseMoveEvent(QMouseEvent* e) {

@@ -1,5 +1,6 @@
 // The timeline: the recorded span, the frame on screen and the events as
-// marks; pressing or dragging on it scrubs.
+// marks; pressing or dragging on it scrubs, pressing on a mark shows that
+// event's instant, and hovering one says what it was.
 #pragma once
 
 #include "jl/sim/frame.h"
@@ -28,19 +29,23 @@ public:
         QRectF box;
     };
     std::vector<Label> labels() const;
+    // The event whose mark is nearest the window x, within a few pixels.
+    const jl::Event* eventNear(double x) const;
+    double xOf(double t) const;
 
 signals:
     void seekRequested(double time);
+    void instantRequested(double time);  // a press on an event's mark
 
 protected:
     void paintEvent(QPaintEvent*) override;
     void changeEvent(QEvent* e) override;
     void mousePressEvent(QMouseEvent* e) override;
     void mouseMoveEvent(QMouseEvent* e) override;
+    bool event(QEvent* e) override;
 
 private:
     double span() const;
-    double xOf(double t) const;
     double timeAt(int x) const;
     QRectF track() const;
     QFont labelFont() const;

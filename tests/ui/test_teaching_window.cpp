@@ -286,6 +286,38 @@ private slots:
         QCOMPARE(f.teaching.sideView()->options().scale, 1.0);
     }
 
+    // A press on an event's mark in the timeline shows that event's instant
+    // (the mark is the way a class finds "the moment block 3 locks"); a press
+    // away from every mark shows the frame there, as before.
+    void aPressOnAnEventsMarkShowsItsInstant() {
+        Fixture f;
+        f.sim->seek(1.0);
+        QVERIFY(f.showsTime(1.0));
+        auto* timeline = f.window.findChild<Timeline*>();
+        QTRY_VERIFY(timeline->eventNear(timeline->xOf(0.2)));  // the hand's turn, at a frame's time
+        const auto events = f.sim->status()->events;
+        const jl::FrameGrid grid{0, f.sim->status()->interval};
+        // An event alone at its mark's pixel, between two frames.
+        const jl::Event* chosen = nullptr;
+        for (const jl::Event& e : *events)
+            if (!grid.on(e.time) && timeline->eventNear(timeline->xOf(e.time)) == &e) {
+                chosen = &e;
+                break;
+            }
+        QVERIFY(chosen);
+        const int y = timeline->height() / 3;
+        QTest::mouseClick(timeline, Qt::LeftButton, {}, QPoint(int(std::lround(timeline->xOf(chosen->time))), y));
+        QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus& s) { return s.frame->time == chosen->time; }));
+        QCOMPARE(f.sim->status()->frameIndex, int(std::floor(chosen->time / grid.every)));
+        // Far from every mark: the frame under the pointer.
+        double quiet = -1;
+        for (int x = timeline->width() / 2; x < timeline->width() && quiet < 0; ++x)
+            if (!timeline->eventNear(x)) quiet = x;
+        QVERIFY(quiet > 0);
+        QTest::mouseClick(timeline, Qt::LeftButton, {}, QPoint(int(quiet), y));
+        QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus& s) { return s.frame->time != chosen->time && grid.on(s.frame->time); }));
+    }
+
     // Not a check: with JL_DOCS_DIR set, a picture of the window with the teaching docks.
     void writesTheWindowPicture() {
         const QString out = qEnvironmentVariable("JL_DOCS_DIR");
