@@ -2,6 +2,7 @@
 
 #include "ui/design_map_cache.h"
 
+#include <QThread>
 #include <QTimer>
 #include <QtConcurrent>
 
@@ -94,7 +95,12 @@ void ReachEstimate::start() {
     runKey_ = key_;
     stop_ = std::make_shared<std::atomic<bool>>(false);
     watcher_.setFuture(QtConcurrent::run(
-        &pool_, [design = design_, stop = stop_, longest = longest_] { return jl::firstRippleReach(design, stop.get(), longest); }));
+        &pool_, [design = design_, stop = stop_, longest = longest_] {
+            // Only on a core nobody else wants: the simulation the user
+            // watches and the window come first.
+            QThread::currentThread()->setPriority(QThread::IdlePriority);
+            return jl::firstRippleReach(design, stop.get(), longest);
+        }));
 }
 
 void ReachEstimate::show(const jl::RippleReach& r) {

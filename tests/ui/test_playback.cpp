@@ -95,10 +95,11 @@ struct Fixture {
         return before;
     }
     // Simulates (paused) up to frame `index` and waits until it is on screen.
-    bool goTo(int index) {
+    bool goTo(int index, int timeoutMs = 20000) {
         const double dt = sim->status()->interval;
         sim->seek(index * dt + dt / 4);
-        return jl::test::waitForStatus(sim, [index](const SimStatus& s) { return s.frameIndex == index && !s.playing; });
+        return jl::test::waitForStatus(sim, [index](const SimStatus& s) { return s.frameIndex == index && !s.playing; },
+                                       timeoutMs);
     }
 };
 
@@ -201,7 +202,7 @@ private slots:
     void aLongRunToAnEditSaysAboutHowLongIsLeft() {
         Fixture f(hangingLadder(10000));
         auto* rate = f.window.findChild<QLabel*>("rate");
-        QVERIFY(f.goTo(18));
+        QVERIFY(f.goTo(18, 120000));  // a few seconds alone; much longer beside other tests
         const auto before = f.editThickness(4.0);
         const QRegularExpression left(R"(^running to t = 0\.300 s \(\d+ %, about \d+ (s|min) left\)$)");
         QVERIFY(jl::test::waitForStatus(f.sim, [before](const SimStatus& s) { return s.loadSerial > before && s.seekingTo > 0; }));
