@@ -195,6 +195,8 @@ void SimWorker::apply(const cmd::ShowInstant& c) {
     setNiceness(8);
     if (!sim_ || history_.count() == 0) return;
     const jl::FrameGrid grid = frameGrid();
+    // An instant is a still: playing on would replace it by the next frame at once.
+    playing_ = false;
     if (c.time <= 0 || grid.on(c.time)) return apply(cmd::Seek{c.time});
     const int before = int(std::floor(c.time / grid.every));
     // The run must have passed the instant: its drags are recorded up to the

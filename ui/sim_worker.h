@@ -27,7 +27,7 @@ struct StepBack {};
 struct Restart {};
 struct Seek { double time; };
 // The state at exactly `time` (an event's instant), which lies between two
-// frames: shown without being recorded; the cursor is the frame before it.
+// frames: shown, paused, without being recorded; the cursor is the frame before it.
 struct ShowInstant { double time; };
 struct Speed { double factor; };
 struct Budget { std::size_t bytes; };

@@ -514,6 +514,14 @@ private slots:
         f.sim->stepForward();
         QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus& st) { return st.frameIndex == before + 1 && st.frame->time != lock->time; }));
         QVERIFY(samePoses(*f.sim->status()->frame, engineFrameAt(scene, before + 1)));
+        // Chosen while playing: it pauses there (a still, not a frame to play on from at once).
+        f.sim->play();
+        QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus& st) { return st.playing; }));
+        f.sim->showInstant(lock->time);
+        QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus& st) { return st.frame->time == lock->time; }));
+        QTest::qWait(200);
+        QVERIFY(!f.sim->status()->playing);
+        QCOMPARE(f.sim->status()->frame->time, lock->time);
     }
 
     // The scene's duration is the lesson's length: playing stops there (the
