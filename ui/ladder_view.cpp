@@ -51,6 +51,7 @@ LadderView::LadderView() : Qt3DExtras::Qt3DWindow(nullptr, Qt3DRender::API::Open
 }
 
 void LadderView::setScene(const jl::Scene& scene, bool resetCamera) {
+    const bool wasWhole = showsWholeLadder();
     std::vector<BlockShape> shapes = blockShapes(scene);
     const double extent = ladderExtent(scene);
     // More or fewer blocks, or longer ones: the view that fitted no longer does.
@@ -76,7 +77,10 @@ void LadderView::setScene(const jl::Scene& scene, bool resetCamera) {
     if (resetCamera) {
         shownPoses_.clear();  // the old scene's blocks say nothing of the new one's
         resetView();
-    } else if (resized) {
+    } else if (resized && wasWhole) {
+        // The whole ladder was in view: so it stays. A view of part of it
+        // (the top of a long ladder, where the ripple starts) is left alone:
+        // blocks added or taken away at the bottom do not move the top.
         frameLadder();
         frameOnNextFrame_ = true;
     }
@@ -139,6 +143,17 @@ void LadderView::frameLadder() {
     const std::vector<QVector3D> corners = ladderCorners();
     camera_.frame(corners, height() > 0 ? float(width()) / float(height()) : 1.6f);
     updateCamera();
+}
+
+bool LadderView::showsWholeLadder() const {
+    // A little out of the view still counts (a block swung out past the edge).
+    constexpr float kSlack = 1.25f;
+    const QMatrix4x4 viewProjection = camera()->projectionMatrix() * camera()->viewMatrix();
+    for (const QVector3D& c : ladderCorners()) {
+        const QVector4D clip = viewProjection * QVector4D(c, 1);
+        if (clip.w() <= 0 || std::abs(clip.x()) > kSlack * clip.w() || std::abs(clip.y()) > kSlack * clip.w()) return false;
+    }
+    return true;
 }
 
 std::vector<QVector3D> LadderView::ladderCorners() const {

@@ -91,6 +91,8 @@ private:
     // The corners of every block as last shown, and of the ladder as built
     // (for before the first frame): what framing must keep in view.
     std::vector<QVector3D> ladderCorners() const;
+    // Whether every corner of the ladder, as last shown, is in view (or nearly).
+    bool showsWholeLadder() const;
 
     Qt3DCore::QEntity* root_;
     BlockInstances* blocks_;

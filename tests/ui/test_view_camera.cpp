@@ -310,6 +310,31 @@ private slots:
         const QString problem = framingProblem(w);
         QVERIFY2(problem.isEmpty(), qPrintable(problem));
     }
+
+    // A view of part of the ladder stays as it is when blocks are added:
+    // they hang below, and the top (where the ripple starts) does not move.
+    // Once the whole ladder is in view again (F), a longer one is framed.
+    void aViewOfTheTopStaysWhenTheLadderGrows() {
+        MainWindow w(jl::test::quietWindow());
+        QVERIFY(showScene(w, QStringLiteral(JL_SOURCE_DIR "/examples/long-ladder.yaml")));
+        QCOMPARE(w.ladderView()->viewCamera().distance(), 0.6f);
+        auto* blocks = w.findChild<QSpinBox*>("blocks");
+        auto grow = [&](int n) {
+            const auto before = jl::test::loadsSoFar(w.controller());
+            blocks->setValue(n);
+            return jl::test::loadedAfter(w.controller(), before) &&
+                   QTest::qWaitFor([&] { return int(w.controller()->status()->frame->poses.size()) == n; }) &&
+                   (QTest::qWait(200), true);
+        };
+        QVERIFY(grow(300));
+        QCOMPARE(w.ladderView()->viewCamera().distance(), 0.6f);
+        QCOMPARE(w.ladderView()->viewCamera().target(), QVector3D(0, -0.15f, 0));
+        QTest::keyClick(w.ladderView(), Qt::Key_F);
+        QVERIFY(framingProblem(w).isEmpty());
+        QVERIFY(grow(400));
+        const QString problem = framingProblem(w);
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
+    }
 };
 
 QTEST_MAIN(ViewCameraTest)
