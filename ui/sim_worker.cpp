@@ -224,7 +224,10 @@ std::shared_ptr<const jl::Frame> SimWorker::instantFrame(double time, int before
     s.setFrameGrid(at);
     std::vector<jl::Event> events;
     std::optional<jl::Frame> found;
-    while (!found && !abort_) {
+    // Up to half a second of a long ladder: another command (a pause, a
+    // click elsewhere) ends it, and the frame before the instant stays on show.
+    for (int steps = 0; !found && !abort_; ++steps) {
+        if (steps > 0 && commandWaiting()) return nullptr;
         if (!s.stepOnce()) return nullptr;
         for (const jl::Event& e : s.takeEvents()) events.push_back(e);
         for (jl::Frame& f : s.takeGridFrames())
