@@ -26,13 +26,11 @@ QString runInWords(const jl::Event& first, const jl::Event& last, int count) {
 
 }  // namespace
 
-namespace {
 QString whatHappened(const jl::Event& e) {
     QString what = QString::fromStdString(e.text);
     if (what.isEmpty()) what = QObject::tr("hinge %1: %2").arg(e.hinge).arg(QString::fromUtf8(jl::toString(e.kind)));
     return what;
 }
-}  // namespace
 
 QString eventInWords(const jl::Event& e) { return QString("%1 s: %2").arg(e.time, 0, 'f', 3).arg(whatHappened(e)); }
 

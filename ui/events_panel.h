@@ -15,6 +15,8 @@ class QListWidgetItem;
 namespace jl::ui {
 
 QString eventInWords(const jl::Event& e);
+// The same without its time: "blocks 0 and 1 lock end to end".
+QString whatHappened(const jl::Event& e);
 // Events of one instant: "0.512 s: block 1 folds ...; block 2 flips ...".
 QString eventsInWords(const std::vector<jl::Event>& events);
 

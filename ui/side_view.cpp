@@ -2,6 +2,7 @@
 
 #include "jl/ladder/block_corners.h"
 #include "jl/ladder/ladder.h"
+#include "ui/events_panel.h"
 
 #include <QMouseEvent>
 #include <QPainter>
@@ -392,6 +393,23 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
     if (options_.clock) {
         p.setPen(kInk);
         p.drawText(QPointF(target.left() + pad, target.top() + pad + m.ascent()), tr("t = %1 s").arg(frame_->time, 0, 'f', 3));
+        // At an event's instant (N, or a click on it), what happened there:
+        // in presentation mode the class sees no status bar.
+        QStringList happened;
+        for (const jl::Event& e : frame_->events)
+            if (e.time == frame_->time) happened << whatHappened(e);
+        if (!happened.isEmpty()) {
+            QFont small = font;
+            small.setPixelSize(std::max(6, int(std::lround(font.pixelSize() * 0.85))));
+            p.setFont(small);
+            const QRectF room(target.left() + pad, target.top() + pad + m.height() * 1.15, target.width() - 2 * pad,
+                              target.height() / 3);
+            const QRectF used = p.boundingRect(room, Qt::TextWordWrap, happened.join('\n'));
+            p.fillRect(used.adjusted(-3 * ui, -2 * ui, 3 * ui, 2 * ui), QColor(255, 255, 255, 140));
+            p.setPen(kInk);
+            p.drawText(room, Qt::TextWordWrap, happened.join('\n'));
+            p.setFont(font);
+        }
     }
     // The scale bar: one grid cell, above the legend's row.
     {

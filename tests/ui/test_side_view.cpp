@@ -162,6 +162,33 @@ private slots:
         QVERIFY(view.render(target.size().toSize()) != plain);
     }
 
+    // At an event's instant (N in presentation mode, where there is no
+    // status bar) the view says what happened there, under the clock; a
+    // frame whose events came before it says nothing more.
+    void anEventsInstantIsSaidUnderTheClock() {
+        ClassicAtRest c;
+        const QSize size(400, 600);
+        jl::Frame f = c.run.frames.front();
+        f.time = 0.5125;
+        c.view.showFrame(f);
+        const QImage plain = c.view.render(size);
+        const jl::Event earlier{0.5100, jl::EventKind::Lock, 4, 0, "blocks 3 and 4 lock end to end"};
+        const jl::Event fold{0.5125, jl::EventKind::Fold, 1, 0, "blocks 0 and 1 fold face to face"};
+        f.events = {earlier};
+        c.view.showFrame(f);
+        QCOMPARE(c.view.render(size), plain);
+        f.events = {earlier, fold};
+        c.view.showFrame(f);
+        const QImage said = c.view.render(size);
+        int changed = 0, lowest = 0;
+        for (int y = 0; y < size.height(); ++y)
+            for (int x = 0; x < size.width(); ++x)
+                if (said.pixel(x, y) != plain.pixel(x, y)) ++changed, lowest = y;
+        // Words in the band under the clock, nothing else moved.
+        QVERIFY2(changed > 200, qPrintable(QString::number(changed)));
+        QVERIFY2(lowest < size.height() / 3, qPrintable(QString::number(lowest)));
+    }
+
     // In a view of the default dock's size the whole ladder is small, too
     // thin for a number at every corner: each hinge then shows its corner
     // number beside its dot, in the corner numbers' colour.
