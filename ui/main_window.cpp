@@ -437,17 +437,18 @@ void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {
     const double t = s->frame ? s->frame->time : 0;
     timeLabel_->setText(tr("t = %1 s  (of %2 s)").arg(t, 0, 'f', 3).arg(s->headTime, 0, 'f', 2));
     // A long ladder can take a while to run again up to the moment an edit
-    // was made at: say so, rather than "paused" while the frames move on,
-    // and, once it has run a few seconds, about how long it still needs.
+    // was made at (or to an event's instant): say so, rather than "paused"
+    // while the frames move on, and, once it has run a few seconds, about
+    // how long it still needs.
     if (s->seekingTo <= 0) seeking_.to = -1;
     if (s->seekingTo > 0) {
         const auto now = std::chrono::steady_clock::now();
-        if (seeking_.to != s->seekingTo) seeking_ = {s->seekingTo, s->headTime, now};
-        QString done = tr("%1 %").arg(std::floor(100 * std::clamp(s->headTime / s->seekingTo, 0.0, 1.0)), 0, 'f', 0);
+        if (seeking_.to != s->seekingTo) seeking_ = {s->seekingTo, s->seekProgress, now};
+        QString done = tr("%1 %").arg(std::floor(100 * s->seekProgress), 0, 'f', 0);
         const double wall = std::chrono::duration<double>(now - seeking_.since).count();
-        const double ran = s->headTime - seeking_.fromTime;
+        const double ran = s->seekProgress - seeking_.fromProgress;
         if (wall >= kSecondsBeforeTimeLeft && ran > 0)
-            done = tr("%1, %2 left").arg(done, durationText((s->seekingTo - s->headTime) * wall / ran));
+            done = tr("%1, %2 left").arg(done, durationText((1 - s->seekProgress) * wall / ran));
         rateLabel_->setText(tr("running to t = %1 s (%2)").arg(s->seekingTo, 0, 'f', 3).arg(done));
     } else if (s->playing)
         rateLabel_->setText(tr("%1× real time · %2 steps/s").arg(s->realTimeFactor, 0, 'f', 2).arg(s->stepsPerSecond, 0, 'f', 0));

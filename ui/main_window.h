@@ -126,10 +126,10 @@ private:
     std::uint64_t loadsPosted_ = 0;
     std::uint64_t shownLoad_ = 0;
     bool playing_ = false;
-    // The run up to the moment of an edit under way: where it goes, and
-    // where the head was and when it was first seen, to say how long is left.
+    // The run up to the moment of an edit under way: where it goes, and how
+    // far along it was and when it was first seen, to say how long is left.
     struct Seeking {
-        double to = -1, fromTime = 0;
+        double to = -1, fromProgress = 0;
         std::chrono::steady_clock::time_point since;
     } seeking_;
     double speed_ = 1.0;

@@ -24,6 +24,7 @@ struct SimStatus {
     // A seek (or an edit run again up to the moment on screen) still on its
     // way: the time it is simulating to, s; negative when none is.
     double seekingTo = -1;
+    double seekProgress = 0;  // how far along the way there, 0 .. 1
     bool dragging = false;
     double speed = 1.0;
     double realTimeFactor = 0;  // simulated seconds per wall second, lately

@@ -203,7 +203,13 @@ void SimWorker::apply(const cmd::ShowInstant& c) {
     // head, and the keyframe to start from must be there.
     if (before >= history_.head() && !simulateTo(before + 1)) return;
     showFrame(before);
+    // Up to half a second of a long ladder to run again: the status says
+    // where it is going meanwhile.
+    seekingTo_ = c.time;
+    seekProgress_ = 0;
     if (auto f = instantFrame(c.time, before)) shown_ = std::move(f);
+    seekingTo_ = -1;
+    dirty_ = true;
     rebasePace();
 }
 
@@ -224,11 +230,18 @@ std::shared_ptr<const jl::Frame> SimWorker::instantFrame(double time, int before
     s.setFrameGrid(at);
     std::vector<jl::Event> events;
     std::optional<jl::Frame> found;
-    // Up to half a second of a long ladder: another command (a pause, a
-    // click elsewhere) ends it, and the frame before the instant stays on show.
+    // Another command (a pause, a click elsewhere) ends it, the frame before
+    // the instant staying on show.
+    const double start = s.time();
+    auto lastShown = Clock::now();
     for (int steps = 0; !found && !abort_; ++steps) {
         if (steps > 0 && commandWaiting()) return nullptr;
         if (!s.stepOnce()) return nullptr;
+        if (Clock::now() - lastShown > kWorkSlice * 4) {
+            seekProgress_ = std::clamp((s.time() - start) / (time - start), 0.0, 1.0);
+            publish();
+            lastShown = Clock::now();
+        }
         for (const jl::Event& e : s.takeEvents()) events.push_back(e);
         for (jl::Frame& f : s.takeGridFrames())
             if (at.nearest(f.time) == 0) found = std::move(f);
@@ -408,9 +421,11 @@ bool SimWorker::simulateNextFrame() {
 bool SimWorker::simulateTo(int index) {
     auto lastShown = Clock::now();
     seekingTo_ = index * history_.interval();
+    seekProgress_ = std::clamp(double(history_.head()) / index, 0.0, 1.0);
     bool reached = true;
     while (reached && history_.head() < index) {
         reached = simulateNextFrame();
+        seekProgress_ = std::clamp(double(history_.head()) / index, 0.0, 1.0);
         if (Clock::now() - lastShown > kWorkSlice * 4) {
             publish();
             lastShown = Clock::now();
@@ -569,6 +584,7 @@ void SimWorker::publish() {
     s->headTime = head ? head->time : history_.head() * history_.interval();
     s->playing = playing_;
     s->seekingTo = seekingTo_;
+    s->seekProgress = seekProgress_;
     s->dragging = sim_ && sim_->dragging();
     s->speed = speed_;
     s->realTimeFactor = realTimeFactor_;

@@ -121,7 +121,8 @@ private:
     FrameHistory history_;
     int cursor_ = 0;
     bool playing_ = false;
-    double seekingTo_ = -1;  // s, while simulateTo is on its way there
+    double seekingTo_ = -1;  // s, while simulateTo (or instantFrame) is on its way there
+    double seekProgress_ = 0;  // 0 .. 1 of that way
     // Playing stops once at the scene's duration; Play from there goes on past it.
     double duration_ = 0;  // s, 0: none
     bool stoppedAtEnd_ = false;

@@ -524,6 +524,20 @@ private slots:
         QCOMPARE(f.sim->status()->frame->time, lock->time);
     }
 
+    // On a long ladder, going to an instant re-runs up to half a second from
+    // the keyframe before it: the status says where it is going meanwhile.
+    void goingToAnInstantSaysWhereItIsGoing() {
+        Fixture f(hangingLadder(3000));
+        QVERIFY(f.goTo(40, 120000));
+        auto* rate = f.window.findChild<QLabel*>("rate");
+        const double instant = 0.6601;  // between frames 39 and 40, 0.16 s after the keyframe at 0.5 s
+        f.sim->showInstant(instant);
+        QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus& s) { return s.seekingTo == instant; }));
+        QTRY_VERIFY2(rate->text().startsWith("running to t = 0.660 s ("), qPrintable(rate->text()));
+        QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus& s) { return s.frame->time == instant && s.seekingTo < 0; }));
+        QTRY_COMPARE(rate->text(), QString("paused between frames 39 and 40"));
+    }
+
     // The scene's duration is the lesson's length: playing stops there (the
     // classic cascade used to run on to 40 s), and Play goes on past it.
     void playingStopsAtTheScenesDurationThenGoesOnWhenAsked() {
