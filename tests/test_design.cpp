@@ -50,6 +50,16 @@ private slots:
         QCOMPARE(slow.script.front().duration, 0.6);
         QCOMPARE(slow.ladder->blocks, 6);  // the rest as it was
         QCOMPARE(std::string(describe(DesignParameter::HingeDamping).word), std::string("hinge_damping"));
+        // Read back: what withParameter set, for every parameter.
+        const std::pair<DesignParameter, double> set[] = {
+            {DesignParameter::Blocks, 9},         {DesignParameter::Thickness, 0.004}, {DesignParameter::Length, 0.07},
+            {DesignParameter::Width, 0.05},       {DesignParameter::Density, 700},     {DesignParameter::HingeDamping, 2e-5},
+            {DesignParameter::TurnDuration, 0.4}};
+        for (const auto& [p, v] : set) QCOMPARE(parameterValue(withParameter(base, p, v), p), v);
+        QVERIFY(std::isnan(parameterValue(Scene{}, DesignParameter::Blocks)));
+        Scene still = base;
+        still.script.clear();
+        QVERIFY(std::isnan(parameterValue(still, DesignParameter::TurnDuration)));
     }
 
     // The classic design: every hinge flips in order (the classic example's

@@ -51,6 +51,31 @@ private:
     jl::Scene old_, new_;
 };
 
+// The largest of 1, 2, 5 times a power of ten not above x (> 0).
+double roundStepBelow(double x) {
+    const double decade = std::pow(10.0, std::floor(std::log10(x)));
+    for (const double m : {5.0, 2.0, 1.0})
+        if (m * decade <= x) return m * decade;
+    return decade;
+}
+
+// Five values about `value` (SI, the design being edited) in steps of 1, 2
+// or 5 that the spin boxes can show: a designer of a 200-block ladder opens
+// a map of 100 .. 300 blocks, not of 4 .. 12.
+jl::DesignAxis rangeAbout(const AxisShown& a, double value) {
+    const double shown = value * a.scale, lo = a.min * a.scale, hi = a.max * a.scale;
+    const double step = std::max(std::pow(10.0, -a.decimals), roundStepBelow(std::abs(shown) / 4));
+    int below = 2;
+    while (below > 0 && shown - below * step < lo) --below;
+    int above = 4 - below;
+    while (above > 0 && shown + above * step > hi) --above;
+    return {a.parameter, (shown - below * step) / a.scale, (shown + above * step) / a.scale, step / a.scale};
+}
+
+// Whether two values of an axis are the same design (a value read back from
+// a spin box, or built as from + i step, may differ in the last bits).
+bool sameValue(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max({std::abs(a), std::abs(b), 1e-12}); }
+
 QString shownValue(const AxisShown& a, double si) { return QString::number(si * a.scale, 'g', 6); }
 
 QString axisTitle(const AxisShown& a) { return a.unit.isEmpty() ? a.label : QString("%1 (%2)").arg(a.label, a.unit); }
@@ -259,10 +284,12 @@ void DesignMap::showMap() {
     for (double v : ys_) yt << shownValue(sy, v);
     grid_->setAxes(axisTitle(sx), xt, axisTitle(sy), yt);
     int cached = 0;
+    const double currentX = jl::parameterValue(doc_->scene(), x.parameter);
+    const double currentY = jl::parameterValue(doc_->scene(), y.parameter);
     for (int r = 0; r < grid_->rows(); ++r)
         for (int c = 0; c < grid_->columns(); ++c) {
             const jl::Scene design = cellDesign(c, r);
-            if (design == doc_->scene()) grid_->setCurrent(c, r);
+            if (sameValue(xs_[size_t(c)], currentX) && sameValue(ys_[size_t(r)], currentY)) grid_->setCurrent(c, r);
             if (const auto reach = ReachCache::shared().find(ReachCache::designKey(design))) {
                 grid_->setCell(c, r, *reach);
                 ++cached;
@@ -403,6 +430,20 @@ void DesignMap::exportDialog() {
 
 void DesignMap::showEvent(QShowEvent* e) {
     QDialog::showEvent(e);
+    // Opened on a design off the map: the map moves to it (each axis
+    // keeps its parameter). Cells already simulated are kept by design.
+    if (!running_ && doc_->scene().ladder) {
+        // An axis the design is on (or has no value for) stays as it is.
+        const auto about = [this](const jl::DesignAxis& a) {
+            const double v = jl::parameterValue(doc_->scene(), a.parameter);
+            if (!std::isfinite(v) || !(v > 0)) return a;
+            for (const double w : jl::axisValues(a))
+                if (sameValue(w, v)) return a;
+            return rangeAbout(axisShown(a.parameter), v);
+        };
+        const jl::DesignAxis x = xAxis(), y = yAxis(), nx = about(x), ny = about(y);
+        if (!(nx == x) || !(ny == y)) return setAxes(nx, ny);
+    }
     if (!running_) showMap();
 }
 

@@ -56,4 +56,23 @@ Scene withParameter(Scene s, DesignParameter p, double value) {
     return s;
 }
 
+double parameterValue(const Scene& s, DesignParameter p) {
+    const double none = std::nan("");
+    if (!s.ladder) return none;
+    const LadderSpec& l = *s.ladder;
+    switch (p) {
+        case DesignParameter::Blocks: return l.blocks;
+        case DesignParameter::Thickness: return l.block.thickness;
+        case DesignParameter::Length: return l.block.length;
+        case DesignParameter::Width: return l.block.width;
+        case DesignParameter::Density: return l.block.density;
+        case DesignParameter::HingeDamping: return l.hinges.damping;
+        case DesignParameter::TurnDuration:
+            for (const ScriptAction& a : s.script)
+                if (a.kind == ScriptAction::Kind::Turn) return a.duration;
+            return none;
+    }
+    return none;
+}
+
 }  // namespace jl

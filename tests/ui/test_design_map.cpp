@@ -46,6 +46,41 @@ class DesignMapTest : public QObject {
 private slots:
     void initTestCase() { jl::test::isolateSettings(); }
 
+    // Opened on a design off its axes, the map moves to it: the long-ladder
+    // example (200 blocks of 3 mm) opens on 100 .. 300 blocks, its own cell
+    // framed; a thickness off the steps gets five values about it. An axis
+    // the design is on stays as it was set.
+    void aMapOpensAboutTheDesignBeingEdited() {
+        Document doc;
+        const jl::SceneLoad load = jl::loadScene(JL_SOURCE_DIR "/examples/long-ladder.yaml");
+        QVERIFY(load.scene);
+        doc.reset(*load.scene, QString());
+        DesignMap map(&doc);
+        map.show();
+        QCOMPARE(map.xAxis(), (jl::DesignAxis{P::Blocks, 100, 300, 50}));
+        QCOMPARE(map.yAxis(), axisShown(P::Thickness).first);  // 3 mm is its first value
+        QCOMPARE(map.grid()->current(), std::make_pair(2, 0));
+        QVERIFY(!map.running());
+        map.hide();
+
+        doc.editableScene().ladder->block.thickness = 0.0013;
+        doc.notifyChanged(SceneChange::Ladder);
+        map.show();
+        QCOMPARE(map.xAxis(), (jl::DesignAxis{P::Blocks, 100, 300, 50}));
+        const std::vector<double> ys = jl::axisValues(map.yAxis());
+        QCOMPARE(int(ys.size()), 5);
+        const double expected[] = {0.0009, 0.0011, 0.0013, 0.0015, 0.0017};
+        for (size_t i = 0; i < ys.size(); ++i) QVERIFY2(std::abs(ys[i] - expected[i]) < 1e-12, qPrintable(QString::number(ys[i])));
+        QCOMPARE(map.grid()->current(), std::make_pair(2, 2));
+        map.hide();
+
+        // Set by hand to a range the design is on: reopened, it stays.
+        const jl::DesignAxis mine{P::Blocks, 150, 250, 25};
+        map.setAxes(mine, map.yAxis());
+        map.show();
+        QCOMPARE(map.xAxis(), mine);
+    }
+
     void smallMapAgreesWithTheCore() {
         Document doc;
         DesignMap map(&doc);

@@ -44,5 +44,8 @@ std::vector<double> axisValues(const DesignAxis& a);
 // range::kFewestBlocks..kMostBlocks, a NaN taken as the fewest; a turn
 // duration given to every scripted turn).
 Scene withParameter(Scene s, DesignParameter p, double value);
+// The parameter's value in a scene (SI): what withParameter sets. NaN when
+// the scene has none (no ladder; no scripted turn for the turn duration).
+double parameterValue(const Scene& s, DesignParameter p);
 
 }  // namespace jl
