@@ -22,6 +22,18 @@ namespace {
 constexpr float kOrbitDegreesPerPixel = 0.3f;
 constexpr float kLookDegreesPerPixel = 0.15f;
 constexpr double kRibbonDistanceInBlocks = 40;  // ribbons drawn while the eye is closer than this
+
+// The eight corners of a box of the given sizes at `pose` (in the plane, z = 0 its middle).
+void addBox(std::vector<QVector3D>& corners, const jl::Pose& pose, float across, float along, float out) {
+    const float x = float(pose.position.x()), y = float(pose.position.y());
+    const float c = float(std::cos(pose.angle)), s = float(std::sin(pose.angle));
+    for (const float u : {-across / 2, across / 2})
+        for (const float v : {-along / 2, along / 2})
+            for (const float w : {-out / 2, out / 2}) corners.emplace_back(x + c * u - s * v, y + s * u + c * v, w);
+}
+void addCorners(std::vector<QVector3D>& corners, const jl::Pose& pose, const BlockShape& shape) {
+    addBox(corners, pose, shape.across, shape.along, shape.out);
+}
 }  // namespace
 
 LadderView::LadderView() : Qt3DExtras::Qt3DWindow(nullptr, Qt3DRender::API::OpenGL) {
@@ -93,6 +105,10 @@ void LadderView::setFollow(bool on) {
 
 void LadderView::showFrame(const jl::Frame& frame) {
     if (!frame.dragging) grabbed_ = -1;
+    if (frame.time != shownTime_) {
+        earlierPoses_ = std::move(shownPoses_);
+        earlierTime_ = shownTime_;
+    }
     shownPoses_ = frame.poses;
     shownTime_ = frame.time;
     if (follow_ && !frame.poses.empty()) {
@@ -145,6 +161,52 @@ void LadderView::frameLadder() {
     updateCamera();
 }
 
+bool LadderView::frameMotion() {
+    constexpr double kShare = 0.2;       // of the largest motion that counts as moving
+    constexpr int kNeighbours = 2;       // blocks either side, for context
+    constexpr size_t kReach = 3;         // blocks apart that still make one moving stretch
+    const size_t n = std::min({shownPoses_.size(), earlierPoses_.size(), shapes_.size()});
+    std::vector<double> moved(n);
+    double most = 0;
+    for (size_t i = 0; i < n; ++i) {
+        // How far the block's ends went: its centre's path and its turn.
+        moved[i] = (shownPoses_[i].position - earlierPoses_[i].position).norm() +
+                   std::abs(shownPoses_[i].angle - earlierPoses_[i].angle) * shapes_[i].along / 2;
+        most = std::max(most, moved[i]);
+    }
+    if (n == 0 || shownTime_ == earlierTime_ || !(most > 1e-6)) {
+        frameLadder();
+        return false;
+    }
+    // The stretch around the block that moved most, as far as blocks that
+    // also move come within kReach of each other: a ladder can move at both
+    // ends at once (the top swinging, the bottom knocking), and framing both
+    // is framing the whole.
+    const auto arg = size_t(std::max_element(moved.begin(), moved.end()) - moved.begin());
+    const auto moving = [&](size_t i) { return moved[i] >= kShare * most; };
+    size_t first = arg, last = arg;
+    for (bool grew = true; grew;) {
+        grew = false;
+        for (size_t j = 1; j <= kReach && first >= j; ++j)
+            if (moving(first - j)) {
+                first -= j, grew = true;
+                break;
+            }
+        for (size_t j = 1; j <= kReach && last + j < n; ++j)
+            if (moving(last + j)) {
+                last += j, grew = true;
+                break;
+            }
+    }
+    first = first >= size_t(kNeighbours) ? first - kNeighbours : 0;
+    last = std::min(n - 1, last + kNeighbours);
+    std::vector<QVector3D> corners;
+    for (size_t i = first; i <= last; ++i) addCorners(corners, shownPoses_[i], shapes_[i]);
+    camera_.frame(corners, height() > 0 ? float(width()) / float(height()) : 1.6f);
+    updateCamera();
+    return true;
+}
+
 bool LadderView::showsWholeLadder() const {
     // A little out of the view still counts (a block swung out past the edge).
     constexpr float kSlack = 1.25f;
@@ -158,20 +220,10 @@ bool LadderView::showsWholeLadder() const {
 
 std::vector<QVector3D> LadderView::ladderCorners() const {
     std::vector<QVector3D> corners;
-    auto box = [&corners](float x, float y, float angle, float across, float along, float out) {
-        const float c = std::cos(angle), s = std::sin(angle);
-        for (const float u : {-across / 2, across / 2})
-            for (const float v : {-along / 2, along / 2})
-                for (const float w : {-out / 2, out / 2}) corners.emplace_back(x + c * u - s * v, y + s * u + c * v, w);
-    };
     // As built: hanging straight down from the hand at the origin.
-    box(0, -float(extent_) / 2, 0, float(blockLength_), float(extent_), float(blockWidth_));
+    addBox(corners, {{0, -extent_ / 2}, 0}, float(blockLength_), float(extent_), float(blockWidth_));
     const size_t n = std::min(shownPoses_.size(), shapes_.size());
-    for (size_t i = 0; i < n; ++i) {
-        const jl::Pose& p = shownPoses_[i];
-        const BlockShape& s = shapes_[i];
-        box(float(p.position.x()), float(p.position.y()), float(p.angle), s.across, s.along, s.out);
-    }
+    for (size_t i = 0; i < n; ++i) addCorners(corners, shownPoses_[i], shapes_[i]);
     return corners;
 }
 

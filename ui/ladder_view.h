@@ -36,6 +36,13 @@ public:
     void resetView();
     // Keeps the direction of view and fits the whole ladder, as last shown, in the view.
     void frameLadder();
+    // The same for the stretch of blocks around the one that moved most
+    // between the last two frames shown (while playing, however far apart
+    // the window could draw them), and their neighbours: on a long ladder,
+    // where the action is. False
+    // (the whole ladder framed) when there are no two such frames or
+    // nothing moved.
+    bool frameMotion();
     const ViewCamera& viewCamera() const { return camera_; }
     // Turns the viewer about the target, as a drag off the blocks (left or
     // right button) does.
@@ -105,6 +112,8 @@ private:
     std::vector<BlockShape> shapes_;
     std::vector<jl::Pose> shownPoses_;
     double shownTime_ = 0;  // s, the frame drawn
+    std::vector<jl::Pose> earlierPoses_;  // of the frame drawn before it (frameMotion)
+    double earlierTime_ = 0;
     // The ladder is framed again on the first frame after a load or a change
     // of size: only a frame says where the blocks are.
     bool frameOnNextFrame_ = false;

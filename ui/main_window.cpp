@@ -80,7 +80,7 @@ MainWindow::MainWindow(Options options) : options_(options) {
     viewContainer_->setObjectName("ladderView");
     viewContainer_->setFocusPolicy(Qt::StrongFocus);
     viewContainer_->setMinimumSize(320, 240);
-    viewContainer_->setToolTip(tr("Left-drag a block to push it; left-drag elsewhere (or right-drag) to orbit; wheel to zoom toward the pointer; middle-drag to pan; Home resets the view; F frames the ladder."));
+    viewContainer_->setToolTip(tr("Left-drag a block to push it; left-drag elsewhere (or right-drag) to orbit; wheel to zoom toward the pointer; middle-drag to pan; Home resets the view; F frames the ladder, M the blocks that are moving."));
     timeline_ = new Timeline(this);
     auto* centre = new QWidget(this);
     auto* box = new QVBoxLayout(centre);
@@ -148,6 +148,9 @@ void MainWindow::createActions() {
     restartAct_ = make(tr("&Restart"), {QKeySequence(Qt::CTRL | Qt::Key_R)}, QStyle::SP_MediaSkipBackward, tr("Back to the start"));
     resetViewAct_ = make(tr("Reset &view"), {Qt::Key_Home}, QStyle::SP_CustomBase, tr("Look at the whole ladder again"));
     frameAct_ = make(tr("&Frame the ladder"), {Qt::Key_F}, QStyle::SP_CustomBase, tr("Fit the whole ladder in the view, seen from where you are"));
+    frameMotionAct_ = make(tr("Frame the &moving blocks"), {Qt::Key_M}, QStyle::SP_CustomBase,
+                           tr("Fit the blocks that moved most in the last frame in the view: on a long ladder, where the action is"));
+    frameMotionAct_->setObjectName("frameMotionAction");
     walkAct_ = make(tr("&Walk mode"), {Qt::Key_V}, QStyle::SP_CustomBase, tr("Walk around the room: W A S D to move, Q E down and up, drag to look, Esc to stop"));
     walkAct_->setCheckable(true);
     followAct_ = make(tr("F&ollow the ladder"), {}, QStyle::SP_CustomBase, tr("Move the camera with the ladder, so a ladder that swings away stays in view"));
@@ -171,6 +174,10 @@ void MainWindow::createActions() {
     connect(restartAct_, &QAction::triggered, sim_, &SimController::restart);
     connect(resetViewAct_, &QAction::triggered, this, [this] { view_->resetView(); });
     connect(frameAct_, &QAction::triggered, this, [this] { view_->frameLadder(); });
+    connect(frameMotionAct_, &QAction::triggered, this, [this] {
+        if (!view_->frameMotion())
+            statusBar()->showMessage(tr("Nothing moved between the last two frames: the whole ladder is framed."), 4000);
+    });
     connect(walkAct_, &QAction::toggled, this, [this](bool on) { view_->setWalkMode(on); });
     connect(view_, &LadderView::walkModeChanged, walkAct_, &QAction::setChecked);
 }
@@ -194,7 +201,7 @@ void MainWindow::createMenus() {
     sim->addSeparator();
     sim->addAction(tr("&Design map..."), this, [this] { showDesignMap(); })->setObjectName("designMapAction");
     viewMenu_ = menuBar()->addMenu(tr("&View"));
-    viewMenu_->addActions({resetViewAct_, frameAct_, followAct_, walkAct_});
+    viewMenu_->addActions({resetViewAct_, frameAct_, frameMotionAct_, followAct_, walkAct_});
     viewMenu_->addSeparator();
     for (QDockWidget* d : findChildren<QDockWidget*>()) viewMenu_->addAction(d->toggleViewAction());
     helpMenu_ = menuBar()->addMenu(tr("&Help"));
@@ -227,7 +234,8 @@ void MainWindow::showControls() {
         "<tr><td><b>Middle-drag</b></td><td>pan</td></tr>"
         "<tr><td><b>Wheel</b></td><td>zoom toward the pointer</td></tr>"
         "<tr><td><b>Walk mode</b></td><td>W A S D to move, Q E down and up, drag to look, Esc to stop</td></tr>"
-        "<tr><td><b>Timeline, plots</b></td><td>click or drag to see that moment</td></tr>");
+        "<tr><td><b>Timeline, plots</b></td><td>click or drag to see that moment</td></tr>"
+        "<tr><td><b>An event's mark on the timeline, an entry in Events</b></td><td>click to see that event's instant</td></tr>");
     auto* box = findChild<QMessageBox*>("controlsHelp");
     if (!box) {
         box = new QMessageBox(QMessageBox::Information, tr("Controls"), {}, QMessageBox::Close, this);

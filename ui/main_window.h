@@ -148,6 +148,7 @@ private:
     QAction* restartAct_;
     QAction* resetViewAct_;
     QAction* frameAct_;
+    QAction* frameMotionAct_;
     QAction* walkAct_;
     QAction* followAct_;
 };

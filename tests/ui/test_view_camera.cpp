@@ -149,6 +149,38 @@ private slots:
         QVERIFY2(problem.isEmpty(), qPrintable(problem));
     }
 
+    // M frames the stretch of blocks that moved between the last two frames
+    // shown (and two neighbours each side): on a 200-block ladder where only
+    // blocks 100 to 103 moved, those fill the view and the ends are out of it.
+    // With nothing moving it frames the whole ladder and says so.
+    void mFramesTheMovingBlocks() {
+        MainWindow w(jl::test::quietWindow());
+        QVERIFY(showScene(w, QStringLiteral(JL_SOURCE_DIR "/examples/long-ladder.yaml")));
+        LadderView* view = w.ladderView();
+        const jl::Frame still = *w.controller()->status()->frame;
+        jl::Frame moved = still;
+        moved.time = still.time + 1.0 / 60;
+        for (size_t i = 100; i <= 103; ++i) moved.poses[i].position.x() += 0.01;
+        view->showFrame(still);
+        view->showFrame(moved);
+        QTest::keyClick(view, Qt::Key_M);
+        auto inView = [&](size_t i) {
+            const QPointF p = view->pixelOf(moved.poses[i].position);
+            return p.x() > 0 && p.x() < view->width() && p.y() > 0 && p.y() < view->height();
+        };
+        for (size_t i = 98; i <= 105; ++i) QVERIFY2(inView(i), qPrintable(QString("block %1").arg(i)));
+        for (const size_t i : {size_t(0), size_t(90), size_t(112), size_t(199)}) QVERIFY2(!inView(i), qPrintable(QString("block %1").arg(i)));
+        // Those eight blocks fill a fair part of the view's height.
+        const double span = std::abs(view->pixelOf(moved.poses[105].position).y() - view->pixelOf(moved.poses[98].position).y());
+        QVERIFY2(span > view->height() * 0.4, qPrintable(QString::number(span)));
+
+        jl::Frame later = moved;
+        later.time += 1.0 / 60;
+        view->showFrame(later);
+        QVERIFY(!view->frameMotion());
+        for (const size_t i : {size_t(0), size_t(199)}) QVERIFY2(inView(i), qPrintable(QString("block %1").arg(i)));
+    }
+
     void orbitingKeepsTheDistanceToTheTarget() {
         ViewCamera c;
         c.reset(jl::ViewSpec{}, 0.36);
