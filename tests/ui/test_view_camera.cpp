@@ -174,7 +174,18 @@ private slots:
         const double span = std::abs(view->pixelOf(moved.poses[105].position).y() - view->pixelOf(moved.poses[98].position).y());
         QVERIFY2(span > view->height() * 0.4, qPrintable(QString::number(span)));
 
-        jl::Frame later = moved;
+        // Moving at both ends (the top swinging, the bottom knocking): the
+        // end that moved most, not the whole ladder between them.
+        jl::Frame both = moved;
+        both.time += 1.0 / 60;
+        for (size_t i = 1; i <= 2; ++i) both.poses[i].position.x() += 0.02;
+        for (size_t i = 195; i <= 199; ++i) both.poses[i].position.x() += 0.01;
+        view->showFrame(both);
+        QVERIFY(view->frameMotion());
+        for (size_t i = 0; i <= 4; ++i) QVERIFY2(inView(i), qPrintable(QString("block %1").arg(i)));
+        for (const size_t i : {size_t(20), size_t(195)}) QVERIFY2(!inView(i), qPrintable(QString("block %1").arg(i)));
+
+        jl::Frame later = both;
         later.time += 1.0 / 60;
         view->showFrame(later);
         QVERIFY(!view->frameMotion());
