@@ -210,6 +210,7 @@ void RunPlots::setHistory(const std::vector<jl::Frame>& frames) {
 }
 
 void RunPlots::setEvents(std::shared_ptr<const std::vector<jl::Event>> events) {
+    events_ = events;
     for (TimeChart* c : charts_) c->setEvents(events);
 }
 
@@ -233,12 +234,20 @@ void RunPlots::showStatus(const SimStatus& s) {
     if (s.newFrames)
         for (const auto& f : *s.newFrames)
             if (traces_.count() == 0 || f->time > traces_.endTime()) append(*f);
-    setEvents(s.events);
+    // New events repaint the charts whole: with the curves, at the refresh's
+    // pace, not at every status (a long ladder's bottom knocks dozens of
+    // times a second, and three charts repainted each time held the window
+    // to a few pictures a second).
+    if (s.events != events_) {
+        events_ = s.events;
+        scheduleRefresh();
+    }
     setCursorTime(s.frame ? s.frame->time : 0);
 }
 
 void RunPlots::refresh() {
     refreshTimer_.stop();
+    setEvents(events_);
     alignPasses_ = 0;
     dirty_ = false;
     const double t1 = span();

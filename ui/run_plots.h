@@ -89,6 +89,7 @@ private:
     bool sideBySide_ = true;  // as under the view, where the window first puts it
     QTimer refreshTimer_;
     bool dirty_ = false;
+    std::shared_ptr<const std::vector<jl::Event>> events_;  // marked on the charts at the next refresh
     double duration_ = 5;
     double energyScale_ = 1e3;
     std::uint64_t loadSerial_ = ~std::uint64_t(0);
