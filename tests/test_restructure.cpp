@@ -75,6 +75,30 @@ QString invalidity(const World& w) {
     return {};
 }
 
+
+// A chain of n boxes end to end, hinged at their ends, turning as one rigid
+// body (angular velocity w about the origin) with particles for a second,
+// locking join of each neighbouring pair at the lower box's centre.
+struct RigidChain {
+    World w;
+    std::vector<PartId> boxes;
+    std::vector<std::pair<ParticleId, ParticleId>> locks;  // (on box i-1, on box i)
+    explicit RigidChain(int n, double spin = 1.5) {
+        w.gravity = Vec2::Zero();
+        const Vec2 drift(0.2, -0.1);
+        for (int i = 0; i < n; ++i) {
+            const Vec2 c(0, -0.06 * i);
+            boxes.push_back(w.addBox(0.02 + 0.001 * (i % 7), Vec2(0.012, 0.06), 0.045, Pose{c, 0},
+                                     Twist{drift + spin * perp(c), spin}));
+        }
+        for (int i = 1; i < n; ++i) {
+            QVERIFY(!w.combine(w.addParticle(boxes[size_t(i - 1)], Vec2(0, -0.03)),
+                               w.addParticle(boxes[size_t(i)], Vec2(0, 0.03)), false));
+            locks.push_back({w.addParticle(boxes[size_t(i - 1)], Vec2(0, -0.06)), w.addParticle(boxes[size_t(i)], Vec2(0, 0))});
+        }
+    }
+};
+
 }  // namespace
 
 class RestructureTest : public QObject {
@@ -242,6 +266,88 @@ private slots:
         QVERIFY(error->message.find("combined into") != std::string::npos);
         QVERIFY(unchanged(q, v, 1));
         QVERIFY(invalidity(s.w).isEmpty());
+    }
+
+    // The still tail joins thousands of blocks at once: one regroup, with the
+    // same bodies, poses and velocities as a combine per pair.
+    void manyCombinesAtOnceGiveTheBodiesOfOneCombinePerPair() {
+        RigidChain one(40), all(40);
+        for (const auto& [p, q] : one.locks) QVERIFY(!one.w.combine(p, q, false));
+        QVERIFY(!all.w.combine(all.locks));
+        QCOMPARE(int(all.w.pins().size()), 0);
+        const int body = all.w.part(all.boxes.front()).body;
+        for (PartId p : all.boxes) {
+            QCOMPARE(all.w.part(p).body, body);
+            QCOMPARE(one.w.part(p).body, one.w.part(one.boxes.front()).body);
+            QVERIFY((all.w.partPose(p).position - one.w.partPose(p).position).norm() < 1e-15);
+            QVERIFY((all.w.partVelocity(p).linear - one.w.partVelocity(p).linear).norm() < 1e-14);
+        }
+        QVERIFY(invalidity(all.w).isEmpty());
+    }
+
+    void aBatchWithABadPairChangesNothing() {
+        RigidChain c(6);
+        const Eigen::VectorXd q = c.w.q, v = c.w.v;
+        std::vector<std::pair<ParticleId, ParticleId>> pairs = c.locks;
+        pairs.push_back({c.locks[0].first, 9999});
+        const auto error = c.w.combine(pairs);
+        QVERIFY(error && error->message.find("does not exist") != std::string::npos);
+        pairs.back() = c.locks[1];  // one particle twice
+        QVERIFY(c.w.combine(pairs).has_value());
+        QVERIFY(c.w.q == q && c.w.v == v);
+        QCOMPARE(int(c.w.pins().size()), 5);
+        QVERIFY(c.w.separate(std::vector<ParticleId>{c.locks[0].first}).has_value());  // nothing combined into it
+        QVERIFY(invalidity(c.w).isEmpty());
+    }
+
+    // Splitting a turning rigid chain leaves every block with the velocity it
+    // had as part of it (a split is no impact), and the momentum as it was.
+    void separatingManyAtOnceKeepsEveryBlocksVelocity() {
+        RigidChain c(200);
+        QVERIFY(!c.w.combine(c.locks));
+        const std::vector<Twist> before = c.w.partVelocities();
+        const Momentum m0 = momentum(c.w);
+        std::vector<ParticleId> top;
+        for (int i = 0; i < 64; ++i) top.push_back(c.locks[size_t(i)].first);
+        QVERIFY(!c.w.separate(top));
+        QCOMPARE(int(c.w.pins().size()), 64);  // 64 blocks apart, and hinged to the rest
+        QVERIFY(c.w.part(c.boxes[64]).body == c.w.part(c.boxes[199]).body);
+        for (PartId p : c.boxes) {
+            const Twist after = c.w.partVelocity(p);
+            QVERIFY2((after.linear - before[size_t(p)].linear).norm() < 1e-12,
+                     qPrintable(QString("block %1 %2").arg(p).arg((after.linear - before[size_t(p)].linear).norm())));
+            QVERIFY(std::abs(after.angular - before[size_t(p)].angular) < 1e-12);
+        }
+        QVERIFY((momentum(c.w).linear - m0.linear).norm() < 1e-12);
+        QVERIFY(std::abs(momentum(c.w).angular - m0.angular) < 1e-12);
+        QVERIFY(invalidity(c.w).isEmpty());
+    }
+
+    // After a large merge the dead bodies go: every part keeps its pose,
+    // velocity and accelerations' slot, and nothing dead lies between the live.
+    void compactingBodiesKeepsEveryPartWhereItIs() {
+        RigidChain c(100);
+        std::vector<std::pair<ParticleId, ParticleId>> tail(c.locks.begin() + 30, c.locks.end());
+        QVERIFY(!c.w.combine(tail));
+        const std::vector<Twist> velocities = c.w.partVelocities();
+        std::vector<Pose> poses;
+        for (PartId p = 0; p < c.w.partCount(); ++p) poses.push_back(c.w.partPose(p));
+        const long long version = c.w.structureVersion();
+        c.w.compactBodies();
+        QVERIFY(c.w.structureVersion() > version);
+        QCOMPARE(c.w.bodyCount(), 1 + 31);  // the ground, 30 blocks and the merged rest
+        QCOMPARE(int(c.w.q.size()), 3 * c.w.bodyCount());
+        for (int b = 0; b < c.w.bodyCount(); ++b) QVERIFY(c.w.body(b).alive);
+        for (PartId p = 0; p < c.w.partCount(); ++p) {
+            QVERIFY((c.w.partPose(p).position - poses[size_t(p)].position).norm() == 0);
+            QVERIFY((c.w.partVelocity(p).linear - velocities[size_t(p)].linear).norm() == 0);
+        }
+        QCOMPARE(int(c.w.pins().size()), 30);
+        QVERIFY(invalidity(c.w).isEmpty());
+        // And it goes on working: the next split reuses no stale number.
+        QVERIFY(!c.w.separate(std::vector<ParticleId>{tail.front().first}));
+        QCOMPARE(int(c.w.pins().size()), 31);
+        QVERIFY(invalidity(c.w).isEmpty());
     }
 
     // 100 boxes with four corner particles each; 10,000 random combines and

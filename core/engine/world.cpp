@@ -8,6 +8,7 @@
 #include <map>
 #include <numbers>
 #include <numeric>
+#include <unordered_map>
 
 namespace jl {
 
@@ -105,30 +106,55 @@ std::optional<WorldError> World::checkParticle(ParticleId p) const {
     return std::nullopt;
 }
 
-std::optional<WorldError> World::combine(ParticleId p, ParticleId q, bool consistent) {
-    touch();
+std::optional<WorldError> World::checkCombine(ParticleId p, ParticleId q) const {
     if (auto e = checkParticle(p)) return e;
     if (auto e = checkParticle(q)) return e;
     if (p == q) return WorldError{"cannot combine a particle with itself"};
-    for (const Attachment& x : particles_[p].at)
-        for (const Attachment& y : particles_[q].at)
+    for (const Attachment& x : particles_[size_t(p)].at)
+        for (const Attachment& y : particles_[size_t(q)].at)
             if (x.part == y.part)
                 return WorldError{"cannot combine two points of the same part " + std::to_string(x.part)};
+    return std::nullopt;
+}
 
-    std::vector<int> touched;
-    for (const Attachment& x : particles_[p].at) touched.push_back(parts_[x.part].body);
-    for (const Attachment& y : particles_[q].at) touched.push_back(parts_[y.part].body);
-
-    Particle& pp = particles_[p];
-    for (const Attachment& y : particles_[q].at) {
+void World::absorb(ParticleId p, ParticleId q, std::vector<int>& touched) {
+    for (const Attachment& x : particles_[size_t(p)].at) touched.push_back(parts_[size_t(x.part)].body);
+    for (const Attachment& y : particles_[size_t(q)].at) touched.push_back(parts_[size_t(y.part)].body);
+    Particle& pp = particles_[size_t(p)];
+    for (const Attachment& y : particles_[size_t(q)].at) {
         pp.at.push_back(y);
-        auto& list = particlesOfPart_[y.part];
+        auto& list = particlesOfPart_[size_t(y.part)];
         if (std::find(list.begin(), list.end(), p) == list.end()) list.push_back(p);
     }
     pp.absorbed.push_back(q);
-    particles_[q].mergedInto = p;
+    particles_[size_t(q)].mergedInto = p;
+}
+
+std::optional<WorldError> World::combine(ParticleId p, ParticleId q, bool consistent) {
+    touch();
+    if (auto e = checkCombine(p, q)) return e;
+    std::vector<int> touched;
+    absorb(p, q, touched);
     regroup(touched);
     if (consistent) return closePins("combine");
+    return std::nullopt;
+}
+
+std::optional<WorldError> World::combine(const std::vector<std::pair<ParticleId, ParticleId>>& pairs) {
+    touch();
+    std::vector<ParticleId> used;
+    for (const auto& [p, q] : pairs) {
+        if (auto e = checkCombine(p, q)) return e;
+        used.push_back(p);
+        used.push_back(q);
+    }
+    std::sort(used.begin(), used.end());
+    if (std::adjacent_find(used.begin(), used.end()) != used.end())
+        return WorldError{"particle " + std::to_string(*std::adjacent_find(used.begin(), used.end())) +
+                          " is in more than one pair of one combine"};
+    std::vector<int> touched;
+    for (const auto& [p, q] : pairs) absorb(p, q, touched);
+    regroup(touched);
     return std::nullopt;
 }
 
@@ -154,21 +180,44 @@ std::optional<WorldError> World::pinsLeftOpen(const char* operation, const Proje
                       std::to_string(r.residual) + " m after " + std::to_string(r.iterations) + " iterations)"};
 }
 
-std::optional<WorldError> World::separate(ParticleId p, bool consistent) {
-    touch();
+std::optional<WorldError> World::checkSeparate(ParticleId p) const {
     if (auto e = checkParticle(p)) return e;
-    Particle& pp = particles_[p];
-    if (pp.absorbed.empty())
+    if (particles_[size_t(p)].absorbed.empty())
         return WorldError{"particle " + std::to_string(p) + " has nothing combined into it"};
-    std::vector<int> touched;
-    for (const Attachment& x : pp.at) touched.push_back(parts_[x.part].body);
+    return std::nullopt;
+}
 
+void World::unabsorb(ParticleId p, std::vector<int>& touched) {
+    Particle& pp = particles_[size_t(p)];
+    for (const Attachment& x : pp.at) touched.push_back(parts_[size_t(x.part)].body);
     const ParticleId q = pp.absorbed.back();
     pp.absorbed.pop_back();
-    pp.at.resize(pp.at.size() - particles_[q].at.size());  // combine appended q's last
-    particles_[q].mergedInto = -1;
+    pp.at.resize(pp.at.size() - particles_[size_t(q)].at.size());  // combine appended q's last
+    particles_[size_t(q)].mergedInto = -1;
+}
+
+std::optional<WorldError> World::separate(ParticleId p, bool consistent) {
+    touch();
+    if (auto e = checkSeparate(p)) return e;
+    std::vector<int> touched;
+    unabsorb(p, touched);
     regroup(touched);
     if (consistent) return closePins("separate");
+    return std::nullopt;
+}
+
+std::optional<WorldError> World::separate(const std::vector<ParticleId>& particles) {
+    touch();
+    std::vector<ParticleId> sorted = particles;
+    std::sort(sorted.begin(), sorted.end());
+    if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+        return WorldError{"particle " + std::to_string(*std::adjacent_find(sorted.begin(), sorted.end())) +
+                          " is separated twice in one separate"};
+    for (ParticleId p : particles)
+        if (auto e = checkSeparate(p)) return e;
+    std::vector<int> touched;
+    for (ParticleId p : particles) unabsorb(p, touched);
+    regroup(touched);
     return std::nullopt;
 }
 
@@ -279,49 +328,61 @@ void World::setPartVelocities(const std::vector<Twist>& velocities) {
 
 // ---- grouping parts into bodies ----
 
+// The parts of `parts` that move as one, each group sorted by PartId, the
+// groups in the order of their union-find roots. Sorted vectors and a hash
+// of shared pairs rather than trees: a ladder's still tail regroups
+// thousands of parts at once (docs/model.md section 6.6), and the order of
+// the unions (hence of the groups, hence of the bodies) is the one the
+// operations have always had, so trajectories stay the same bit for bit.
 std::vector<std::vector<PartId>> World::rigidGroups(const std::vector<PartId>& parts) const {
-    std::map<PartId, int> index;
-    for (int i = 0; i < int(parts.size()); ++i) index[parts[i]] = i;
+    std::vector<std::pair<PartId, int>> index(parts.size());
+    for (int i = 0; i < int(parts.size()); ++i) index[size_t(i)] = {parts[size_t(i)], i};
+    std::sort(index.begin(), index.end());
+    const auto indexOf = [&](PartId p) {
+        const auto it = std::lower_bound(index.begin(), index.end(), std::pair<PartId, int>{p, -1});
+        return it != index.end() && it->first == p ? it->second : -1;
+    };
     std::vector<int> root(parts.size());
     std::iota(root.begin(), root.end(), 0);
     auto find = [&](int i) {
-        while (root[i] != i) i = root[i] = root[root[i]];
+        while (root[size_t(i)] != i) i = root[size_t(i)] = root[size_t(root[size_t(i)])];
         return i;
     };
-    auto unite = [&](int i, int j) { root[find(i)] = find(j); };
+    auto unite = [&](int i, int j) { root[size_t(find(i))] = find(j); };
 
     // Two extended parts sharing two distinct particles are rigid together;
     // a point part is rigid with anything it shares a particle with.
     std::vector<ParticleId> seen;
     for (PartId part : parts)
-        for (ParticleId id : particlesOfPart_[part])
+        for (ParticleId id : particlesOfPart_[size_t(part)])
             if (isLive(id)) seen.push_back(id);
     std::sort(seen.begin(), seen.end());
     seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
-    std::map<std::pair<int, int>, int> shared;
+    std::unordered_map<std::uint64_t, int> shared;
+    std::vector<int> members;
     for (ParticleId id : seen) {
-        std::vector<int> members;
-        for (const Attachment& x : particles_[id].at) {
-            auto it = index.find(x.part);
-            if (it != index.end()) members.push_back(it->second);
-        }
+        members.clear();
+        for (const Attachment& x : particles_[size_t(id)].at)
+            if (const int i = indexOf(x.part); i >= 0) members.push_back(i);
         std::sort(members.begin(), members.end());
         members.erase(std::unique(members.begin(), members.end()), members.end());
         for (size_t i = 0; i < members.size(); ++i)
             for (size_t j = i + 1; j < members.size(); ++j) {
                 const int x = members[i], y = members[j];
+                const std::uint64_t key = (std::uint64_t(std::uint32_t(x)) << 32) | std::uint32_t(y);
                 // In weld mode two extended parts stay apart: a weld holds them.
-                if (parts_[parts[x]].isPoint || parts_[parts[y]].isPoint ||
-                    (++shared[{x, y}] >= 2 && !weldRigidPairs_))
+                if (parts_[size_t(parts[size_t(x)])].isPoint || parts_[size_t(parts[size_t(y)])].isPoint ||
+                    (++shared[key] >= 2 && !weldRigidPairs_))
                     unite(x, y);
             }
     }
-    std::map<int, std::vector<PartId>> groups;
-    for (int i = 0; i < int(parts.size()); ++i) groups[find(i)].push_back(parts[i]);
+    std::vector<std::pair<int, PartId>> byRoot(parts.size());
+    for (int i = 0; i < int(parts.size()); ++i) byRoot[size_t(i)] = {find(i), parts[size_t(i)]};
+    std::sort(byRoot.begin(), byRoot.end());
     std::vector<std::vector<PartId>> out;
-    for (auto& [r, g] : groups) {
-        std::sort(g.begin(), g.end());
-        out.push_back(std::move(g));
+    for (size_t i = 0; i < byRoot.size(); ++i) {
+        if (i == 0 || byRoot[i].first != byRoot[i - 1].first) out.emplace_back();
+        out.back().push_back(byRoot[i].second);
     }
     return out;
 }
@@ -331,25 +392,26 @@ void World::regroup(const std::vector<int>& touchedBodies) {
     std::sort(olds.begin(), olds.end());
     olds.erase(std::unique(olds.begin(), olds.end()), olds.end());
     std::vector<PartId> parts;
-    for (int b : olds) parts.insert(parts.end(), bodies_[b].parts.begin(), bodies_[b].parts.end());
-    std::vector<Pose> poses;
-    std::vector<Twist> velocities;
-    for (PartId p : parts) {
-        poses.push_back(partPose(p));
-        velocities.push_back(partVelocity(p));
-    }
+    for (int b : olds) parts.insert(parts.end(), bodies_[size_t(b)].parts.begin(), bodies_[size_t(b)].parts.end());
+    // Where each part was (its pose and velocity), by PartId.
+    std::vector<std::pair<PartId, std::pair<Pose, Twist>>> was(parts.size());
+    for (size_t i = 0; i < parts.size(); ++i) was[i] = {parts[i], {partPose(parts[i]), partVelocity(parts[i])}};
+    std::sort(was.begin(), was.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
     for (int b : olds) {
-        bodies_[b] = Body{};
+        bodies_[size_t(b)] = Body{};
         invMassDiag.segment<3>(3 * b).setZero();  // dead until reused: no mass to move
         if (b != 0) freeBodies_.push_back(b);
     }
+    std::vector<Pose> gp;
+    std::vector<Twist> gv;
     for (const std::vector<PartId>& g : rigidGroups(parts)) {
-        std::vector<Pose> gp;
-        std::vector<Twist> gv;
+        gp.clear();
+        gv.clear();
         for (PartId p : g) {
-            const size_t i = size_t(std::find(parts.begin(), parts.end(), p) - parts.begin());
-            gp.push_back(poses[i]);
-            gv.push_back(velocities[i]);
+            const auto it = std::lower_bound(was.begin(), was.end(), p,
+                                             [](const auto& x, PartId id) { return x.first < id; });
+            gp.push_back(it->second.first);
+            gv.push_back(it->second.second);
         }
         makeBody(g, gp, gv);
     }
@@ -441,6 +503,35 @@ int World::makeBody(const std::vector<PartId>& g, const std::vector<Pose>& poses
     a.segment<3>(3 * b).setZero();
     ++structureVersion_;
     return b;
+}
+
+void World::compactBodies() {
+    touch();
+    std::vector<int> to(bodies_.size(), -1);
+    int n = 0;
+    for (int b = 0; b < bodyCount(); ++b)
+        if (bodies_[size_t(b)].alive) to[size_t(b)] = n++;
+    freeBodies_.clear();
+    if (n == bodyCount()) return;
+    std::vector<Body> bodies(static_cast<size_t>(n));
+    Eigen::VectorXd q1(3 * n), v1(3 * n), a1(3 * n), m1(3 * n);
+    for (int b = 0; b < bodyCount(); ++b) {
+        const int to_b = to[size_t(b)];
+        if (to_b < 0) continue;
+        bodies[size_t(to_b)] = std::move(bodies_[size_t(b)]);
+        q1.segment<3>(3 * to_b) = q.segment<3>(3 * b);
+        v1.segment<3>(3 * to_b) = v.segment<3>(3 * b);
+        a1.segment<3>(3 * to_b) = a.segment<3>(3 * b);
+        m1.segment<3>(3 * to_b) = invMassDiag.segment<3>(3 * b);
+    }
+    for (Part& p : parts_) p.body = to[size_t(p.body)];
+    bodies_ = std::move(bodies);
+    q = std::move(q1);
+    v = std::move(v1);
+    a = std::move(a1);
+    invMassDiag = std::move(m1);
+    pinsStale_ = true;
+    ++structureVersion_;
 }
 
 void World::shrinkToFit() {

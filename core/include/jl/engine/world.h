@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace jl {
@@ -156,6 +157,14 @@ public:
     // Both also return an error, in words, if the projection after the
     // change could not close the pins; the structure has changed then.
     std::optional<WorldError> separate(ParticleId p, bool consistent = true);
+    // Many combines (or separates) as one change of structure: the parts
+    // regroup once, in O(k log k) for the k parts of the bodies concerned,
+    // rather than once per pair. Positions and velocities are left as they
+    // are (a caller joining parts at rest relative to each other, or
+    // splitting a rigid body, needs no projection). Every pair is checked
+    // first: on an error nothing has changed.
+    std::optional<WorldError> combine(const std::vector<std::pair<ParticleId, ParticleId>>& pairs);
+    std::optional<WorldError> separate(const std::vector<ParticleId>& particles);
     // After a combine with `consistent = false` by a caller that sets the
     // velocities itself (an impact projects them with its own impulses):
     // the pins closed by moving positions alone; the error as for combine.
@@ -240,6 +249,12 @@ public:
     Vec2 gravity{0, -9.81};
 
     void shrinkToFit();
+    // Renumbers the bodies so that the live ones are 0, 1, 2, ... in their
+    // order, with no dead ones between them: after a merge of thousands of
+    // bodies into one, every pass over the bodies (the integrators' vector
+    // updates, the solver's turns) would otherwise walk the dead. A change
+    // of structure: body numbers held elsewhere are stale after it.
+    void compactBodies();
 
     // Bumped by every change of structure (bodies or pins).
     long long structureVersion() const { return structureVersion_; }
@@ -264,6 +279,10 @@ private:
     std::optional<WorldError> closePins(const char* operation);
     static std::optional<WorldError> pinsLeftOpen(const char* operation, const ProjectionResult& r);
     std::optional<WorldError> checkParticle(ParticleId p) const;
+    std::optional<WorldError> checkCombine(ParticleId p, ParticleId q) const;
+    std::optional<WorldError> checkSeparate(ParticleId p) const;
+    void absorb(ParticleId p, ParticleId q, std::vector<int>& touched);  // q into p; the bodies it touches
+    void unabsorb(ParticleId p, std::vector<int>& touched);              // the last absorbed out of p
     void regroup(const std::vector<int>& touchedBodies);
     std::vector<std::vector<PartId>> rigidGroups(const std::vector<PartId>& parts) const;
     int makeBody(const std::vector<PartId>& parts, const std::vector<Pose>& partPoses,
