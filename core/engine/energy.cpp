@@ -4,16 +4,31 @@
 
 namespace jl {
 
-// Summed over parts, so a block locked to a held block keeps its energy in
-// the books (the hand's work on it is counted in the held power).
+// A dynamic body's energy is its own: its mass at its centre of mass (the
+// body's origin) and its inertia about it, one term for a body of a
+// thousand blocks (a long ladder's still tail, docs/model.md section 3.7),
+// where a sum over its parts would cost a thousand at every step. Parts of
+// kinematic bodies are summed one by one, so a block locked to a held block
+// keeps its energy in the books (the hand's work on it is counted in the
+// held power); the held block itself is outside them.
 Energy energy(const World& w) {
     Energy e;
-    for (PartId p = 1; p < w.partCount(); ++p) {
-        const Part& part = w.part(p);
-        if (part.drive || part.body == 0) continue;
-        const Twist vel = w.partVelocity(p);
-        e.kinetic += 0.5 * part.mass * vel.linear.squaredNorm() + 0.5 * part.inertia * vel.angular * vel.angular;
-        e.potential -= part.mass * w.gravity.dot(w.partPose(p).position);
+    for (int b = 1; b < w.bodyCount(); ++b) {
+        const Body& body = w.body(b);
+        if (!body.alive) continue;
+        if (!body.kinematic) {
+            const Twist vel = w.bodyVelocity(b);
+            e.kinetic += 0.5 * body.mass * vel.linear.squaredNorm() + 0.5 * body.inertia * vel.angular * vel.angular;
+            e.potential -= body.mass * w.gravity.dot(w.bodyPose(b).position);
+            continue;
+        }
+        for (PartId p : body.parts) {
+            const Part& part = w.part(p);
+            if (part.drive) continue;
+            const Twist vel = w.partVelocity(p);
+            e.kinetic += 0.5 * part.mass * vel.linear.squaredNorm() + 0.5 * part.inertia * vel.angular * vel.angular;
+            e.potential -= part.mass * w.gravity.dot(w.partPose(p).position);
+        }
     }
     for (const Spring& s : w.springs()) {
         if (!w.validParticle(s.a) || !w.validParticle(s.b)) continue;  // an absorbed end still acts

@@ -331,7 +331,7 @@ void World::setPartVelocities(const std::vector<Twist>& velocities) {
 // The parts of `parts` that move as one, each group sorted by PartId, the
 // groups in the order of their union-find roots. Sorted vectors and a hash
 // of shared pairs rather than trees: a ladder's still tail regroups
-// thousands of parts at once (docs/model.md section 6.6), and the order of
+// thousands of parts at once (docs/model.md section 3.7), and the order of
 // the unions (hence of the groups, hence of the bodies) is the one the
 // operations have always had, so trajectories stay the same bit for bit.
 std::vector<std::vector<PartId>> World::rigidGroups(const std::vector<PartId>& parts) const {

@@ -46,6 +46,8 @@ Ladder::Ladder(World& w, const LadderSpec& spec) : spec_(spec), length_(spec.blo
         for (int k = 0; k < 4; ++k) corners_[size_t(i)][size_t(k)] = w.addParticle(blocks_[size_t(i)], cornerLocal(i, k));
     }
     hinges_.resize(size_t(n - 1));
+    stillPoints_.assign(size_t(n - 1), {-1, -1});
+    stillFrom_ = n;
     for (int j = 1; j < n; ++j) hinges_[size_t(j - 1)].corner = (j % 2 == 1) ? 0 : 3;
     // phi = sense * (theta_j - theta_{j-1} + offset) for each corner k: the
     // angle of -d_b in the frame (d_a, n_a), whose handedness is the sense.
@@ -178,7 +180,7 @@ double Ladder::foldRate(const World& w, int j) const {
 // Locked and folded pairs are rigid at exactly 0 and pi (snapped when they
 // formed); free hinges are tracked continuously.
 void Ladder::updateAngles(const World& w) {
-    for (int j = 1; j < blockCount(); ++j) {
+    for (int j = 1; j < liveEnd(); ++j) {
         Hinge& h = hinges_[size_t(j - 1)];
         if (h.mode == HingeMode::Free) {
             h.foldAngle = foldAngle(w, j);
@@ -319,7 +321,7 @@ HingeContact Ladder::contact(const World& w, const Dynamics& d, int j) const {
 double Ladder::eventFunctions(const World& w, const Dynamics& d, std::vector<double>& out) const {
     angleEventFunctions(w, out);
     double smallestForce = std::numeric_limits<double>::infinity();
-    for (int j = 1; j < blockCount(); ++j) {
+    for (int j = 1; j < liveEnd(); ++j) {
         double* g = &out[2 * size_t(j - 1)];
         if (hinge(j).held) continue;  // let go after a trial (Simulation::settleHolds), not by a sign change
         switch (hinge(j).mode) {
@@ -348,8 +350,8 @@ std::array<double, 2> Ladder::limitFunctions(int j, double phi) const {
 }
 
 void Ladder::angleEventFunctions(const World& w, std::vector<double>& out) const {
-    out.assign(2 * hinges_.size(), kNoEvent);
-    for (int j = 1; j < blockCount(); ++j) {
+    out.assign(2 * size_t(liveEnd() - 1), kNoEvent);
+    for (int j = 1; j < liveEnd(); ++j) {
         if (hinge(j).mode != HingeMode::Free) continue;
         const auto [open, folded] = limitFunctions(j, foldAngle(w, j));
         out[2 * size_t(j - 1)] = open;

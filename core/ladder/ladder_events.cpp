@@ -61,7 +61,7 @@ void Ladder::noteClose(int j, double t) {
 
 std::vector<int> Ladder::expiredHolds(const World& w, const Dynamics& d, double t) {
     std::vector<int> out;
-    for (int j = 1; j < blockCount(); ++j) {
+    for (int j = 1; j < liveEnd(); ++j) {
         Hinge& h = hinges_[size_t(j - 1)];
         if (!h.held) continue;
         if (h.mode != HingeMode::OpenLocked && h.mode != HingeMode::Folded) {
@@ -94,7 +94,7 @@ std::optional<std::pair<int, EventKind>> Ladder::pullingContact(const World& w, 
     std::optional<std::pair<int, EventKind>> worst;
     const double tolerance = impact ? impulseTolerance_ : forceTolerance_;
     double most = -tolerance;
-    for (int j = 1; j < blockCount(); ++j) {
+    for (int j = 1; j < liveEnd(); ++j) {
         const HingeMode mode = hinge(j).mode;
         if (mode != HingeMode::OpenLocked && mode != HingeMode::Folded) continue;
         if (hinge(j).held || std::find(keep.begin(), keep.end(), j) != keep.end()) continue;
@@ -199,7 +199,7 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
             continue;
         }
         bool driven = false;
-        for (int j = 1; j < blockCount() && !driven; ++j) {
+        for (int j = 1; j < liveEnd() && !driven; ++j) {
             if (hinge(j).mode != HingeMode::Free || std::find(released.begin(), released.end(), j) != released.end())
                 continue;
             for (bool folded : {false, true})
@@ -294,7 +294,7 @@ std::vector<Event> Ladder::resolve(World& w, Dynamics& d, double t, double* loss
         settled_ = d.evaluate(w, t);
         updateAngles(w);
         std::vector<int> hits;
-        for (int j = 1; j < blockCount(); ++j)
+        for (int j = 1; j < liveEnd(); ++j)
             if (hinge(j).mode == HingeMode::Free && std::find(released.begin(), released.end(), j) == released.end() &&
                 (touchingLimit(w, j, false, true) || touchingLimit(w, j, true, true)))
                 hits.push_back(j);

@@ -254,6 +254,7 @@ void writeSolver(Writer& w, const SolverSpec& solver) {
     w.choiceIf<Integrator>("integrator", solver.integrator, d.integrator, kIntegrators);
     w.choiceIf<EventPolicy>("events", solver.events, d.events, kEventPolicies);
     w.choiceIf<RigidPairs>("rigid_pairs", solver.rigidPairs, d.rigidPairs, kRigidPairs);
+    w.choiceIf<StillTail>("still_tail", solver.stillTail, d.stillTail, kStillTails);
     writeNumbers(w, kSolverNumbers, solver);
     w.endMap();
 }

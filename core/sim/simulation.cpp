@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <map>
@@ -161,7 +162,41 @@ std::optional<std::string> Simulation::buildWorld() {
     for (PartId p = 1; p < world_.partCount(); ++p)
         energyFloor_ += world_.part(p).mass * world_.gravity.norm() * (world_.part(p).halfSize.norm() + 1e-3);
     lastResidual_ = pinResidual(world_);
+    hangStillTail();
     return std::nullopt;
+}
+
+// The blocks of a ladder that the motion has not reached hang still as one
+// body until it comes near them (docs/model.md section 3.7): below every
+// block that moves or accelerates at the start, below every block the hand
+// holds or a pin or spring of the scene holds, with Ladder::kWakeBlocks to
+// spare. Air drag would act on each block by its own speed, and a tail that
+// falls as one would not be the ladder's motion: not with drag.
+void Simulation::hangStillTail() {
+    if (!ladder_ || scene_.solver.stillTail != StillTail::Joined || scene_.linearDamping > 0 ||
+        scene_.angularDamping > 0 || !(world_.gravity.norm() > 0))
+        return;
+    const int n = ladder_->blockCount();
+    int deepest = 0;
+    for (int h : scene_.ladder->held) deepest = std::max(deepest, h);
+    const auto touches = [&](const PointRef& r) {
+        if (r.on.rfind("block:", 0) == 0) deepest = std::max(deepest, std::atoi(r.on.c_str() + 6));
+    };
+    for (const PinSpec& p : scene_.pins) touches(p.a), touches(p.b);
+    for (const SpringSpec& s : scene_.springs) touches(s.a), touches(s.b);
+    // Still: no speed at all, and accelerations within rounding of none (the
+    // last evaluation is of the state after the inputs at t = 0).
+    const double length = scene_.ladder->block.length;
+    const double quiet = Ladder::kStillTolerance * world_.gravity.norm();
+    for (int i = n - 1; i > deepest; --i) {
+        const int b = world_.part(blocks_[size_t(i)]).body;
+        const Eigen::Vector3d v = world_.v.segment<3>(3 * b), a = world_.a.segment<3>(3 * b);
+        if (v.head<2>().norm() + length * std::abs(v[2]) > 0 || a.head<2>().norm() + length * std::abs(a[2]) > quiet) {
+            deepest = i;
+            break;
+        }
+    }
+    if (ladder_->hangStill(world_, deepest + Ladder::kWakeBlocks + 1)) dynamics_.evaluate(world_, t_);
 }
 
 // ---- the script and the user's drags ----
@@ -208,6 +243,10 @@ void Simulation::applyScriptAction(const ScriptAction& a) {
     using K = ScriptAction::Kind;
     const bool blockOk = a.block >= 0 && a.block < blockCount();
     if (!blockOk && a.kind != K::Cut) return;
+    if (ladder_) {  // what the action touches moves on its own from here
+        ladder_->wakeThrough(world_, a.kind == K::Cut ? a.hinge : a.block);
+        if (a.kind == K::Join) ladder_->wakeThrough(world_, a.otherBlock);
+    }
     const PartId part = blockOk ? blockPart(a.block) : 0;
     Event e{t_, EventKind::Script, -1, -1, {}};
     switch (a.kind) {
@@ -340,6 +379,7 @@ std::optional<std::string> Simulation::join(const ScriptAction& a) {
 // follows the mouse instead (docs/model.md sections 10 and 11.3).
 void Simulation::applyDragSample(const DragRecord& d, const DragRecord::Sample& s) {
     if (d.block < 0 || d.block >= blockCount()) return;
+    if (ladder_) ladder_->wakeThrough(world_, d.block);
     const PartId part = blockPart(d.block);
     if (Drive* drive = world_.drive(part)) {
         const Pose final = drive->at(kOpenEnd).pose;
@@ -459,6 +499,7 @@ Frame Simulation::frame() {
     f.solver.evaluations = dynamics_.evaluations();
     f.solver.residual = lastResidual_;
     f.solver.pins = int(world_.pins().size());
+    f.solver.stillFrom = ladder_ && ladder_->stillFrom() < ladder_->blockCount() ? ladder_->stillFrom() : -1;
     for (int b = 0; b < world_.bodyCount(); ++b)
         if (world_.body(b).alive && !world_.body(b).kinematic) ++f.solver.bodies;
     f.events = std::move(pending_);

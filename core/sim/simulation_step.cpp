@@ -392,6 +392,9 @@ bool Simulation::takeStep(double limit) {
             emitGridFrames(taken);
         }
         ladder_->updateAngles(world_);
+        // The motion has come near the still tail: the next blocks move on
+        // their own (a change of structure: the end is evaluated anew).
+        if (ladder_->wakeIfReached(world_) > 0) keptEnd_.forget();
     } else {
         emitGridFrames(taken);
     }

@@ -8,6 +8,7 @@
 #include "jl/ladder/hinge_event.h"
 #include "jl/scene/scene.h"
 
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <string>
@@ -142,6 +143,28 @@ public:
     // scale sqrt(L/g), about 1 ms for 60 mm blocks).
     double zenoTime() const { return zenoTime_; }
 
+    // ---- the still tail (docs/model.md section 3.7) ----
+    // Blocks first .. N-1 of a ladder at rest hang still until the motion
+    // reaches them, joined into a few rigid segments (combine, a second
+    // shared point per hinge). False, with nothing changed, if the tail would be shorter
+    // than kLeastStillTail blocks, the world welds its rigid pairs, or a
+    // tail hangs still already.
+    bool hangStill(World& w, int first);
+    // The first block of the still tail (blockCount() when there is none);
+    // hinges 1 .. stillFrom() are live, the ones below join still blocks.
+    int stillFrom() const { return stillFrom_; }
+    // After a step: if the motion has reached the tail (its top hinge has
+    // turned, or turns, by more than kStillTolerance block lengths), the
+    // next kWakeBlocks blocks move on their own again. Returns how many.
+    int wakeIfReached(World& w);
+    // Before something acts on block `block` (a push, a grab, a join): it
+    // and the kWakeBlocks below it move on their own again. Returns how many.
+    int wakeThrough(World& w, int block);
+    double stillTailStrain(const World& w) const;  // m: what the rigid tail may be getting wrong
+    static constexpr int kLeastStillTail = 32;     // blocks: a shorter tail does not pay for its joins
+    static constexpr int kWakeBlocks = 32;
+    static constexpr double kStillTolerance = 1e-11;  // of a block length
+
     std::vector<HingeFrame> hingeFrames(const World& w) const;
     std::vector<RibbonFrame> ribbons(const World& w) const;
 
@@ -177,6 +200,7 @@ private:
     void snap(World& w, int j, double target);
     void join(World& w, int j, int k);     // combine the hinge's points at corner k
     void part(World& w, int j, int k);     // separate them
+    void partStill(World& w, int first, int last);  // the still points of hinges first .. last
     void lock(World& w, int j);
     void fold(World& w, int j);
     void unlock(World& w, int j);
@@ -200,6 +224,14 @@ private:
     std::vector<std::array<FoldLinear, 4>> foldLinear_;
     std::string error_;
     Powers settled_;  // of resolve's last evaluation
+    // The still tail: its first block, the resting fold angle of the hinge
+    // above it, and the second shared point of each still hinge (on the
+    // upper and the lower block; -1 while the hinge is live).
+    int stillFrom_ = 0;
+    double stillRest_ = 0;
+    std::vector<std::array<ParticleId, 2>> stillPoints_;
+    // The hinges the event tests visit: 1 .. liveEnd() - 1.
+    int liveEnd() const { return std::min(stillFrom_ + 1, blockCount()); }
 };
 
 }  // namespace jl

@@ -27,6 +27,10 @@ enum class EventPolicy { Located, EndOfStep };
 // How a locked or folded pair is modelled: one body (the paper's combine,
 // fewer unknowns) or two bodies held by a pin and a weld (World::Weld).
 enum class RigidPairs { Merge, Weld };
+// The blocks of a ladder at rest that the motion has not reached yet
+// (docs/model.md section 3.7): joined into a few still bodies until it nears
+// them, or each its own body from the start (the full model, to compare).
+enum class StillTail { Joined, Separate };
 
 // Size and material of a block; every block of a ladder shares `length`.
 struct BlockSpec {
@@ -184,6 +188,7 @@ struct SolverSpec {
     double eventTolerance = 1e-9;       // s, located events
     double frameInterval = 1.0 / 60.0;  // s, output frames
     RigidPairs rigidPairs = RigidPairs::Merge;
+    StillTail stillTail = StillTail::Joined;
     bool operator==(const SolverSpec&) const = default;
 };
 

@@ -62,7 +62,7 @@ inline constexpr NumberField<Scene> kDampingNumbers[] = {
     {"angular", &Scene::angularDamping, "N m s", range::angularDamping, "air drag on their turning"},
 };
 
-// The solver's numbers; `integrator`, `events` and `rigid_pairs` are choices
+// The solver's numbers; `integrator`, `events`, `rigid_pairs` and `still_tail` are choices
 // (below). The writer puts the choices first, then these.
 inline constexpr NumberField<SolverSpec> kSolverNumbers[] = {
     {"step", &SolverSpec::step, "s", range::step,
@@ -98,6 +98,10 @@ inline constexpr Word<EventPolicy> kEventPolicies[] = {
 inline constexpr Word<RigidPairs> kRigidPairs[] = {
     {"merge", RigidPairs::Merge, "One body (merged)"},
     {"weld", RigidPairs::Weld, "Two bodies and a weld"},
+};
+inline constexpr Word<StillTail> kStillTails[] = {
+    {"joined", StillTail::Joined, "Still blocks joined until the motion nears them"},
+    {"separate", StillTail::Separate, "Every block its own body from the start"},
 };
 inline constexpr Word<InitialState::Kind> kInitialKinds[] = {
     {"equilibrium", InitialState::Kind::Equilibrium, "Hanging at rest"},

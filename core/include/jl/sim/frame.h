@@ -33,6 +33,7 @@ struct SolverFrame {
     int stepHalvings = 0;
     double residual = 0;           // m, largest pin gap after the last step
     int bodies = 0, pins = 0;      // unknowns in use (locked pairs are one body)
+    int stillFrom = -1;            // the first block of the still tail (docs/model.md section 3.7); -1: none
     double wallSeconds = 0;        // spent simulating so far
 };
 

@@ -114,6 +114,7 @@ public:
 private:
     explicit Simulation(const Scene& scene);
     std::optional<std::string> buildWorld();
+    void hangStillTail();
     double nextScheduledTime() const;
     void applyDueInputs();
     void applyScriptAction(const ScriptAction& a);
