@@ -130,6 +130,10 @@ void PinSolver::assemble(const World& w) { assemble(w, nullptr); }
 void PinSolver::assemble(const World& w, const std::vector<Eigen::Vector2d>& inverseMass) { assemble(w, &inverseMass); }
 
 void PinSolver::assemble(const World& w, const std::vector<Eigen::Vector2d>* inverseMass) {
+    if (!inverseMass && assembledPlain_ && version_ == w.structureVersion() && assembledRevision_ == w.revision() &&
+        assembledQ_.size() == w.q.size() && assembledQ_ == w.q)
+        return;
+    assembledPlain_ = false;
     if (version_ != w.structureVersion()) order(w);
     updateBodies(w, inverseMass);
     auto turn = [&](int body, const Vec2& r) {
@@ -156,6 +160,9 @@ void PinSolver::assemble(const World& w, const std::vector<Eigen::Vector2d>* inv
         factorChain();
     else
         factorSparse(w);
+    assembledPlain_ = !inverseMass;
+    assembledRevision_ = w.revision();
+    assembledQ_ = w.q;
 }
 
 void PinSolver::factorChain() {

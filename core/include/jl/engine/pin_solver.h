@@ -8,6 +8,7 @@
 #include <Eigen/SparseCholesky>
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 namespace jl {
@@ -17,7 +18,10 @@ class World;
 class PinSolver {
 public:
     // Arms and matrix at the world's current positions, then factorise.
-    // Re-derives the pin ordering only when the world's structure changed.
+    // Re-derives the pin ordering only when the world's structure changed,
+    // and does nothing at all for the world it last assembled (the same
+    // World::revision and positions bit for bit): a step's velocity
+    // projection and the evaluation of its end share one factorisation.
     void assemble(const World& w);
     // The same with other inverse masses and inertias, (1/m, 1/I) per body,
     // kinematic ones ignored: the linearly implicit integrator's matrix,
@@ -37,6 +41,7 @@ public:
     void reset() {
         version_ = -1;
         analysed_ = false;
+        assembledPlain_ = false;
     }
     int pinCount() const { return int(pins_.size()); }
     int rowCount() const { return int(2 * pins_.size() + welds_.size()); }
@@ -47,6 +52,7 @@ public:
     void setForceSparse(bool on) {
         forceSparse_ = on;
         version_ = -1;
+        assembledPlain_ = false;
     }
     // World-frame arm from body A's (B's) origin to pin i.
     const Vec2& armA(int i) const { return pins_[size_t(i)].rA; }
@@ -84,6 +90,11 @@ private:
     void factorSparse(const World& w);
 
     long long version_ = -1;
+    // What the factorisation in hand was assembled from (plain: the world's
+    // own masses, not the linearly implicit method's).
+    bool assembledPlain_ = false;
+    std::uint64_t assembledRevision_ = 0;
+    Eigen::VectorXd assembledQ_;
     bool chain_ = true;
     std::vector<PinRow> pins_;
     std::vector<WeldRow> welds_;
