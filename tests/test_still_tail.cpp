@@ -27,6 +27,11 @@ std::string ladderScene(int blocks, const std::string& script, const std::string
 }
 
 const std::string kTurn = "  - {at: 0, turn: {block: 0, by: 180deg, duration: 0.3}}\n";
+// Where the tail of a ladder at rest begins: below the hand's block 0, with
+// a wake's worth of blocks to spare.
+constexpr int kFirstStill = Ladder::kWakeBlocks + 1;
+// The shortest ladder with a tail: the spare blocks and the shortest tail.
+constexpr int kShortestWithTail = kFirstStill + Ladder::kLeastStillTail;
 
 std::unique_ptr<Simulation> withTail(const std::string& yaml, bool joined) {
     std::string text = yaml;
@@ -57,13 +62,13 @@ private slots:
         auto sim = simulate(ladderScene(300, "  - {at: 0, move: {block: 0, by: [0, 0.05], duration: 0.3}}\n"));
         QVERIFY(sim);
         const Frame start = sim->frame();
-        QCOMPARE(start.solver.stillFrom, 33);
-        QVERIFY(start.solver.bodies < 40);  // 32 blocks and a few segments
+        QCOMPARE(start.solver.stillFrom, kFirstStill);
+        QVERIFY(start.solver.bodies < kFirstStill + 10);  // the blocks above the tail and a few segments
         double worst = 0;
         for (double t = 0.05; t <= 0.5001; t += 0.05) {
             QVERIFY(sim->advanceExactlyTo(t));
             const Frame f = sim->frame();
-            QCOMPARE(f.solver.stillFrom, 33);
+            QCOMPARE(f.solver.stillFrom, kFirstStill);
             const double s = std::min(t / 0.3, 1.0);
             const double dy = lift * (1 - std::cos(M_PI * s)) / 2;
             for (size_t i = 0; i < f.poses.size(); ++i) {
@@ -126,7 +131,7 @@ private slots:
             const std::string& scene = cutting ? cut : pushAndHold;
             auto joined = withTail(scene, true), full = withTail(scene, false);
             QVERIFY(joined && full);
-            QCOMPARE(joined->frame().solver.stillFrom, 33);
+            QCOMPARE(joined->frame().solver.stillFrom, kFirstStill);
             QVERIFY(joined->advanceExactlyTo(0.06));
             QVERIFY(joined->frame().solver.stillFrom > (cutting ? 100 : 150));
             QVERIFY(joined->advanceExactlyTo(0.3) && full->advanceExactlyTo(0.3));
@@ -136,7 +141,7 @@ private slots:
             if (cutting) {
                 QCOMPARE(fa.hinges[99].mode, HingeMode::Cut);
             } else {
-                QCOMPARE(fa.solver.stillFrom, -1);  // the hold at block 190 leaves too short a tail: all of it woke
+                QVERIFY(fa.solver.stillFrom == -1 || fa.solver.stillFrom > 190 + Ladder::kWakeBlocks - 1);
                 QVERIFY(fa.held[190]);
             }
         }
@@ -146,7 +151,7 @@ private slots:
     // a replay of the recorded scene meets at the same moment: bit for bit.
     void aDragOfAStillBlockReplaysBitForBit() {
         auto sim = simulate(ladderScene(200, kTurn));
-        QVERIFY(sim && sim->frame().solver.stillFrom == 33);
+        QVERIFY(sim && sim->frame().solver.stillFrom == kFirstStill);
         sim->advanceTo(0.1);
         sim->beginDrag(120, Vec2(0, 0.02), sim->frame().poses[120].position + Vec2(0.01, 0.02));
         QVERIFY(sim->frame().solver.stillFrom > 120);
@@ -175,8 +180,8 @@ private slots:
     // short ladder, air drag (each block would be slowed by its own speed),
     // welded rigid pairs (a tail of welds is no fewer unknowns), no gravity.
     void noTailWhereItWouldBeWrongOrWouldNotPay() {
-        QCOMPARE(simulate(ladderScene(64, kTurn))->frame().solver.stillFrom, -1);
-        QVERIFY(simulate(ladderScene(65, kTurn))->frame().solver.stillFrom == 33);
+        QCOMPARE(simulate(ladderScene(kShortestWithTail - 1, kTurn))->frame().solver.stillFrom, -1);
+        QCOMPARE(simulate(ladderScene(kShortestWithTail, kTurn))->frame().solver.stillFrom, kFirstStill);
         QCOMPARE(simulate(ladderScene(300, kTurn, "", "damping: {linear: 0.001}\n"))->frame().solver.stillFrom, -1);
         QCOMPARE(simulate(ladderScene(300, kTurn, "rigid_pairs: weld"))->frame().solver.stillFrom, -1);
         QCOMPARE(simulate(ladderScene(300, kTurn, "", "gravity: [0, 0]\n"))->frame().solver.stillFrom, -1);
@@ -198,7 +203,7 @@ private slots:
         const Frame start = sim->frame();
         QVERIFY(sim->advanceExactlyTo(0.3));
         const Frame f = sim->frame();
-        QVERIFY(f.solver.stillFrom > 33);
+        QVERIFY(f.solver.stillFrom > kFirstStill);
         for (int j = f.solver.stillFrom + 1; j < 400; ++j)
             QCOMPARE(f.hinges[size_t(j - 1)].foldAngle, start.hinges[size_t(j - 1)].foldAngle);
     }

@@ -154,7 +154,8 @@ public:
     // hinges 1 .. stillFrom() are live, the ones below join still blocks.
     int stillFrom() const { return stillFrom_; }
     // After a step: if the motion has reached the tail (its top hinge has
-    // turned, or turns, by more than kStillTolerance block lengths), the
+    // turned, or turns, by more than kStillTolerance block lengths: 6e-11 m
+    // for 60 mm blocks, far below any integrator's error on a long ladder), the
     // next kWakeBlocks blocks move on their own again. Returns how many.
     int wakeIfReached(World& w);
     // Before something acts on block `block` (a push, a grab, a join): it
@@ -162,8 +163,8 @@ public:
     int wakeThrough(World& w, int block);
     double stillTailStrain(const World& w) const;  // m: what the rigid tail may be getting wrong
     static constexpr int kLeastStillTail = 32;     // blocks: a shorter tail does not pay for its joins
-    static constexpr int kWakeBlocks = 32;
-    static constexpr double kStillTolerance = 1e-11;  // of a block length
+    static constexpr int kWakeBlocks = 16;
+    static constexpr double kStillTolerance = 1e-9;  // of a block length
 
     std::vector<HingeFrame> hingeFrames(const World& w) const;
     std::vector<RibbonFrame> ribbons(const World& w) const;
