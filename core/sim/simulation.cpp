@@ -199,6 +199,13 @@ void Simulation::hangStillTail() {
     if (ladder_->hangStill(world_, deepest + Ladder::kWakeBlocks + 1)) dynamics_.evaluate(world_, t_);
 }
 
+// Parts the still tail through `block` (docs/model.md section 3.7). If
+// anything woke, the world is evaluated again: the pin forces that the
+// next automatic step is chosen from must be those of the pins there are now.
+void Simulation::wakeThrough(int block) {
+    if (ladder_ && ladder_->wakeThrough(world_, block) > 0) dynamics_.evaluate(world_, t_);
+}
+
 // ---- the script and the user's drags ----
 
 // The next instant the step must land on: a scripted action, or the start or
@@ -243,10 +250,9 @@ void Simulation::applyScriptAction(const ScriptAction& a) {
     using K = ScriptAction::Kind;
     const bool blockOk = a.block >= 0 && a.block < blockCount();
     if (!blockOk && a.kind != K::Cut) return;
-    if (ladder_) {  // what the action touches moves on its own from here
-        ladder_->wakeThrough(world_, a.kind == K::Cut ? a.hinge : a.block);
-        if (a.kind == K::Join) ladder_->wakeThrough(world_, a.otherBlock);
-    }
+    // What the action touches moves on its own from here.
+    wakeThrough(a.kind == K::Cut ? a.hinge : a.block);
+    if (a.kind == K::Join) wakeThrough(a.otherBlock);
     const PartId part = blockOk ? blockPart(a.block) : 0;
     Event e{t_, EventKind::Script, -1, -1, {}};
     switch (a.kind) {
@@ -379,7 +385,7 @@ std::optional<std::string> Simulation::join(const ScriptAction& a) {
 // follows the mouse instead (docs/model.md sections 10 and 11.3).
 void Simulation::applyDragSample(const DragRecord& d, const DragRecord::Sample& s) {
     if (d.block < 0 || d.block >= blockCount()) return;
-    if (ladder_) ladder_->wakeThrough(world_, d.block);
+    wakeThrough(d.block);
     const PartId part = blockPart(d.block);
     if (Drive* drive = world_.drive(part)) {
         const Pose final = drive->at(kOpenEnd).pose;

@@ -393,8 +393,13 @@ bool Simulation::takeStep(double limit) {
         }
         ladder_->updateAngles(world_);
         // The motion has come near the still tail: the next blocks move on
-        // their own (a change of structure: the end is evaluated anew).
-        if (ladder_->wakeIfReached(world_) > 0) keptEnd_.forget();
+        // their own. A change of structure: the end is evaluated anew, so
+        // that the next step starts from it and the automatic step is
+        // chosen from the pin forces of the pins there are now.
+        if (ladder_->wakeIfReached(world_) > 0) {
+            lastPowers_ = dynamics_.evaluate(world_, t_ + taken);
+            keptEnd_.keep(world_, dynamics_, t_ + taken, lastPowers_);
+        }
     } else {
         emitGridFrames(taken);
     }

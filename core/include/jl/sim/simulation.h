@@ -115,6 +115,7 @@ private:
     explicit Simulation(const Scene& scene);
     std::optional<std::string> buildWorld();
     void hangStillTail();
+    void wakeThrough(int block);
     double nextScheduledTime() const;
     void applyDueInputs();
     void applyScriptAction(const ScriptAction& a);
