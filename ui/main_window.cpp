@@ -394,6 +394,10 @@ void MainWindow::createStatusBar() {
     residualLabel_ = label("residual", tr("Largest gap left in a hinge pin after the last step."), 130);
     stepLabel_ = label("step", tr("The integrator's step: the scene's own, or (auto) the engine's choice: at most 1 ms, "
                                   "and short enough to stay stable on long ladders."), 130);
+    stillLabel_ = label("still", tr("Blocks the motion has not reached yet: they hang still, joined into a few rigid "
+                                    "bodies, until it comes near them. The same motion, for much less computing "
+                                    "(docs/model.md section 3.7; solver.still_tail: separate turns it off)."), 120);
+    stillLabel_->hide();
 }
 
 void MainWindow::connectView() {
@@ -476,6 +480,10 @@ void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {
             stepLabel_->setText(tr("no step yet"));
         else
             stepLabel_->setText(solver.automaticStep ? tr("step %1 ms (auto)").arg(step) : tr("step %1 ms").arg(step));
+        // A long ladder: how many of its blocks the motion has not reached.
+        const int blocks = int(s->frame->hinges.size()) + 1;
+        stillLabel_->setVisible(solver.stillFrom >= 0);
+        if (solver.stillFrom >= 0) stillLabel_->setText(tr("%L1 blocks still").arg(blocks - solver.stillFrom));
     }
     if (!s->failure.empty()) {
         const QString failure = QString::fromStdString(s->failure);

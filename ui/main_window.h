@@ -121,6 +121,7 @@ private:
     QLabel* energyLabel_;
     QLabel* residualLabel_;
     QLabel* stepLabel_;
+    QLabel* stillLabel_;
     QString shownFailure_;  // the failure last shown in full
     QLabel* warningLabel_;
     std::uint64_t loadsPosted_ = 0;

@@ -11,6 +11,7 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QMessageBox>
+#include <QRegularExpression>
 #include <QTimer>
 #include <QtTest>
 
@@ -56,6 +57,16 @@ jl::Scene hangingLadder(int blocks) {
     jl::Scene scene;
     scene.ladder = jl::LadderSpec{};
     scene.ladder->blocks = blocks;
+    return scene;
+}
+
+// The same on the full model: every block its own body from the start, as
+// when the motion has reached them all (hanging at rest, a long ladder's
+// blocks join into a still tail and a step costs next to nothing). For the
+// tests of what the window says while a long run takes seconds.
+jl::Scene slowHangingLadder(int blocks) {
+    jl::Scene scene = hangingLadder(blocks);
+    scene.solver.stillTail = jl::StillTail::Separate;
     return scene;
 }
 
@@ -196,11 +207,33 @@ private slots:
         QTRY_COMPARE(rate->text(), QString("paused at frame 60 of 60"));
     }
 
+    // A long ladder says how many of its blocks the motion has not reached
+    // (they hang still, joined into a few bodies), and fewer once it has
+    // reached them; a short ladder says nothing of it.
+    void theStatusBarSaysHowManyBlocksHangStill() {
+        jl::Scene scene = hangingLadder(1000);
+        jl::ScriptAction turn;
+        turn.angle = M_PI;
+        scene.script.push_back(turn);
+        Fixture f(scene);
+        auto* still = f.window.findChild<QLabel*>("still");
+        QVERIFY(still);
+        const auto count = [still] { return QString(still->text()).remove(QRegularExpression("[^0-9]")).toInt(); };
+        QTRY_VERIFY2(still->isVisible() && still->text().endsWith(" blocks still") &&
+                         count() == 1000 - jl::Ladder::kWakeBlocks - 1,
+                     qPrintable(still->text()));
+        QVERIFY(f.goTo(30));  // 0.5 s: the motion has come some hundred blocks down
+        QTRY_VERIFY2(count() > 500 && count() < 1000 - jl::Ladder::kWakeBlocks - 1, qPrintable(still->text()));
+        Fixture shortLadder(jl::test::swingingLadder());
+        QVERIFY(shortLadder.goTo(3));
+        QVERIFY(!shortLadder.window.findChild<QLabel*>("still")->isVisible());
+    }
+
     // A run that takes more than a few seconds to get back to the moment of
     // an edit also says about how long it still needs (here 10,000 blocks,
     // a few seconds per 0.1 s simulated).
     void aLongRunToAnEditSaysAboutHowLongIsLeft() {
-        Fixture f(hangingLadder(10000));
+        Fixture f(slowHangingLadder(10000));
         auto* rate = f.window.findChild<QLabel*>("rate");
         QVERIFY(f.goTo(18, 120000));  // a few seconds alone; much longer beside other tests
         const auto before = f.editThickness(4.0);
@@ -228,7 +261,7 @@ private slots:
     // from where it stopped, the same as if it had never been interrupted.
     // Step forward pressed twice at the head makes two frames.
     void aPauseComesBetweenTwoStepsAndTheFrameIsFinishedLater() {
-        jl::Scene scene = hangingLadder(2000);
+        jl::Scene scene = slowHangingLadder(2000);
         scene.solver.frameInterval = 1.0;  // s: a frame of a thousand steps or so, a second or more
         Fixture f(scene);
         f.sim->stepForward();  // simulated flat out (playing would wait until the frame is due)
@@ -527,7 +560,7 @@ private slots:
     // On a long ladder, going to an instant re-runs up to half a second from
     // the keyframe before it: the status says where it is going meanwhile.
     void goingToAnInstantSaysWhereItIsGoing() {
-        Fixture f(hangingLadder(3000));
+        Fixture f(slowHangingLadder(3000));
         QVERIFY(f.goTo(40, 120000));
         auto* rate = f.window.findChild<QLabel*>("rate");
         const double instant = 0.6601;  // between frames 39 and 40, 0.16 s after the keyframe at 0.5 s
