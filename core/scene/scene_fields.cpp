@@ -98,9 +98,9 @@ std::string fieldTable(std::string_view section) {
                             "a locked or folded pair is one body (`merge`, fewer unknowns) or two bodies held by a pin "
                             "and a weld (`weld`, for comparison)");
         wordRow<StillTail>(out, "still_tail", kStillTails, d.stillTail,
-                           "the blocks of a ladder at rest that the motion has not reached hang as one body until it "
-                           "comes near them (`joined`, docs/model.md section 3.7), or each block is its own body from "
-                           "the start (`separate`, the full model)");
+                           "the blocks of a ladder at rest that the motion has not reached hang as a few rigid "
+                           "bodies until it comes near them (`joined`, docs/model.md section 3.7: the same motion for "
+                           "much less work), or each block is its own body from the start (`separate`, the full model)");
         numberRows(out, kSolverNumbers);
     }
     return out.str();
