@@ -4,6 +4,7 @@
 // shrinks at each integrator's order as the step shrinks.
 #include "jl/engine/energy.h"
 #include "jl/engine/motion.h"
+#include "jl/engine/projection.h"
 #include "jl/reference/falling_chain.h"
 
 #include <QtTest>
@@ -92,6 +93,45 @@ private slots:
         qInfo("Dormand-Prince energy error %.3e (tolerance 1e-9), %.3e (1e-11)", loose.energyError, worst);
         QVERIFY(worst < loose.energyError);
         QVERIFY2(worst < 1e-9, qPrintable(QString::number(worst)));
+    }
+
+    // Dormand-Prince's last stage is the end of the step projected onto the
+    // pins: the step leaves the end projected and evaluated (the caller's
+    // evaluation of the end is that stage), the pins closed, and the motion
+    // the same to well within the tolerance as with its last stage off the
+    // pins and the projection after the step.
+    void dormandPrincesLastStageIsTheProjectedEnd() {
+        struct Chain {
+            World w;
+            Dynamics d;
+            Stepper s{Integrator::DormandPrince45, 1e-8};
+            Ledger ledger;
+            double t = 0;
+        };
+        Chain onPins, offPins;
+        for (Chain* c : {&onPins, &offPins}) buildFallingChain(c->w, 20);
+        for (int i = 0; i < 40; ++i) {
+            const MotionStep m = advanceAndProject(onPins.w, onPins.d, onPins.s, onPins.t, 0.5 - onPins.t, onPins.ledger, 1e-12);
+            QVERIFY(m.ok() && m.step.endEvaluated);
+            // What the step left is the end as evaluated afresh, bit for bit.
+            const Eigen::VectorXd a = onPins.w.a;
+            const Powers p = onPins.d.evaluate(onPins.w, onPins.t + m.step.taken);
+            QVERIFY(onPins.w.a == a);
+            QCOMPARE(p.held, m.step.endPowers.held);
+            QVERIFY(pinResidual(onPins.w) <= 1e-12);
+            onPins.t += m.step.taken;
+        }
+        // The same span with the projection after each step instead.
+        while (offPins.t < onPins.t - 1e-15) {
+            const StepOutcome o =
+                offPins.s.advance(offPins.w, offPins.d, offPins.t, onPins.t - offPins.t, offPins.ledger);
+            QVERIFY(o.finite && !o.endEvaluated);
+            QVERIFY(projectPositions(offPins.w, offPins.d.solver(), 1e-12).converged);
+            projectVelocities(offPins.w, offPins.d.solver());
+            offPins.t += o.taken;
+        }
+        QVERIFY2((onPins.w.q - offPins.w.q).cwiseAbs().maxCoeff() < 1e-7,
+                 qPrintable(QString::number((onPins.w.q - offPins.w.q).cwiseAbs().maxCoeff())));
     }
 };
 

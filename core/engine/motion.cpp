@@ -8,13 +8,16 @@ MotionStep advanceAndProject(World& w, Dynamics& d, Stepper& s, double t, double
                              double tolerance, bool exact, const Powers* atStart) {
     MotionStep m;
     const Ledger l0 = ledger;
-    m.step = s.advance(w, d, t, h, ledger, exact, atStart);
+    m.step = s.advance(w, d, t, h, ledger, exact, atStart, tolerance);
     if (!m.step.finite) return m;
-    m.projection = projectPositions(w, d.solver(), tolerance);
+    // Dormand-Prince has projected its end already (its last stage).
+    const bool projected = m.step.endEvaluated || !m.step.projection.converged;
+    m.projection = projected ? m.step.projection : projectPositions(w, d.solver(), tolerance);
     if (m.projection.converged) {
-        projectVelocities(w, d.solver());
+        if (!projected) projectVelocities(w, d.solver());
         if (w.q.allFinite() && w.v.allFinite()) return m;
         m.step.finite = false;
+        m.step.endEvaluated = false;
     }
     // The stepper still holds the state it started from (no copy per step).
     w.q = s.startPositions();

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace jl {
 
@@ -64,9 +65,17 @@ int Stepper::order() const {
 // One explicit Runge-Kutta step of size h from the state in w (which must be
 // saved in q0_, v0_). Leaves the new state in w; returns the error norm
 // (adaptive) or 0.
-double Stepper::attempt(World& w, Dynamics& d, double t, double h, Ledger& ledger, bool firstKnown) {
+double Stepper::attempt(World& w, Dynamics& d, double t, double h, Ledger& ledger, bool firstKnown,
+                        double projectionTolerance) {
     if (kind_ == Integrator::RosenbrockW) return rosenbrockAttempt(w, d, t, h, ledger);
     const size_t stages = tableau_.c.size();
+    // Dormand-Prince's last stage is taken at the fifth-order solution itself
+    // (its row of a is b, and b's last weight is 0): projected onto the pins
+    // first, it is the end of the step as the caller would project and
+    // evaluate it, one evaluation a step fewer. Its error estimate then
+    // differs by h/40 times the change of the rates that the projection
+    // makes, a projection of a drift below the step's own error.
+    const bool projectLast = projectionTolerance > 0 && kind_ == Integrator::DormandPrince45;
     for (size_t i = firstKnown ? 1 : 0; i < stages; ++i) {
         if (i > 0) {
             w.q = q0_;
@@ -78,18 +87,30 @@ double Stepper::attempt(World& w, Dynamics& d, double t, double h, Ledger& ledge
                 w.v.noalias() += (h * aij) * kv_[j];
             }
         }
-        kl_[i] = rates(d.evaluate(w, t + tableau_.c[i] * h));
+        const bool last = projectLast && i + 1 == stages;
+        if (last) {
+            endProjection_ = projectPositions(w, d.solver(), projectionTolerance);
+            if (!endProjection_.converged) return std::numeric_limits<double>::quiet_NaN();
+            projectVelocities(w, d.solver());
+        }
+        const Powers p = d.evaluate(w, t + tableau_.c[i] * h);
+        if (last) endPowers_ = p;
+        kl_[i] = rates(p);
         kq_[i] = w.v;
         kv_[i] = w.a;
     }
-    w.q = q0_;
-    w.v = v0_;
     Eigen::Vector3d dl = Eigen::Vector3d::Zero();
+    if (!projectLast) {
+        w.q = q0_;
+        w.v = v0_;
+    }
     for (size_t i = 0; i < stages; ++i) {
         const double bi = tableau_.b[i];
         if (bi == 0) continue;
-        w.q.noalias() += (h * bi) * kq_[i];
-        w.v.noalias() += (h * bi) * kv_[i];
+        if (!projectLast) {
+            w.q.noalias() += (h * bi) * kq_[i];
+            w.v.noalias() += (h * bi) * kv_[i];
+        }
         dl += (h * bi) * kl_[i];
     }
     ledger.held += dl[0];
@@ -131,7 +152,7 @@ void Stepper::symplecticEuler(World& w, Dynamics& d, double t, double h, Ledger&
 }
 
 StepOutcome Stepper::advance(World& w, Dynamics& d, double t, double h, Ledger& ledger, bool exact,
-                             const Powers* atStart) {
+                             const Powers* atStart, double projectionTolerance) {
     StepOutcome out;
     q0_ = w.q;
     v0_ = w.v;
@@ -149,7 +170,7 @@ StepOutcome Stepper::advance(World& w, Dynamics& d, double t, double h, Ledger& 
         symplecticEuler(w, d, t, h, ledger, atStart);
         out.taken = h;
     } else if (!isAdaptive(kind_) || exact) {
-        attempt(w, d, t, h, ledger, firstKnown);
+        attempt(w, d, t, h, ledger, firstKnown, projectionTolerance);
         out.taken = h;
     } else {
         double trial = next_ > 0 ? std::min(next_, h) : h;
@@ -159,7 +180,7 @@ StepOutcome Stepper::advance(World& w, Dynamics& d, double t, double h, Ledger& 
             w.q = q0_;
             w.v = v0_;
             ledger = start;
-            const double err = attempt(w, d, t, trial, ledger, firstKnown);
+            const double err = attempt(w, d, t, trial, ledger, firstKnown, projectionTolerance);
             firstKnown = kind_ != Integrator::RosenbrockW;
             if (!std::isfinite(err) && trial > 1e-12) {  // diverged inside the step: much smaller
                 ++out.rejected;
@@ -179,6 +200,11 @@ StepOutcome Stepper::advance(World& w, Dynamics& d, double t, double h, Ledger& 
         }
     }
     w.updateKinematics(t + out.taken);
+    if (projectionTolerance > 0 && kind_ == Integrator::DormandPrince45) {
+        out.endEvaluated = endProjection_.converged;
+        out.endPowers = endPowers_;
+        out.projection = endProjection_;
+    }
     if (!w.q.allFinite() || !w.v.allFinite()) {
         w.q = q0_;
         w.v = v0_;

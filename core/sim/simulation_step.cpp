@@ -356,7 +356,16 @@ bool Simulation::takeStep(double limit) {
     }
     if (ladder_) {
         double forces = 0;
-        const double fEnd = smallestEventFunction(t_ + taken, &forces);
+        // The end of the step, evaluated for the event functions (and kept
+        // as the next step's first stage): by the step itself if its last
+        // stage was the projected end (Dormand-Prince).
+        double fEnd = 0;
+        if (m.step.endEvaluated) {
+            lastPowers_ = m.step.endPowers;
+            fEnd = eventFunctionsNow(&forces);
+        } else {
+            fEnd = smallestEventFunction(t_ + taken, &forces);
+        }
         keptEnd_.keep(world_, dynamics_, t_ + taken, lastPowers_);
         if (fEnd < 0) {
             if (solver.events == EventPolicy::Located && taken > solver.eventTolerance) {

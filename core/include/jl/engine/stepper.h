@@ -5,6 +5,7 @@
 
 #include "jl/engine/dynamics.h"
 #include "jl/engine/integrator.h"
+#include "jl/engine/projection.h"
 
 #include <Eigen/Core>
 
@@ -24,6 +25,13 @@ struct StepOutcome {
     double taken = 0;      // s, the step actually made (adaptive: <= asked)
     int rejected = 0;      // adaptive trials thrown away
     bool finite = true;    // false: a NaN or inf appeared; the world was restored
+    // Dormand-Prince asked to project (Stepper::advance's projectionTolerance):
+    // its last stage is the end of the step projected onto the pins, so the
+    // world holds the projected end, w.a and the dynamics' forces its
+    // evaluation, these its powers, and this how the projection went.
+    bool endEvaluated = false;
+    Powers endPowers;
+    ProjectionResult projection;
 };
 
 class Stepper {
@@ -35,9 +43,13 @@ public:
     // `exact`: the adaptive method takes exactly h too (to re-run part of an
     // accepted step when locating an event). `atStart`: w.a already holds
     // the accelerations at (t, w.q, w.v) and these are their powers, so the
-    // first stage needs no evaluation (KeptEvaluation).
+    // first stage needs no evaluation (KeptEvaluation). `projectionTolerance`
+    // > 0: Dormand-Prince projects the end of each trial onto the pins
+    // before its last stage (first same as last, on the pins: the caller's
+    // projection and evaluation of the end are that stage); the other
+    // methods leave the projection to the caller.
     StepOutcome advance(World& w, Dynamics& d, double t, double h, Ledger& ledger, bool exact = false,
-                        const Powers* atStart = nullptr);
+                        const Powers* atStart = nullptr, double projectionTolerance = 0);
 
     Integrator kind() const { return kind_; }
     int order() const;
@@ -63,7 +75,8 @@ private:
     static Rosenbrock rosenbrockTableau();
     // `firstKnown`: the first stage (the step's start) is already in
     // kq_[0], kv_[0] and kl_[0].
-    double attempt(World& w, Dynamics& d, double t, double h, Ledger& ledger, bool firstKnown);
+    double attempt(World& w, Dynamics& d, double t, double h, Ledger& ledger, bool firstKnown,
+                   double projectionTolerance);
     double rosenbrockAttempt(World& w, Dynamics& d, double t, double h, Ledger& ledger);
     void stiffMass(const World& w, Dynamics& d, double s);
     void solveStiff(const World& w, Eigen::VectorXd& z);
@@ -76,6 +89,8 @@ private:
     Tableau tableau_;
     std::vector<Eigen::VectorXd> kq_, kv_;   // stage velocities and accelerations
     std::vector<Eigen::Vector3d> kl_;        // stage ledger rates
+    Powers endPowers_;                       // of the last stage, when it is the projected end
+    ProjectionResult endProjection_;
     Eigen::VectorXd q0_, v0_, errQ_, errV_;
     // Rosenbrock: the tableau, stage increments and the step's matrix.
     Rosenbrock ros_;
