@@ -376,6 +376,7 @@ std::vector<BenchRow> longLadderRuns(int blocks, double duration) {
                                          {Integrator::DormandPrince45, 3e-5},
                                          {Integrator::DormandPrince45, 1e-5},
                                          {Integrator::DormandPrince45, 1e-5, StillTail::Separate},
+                                         {Integrator::DormandPrince45, 3e-6},
                                          {Integrator::DormandPrince45, 1e-6},
                                          {Integrator::RosenbrockW, 1e-4},
                                          {Integrator::RosenbrockW, 1e-5},

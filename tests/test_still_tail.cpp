@@ -86,16 +86,22 @@ private slots:
     // integrator's error here is 1e-7 m or more). At 2,000 blocks the
     // engine's step is below its 1 ms cap, set by the pin forces: after a
     // wake it must come from the pins there are then.
+    // Dormand-Prince's error control counts a body once for each of its
+    // blocks: it asks the same of a step with the tail as without.
     void aTurnedLadderMovesAsInTheFullModel_data() {
         QTest::addColumn<int>("blocks");
         QTest::addColumn<double>("until");
-        QTest::newRow("300 blocks") << 300 << 0.6;
-        QTest::newRow("2,000 blocks") << 2000 << 0.3;
+        QTest::addColumn<QString>("solver");
+        QTest::newRow("300 blocks, RK4") << 300 << 0.6 << "";
+        QTest::newRow("2,000 blocks, RK4") << 2000 << 0.3 << "";
+        QTest::newRow("300 blocks, Dormand-Prince") << 300 << 0.6 << "integrator: dormand_prince45, tolerance: 1e-7";
     }
     void aTurnedLadderMovesAsInTheFullModel() {
         QFETCH(int, blocks);
         QFETCH(double, until);
-        const std::string scene = ladderScene(blocks, kTurn);
+        QFETCH(QString, solver);
+        const bool adaptive = !solver.isEmpty();
+        const std::string scene = ladderScene(blocks, kTurn, solver.toStdString());
         auto joined = withTail(scene, true), full = withTail(scene, false);
         QVERIFY(joined && full);
         QCOMPARE(full->frame().solver.stillFrom, -1);
@@ -109,11 +115,17 @@ private slots:
             for (const Event& e : fa.events) if (e.hinge > 0) a.push_back(e);
             for (const Event& e : fb.events) if (e.hinge > 0) b.push_back(e);
             worst = std::max(worst, largestDistance(fa, fb));
-            QCOMPARE(fa.solver.steps, fb.solver.steps);
             // The pin forces of a segment and of its blocks one by one differ
-            // in rounding, and so may the step chosen from them, in rounding.
-            QVERIFY2(std::abs(fa.solver.largestStep - fb.solver.largestStep) <= 1e-9 * fb.solver.largestStep,
-                     qPrintable(QString("%1 s against %2 s").arg(fa.solver.largestStep).arg(fb.solver.largestStep)));
+            // in rounding, and so may the step chosen from them, in rounding;
+            // an error estimate may tip a step's acceptance either way.
+            if (adaptive) {
+                QVERIFY2(std::abs(double(fa.solver.steps - fb.solver.steps)) <= 1 + 0.01 * double(fb.solver.steps),
+                         qPrintable(QString("%1 steps against %2").arg(fa.solver.steps).arg(fb.solver.steps)));
+            } else {
+                QCOMPARE(fa.solver.steps, fb.solver.steps);
+                QVERIFY2(std::abs(fa.solver.largestStep - fb.solver.largestStep) <= 1e-9 * fb.solver.largestStep,
+                         qPrintable(QString("%1 s against %2 s").arg(fa.solver.largestStep).arg(fb.solver.largestStep)));
+            }
             QCOMPARE(fa.solver.stepHalvings, 0);
             QVERIFY(fa.solver.stillFrom == -1 || fa.solver.stillFrom >= firstStill);  // it only wakes
             firstStill = fa.solver.stillFrom;
