@@ -15,18 +15,6 @@ namespace {
 // of the equal solutions instead of dividing by zero.
 constexpr double kRegularisation = 1e-12;
 
-Eigen::Matrix2d safeInverse(Eigen::Matrix2d m) {
-    const double scale = m.cwiseAbs().maxCoeff();
-    double det = m(0, 0) * m(1, 1) - m(0, 1) * m(1, 0);
-    if (!(std::abs(det) > 1e-13 * scale * scale)) {
-        m.diagonal().array() += kRegularisation * (scale > 0 ? scale : 1.0);
-        det = m(0, 0) * m(1, 1) - m(0, 1) * m(1, 0);
-    }
-    Eigen::Matrix2d inv;
-    inv << m(1, 1), -m(0, 1), -m(1, 0), m(0, 0);
-    return inv / det;
-}
-
 // W-weighted coupling of two points r1, r2 of a body with inverse mass and
 // inertia (im, ii): im * 1 + ii * perp(r1) perp(r2)^T, written out.
 inline Eigen::Matrix2d couplingOf(double im, double ii, const Vec2& r1, const Vec2& r2) {
@@ -165,6 +153,31 @@ void PinSolver::assemble(const World& w, const std::vector<Eigen::Vector2d>* inv
     assembledQ_ = w.q;
 }
 
+namespace {
+
+// The inverse of the symmetric [[a, b], [b, c]]; a singular pivot
+// (redundant pins) gets the tiny diagonal shift first.
+inline Eigen::Matrix2d symmetricInverse(double a, double b, double c) {
+    const double scale = std::max({std::abs(a), std::abs(b), std::abs(c)});
+    double det = a * c - b * b;
+    if (!(std::abs(det) > 1e-13 * scale * scale)) {
+        const double shift = kRegularisation * (scale > 0 ? scale : 1.0);
+        a += shift;
+        c += shift;
+        det = a * c - b * b;
+    }
+    const double inv = 1.0 / det;
+    Eigen::Matrix2d m;
+    m << c * inv, -b * inv, -b * inv, a * inv;
+    return m;
+}
+
+}  // namespace
+
+// Block LDL^T along each path. The pivots S_i = D_i - B^T S_{i-1}^{-1} B are
+// symmetric (J W J^T is), so only three of their entries are formed: each
+// link's work is what its own 2 x 2 blocks need and no more (this runs for
+// every link at every evaluation).
 void PinSolver::factorChain() {
     const size_t n = sequence_.size();
     invPivot_.resize(n);
@@ -174,15 +187,29 @@ void PinSolver::factorChain() {
         const size_t begin = size_t(pathStart_[path]), end = size_t(pathStart_[path + 1]);
         for (size_t i = begin; i < end; ++i) {
             const PinRow& p = pins_[size_t(sequence_[i])];
-            Eigen::Matrix2d d = Eigen::Matrix2d::Zero();
-            if (p.dynA) d += coupling(p.bodyA, p.rA, p.rA);
-            if (p.dynB) d += coupling(p.bodyB, p.rB, p.rB);
+            double d00 = 0, d01 = 0, d11 = 0;  // D_i, each body's im 1 + ii perp(r) perp(r)^T
+            const auto add = [&](int body, const Vec2& r) {
+                const Eigen::Vector2d& im = inverse_[size_t(body)];
+                d00 += im[0] + im[1] * r.y() * r.y();
+                d01 -= im[1] * r.x() * r.y();
+                d11 += im[0] + im[1] * r.x() * r.x();
+            };
+            if (p.dynA) add(p.bodyA, p.rA);
+            if (p.dynB) add(p.bodyB, p.rB);
             if (i > begin) {
-                // Eliminate the previous pin: S_i = D_i - B^T S_{i-1}^{-1} B.
-                lower_[i] = upper_[i - 1].transpose() * invPivot_[i - 1];
-                d -= lower_[i] * upper_[i - 1];
+                // Eliminate the previous pin: L = B^T S_{i-1}^{-1}, S_i = D_i - L B.
+                const Eigen::Matrix2d& b = upper_[i - 1];
+                const Eigen::Matrix2d& s = invPivot_[i - 1];
+                Eigen::Matrix2d& l = lower_[i];
+                l(0, 0) = b(0, 0) * s(0, 0) + b(1, 0) * s(1, 0);
+                l(0, 1) = b(0, 0) * s(0, 1) + b(1, 0) * s(1, 1);
+                l(1, 0) = b(0, 1) * s(0, 0) + b(1, 1) * s(1, 0);
+                l(1, 1) = b(0, 1) * s(0, 1) + b(1, 1) * s(1, 1);
+                d00 -= l(0, 0) * b(0, 0) + l(0, 1) * b(1, 0);
+                d01 -= l(0, 0) * b(0, 1) + l(0, 1) * b(1, 1);
+                d11 -= l(1, 0) * b(0, 1) + l(1, 1) * b(1, 1);
             }
-            invPivot_[i] = safeInverse(d);
+            invPivot_[i] = symmetricInverse(d00, d01, d11);
             if (i + 1 < end) {
                 const Link& l = links_[i];
                 const PinRow& next = pins_[size_t(sequence_[i + 1])];
