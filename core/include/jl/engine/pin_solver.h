@@ -20,8 +20,9 @@ public:
     // Arms and matrix at the world's current positions, then factorise.
     // Re-derives the pin ordering only when the world's structure changed,
     // and does nothing at all for the world it last assembled (the same
-    // World::revision and positions bit for bit): a step's velocity
-    // projection and the evaluation of its end share one factorisation.
+    // World::revision and turns of the bodies bit for bit, which is all the
+    // matrix depends on): a step's velocity projection and the evaluation of
+    // its end share one factorisation.
     void assemble(const World& w);
     // The same with other inverse masses and inertias, (1/m, 1/I) per body,
     // kinematic ones ignored: the linearly implicit integrator's matrix,
@@ -94,7 +95,8 @@ private:
     // own masses, not the linearly implicit method's).
     bool assembledPlain_ = false;
     std::uint64_t assembledRevision_ = 0;
-    Eigen::VectorXd assembledQ_;
+    std::vector<double> angle_;  // each body's turn when last assembled
+    bool sameTurns(const World& w) const;
     bool chain_ = true;
     std::vector<PinRow> pins_;
     std::vector<WeldRow> welds_;
