@@ -192,7 +192,7 @@ private slots:
     // frames move on, and says "paused" again once it is there. Before the
     // first step there is no step to show.
     void anEditOnALongLadderSaysWhereItIsRunningTo() {
-        Fixture f(hangingLadder(1000));
+        Fixture f(slowHangingLadder(1000));
         auto* rate = f.window.findChild<QLabel*>("rate");
         auto* step = f.window.findChild<QLabel*>("step");
         QTRY_COMPARE(step->text(), QString("no step yet"));
