@@ -19,7 +19,7 @@ Powers Dynamics::evaluate(World& w, double t) {
         if (!kinematic[size_t(b)]) w.a.segment<3>(3 * b) = w.invMassDiag.segment<3>(3 * b).cwiseProduct(force_.segment<3>(3 * b));
     solver_.multiplyJ(w.a, rhs_);
     for (size_t i = 0; i < pins.size(); ++i) {
-        const double wa = w.v[3 * pins[i].bodyA + 2], wb = w.v[3 * pins[i].bodyB + 2];
+        const double wa = w.v[3 * solver_.bodyA(int(i)) + 2], wb = w.v[3 * solver_.bodyB(int(i)) + 2];
         rhs_.segment<2>(2 * Eigen::Index(i)) =
             wa * wa * solver_.armA(int(i)) - wb * wb * solver_.armB(int(i)) - rhs_.segment<2>(2 * Eigen::Index(i));
     }
@@ -35,11 +35,20 @@ Powers Dynamics::evaluate(World& w, double t) {
         if (!kinematic[size_t(b)]) w.a.segment<3>(3 * b) = w.invMassDiag.segment<3>(3 * b).cwiseProduct(jv_.segment<3>(3 * b));
 
     // Power of the pins at held bodies: force on the free side times the
-    // velocity of the (shared) point.
-    for (size_t i = 0; i < pins.size(); ++i) {
+    // velocity of the (shared) point. Only the pins with a held side, listed
+    // anew whenever the world changes other than in its motion (every pin's
+    // record is a pass over memory at 100,000 blocks, and one or two pins
+    // touch the hand); the revision, unlike the structure's count, is never
+    // the same for two different worlds.
+    if (heldPinsRevision_ != w.revision()) {
+        heldPinsRevision_ = w.revision();
+        heldPins_.clear();
+        for (size_t i = 0; i < pins.size(); ++i)
+            if (kinematic[size_t(pins[i].bodyA)] != kinematic[size_t(pins[i].bodyB)]) heldPins_.push_back(i);
+    }
+    for (size_t i : heldPins_) {
         const Pin& p = pins[i];
-        const bool ka = kinematic[size_t(p.bodyA)], kb = kinematic[size_t(p.bodyB)];
-        if (ka == kb) continue;
+        const bool ka = kinematic[size_t(p.bodyA)];
         const Vec2 l = lambda_.segment<2>(2 * Eigen::Index(i));
         if (ka) {
             const Vec2 vp = w.v.segment<2>(3 * p.bodyA) + w.v[3 * p.bodyA + 2] * perp(solver_.armA(int(i)));

@@ -131,13 +131,16 @@ void PinSolver::assemble(const World& w, const std::vector<Eigen::Vector2d>* inv
         return Vec2(cs[0] * r.x() - cs[1] * r.y(), cs[1] * r.x() + cs[0] * r.y());
     };
     const std::vector<Pin>& pins = w.pins();
+    // The flat flags, not the bodies: a Body is a long stride to read one
+    // flag from, and at 100,000 blocks this pass streams from memory.
+    const std::vector<unsigned char>& kinematic = w.kinematicFlags();
     for (size_t i = 0; i < pins.size(); ++i) {
         const Pin& p = pins[i];
         PinRow& row = pins_[i];
         row.bodyA = p.bodyA;
         row.bodyB = p.bodyB;
-        row.dynA = !w.body(p.bodyA).kinematic;
-        row.dynB = !w.body(p.bodyB).kinematic;
+        row.dynA = !kinematic[size_t(p.bodyA)];
+        row.dynB = !kinematic[size_t(p.bodyB)];
         row.rA = turn(p.bodyA, p.localA);
         row.rB = turn(p.bodyB, p.localB);
     }

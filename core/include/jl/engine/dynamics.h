@@ -7,6 +7,9 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
+#include <vector>
+
 namespace jl {
 
 class World;
@@ -44,6 +47,8 @@ public:
 private:
     PinSolver solver_;
     Eigen::VectorXd force_, rhs_, lambda_, jv_;
+    std::vector<size_t> heldPins_;         // pins with exactly one held side
+    std::uint64_t heldPinsRevision_ = 0;   // the World::revision they were listed for
     long long evaluations_ = 0;
 };
 

@@ -55,9 +55,11 @@ public:
         version_ = -1;
         assembledPlain_ = false;
     }
-    // World-frame arm from body A's (B's) origin to pin i.
+    // World-frame arm from body A's (B's) origin to pin i, and the bodies.
     const Vec2& armA(int i) const { return pins_[size_t(i)].rA; }
     const Vec2& armB(int i) const { return pins_[size_t(i)].rB; }
+    int bodyA(int i) const { return pins_[size_t(i)].bodyA; }
+    int bodyB(int i) const { return pins_[size_t(i)].bodyB; }
 
     // Work vectors of the projection (projection.cpp), kept here so that a
     // step allocates nothing once the sizes have settled.
