@@ -19,6 +19,26 @@ Eigen::Vector3d rates(const Powers& p) { return {p.held, p.user, p.damping}; }
 // as many for v; on a long chain its vectors outgrow the cache, and those
 // passes were a third of the method's cost per block-step at 100,000 blocks.
 // `base` null: the sum starts from zero.
+// The sum of M terms, M known to the compiler so that it can unroll the
+// terms and vectorize the elements.
+template <size_t M>
+void sumTerms(double* out, const Eigen::VectorXd* base, const double* c, const double* const* terms, Eigen::Index n) {
+    if (base) {
+        const double* b = base->data();
+        for (Eigen::Index e = 0; e < n; ++e) {
+            double sum = b[e];
+            for (size_t i = 0; i < M; ++i) sum = sum + c[i] * terms[i][e];
+            out[e] = sum;
+        }
+    } else {
+        for (Eigen::Index e = 0; e < n; ++e) {
+            double sum = 0.0;
+            for (size_t i = 0; i < M; ++i) sum = sum + c[i] * terms[i][e];
+            out[e] = sum;
+        }
+    }
+}
+
 void combineStages(Eigen::VectorXd& out, const Eigen::VectorXd* base, double scale, const double* coefficients,
                    const std::vector<Eigen::VectorXd>& k, size_t count) {
     constexpr size_t kMostStages = 8;
@@ -32,12 +52,16 @@ void combineStages(Eigen::VectorXd& out, const Eigen::VectorXd* base, double sca
     }
     const Eigen::Index n = k[0].size();
     out.resize(n);
-    double* o = out.data();
-    const double* b = base ? base->data() : nullptr;
-    for (Eigen::Index e = 0; e < n; ++e) {
-        double sum = b ? b[e] : 0.0;
-        for (size_t i = 0; i < m; ++i) sum = sum + c[i] * terms[i][e];
-        o[e] = sum;
+    switch (m) {
+    case 0: sumTerms<0>(out.data(), base, c, terms, n); break;
+    case 1: sumTerms<1>(out.data(), base, c, terms, n); break;
+    case 2: sumTerms<2>(out.data(), base, c, terms, n); break;
+    case 3: sumTerms<3>(out.data(), base, c, terms, n); break;
+    case 4: sumTerms<4>(out.data(), base, c, terms, n); break;
+    case 5: sumTerms<5>(out.data(), base, c, terms, n); break;
+    case 6: sumTerms<6>(out.data(), base, c, terms, n); break;
+    case 7: sumTerms<7>(out.data(), base, c, terms, n); break;
+    default: sumTerms<8>(out.data(), base, c, terms, n); break;
     }
 }
 
