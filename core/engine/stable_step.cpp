@@ -38,6 +38,7 @@ double imaginaryStabilityLimit(Integrator integrator) {
     switch (integrator) {
     case Integrator::RK4: return 2 * std::sqrt(2.0);
     case Integrator::DormandPrince45: return 0.9972;
+    case Integrator::Verner65: return 2.5842;
     // L-stable on the stiffness its W holds: no limit from the vibration
     // (what is left of the step's choice is accuracy, its error control's).
     case Integrator::RosenbrockW: return std::numeric_limits<double>::infinity();

@@ -85,6 +85,31 @@ Stepper::Stepper(Integrator kind, double tolerance) : kind_(kind), tolerance_(to
         uv_.resize(Rosenbrock::stages);
         ul_.resize(Rosenbrock::stages);
         break;
+    case Integrator::Verner65:
+        // Verner's "most efficient" 6(5) pair (2010), first same as last:
+        // the ninth stage is the end of the step, so a step costs eight
+        // evaluations. Its stability interval on the imaginary axis is
+        // 2.584 (Dormand-Prince's 0.9972), which is what a long ladder's
+        // fastest vibration asks of a step (docs/model.md section 6.1).
+        // The exact rationals, rounded once to double; e = b - b_embedded.
+        tableau_ = {{0, 0.06, 0.09593333333333333, 0.1439, 0.4973, 0.9725, 0.9995, 1, 1},
+                    {0.03438957868357036, 0, 0, 0.2582624555633503, 0.4209371189673537, 4.40539646966931,
+                     -176.48311902429865, 172.36413340141507, 0},
+                    {-0.008623404282200852, 0, 0, 0.019434029953152708, -0.028450072588037983, 2.109711061065291,
+                     -103.45854289996399, 101.39980461914911, -0.03333333333333333},
+                    {{},
+                     {0.06},
+                     {0.019239962962962962, 0.07669337037037037},
+                     {0.035975, 0, 0.107925},
+                     {1.3186834152331484, 0, -5.042058063628562, 4.220674648395414},
+                     {-41.872591664327516, 0, 159.4325621631375, -122.11921356501003, 5.531743066200054},
+                     {-54.430156935316504, 0, 207.06725136501848, -158.61081378459, 6.991816585950242,
+                      -0.018597231062203234},
+                     {-54.66374178728198, 0, 207.95280625538936, -159.2889574744995, 7.018743740796944,
+                      -0.018338785905045722, -0.0005119484997882099},
+                     {0.03438957868357036, 0, 0, 0.2582624555633503, 0.4209371189673537, 4.40539646966931,
+                      -176.48311902429865, 172.36413340141507}}};
+        break;
     case Integrator::DormandPrince45:
         tableau_ = {{0, 1.0 / 5, 3.0 / 10, 4.0 / 5, 8.0 / 9, 1, 1},
                     {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84, 0},
@@ -110,6 +135,7 @@ int Stepper::order() const {
     case Integrator::SymplecticEuler: return 1;
     case Integrator::RK4: return 4;
     case Integrator::DormandPrince45: return 5;
+    case Integrator::Verner65: return 6;
     case Integrator::RosenbrockW: return 3;
     }
     return 1;
@@ -128,7 +154,7 @@ double Stepper::attempt(World& w, Dynamics& d, double t, double h, Ledger& ledge
     // evaluate it, one evaluation a step fewer. Its error estimate then
     // differs by h/40 times the change of the rates that the projection
     // makes, a projection of a drift below the step's own error.
-    const bool projectLast = projectionTolerance > 0 && kind_ == Integrator::DormandPrince45;
+    const bool projectLast = projectionTolerance > 0 && lastStageIsEnd();
     for (size_t i = firstKnown ? 1 : 0; i < stages; ++i) {
         if (i > 0) {
             combineStages(w.q, &q0_, h, tableau_.a[i].data(), kq_, i);
@@ -232,7 +258,7 @@ StepOutcome Stepper::advance(World& w, Dynamics& d, double t, double h, Ledger& 
                 continue;
             }
             // The error estimate is the embedded method's, O(h^(p+1)) for its order p.
-            const double exponent = kind_ == Integrator::RosenbrockW ? -1.0 / 3 : -0.2;
+            const double exponent = -1.0 / order();
             const double grow = err > 0 ? 0.9 * std::pow(err, exponent) : 5.0;
             if (err <= 1.0 || trial < 1e-12) {
                 out.taken = trial;
@@ -244,7 +270,7 @@ StepOutcome Stepper::advance(World& w, Dynamics& d, double t, double h, Ledger& 
         }
     }
     w.updateKinematics(t + out.taken);
-    if (projectionTolerance > 0 && kind_ == Integrator::DormandPrince45) {
+    if (projectionTolerance > 0 && lastStageIsEnd()) {
         out.endEvaluated = endProjection_.converged;
         out.endPowers = endPowers_;
         out.projection = endProjection_;

@@ -6,9 +6,11 @@
 
 namespace jl {
 
-enum class Integrator { ExplicitEuler, SymplecticEuler, RK4, DormandPrince45, RosenbrockW };
+enum class Integrator { ExplicitEuler, SymplecticEuler, RK4, DormandPrince45, RosenbrockW, Verner65 };
 
 // Methods that choose their own step from a local error tolerance.
-constexpr bool isAdaptive(Integrator i) { return i == Integrator::DormandPrince45 || i == Integrator::RosenbrockW; }
+constexpr bool isAdaptive(Integrator i) {
+    return i == Integrator::DormandPrince45 || i == Integrator::Verner65 || i == Integrator::RosenbrockW;
+}
 
 }  // namespace jl

@@ -1,6 +1,6 @@
 // Time integration of a world's bodies and energy ledger: explicit Euler (the
 // paper's), symplectic Euler, classical RK4, adaptive Dormand-Prince 5(4) and
-// the adaptive, linearly implicit Rosenbrock-W method ROS34PW2.
+// Verner 6(5), and the adaptive, linearly implicit Rosenbrock-W method ROS34PW2.
 #pragma once
 
 #include "jl/engine/dynamics.h"
@@ -25,10 +25,11 @@ struct StepOutcome {
     double taken = 0;      // s, the step actually made (adaptive: <= asked)
     int rejected = 0;      // adaptive trials thrown away
     bool finite = true;    // false: a NaN or inf appeared; the world was restored
-    // Dormand-Prince asked to project (Stepper::advance's projectionTolerance):
-    // its last stage is the end of the step projected onto the pins, so the
-    // world holds the projected end, w.a and the dynamics' forces its
-    // evaluation, these its powers, and this how the projection went.
+    // Dormand-Prince or Verner asked to project (Stepper::advance's
+    // projectionTolerance): their last stage is the end of the step
+    // projected onto the pins, so the world holds the projected end, w.a
+    // and the dynamics' forces its evaluation, these its powers, and this
+    // how the projection went.
     bool endEvaluated = false;
     Powers endPowers;
     ProjectionResult projection;
@@ -44,7 +45,7 @@ public:
     // accepted step when locating an event). `atStart`: w.a already holds
     // the accelerations at (t, w.q, w.v) and these are their powers, so the
     // first stage needs no evaluation (KeptEvaluation). `projectionTolerance`
-    // > 0: Dormand-Prince projects the end of each trial onto the pins
+    // > 0: Dormand-Prince and Verner project the end of each trial onto the pins
     // before its last stage (first same as last, on the pins: the caller's
     // projection and evaluation of the end are that stage); the other
     // methods leave the projection to the caller.
@@ -52,6 +53,9 @@ public:
                         const Powers* atStart = nullptr, double projectionTolerance = 0);
 
     Integrator kind() const { return kind_; }
+    // The last stage is the end of the step (first same as last): it can be
+    // the projected end, and the next step's first stage.
+    bool lastStageIsEnd() const { return kind_ == Integrator::DormandPrince45 || kind_ == Integrator::Verner65; }
     int order() const;
     double nextStep() const { return next_; }  // adaptive: its next trial step
     // The state at the start of the last advance, to undo a step without a copy.

@@ -69,7 +69,7 @@ inline constexpr NumberField<SolverSpec> kSolverNumbers[] = {
      "fixed step; the first try of the adaptive one. Left out, the engine chooses it: at most 1 ms, and short "
      "enough to stay stable on long ladders (docs/model.md section 6.3)"},
     {"tolerance", &SolverSpec::tolerance, "", range::tolerance,
-     "local error tolerance of the adaptive `dormand_prince45` and `rosenbrock_w` (below 1e-14 the rounding of the state alone exceeds it)"},
+     "local error tolerance of the adaptive `dormand_prince45`, `verner65` and `rosenbrock_w` (below 1e-14 the rounding of the state alone exceeds it)"},
     {"projection_tolerance", &SolverSpec::projectionTolerance, "m", range::projectionTolerance,
      "constraint residual after projection"},
     {"event_tolerance", &SolverSpec::eventTolerance, "s", range::eventTolerance, "time accuracy of located events"},
@@ -89,6 +89,7 @@ inline constexpr Word<Integrator> kIntegrators[] = {
     {"symplectic_euler", Integrator::SymplecticEuler, "Symplectic Euler"},
     {"rk4", Integrator::RK4, "Runge-Kutta 4"},
     {"dormand_prince45", Integrator::DormandPrince45, "Dormand-Prince 5(4), adaptive"},
+    {"verner65", Integrator::Verner65, "Verner 6(5), adaptive"},
     {"rosenbrock_w", Integrator::RosenbrockW, "Rosenbrock-W 3(2), linearly implicit, adaptive"},
 };
 inline constexpr Word<EventPolicy> kEventPolicies[] = {
