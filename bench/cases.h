@@ -27,6 +27,10 @@ struct BenchPlan {
     double minSeconds = 0.02;  // each configuration repeated until it took this long
 };
 
+// Whether a row's method (its integrator's word, perhaps with more words)
+// is an adaptive one, whose parameter is a tolerance rather than a step.
+bool namesAdaptiveMethod(const std::string& method);
+
 // The turn of the benchmark's ladders: block 0 turned half a turn
 // counter-clockwise from `at` over 0.3 s.
 ScriptAction halfTurn(double at);

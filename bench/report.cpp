@@ -448,7 +448,7 @@ bool writeReport(const BenchResults& r, const std::filesystem::path& plots, cons
         scaling << "| " << s.method << " | " << s.blocks << " | " << s.note << " | " << num(s.error) << " | "
                 << num(s.cost) << " |\n";
     for (const BenchRow& l : r.longLadder) {
-        const bool tolerance = l.method.find("rosenbrock") != std::string::npos || l.method.find("dormand") != std::string::npos;
+        const bool tolerance = namesAdaptiveMethod(l.method);
         longLadder << "- " << l.blocks << " blocks, " << l.method;
         if (tolerance) longLadder << ", tolerance " << num(l.parameter);
         else if (l.parameter > 0) longLadder << ", dt = " << num(l.parameter) << " s";
