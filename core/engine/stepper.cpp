@@ -3,6 +3,7 @@
 #include "jl/engine/world.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 
@@ -12,13 +13,6 @@ namespace {
 
 Eigen::Vector3d rates(const Powers& p) { return {p.held, p.user, p.damping}; }
 
-// out = base + c_0 k_0 + c_1 k_1 + ... for the stages whose coefficient is
-// not zero, added in that order: bit for bit what one axpy after another
-// gives, in one pass over memory instead of one pass (reading and writing
-// `out`) per stage. A step of Dormand-Prince makes 28 such sums for q and
-// as many for v; on a long chain its vectors outgrow the cache, and those
-// passes were a third of the method's cost per block-step at 100,000 blocks.
-// `base` null: the sum starts from zero.
 // The sum of M terms, M known to the compiler so that it can unroll the
 // terms and vectorize the elements.
 template <size_t M>
@@ -39,13 +33,21 @@ void sumTerms(double* out, const Eigen::VectorXd* base, const double* c, const d
     }
 }
 
+// out = base + c_0 k_0 + c_1 k_1 + ... for the stages whose coefficient is
+// not zero, added in that order: bit for bit what one axpy after another
+// gives, in one pass over memory instead of one pass (reading and writing
+// `out`) per stage. A step of Dormand-Prince makes 28 such sums for q and
+// as many for v; on a long chain its vectors outgrow the cache, and those
+// passes were a sixth of the method's cost per block-step at 100,000 blocks.
+// `base` null: the sum starts from zero.
 void combineStages(Eigen::VectorXd& out, const Eigen::VectorXd* base, double scale, const double* coefficients,
                    const std::vector<Eigen::VectorXd>& k, size_t count) {
-    constexpr size_t kMostStages = 8;
+    constexpr size_t kMostStages = 9;  // Verner's 6(5) pair, the longest tableau
+    assert(count <= kMostStages);
     double c[kMostStages];
     const double* terms[kMostStages];
     size_t m = 0;
-    for (size_t j = 0; j < count && m < kMostStages; ++j) {
+    for (size_t j = 0; j < count; ++j) {
         if (coefficients[j] == 0) continue;
         c[m] = scale * coefficients[j];
         terms[m++] = k[j].data();
@@ -61,7 +63,8 @@ void combineStages(Eigen::VectorXd& out, const Eigen::VectorXd* base, double sca
     case 5: sumTerms<5>(out.data(), base, c, terms, n); break;
     case 6: sumTerms<6>(out.data(), base, c, terms, n); break;
     case 7: sumTerms<7>(out.data(), base, c, terms, n); break;
-    default: sumTerms<8>(out.data(), base, c, terms, n); break;
+    case 8: sumTerms<8>(out.data(), base, c, terms, n); break;
+    default: sumTerms<9>(out.data(), base, c, terms, n); break;
     }
 }
 
