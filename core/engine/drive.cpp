@@ -11,9 +11,18 @@ struct Profile {
     double value, rate, accel;
 };
 
-Profile smooth(const DriveMove& m, double t) {
-    if (t <= m.t0) return {0, 0, 0};
-    if (m.duration <= 0 || t >= m.t0 + m.duration) return {1, 0, 0};
+// 0 before the move, 1 while it lasts, 2 after it.
+int piece(const DriveMove& m, double t) {
+    if (t < m.t0) return 0;
+    return m.duration <= 0 || t >= m.t0 + m.duration ? 2 : 1;
+}
+
+// The piece is chosen by `within` and evaluated at t: on a piece's own
+// ends the formula is the one-sided limit.
+Profile smooth(const DriveMove& m, double t, double within) {
+    const int at = piece(m, within);
+    if (at == 0) return {0, 0, 0};
+    if (at == 2) return {1, 0, 0};
     const double pi = std::numbers::pi;
     const double s = (t - m.t0) / m.duration;
     const double w = pi / m.duration;
@@ -22,10 +31,10 @@ Profile smooth(const DriveMove& m, double t) {
 
 }  // namespace
 
-DriveSample Drive::at(double t) const {
+DriveSample Drive::at(double t, double within) const {
     DriveSample d{base_, {}, {}};
     for (const DriveMove& m : moves_) {
-        const Profile p = smooth(m, t);
+        const Profile p = smooth(m, t, within);
         d.pose.position += p.value * m.offset;
         d.pose.angle += p.value * m.turn;
         d.velocity.linear += p.rate * m.offset;
@@ -34,6 +43,12 @@ DriveSample Drive::at(double t) const {
         d.acceleration.angular += p.accel * m.turn;
     }
     return d;
+}
+
+bool Drive::samePiece(double a, double b) const {
+    for (const DriveMove& m : moves_)
+        if (piece(m, a) != piece(m, b)) return false;
+    return true;
 }
 
 }  // namespace jl

@@ -4,9 +4,9 @@
 
 namespace jl {
 
-Powers Dynamics::evaluate(World& w, double t) {
+Powers Dynamics::evaluate(World& w, double t, double within) {
     ++evaluations_;
-    w.updateKinematics(t);
+    w.updateKinematics(t, within);
     Powers powers;
     accumulateForces(w, force_, powers);
     solver_.assemble(w);

@@ -116,7 +116,7 @@ double Stepper::rosenbrockAttempt(World& w, Dynamics& d, double t, double h, Led
                 w.v.noalias() += r.a[i][j] * uv_[size_t(j)];
             }
         }
-        const Powers p = d.evaluate(w, t + r.alpha[i] * h);
+        const Powers p = d.evaluate(w, t + r.alpha[i] * h, t + h / 2);
         if (i == 0) stiffMass(w, d, hg * hg);
         rq_ = w.v.cwiseProduct(mask_);  // held bodies follow their path instead
         rv_ = w.a.cwiseProduct(mask_);

@@ -169,7 +169,7 @@ double Stepper::attempt(World& w, Dynamics& d, double t, double h, Ledger& ledge
             if (!endProjection_.converged) return std::numeric_limits<double>::quiet_NaN();
             projectVelocities(w, d.solver());
         }
-        const Powers p = d.evaluate(w, t + tableau_.c[i] * h);
+        const Powers p = d.evaluate(w, t + tableau_.c[i] * h, t + h / 2);
         if (last) endPowers_ = p;
         kl_[i] = rates(p);
         kq_[i] = w.v;
@@ -216,7 +216,7 @@ double Stepper::errorNorm(const World& w) const {
 }
 
 void Stepper::symplecticEuler(World& w, Dynamics& d, double t, double h, Ledger& ledger, const Powers* atStart) {
-    const Eigen::Vector3d r = rates(atStart ? *atStart : d.evaluate(w, t));
+    const Eigen::Vector3d r = rates(atStart ? *atStart : d.evaluate(w, t, t + h / 2));
     w.v.noalias() += h * w.a;
     w.q.noalias() += h * w.v;
     ledger.held += h * r[0];

@@ -235,13 +235,13 @@ void World::release(PartId part) {
     regroup({parts_[part].body});
 }
 
-void World::updateKinematics(double t) {
+void World::updateKinematics(double t, double within) {
     for (int b : kinematicBodies()) {
         const Body& body = bodies_[size_t(b)];
         const PartId lead = *std::find_if(body.parts.begin(), body.parts.end(),
                                           [&](PartId p) { return parts_[p].drive.has_value(); });
         const Part& part = parts_[lead];
-        const DriveSample s = part.drive->at(t);
+        const DriveSample s = part.drive->at(t, within);
         const Pose pose = s.pose.compose(part.inBody.inverse());
         const Vec2 r = pose.position - s.pose.position;  // lead centre to body origin
         const double w = s.velocity.angular, alpha = s.acceleration.angular;
@@ -252,6 +252,13 @@ void World::updateKinematics(double t) {
         a.segment<2>(3 * b) = s.acceleration.linear + alpha * perp(r) - w * w * r;
         a[3 * b + 2] = alpha;
     }
+}
+
+bool World::pathsOnOnePiece(double a, double b) const {
+    for (int body : kinematicBodies())
+        for (PartId p : bodies_[size_t(body)].parts)
+            if (parts_[p].drive && !parts_[p].drive->samePiece(a, b)) return false;
+    return true;
 }
 
 // A part alone in its body sits at the body's origin: its pose and velocity

@@ -185,7 +185,12 @@ void Simulation::hangStillTail() {
     for (const PinSpec& p : scene_.pins) touches(p.a), touches(p.b);
     for (const SpringSpec& s : scene_.springs) touches(s.a), touches(s.b);
     // Still: no speed at all, and accelerations within rounding of none (the
-    // last evaluation is of the state after the inputs at t = 0).
+    // last evaluation is of the state after the inputs at t = 0). A move of
+    // the hand that starts at t = 0 is not one of them: its acceleration
+    // reaches every block through the pins at once, and the tail wakes when
+    // the motion comes near it, as for a move that starts later.
+    const bool handMoving = !world_.pathsOnOnePiece(-kOpenEnd, t_);
+    if (handMoving) dynamics_.evaluate(world_, t_, -kOpenEnd);
     const double length = scene_.ladder->block.length;
     const double quiet = Ladder::kStillTolerance * world_.gravity.norm();
     for (int i = n - 1; i > deepest; --i) {
@@ -196,7 +201,7 @@ void Simulation::hangStillTail() {
             break;
         }
     }
-    if (ladder_->hangStill(world_, deepest + Ladder::kWakeBlocks + 1)) dynamics_.evaluate(world_, t_);
+    if (ladder_->hangStill(world_, deepest + Ladder::kWakeBlocks + 1) || handMoving) dynamics_.evaluate(world_, t_);
 }
 
 // Parts the still tail through `block` (docs/model.md section 3.7). If

@@ -88,12 +88,11 @@ void Simulation::emitGridFrames(double taken) {
     const Ledger ledgerAtEnd = ledger_;
     // Both ends as the step evaluated them, when it did (not at a located
     // instant, which only the interpolant gave).
-    const Powers* kept = keptEnd_.recall(world_, dynamics_, t1);
-    const Powers p1 = kept ? *kept : dynamics_.evaluate(world_, t1);
+    const Powers p1 = stepEndAsTaken(taken);
     interpolant_.setEnd(world_.q, world_.v, world_.a);
     world_.q = stepStartQ_;
     world_.v = stepStartV_;
-    kept = keptStart_.recall(world_, dynamics_, t0);
+    const Powers* kept = keptStart_.recall(world_, dynamics_, t0);
     const Powers p0 = kept ? *kept : dynamics_.evaluate(world_, t0);
     interpolant_.setStart(taken, world_.q, world_.v, world_.a);
     for (; grid_.at(k) < t1 - eps; k += 1) {
@@ -117,6 +116,19 @@ void Simulation::emitGridFrames(double taken) {
     world_.a = a1saved;
     ledger_ = ledgerAtEnd;
     dynamics_.restoreLast(dynamicsAtEnd);
+}
+
+// The end of the step just taken (from t_, of length `taken`; the world
+// holds it) evaluated as the step itself saw it, for the interpolant and the
+// books between its ends. Where a move of the hand starts or stops, the
+// hand's acceleration jumps: the step's own side of the jump is that of its
+// stages, and the end's evaluation for the event functions and the next
+// step (kept) is the other side.
+Powers Simulation::stepEndAsTaken(double taken) {
+    const double t1 = t_ + taken, mid = t_ + taken / 2;
+    if (world_.pathsOnOnePiece(mid, t1))
+        if (const Powers* kept = keptEnd_.recall(world_, dynamics_, t1)) return *kept;
+    return dynamics_.evaluate(world_, t1, mid);
 }
 
 // The smallest event function in the state the world holds, at time t (an
@@ -159,7 +171,7 @@ bool Simulation::locateEvent(double& taken, double fEnd, double forcesAtEnd) {
     crossed_.clear();
     for (size_t k = 0; k < eventValues_.size(); ++k)
         if (eventValues_[k] < 0) crossed_.push_back(int(k));
-    const Powers p1 = lastPowers_;
+    const Powers p1 = world_.pathsOnOnePiece(t_ + taken / 2, t_ + taken) ? lastPowers_ : stepEndAsTaken(taken);
     const Ledger ledgerAtEnd = ledger_;
     interpolant_.setEnd(world_.q, world_.v, world_.a);
     restoreStepStart();
@@ -251,8 +263,10 @@ Simulation::Trial Simulation::tryLettingGo(int j, double limit) {
 double Simulation::fixedStep() {
     constexpr double kLargestAutomaticStep = 1e-3;  // s
     if (scene_.solver.step > 0) return scene_.solver.step;
-    // 8 x the fastest turn: a turn of at most 0.2 rad per RK4 step.
-    const double omega = std::max(fastestVibration(world_, dynamics_.pinForces()), 8 * fastestTurn(world_));
+    // 16 x the fastest turn: a turn of at most 0.1 rad per RK4 step, where
+    // RK4 loses (omega h)^6 / 72 = 1.4e-8 of a spin's energy per step
+    // (docs/model.md section 6.3).
+    const double omega = std::max(fastestVibration(world_, dynamics_.pinForces()), 16 * fastestTurn(world_));
     const double h = stepScale_ * automaticStep(scene_.solver.integrator, omega, kLargestAutomaticStep);
     stats_.automaticStep = true;
     stats_.smallestStep = stats_.smallestStep > 0 ? std::min(stats_.smallestStep, h) : h;
@@ -358,9 +372,10 @@ bool Simulation::takeStep(double limit) {
         double forces = 0;
         // The end of the step, evaluated for the event functions (and kept
         // as the next step's first stage): by the step itself if its last
-        // stage was the projected end (Dormand-Prince).
+        // stage was the projected end (Dormand-Prince), unless a move of
+        // the hand starts or stops there: its stage saw the other side.
         double fEnd = 0;
-        if (m.step.endEvaluated) {
+        if (m.step.endEvaluated && world_.pathsOnOnePiece(t_ + taken / 2, t_ + taken)) {
             lastPowers_ = m.step.endPowers;
             fEnd = eventFunctionsNow(&forces);
         } else {

@@ -30,7 +30,19 @@ public:
     explicit Drive(const Pose& base) : base_(base) {}
 
     void add(const DriveMove& m) { moves_.push_back(m); }
-    DriveSample at(double t) const;
+    // The path at time t. Its acceleration jumps where a move starts and
+    // where it stops; an instant there belongs to the piece that starts
+    // there (right-continuous), which is what the step that starts there and
+    // the force tests there must see.
+    DriveSample at(double t) const { return at(t, t); }
+    // The path at time t along the piece that holds the instant `within`:
+    // a step from t0 to t1, which never straddles an end of a move, takes
+    // all its stages, those at its ends included, from the piece of its
+    // midpoint. The step that ends where a move starts sees no turn at its
+    // end, the one that ends where it stops sees the turn's deceleration.
+    DriveSample at(double t, double within) const;
+    // Whether the instants a and b lie on the same piece of every move.
+    bool samePiece(double a, double b) const;
     const std::vector<DriveMove>& moves() const { return moves_; }
     const Pose& base() const { return base_; }
 

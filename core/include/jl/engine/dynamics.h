@@ -24,7 +24,10 @@ class Dynamics {
 public:
     // Sets kinematic bodies to their path at time t, then computes w.a for
     // the dynamic bodies from w.q and w.v. Allocation-free once warmed up.
-    Powers evaluate(World& w, double t);
+    Powers evaluate(World& w, double t) { return evaluate(w, t, t); }
+    // The same with the held blocks' paths taken along the piece that holds
+    // `within` (a step's stages: World::updateKinematics).
+    Powers evaluate(World& w, double t, double within);
 
     // Pin forces of the last evaluation (2 per pin, force on body A), then
     // one multiplier per weld (World::Weld).

@@ -181,8 +181,14 @@ public:
     // ---- holding ----
     void hold(PartId part, const Drive& drive);  // the part follows the path
     void release(PartId part);                   // keeps its current velocity
-    // Poses, velocities and accelerations of kinematic bodies at time t.
-    void updateKinematics(double t);
+    // Poses, velocities and accelerations of kinematic bodies at time t
+    // (right-continuous where a hand's move starts or stops), or at t along
+    // the piece of each path that holds `within` (Drive::at).
+    void updateKinematics(double t) { updateKinematics(t, t); }
+    void updateKinematics(double t, double within);
+    // Whether every held block's path is on one piece from a to b: no
+    // move of the hand starts or stops in (a, b].
+    bool pathsOnOnePiece(double a, double b) const;
     bool isHeld(PartId part) const { return parts_[part].drive.has_value(); }
     Drive* drive(PartId part) {
         touch();

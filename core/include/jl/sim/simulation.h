@@ -131,6 +131,7 @@ private:
     double eventFunctionsNow(double* forces);
     void restoreStepStart();
     void emitGridFrames(double taken);
+    Powers stepEndAsTaken(double taken);
     void record(const Event& e);
     bool booksDiverged() const;
     double booksImbalance(double total) const;
