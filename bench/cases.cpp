@@ -407,16 +407,26 @@ std::vector<BenchRow> longLadderRuns(int blocks, double duration) {
         s.solver.integrator = c.kind;
         s.solver.stillTail = c.tail;
         if (adaptive(c.kind)) s.solver.tolerance = c.parameter; else s.solver.step = c.parameter;
-        Simulation::Built built = Simulation::build(s);
         BenchRow row{"long_ladder",
                      std::string(integratorWord(c.kind)) + " located" +
                          (!adaptive(c.kind) && c.parameter == 0 ? " (the engine's step)" : "") +
                          (c.tail == StillTail::Separate ? ", full model" : ""),
                      blocks, c.parameter, 0, NAN, true, ""};
-        const double start = threadSeconds();
-        built.simulation->advanceExactlyTo(duration);
-        const double cpu = threadSeconds() - start;
-        const Frame f = built.simulation->frame();
+        const auto run = [&](Frame& f) {
+            Simulation::Built built = Simulation::build(s);
+            const double start = threadSeconds();
+            built.simulation->advanceExactlyTo(duration);
+            const double cpu = threadSeconds() - start;
+            f = built.simulation->frame();
+            return cpu;
+        };
+        Frame f;
+        double cpu = run(f);
+        // The fastest of three runs under two seconds (the same run each
+        // time, bit for bit): this machine's speed drifts by up to 1.5x from
+        // one minute to the next, and the targets are read off these rows.
+        int runs = 1;
+        for (Frame again; runs < 3 && cpu < 2.0; ++runs) cpu = std::min(cpu, run(again));
         row.finished = f.failure.empty();
         row.cost = cpu / std::max(f.time, 1e-300);
         if (&c == &configs.front()) {
@@ -430,10 +440,10 @@ std::vector<BenchRow> longLadderRuns(int blocks, double duration) {
         char note[400];
         std::snprintf(note, sizeof note,
                       "simulated %.4f s in %.3f CPU s (%.3fx real time), %lld steps, %.0f ns per block-step, "
-                      "block-centre error %.2e m%s%s",
+                      "block-centre error %.2e m%s%s%s",
                       f.time, cpu, f.time / cpu, f.solver.steps,
                       1e9 * cpu / (double(blocks) * double(std::max<long long>(f.solver.steps, 1))), row.error,
-                      row.finished ? "" : "; stopped: ", f.failure.c_str());
+                      runs > 1 ? " (fastest of 3 runs)" : "", row.finished ? "" : "; stopped: ", f.failure.c_str());
         row.note = note;
         std::fprintf(stderr, "  long ladder N=%d %s %.1e: %s\n", blocks, row.method.c_str(), c.parameter, note);
         rows.push_back(row);
