@@ -392,8 +392,9 @@ void MainWindow::createStatusBar() {
                                   "after an edit, how far the run back to the moment on screen has got."), 190);
     energyLabel_ = label("energy", tr("Kinetic plus potential energy; in brackets, what the energy books fail to explain."), 190);
     residualLabel_ = label("residual", tr("Largest gap left in a hinge pin after the last step."), 130);
-    stepLabel_ = label("step", tr("The integrator's step: the scene's own, or (auto) the engine's choice: at most 1 ms, "
-                                  "and short enough to stay stable on long ladders."), 130);
+    stepLabel_ = label("step", tr("The integrator's last step: the scene's own; (auto) the engine's choice, at most 1 ms "
+                                  "and short enough to stay stable on long ladders; or (adaptive) the one the adaptive "
+                                  "integrator's error control chose for its tolerance."), 150);
     stillLabel_ = label("still", tr("Blocks the motion has not reached yet: they hang still, joined into a few rigid "
                                     "bodies, until it comes near them. The same motion, for much less computing "
                                     "(docs/model.md section 3.7; solver.still_tail: separate turns it off)."), 120);
@@ -479,7 +480,9 @@ void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {
         if (solver.steps == 0)
             stepLabel_->setText(tr("no step yet"));
         else
-            stepLabel_->setText(solver.automaticStep ? tr("step %1 ms (auto)").arg(step) : tr("step %1 ms").arg(step));
+            stepLabel_->setText(solver.adaptiveStep    ? tr("step %1 ms (adaptive)").arg(step)
+                                : solver.automaticStep ? tr("step %1 ms (auto)").arg(step)
+                                                       : tr("step %1 ms").arg(step));
         // A long ladder: how many of its blocks the motion has not reached.
         const int blocks = int(s->frame->hinges.size()) + 1;
         stillLabel_->setVisible(solver.stillFrom >= 0);

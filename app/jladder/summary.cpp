@@ -9,10 +9,16 @@ namespace jl::cli {
 
 namespace {
 
-// What step the run took: the scene's, or the engine's choice (its range,
-// and how often a step that blew up made it halve the rest).
+// What step the run took: the adaptive integrator's error control's (the
+// range of the steps it chose), the scene's, or the engine's choice (its
+// range, and how often a step that blew up made it halve the rest).
 std::string stepJson(const SolverFrame& f) {
     std::ostringstream s;
+    if (f.adaptiveStep) {
+        s << "{\"chosen_by\":\"error control\",\"smallest\":" << jsonNumber(f.smallestStep)
+          << ",\"largest\":" << jsonNumber(f.largestStep) << "}";
+        return s.str();
+    }
     if (!f.automaticStep) {
         s << "{\"chosen_by\":\"scene\"}";
         return s.str();

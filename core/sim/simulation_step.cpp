@@ -260,6 +260,11 @@ Simulation::Trial Simulation::tryLettingGo(int j, double limit) {
 
 // The scene's step, or the engine's: 1 ms at most, and within the stability
 // limit of the fastest vibration the pin forces of the last evaluation allow.
+void Simulation::noteStep(double h) {
+    stats_.smallestStep = stats_.smallestStep > 0 ? std::min(stats_.smallestStep, h) : h;
+    stats_.largestStep = std::max(stats_.largestStep, h);
+}
+
 double Simulation::fixedStep() {
     constexpr double kLargestAutomaticStep = 1e-3;  // s
     if (scene_.solver.step > 0) return scene_.solver.step;
@@ -268,9 +273,11 @@ double Simulation::fixedStep() {
     // (docs/model.md section 6.3).
     const double omega = std::max(fastestVibration(world_, dynamics_.pinForces()), 16 * fastestTurn(world_));
     const double h = stepScale_ * automaticStep(scene_.solver.integrator, omega, kLargestAutomaticStep);
-    stats_.automaticStep = true;
-    stats_.smallestStep = stats_.smallestStep > 0 ? std::min(stats_.smallestStep, h) : h;
-    stats_.largestStep = std::max(stats_.largestStep, h);
+    // The adaptive methods' first try only: their steps are their own.
+    if (!isAdaptive(scene_.solver.integrator)) {
+        stats_.automaticStep = true;
+        noteStep(h);
+    }
     return h;
 }
 
@@ -361,6 +368,10 @@ bool Simulation::takeStep(double limit) {
     }
     double taken = m.step.taken;
     stats_.rejected += m.step.rejected;
+    if (adaptive && (!lands || taken < h)) {
+        stats_.adaptiveStep = true;
+        noteStep(taken);
+    }
     if (booksDiverged()) {
         if (retryWithSmallerStep()) return true;
         restoreStepStart();

@@ -160,6 +160,16 @@ for scene in "$source/examples/pendulum.yaml" scene.yaml; do
     grep -q '"time":0.5,' out.txt || fail "a run to 0.5 s ended at $(grep -o '"time":[^,]*' out.txt) ($scene)"
 done
 
+# An adaptive integrator's steps are its error control's: the summary says
+# so, with the range of the steps it chose (it once gave the engine's first
+# try as both the smallest and the largest).
+expect 0 "$jladder" run scene.yaml --until 1 --integrator dormand_prince45
+steps=$(grep -o '"step":{"chosen_by":"error control","smallest":[^,]*,"largest":[^}]*}' out.txt)
+smallest=$(echo "$steps" | sed 's/.*"smallest":\([^,]*\),.*/\1/')
+largest=$(echo "$steps" | sed 's/.*"largest":\([^}]*\)}.*/\1/')
+[ -n "$steps" ] && awk -v a="$smallest" -v b="$largest" 'BEGIN { exit !(a > 0 && a < b) }' ||
+    fail "the adaptive run's step is not its error control's range: $(head -c 300 out.txt)"
+
 if [ $failures -gt 0 ]; then
     echo "$failures failures" >&2
     exit 1

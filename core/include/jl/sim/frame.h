@@ -27,8 +27,11 @@ struct SolverFrame {
     double lastStep = 0;           // s
     // The fixed-step integrators' step: the scene's, or chosen by the engine
     // from the fastest vibration (smallest and largest so far), halved for
-    // the rest of the run after each step that blew up.
+    // the rest of the run after each step that blew up. The adaptive ones'
+    // steps are their error control's: smallest and largest so far of those
+    // it chose (not those cut short to land on a scripted instant or an event).
     bool automaticStep = false;
+    bool adaptiveStep = false;
     double smallestStep = 0, largestStep = 0;  // s
     int stepHalvings = 0;
     double residual = 0;           // m, largest pin gap after the last step

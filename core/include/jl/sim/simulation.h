@@ -136,6 +136,7 @@ private:
     bool booksDiverged() const;
     double booksImbalance(double total) const;
     double fixedStep();
+    void noteStep(double h);
     bool retryWithSmallerStep();
     std::string blowUpAdvice(double h) const;
     void settleHolds(double limit);
