@@ -59,9 +59,12 @@ int reach(const std::map<int, double>& first) {
 
 // No failure, the books balanced to the integration error of the scene's
 // own step (RK4 at 1 ms loses up to 3e-5 of the scale while the heavy block
-// of heavy-middle.yaml swings), and no hinge chattering.
+// of heavy-middle.yaml swings), the pins closed to the projection tolerance
+// (the examples keep the default, 1e-10 m) after every step and its events,
+// and no hinge chattering.
 void requireSoundRun(const Run& r, double scale) {
     QVERIFY2(r.failure.empty(), r.failure.c_str());
+    QVERIFY2(r.worstResidual <= 1e-10 * 1.0000001, qPrintable(QString("pin gap %1 m").arg(r.worstResidual)));
     QVERIFY2(r.worstBalance < 1e-4 * scale, qPrintable(QString("%1 J of %2 J").arg(r.worstBalance).arg(scale)));
     const Chatter c = chatter(r.events);
     QVERIFY2(c.longest <= 3, qPrintable(QString("%1 quick cycles of one hinge in a row").arg(c.longest)));

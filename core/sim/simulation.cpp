@@ -82,6 +82,7 @@ std::optional<std::string> Simulation::buildWorld() {
     if (scene_.ladder) {
         if (auto e = Ladder::validate(*scene_.ladder)) return e;
         ladder_.emplace(world_, *scene_.ladder);
+        ladder_->setGapTolerance(scene_.solver.projectionTolerance);
         for (int i = 0; i < ladder_->blockCount(); ++i) {
             blocks_.push_back(ladder_->block(i));
             named["block:" + std::to_string(i)] = ladder_->block(i);

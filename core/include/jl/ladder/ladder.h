@@ -88,6 +88,9 @@ public:
     double forceTolerance() const { return forceTolerance_; }      // N
     double impulseTolerance() const { return impulseTolerance_; }  // N s
     double restingRate() const { return restingRate_; }            // rad/s
+    // The largest pin gap an event may leave (the scene's projection
+    // tolerance, docs/model.md section 14.3); resolve closes any wider one.
+    void setGapTolerance(double metres) { gapTolerance_ = metres; }
     // Needs the accelerations of the state (Dynamics::evaluate done).
     // Returns the smallest of the contact-force functions (+inf if none).
     double eventFunctions(const World& w, const Dynamics& d, std::vector<double>& out) const;
@@ -218,6 +221,7 @@ private:
     double length_ = 0;
     double zenoTime_ = 1e-3;
     double forceTolerance_ = 1e-9, impulseTolerance_ = 1e-9, restingRate_ = 1e-9;
+    double gapTolerance_ = 1e-10;  // m
     // phi = sense * (theta_j - theta_{j-1} + offset), per hinge and corner.
     struct FoldLinear {
         double sense = 1, offset = 0;
