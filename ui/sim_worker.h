@@ -71,6 +71,10 @@ public:
 
 private:
     using Clock = std::chrono::steady_clock;
+    // Work on the engine in slices this long, then drain commands again.
+    static constexpr auto kWorkSlice = std::chrono::milliseconds(12);
+    // A scene's build errors as the failure shown.
+    static std::string joinLines(const std::vector<std::string>& lines);
     void apply(const SimCommand& c);
     void apply(const cmd::Load& c);
     void apply(const cmd::Seek& c);

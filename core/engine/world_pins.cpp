@@ -1,0 +1,87 @@
+// World: the pins and welds, derived from the particles after a change of structure.
+#include "jl/engine/world.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+
+namespace jl {
+
+// Pins are derived lazily: a builder making many combines pays once.
+void World::rebuildPins() const {
+    pinsStale_ = false;
+    pins_.clear();
+    for (ParticleId id = 0; id < particleCount(); ++id) {
+        const Particle& p = particles_[id];
+        if (p.mergedInto >= 0 || p.at.size() < 2) continue;
+        const Attachment& first = p.at.front();
+        const int ba = parts_[first.part].body;
+        std::vector<int> done{ba};
+        for (size_t i = 1; i < p.at.size(); ++i) {
+            const int bb = parts_[p.at[i].part].body;
+            if (std::find(done.begin(), done.end(), bb) != done.end()) continue;
+            done.push_back(bb);
+            if (bodies_[ba].kinematic && bodies_[bb].kinematic) continue;
+            pins_.push_back({ba, bb, first.part, p.at[i].part, parts_[first.part].inBody.apply(first.local),
+                             parts_[p.at[i].part].inBody.apply(p.at[i].local), id});
+        }
+    }
+    welds_.clear();
+    if (weldRigidPairs_) weldSharedPairs();
+}
+
+// Weld mode: of the pins between one pair of bodies (two bodies that share
+// two particles), the one whose points lie closer stays a pin and the other
+// becomes a weld of their relative angle, taken from where the two shared
+// points lie on each body; any further pin is redundant and dropped.
+void World::weldSharedPairs() const {
+    std::map<std::pair<int, int>, int> firstPin;
+    const auto gap = [this](const Pin& p) {
+        const auto at = [this](int b, const Vec2& local) {
+            return Vec2(q.segment<2>(3 * b) + rotate(q[3 * b + 2], local));
+        };
+        return (at(p.bodyA, p.localA) - at(p.bodyB, p.localB)).norm();
+    };
+    std::vector<Pin> kept;
+    std::vector<char> welded;
+    kept.reserve(pins_.size());
+    for (const Pin& p : pins_) {
+        const std::pair<int, int> key{std::min(p.bodyA, p.bodyB), std::max(p.bodyA, p.bodyB)};
+        auto it = firstPin.find(key);
+        if (it == firstPin.end()) {
+            firstPin[key] = int(kept.size());
+            kept.push_back(p);
+            welded.push_back(0);
+            continue;
+        }
+        const int index = it->second;
+        if (welded[size_t(index)]) continue;
+        // The pin stays where the bodies really meet: blocks of unequal
+        // thickness locked end to end share their hinge corners, while their
+        // other pair of corners lies apart by the difference (pulling those
+        // together would shift the pair sideways).
+        // Where both pairs meet (equal thicknesses), the first stays, so the
+        // choice never turns on rounding.
+        Pin candidate = p;
+        const double firstGap = gap(kept[size_t(index)]);
+        const Pin& kept0 = kept[size_t(index)];
+        const double spacing = ((p.bodyA == kept0.bodyA ? p.localA : p.localB) - kept0.localA).norm();
+        if (firstGap > 1e-6 * spacing && gap(p) < firstGap) std::swap(candidate, kept[size_t(index)]);
+        const Pin& first = kept[size_t(index)];
+        const Pin& second = candidate;
+        const bool same = second.bodyA == first.bodyA;
+        const Vec2 dA = (same ? second.localA : second.localB) - first.localA;
+        const Vec2 dB = (same ? second.localB : second.localA) - first.localB;
+        const double arm = dA.norm();
+        if (!(arm > 1e-12)) continue;  // the same point twice: the pin holds it
+        const double base = std::atan2(dB.y(), dB.x()) - std::atan2(dA.y(), dA.x());
+        const double now = q[3 * first.bodyA + 2] - q[3 * first.bodyB + 2];
+        const double turns = std::round((now - base) / (2 * std::numbers::pi));
+        welds_.push_back({index, arm, base + turns * 2 * std::numbers::pi});
+        welded[size_t(index)] = 1;
+    }
+    pins_ = std::move(kept);
+}
+
+}  // namespace jl
