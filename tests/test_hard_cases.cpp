@@ -88,13 +88,17 @@ Outcome run(const Scene& scene, double until, double frameInterval = 0.01) {
 }
 
 // The common pass criterion of a run that must complete.
+// The pins closed after every step and its events to the projection
+// tolerance every scene here keeps, 1e-10 m (docs/model.md section 14.3).
+constexpr double kLargestGap = 1e-10 * (1 + 1e-7);
+
 void requireSound(const Outcome& o, double relativeBalance = 1e-6) {
     QVERIFY(o.finite);
     QVERIFY2(o.failure.empty(), o.failure.c_str());
     QVERIFY(o.time >= o.until - 1e-9);
     QVERIFY2(o.worstBalance <= relativeBalance * o.energyScale,
              qPrintable(QString("balance %1 J of scale %2 J").arg(o.worstBalance).arg(o.energyScale)));
-    QVERIFY2(o.worstResidual <= 1e-8, qPrintable(QString::number(o.worstResidual)));
+    QVERIFY2(o.worstResidual <= kLargestGap, qPrintable(QString::number(o.worstResidual)));
 }
 
 // The criterion of a run allowed to stop: the state it keeps is sound (finite,
@@ -102,7 +106,7 @@ void requireSound(const Outcome& o, double relativeBalance = 1e-6) {
 // stops it says when and why; if it does not, it ran the whole time.
 void requireSoundOrDiagnosed(const Outcome& o) {
     QVERIFY(o.finite);
-    QVERIFY2(o.worstResidual <= 1e-8, qPrintable(QString::number(o.worstResidual)));
+    QVERIFY2(o.worstResidual <= kLargestGap, qPrintable(QString::number(o.worstResidual)));
     // Relative to the ladder's weight lifted through its height, or to what
     // flowed through the books if more did (a hand spinning the top block at
     // 100 turns a second puts in 1,300 J where m g H is 0.4 J).
@@ -208,7 +212,7 @@ private slots:
         QVERIFY2(o.failure.find("step") != std::string::npos, o.failure.c_str());
         QVERIFY2(o.worstBalance <= 3e-5 * o.energyScale,
                  qPrintable(QString("balance %1 J of scale %2 J").arg(o.worstBalance).arg(o.energyScale)));
-        QVERIFY2(o.worstResidual <= 1e-8, qPrintable(QString::number(o.worstResidual)));
+        QVERIFY2(o.worstResidual <= kLargestGap, qPrintable(QString::number(o.worstResidual)));
     }
 
     // Defaults that run: a scene that names no step gets the engine's, at
