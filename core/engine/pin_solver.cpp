@@ -1,5 +1,6 @@
 #include "jl/engine/pin_solver.h"
 
+#include "jl/engine/turns.h"
 #include "jl/engine/world.h"
 
 #include <Eigen/LU>
@@ -107,12 +108,11 @@ void PinSolver::updateBodies(const World& w, const std::vector<Eigen::Vector2d>*
     inverse_.resize(size_t(w.bodyCount()));
     angle_.resize(size_t(w.bodyCount()));
     for (int b = 0; b < w.bodyCount(); ++b) {
-        const double angle = w.q[3 * b + 2];
-        angle_[size_t(b)] = angle;
-        rotation_[size_t(b)] = {std::cos(angle), std::sin(angle)};
+        angle_[size_t(b)] = w.q[3 * b + 2];
         inverse_[size_t(b)] = inverseMass ? (*inverseMass)[size_t(b)]
                                           : Eigen::Vector2d(w.invMassDiag[3 * b], w.invMassDiag[3 * b + 2]);
     }
+    cosSinOf(angle_.data(), 1, angle_.size(), rotation_.data());
 }
 
 void PinSolver::assemble(const World& w) { assemble(w, nullptr); }

@@ -1,5 +1,6 @@
 #include "jl/engine/projection.h"
 
+#include "jl/engine/turns.h"
 #include "jl/engine/world.h"
 
 #include <algorithm>
@@ -13,7 +14,7 @@ namespace {
 // per body (kept in `rotation`) rather than two per pin.
 void pinGaps(const World& w, Eigen::VectorXd& gap, std::vector<Eigen::Vector2d>& rotation) {
     rotation.resize(size_t(w.bodyCount()));
-    for (int b = 0; b < w.bodyCount(); ++b) rotation[size_t(b)] = {std::cos(w.q[3 * b + 2]), std::sin(w.q[3 * b + 2])};
+    cosSinOf(w.q.data() + 2, 3, rotation.size(), rotation.data());
     auto point = [&](int body, const Vec2& r) {
         const Eigen::Vector2d& cs = rotation[size_t(body)];
         return Vec2(w.q[3 * body] + cs[0] * r.x() - cs[1] * r.y(), w.q[3 * body + 1] + cs[1] * r.x() + cs[0] * r.y());

@@ -1,0 +1,96 @@
+#include "jl/engine/turns.h"
+
+#include <cmath>
+
+#if defined(JL_HAVE_LIBMVEC) && defined(__x86_64__)
+#include <immintrin.h>
+
+// libmvec's entry points, named by the x86-64 vector function ABI (glibc
+// declares them only under -ffast-math, which this project does not use).
+// 'b': two lanes in SSE registers (any x86-64); 'd': four lanes in AVX2
+// registers (glibc picks its AVX2 + FMA code, or two 'b' calls).
+extern "C" __m128d _ZGVbN2v_cos(__m128d);
+extern "C" __m128d _ZGVbN2v_sin(__m128d);
+#pragma GCC push_options
+#pragma GCC target("avx2")
+extern "C" __m256d _ZGVdN4v_cos(__m256d);
+extern "C" __m256d _ZGVdN4v_sin(__m256d);
+#pragma GCC pop_options
+#endif
+
+namespace jl {
+
+namespace {
+
+#if defined(JL_HAVE_LIBMVEC) && defined(__x86_64__)
+
+// Four angles from the list; past its end the last one again, so that the
+// tail goes through the same routine as the rest.
+inline void gatherFour(const double* angle, std::ptrdiff_t stride, std::size_t i, std::size_t n, double* four) {
+    if (i + 4 <= n) {
+        for (std::size_t k = 0; k < 4; ++k) four[k] = angle[std::ptrdiff_t(i + k) * stride];
+    } else {
+        for (std::size_t k = 0; k < 4; ++k) four[k] = angle[std::ptrdiff_t(i + k < n ? i + k : n - 1) * stride];
+    }
+}
+
+__attribute__((target("avx2"))) void cosSinFour(const double* angle, std::ptrdiff_t stride, std::size_t n,
+                                                Eigen::Vector2d* out) {
+    alignas(32) double four[4], pairs[8];
+    for (std::size_t i = 0; i < n; i += 4) {
+        gatherFour(angle, stride, i, n, four);
+        const __m256d a = _mm256_load_pd(four);
+        const __m256d c = _ZGVdN4v_cos(a), s = _ZGVdN4v_sin(a);
+        // (c0 s0 c2 s2), (c1 s1 c3 s3) -> (c0 s0 c1 s1), (c2 s2 c3 s3)
+        const __m256d even = _mm256_unpacklo_pd(c, s), odd = _mm256_unpackhi_pd(c, s);
+        double* to = i + 4 <= n ? out[i].data() : pairs;
+        _mm256_storeu_pd(to, _mm256_permute2f128_pd(even, odd, 0x20));
+        _mm256_storeu_pd(to + 4, _mm256_permute2f128_pd(even, odd, 0x31));
+        if (to == pairs)
+            for (std::size_t k = 0; i + k < n; ++k) out[i + k] = {pairs[2 * k], pairs[2 * k + 1]};
+    }
+}
+
+void cosSinTwo(const double* angle, std::ptrdiff_t stride, std::size_t n, Eigen::Vector2d* out) {
+    alignas(32) double four[4], c[4], s[4];
+    for (std::size_t i = 0; i < n; i += 4) {
+        gatherFour(angle, stride, i, n, four);
+        for (std::size_t k = 0; k < 4; k += 2) {
+            const __m128d a = _mm_load_pd(four + k);
+            _mm_store_pd(c + k, _ZGVbN2v_cos(a));
+            _mm_store_pd(s + k, _ZGVbN2v_sin(a));
+        }
+        for (std::size_t k = 0; k < 4 && i + k < n; ++k) out[i + k] = {c[k], s[k]};
+    }
+}
+
+using CosSin = void (*)(const double*, std::ptrdiff_t, std::size_t, Eigen::Vector2d*);
+
+// Chosen once, by what this processor can do (at first use, not in a static
+// initialiser, which could run before the processor has been asked).
+void chosen(const double* angle, std::ptrdiff_t stride, std::size_t n, Eigen::Vector2d* out) {
+    static const CosSin routine = [] {
+        __builtin_cpu_init();
+        return __builtin_cpu_supports("avx2") ? cosSinFour : cosSinTwo;
+    }();
+    routine(angle, stride, n, out);
+}
+
+#else
+
+void chosen(const double* angle, std::ptrdiff_t stride, std::size_t n, Eigen::Vector2d* out) {
+    for (std::size_t i = 0; i < n; ++i) {
+        const double a = angle[std::ptrdiff_t(i) * stride];
+        out[i] = {std::cos(a), std::sin(a)};
+    }
+}
+
+#endif
+
+}  // namespace
+
+void cosSinOf(const double* angle, std::ptrdiff_t stride, std::size_t n, Eigen::Vector2d* out) {
+    if (n > 0) chosen(angle, stride, n, out);
+}
+
+}  // namespace jl
