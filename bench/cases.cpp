@@ -290,14 +290,24 @@ std::vector<BenchRow> scalingStudy(const BenchPlan& plan) {
     const std::vector<int> sizes = plan.quick ? std::vector<int>{10, 100, 1000}
                                               : std::vector<int>{10, 100, 1000, 10000, 100000};
     const double blockSteps = plan.quick ? 2e5 : 2e6;
-    // Each measurement is made again and again from the same start, three
-    // times at least and for 0.5 CPU s at least (a short ladder's 2,000 steps
-    // take a few milliseconds), and the fastest counts: on a shared machine
-    // a run can be slowed by its neighbours, never sped up (as for the cost
-    // of an event).
-    const int leastRepetitions = plan.quick ? 1 : 3;
-    const double leastSeconds = plan.quick ? 0.0 : 0.5;
-    std::vector<BenchRow> rows;
+    // Each measurement is made again and again from the same start, and the
+    // fastest counts: on a shared machine a run can be slowed by its
+    // neighbours, never sped up (as for the cost of an event). The runs go
+    // round in rounds, every method at every size once per round (and again
+    // within the round until it has run 0.1 CPU s: a short ladder's 2,000
+    // steps take a few milliseconds), so that a slow minute on the machine
+    // slows every size alike, not the sizes measured in it: the table is read
+    // as a ratio between sizes.
+    const int rounds = plan.quick ? 1 : 5;
+    const double leastSecondsPerRound = plan.quick ? 0.0 : 0.1;
+    struct Measured {
+        Integrator kind;
+        BenchRow row;
+        double best = std::numeric_limits<double>::infinity(), simulated = 0;
+        long long taken = 0, rejected = 0;
+        int repetitions = 0;
+    };
+    std::vector<Measured> measured;
     for (const Method& m : methods())
         for (int n : sizes) {
             // Each method at a step it is stable at for the whole run (the
@@ -305,17 +315,20 @@ std::vector<BenchRow> scalingStudy(const BenchPlan& plan) {
             // early measures too few steps): the cost of a step hardly
             // depends on its size.
             const double h = m.kind == Integrator::ExplicitEuler || m.kind == Integrator::SymplecticEuler ? 1e-4 : 1e-3;
+            measured.push_back({m.kind, BenchRow{"scaling", m.name, n, h, 0, 0, true, ""}});
+        }
+    for (int round = 0; round < rounds; ++round)
+        for (Measured& c : measured) {
+            const Integrator kind = c.kind;
+            const int n = c.row.blocks;
+            const double h = c.row.parameter;
             const long long steps = std::clamp<long long>((long long)(blockSteps / n), 20, 2000);
-            BenchRow row{"scaling", m.name, n, h, 0, 0, true, ""};
-            double best = std::numeric_limits<double>::infinity(), simulated = 0;
-            long long taken = 0, rejected = 0;
             double spent = 0;
-            int repetitions = 0;
-            for (; repetitions < leastRepetitions || (spent < leastSeconds && repetitions < 200); ++repetitions) {
+            for (int here = 0; here < 1 || (spent < leastSecondsPerRound && here < 40); ++here, ++c.repetitions) {
                 World w;
                 buildFallingChain(w, n);
                 Dynamics d;
-                Stepper s(m.kind, 1e-6);
+                Stepper s(kind, 1e-6);
                 Ledger ledger;
                 double t = 0;
                 long long made = 0, thrown = 0;
@@ -335,26 +348,30 @@ std::vector<BenchRow> scalingStudy(const BenchPlan& plan) {
                 }
                 const double cpu = threadSeconds() - start;
                 spent += cpu;
-                row.finished = row.finished && finished;
-                if (cpu < best) best = cpu, taken = made, rejected = thrown, simulated = t - h;
+                c.row.finished = c.row.finished && finished;
+                if (cpu < c.best) c.best = cpu, c.taken = made, c.rejected = thrown, c.simulated = t - h;
             }
-            // error column: ns per block-step; cost: CPU s per simulated s.
-            // A step the adaptive methods' error control rejects is as much
-            // work as one it accepts, and counts as one: this is the cost of
-            // a step's work per block, whatever the controller does with it
-            // (it rejects most while it finds its step, which is all that a
-            // run of 20 steps sees).
-            row.cost = best / std::max(simulated, 1e-300);
-            row.error = 1e9 * best / (double(n) * double(std::max<long long>(taken + rejected, 1)));
-            char note[96];
-            std::snprintf(note, sizeof note, "%lld steps%s%s", taken,
-                          rejected > 0 ? (" + " + std::to_string(rejected) + " rejected").c_str() : "",
-                          row.finished ? "" : ", stopped: a step failed");
-            row.note = note;
-            std::fprintf(stderr, "  scaling %-18s N=%-7d %5lld steps  %8.1f ns/block-step (fastest of %d)\n", m.name.c_str(), n,
-                         taken, row.error, repetitions);
-            rows.push_back(row);
         }
+    std::vector<BenchRow> rows;
+    for (Measured& c : measured) {
+        BenchRow& row = c.row;
+        // error column: ns per block-step; cost: CPU s per simulated s.
+        // A step the adaptive methods' error control rejects is as much
+        // work as one it accepts, and counts as one: this is the cost of
+        // a step's work per block, whatever the controller does with it
+        // (it rejects most while it finds its step, which is all that a
+        // run of 20 steps sees).
+        row.cost = c.best / std::max(c.simulated, 1e-300);
+        row.error = 1e9 * c.best / (double(row.blocks) * double(std::max<long long>(c.taken + c.rejected, 1)));
+        char note[96];
+        std::snprintf(note, sizeof note, "%lld steps%s%s", c.taken,
+                      c.rejected > 0 ? (" + " + std::to_string(c.rejected) + " rejected").c_str() : "",
+                      row.finished ? "" : ", stopped: a step failed");
+        row.note = note;
+        std::fprintf(stderr, "  scaling %-18s N=%-7d %5lld steps  %8.1f ns/block-step (fastest of %d)\n", row.method.c_str(),
+                     row.blocks, c.taken, row.error, c.repetitions);
+        rows.push_back(row);
+    }
     return rows;
 }
 

@@ -226,6 +226,10 @@ std::string eventCost(const std::vector<EventCostRow>& rows, bool quick, bool& o
             if (x > hi) hi = x, hiN = n;
         }
     } window, direct;
+    // A window whose steps cost less than as many plain steps (the events a
+    // small share of it, the plain step measured a little slow) says nothing
+    // about its events: it is left out of the spread, and said so.
+    std::vector<int> belowNoise;
     for (const EventCostRow& r : rows) {
         const double eventCpu = r.runCpu - double(r.steps) * r.plainStepCpu;
         md << "| " << r.blocks << " | " << r.steps << " (" << ms(r.meanStep) << ") | " << r.events << " at "
@@ -233,7 +237,8 @@ std::string eventCost(const std::vector<EventCostRow>& rows, bool quick, bool& o
            << (r.repeatable ? "" : "; the repetitions differ") << ") | " << cpuTime(r.plainStepCpu) << " ("
            << ms(r.plainStep) << ")" << (r.plainEvents ? " (with events!)" : "") << " / " << cpuTime(r.controlStepCpu)
            << (r.controlEvents ? " (with events!)" : "") << " | " << sig(eventCpu, 3) << " s ("
-           << sig(100 * r.eventShare, 2) << " %) | **" << cpuTime(r.perEvent) << "** (" << cpuTime(r.perEventControl)
+           << sig(100 * r.eventShare, 2) << " %) | **" << cpuTime(r.perEvent) << "**"
+           << (r.perEvent > 0 ? "" : ": below the subtraction's noise") << " (" << cpuTime(r.perEventControl)
            << " against the turning step) | " << sig(r.perEvent / r.plainStepCpu, 3) << " | "
            << cpuTime(r.perEventInStep) << " in " << r.eventfulSteps << (r.eventfulSteps == 1 ? " step (" : " steps (")
            << sig(r.perEventInStep / r.plainStepCpu, 3) << " plain steps) |" << (r.failure.empty() ? "" : " " + r.failure)
@@ -241,6 +246,7 @@ std::string eventCost(const std::vector<EventCostRow>& rows, bool quick, bool& o
         if (r.events > 0) {
             window.add(r.perEvent, r.blocks);
             direct.add(r.perEventInStep, r.blocks);
+            if (!(r.perEvent > 0)) belowNoise.push_back(r.blocks);
         }
     }
     auto verdict = [&](const char* what, const Spread& s) {
@@ -254,6 +260,9 @@ std::string eventCost(const std::vector<EventCostRow>& rows, bool quick, bool& o
         verdicts << ".\n";
     };
     verdict("CPU per event", window);
+    for (int n : belowNoise)
+        verdicts << "  (N = " << n << " left out: its window cost less than its steps would have as plain steps, "
+                 << "so its cost per event is below the subtraction's noise.)\n";
     verdict("Directly, in the steps that record them", direct);
     return filled("events",
                   {{"from", sig(from, 3)},
