@@ -11,21 +11,36 @@ Powers Dynamics::evaluate(World& w, double t, double within) {
     accumulateForces(w, force_, powers);
     solver_.assemble(w);
 
-    // Pin acceleration: J a + sum(sigma * -omega^2 r) = 0. Kinematic bodies
-    // already hold their prescribed a; dynamic ones start from a = W f.
+    // Pin acceleration: J a + sum(sigma * -omega^2 r) = 0, where a is the
+    // unconstrained acceleration: a kinematic body's prescribed one, a
+    // dynamic one's W f. One pass over the pins forms each row's right-hand
+    // side from the forces as it goes (at 100,000 blocks a pass that wrote
+    // W f for every body and one more that read it back were two more
+    // streams through memory).
     const std::vector<Pin>& pins = w.pins();
     const std::vector<unsigned char>& kinematic = w.kinematicFlags();
-    for (int b = 0; b < w.bodyCount(); ++b)
-        if (!kinematic[size_t(b)]) w.a.segment<3>(3 * b) = w.invMassDiag.segment<3>(3 * b).cwiseProduct(force_.segment<3>(3 * b));
-    solver_.multiplyJ(w.a, rhs_);
+    const auto free = [&](int b) -> Eigen::Vector3d {
+        return kinematic[size_t(b)] ? Eigen::Vector3d(w.a.segment<3>(3 * b))
+                                    : Eigen::Vector3d(w.invMassDiag.segment<3>(3 * b).cwiseProduct(force_.segment<3>(3 * b)));
+    };
+    rhs_.resize(solver_.rowCount());
     for (size_t i = 0; i < pins.size(); ++i) {
-        const double wa = w.v[3 * solver_.bodyA(int(i)) + 2], wb = w.v[3 * solver_.bodyB(int(i)) + 2];
-        rhs_.segment<2>(2 * Eigen::Index(i)) =
-            wa * wa * solver_.armA(int(i)) - wb * wb * solver_.armB(int(i)) - rhs_.segment<2>(2 * Eigen::Index(i));
+        const int A = solver_.bodyA(int(i)), B = solver_.bodyB(int(i));
+        const Vec2& rA = solver_.armA(int(i));
+        const Vec2& rB = solver_.armB(int(i));
+        const Eigen::Vector3d aA = free(A), aB = free(B);
+        const Vec2 ua = aA.head<2>() + aA[2] * perp(rA);
+        const Vec2 ub = aB.head<2>() + aB[2] * perp(rB);
+        const double wa = w.v[3 * A + 2], wb = w.v[3 * B + 2];
+        rhs_.segment<2>(2 * Eigen::Index(i)) = wa * wa * rA - wb * wb * rB - (ua - ub);
     }
     // Welds fix a relative angle, a linear constraint: no velocity term.
     const Eigen::Index weldRows = 2 * Eigen::Index(pins.size());
-    rhs_.tail(rhs_.size() - weldRows) *= -1.0;
+    const std::vector<Weld>& welds = w.welds();
+    for (size_t i = 0; i < welds.size(); ++i) {
+        const Pin& p = pins[size_t(welds[i].pin)];
+        rhs_[weldRows + Eigen::Index(i)] = -(welds[i].arm * (free(p.bodyA)[2] - free(p.bodyB)[2]));
+    }
     solver_.solve(rhs_, lambda_);
 
     // a = W (f + J^T lambda) for dynamic bodies; kinematic ones keep theirs.
@@ -59,7 +74,6 @@ Powers Dynamics::evaluate(World& w, double t, double within) {
         }
     }
     // The moment of a weld to a held body, times the held body's spin.
-    const std::vector<Weld>& welds = w.welds();
     for (size_t i = 0; i < welds.size(); ++i) {
         const Pin& p = pins[size_t(welds[i].pin)];
         const bool ka = kinematic[size_t(p.bodyA)], kb = kinematic[size_t(p.bodyB)];
