@@ -24,6 +24,16 @@ QString runInWords(const jl::Event& first, const jl::Event& last, int count) {
         .arg(count);
 }
 
+// A lock and an unlock of one hinge at one instant: the pair closes and the
+// impact's own impulse parts it again (the knocks down a long ladder's free
+// end), one row rather than two that read as if nothing happened.
+QString knockInWords(const jl::Event& e) {
+    return QObject::tr("%1 s: blocks %2 and %3 knock end to end")
+        .arg(e.time, 0, 'f', 3)
+        .arg(e.hinge - 1)
+        .arg(e.hinge);
+}
+
 }  // namespace
 
 QString whatHappened(const jl::Event& e) {
@@ -67,10 +77,17 @@ void EventsPanel::append(size_t index) {
     auto it = runs_.find(e.hinge);
     if (lockOrUnlock(e) && it != runs_.end() && e.time - (*events_)[it->second.last].time <= kRunGap) {
         Run& run = it->second;
+        const jl::Event& before = (*events_)[run.last];
+        const bool knock = e.kind == jl::EventKind::Unlock && before.kind == jl::EventKind::Lock && before.time == e.time;
         run.last = index;
         ++run.count;
         if (run.count < kRunRow) {
-            run.rows.push_back(addRow(eventInWords(e), e.time));
+            if (knock) {  // the lock's row
+                run.rows.back()->setText(knockInWords(e));
+                run.rows.back()->setToolTip(tr("A lock and an unlock at one instant: the two blocks close end to end "
+                                               "and the impact parts them again at once."));
+            } else
+                run.rows.push_back(addRow(eventInWords(e), e.time));
             return;
         }
         if (run.count == kRunRow) {
