@@ -93,6 +93,7 @@ void EventsPanel::append(size_t index) {
         if (run.count == kRunRow) {
             for (size_t k = 1; k < run.rows.size(); ++k) delete list_->takeItem(list_->row(run.rows[k]));
             run.rows.resize(1);
+            run.rows.front()->setToolTip({});  // it may have been a knock's row
         }
         run.rows.front()->setText(runInWords((*events_)[run.first], e, run.count));
         return;

@@ -19,7 +19,7 @@ Powers Dynamics::evaluate(World& w, double t, double within) {
     // streams through memory).
     const std::vector<Pin>& pins = w.pins();
     const std::vector<unsigned char>& kinematic = w.kinematicFlags();
-    const auto free = [&](int b) -> Eigen::Vector3d {
+    const auto unconstrained = [&](int b) -> Eigen::Vector3d {
         return kinematic[size_t(b)] ? Eigen::Vector3d(w.a.segment<3>(3 * b))
                                     : Eigen::Vector3d(w.invMassDiag.segment<3>(3 * b).cwiseProduct(force_.segment<3>(3 * b)));
     };
@@ -28,7 +28,7 @@ Powers Dynamics::evaluate(World& w, double t, double within) {
         const int A = solver_.bodyA(int(i)), B = solver_.bodyB(int(i));
         const Vec2& rA = solver_.armA(int(i));
         const Vec2& rB = solver_.armB(int(i));
-        const Eigen::Vector3d aA = free(A), aB = free(B);
+        const Eigen::Vector3d aA = unconstrained(A), aB = unconstrained(B);
         const Vec2 ua = aA.head<2>() + aA[2] * perp(rA);
         const Vec2 ub = aB.head<2>() + aB[2] * perp(rB);
         const double wa = w.v[3 * A + 2], wb = w.v[3 * B + 2];
@@ -39,7 +39,7 @@ Powers Dynamics::evaluate(World& w, double t, double within) {
     const std::vector<Weld>& welds = w.welds();
     for (size_t i = 0; i < welds.size(); ++i) {
         const Pin& p = pins[size_t(welds[i].pin)];
-        rhs_[weldRows + Eigen::Index(i)] = -(welds[i].arm * (free(p.bodyA)[2] - free(p.bodyB)[2]));
+        rhs_[weldRows + Eigen::Index(i)] = -(welds[i].arm * (unconstrained(p.bodyA)[2] - unconstrained(p.bodyB)[2]));
     }
     solver_.solve(rhs_, lambda_);
 

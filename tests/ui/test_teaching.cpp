@@ -222,6 +222,15 @@ private slots:
         QVERIFY(list->item(1)->text().startsWith("4.061 s: blocks 195 and 196 lock"));
         QVERIFY(list->item(2)->text().startsWith("4.162 s: blocks 195 and 196 unlock"));
         QCOMPARE(list->item(0)->data(Qt::UserRole).toDouble(), 4.032);
+        // Two more cycles within milliseconds make the knock the start of a
+        // run: one row, whose tooltip no longer says it was a knock.
+        for (double t : {4.034, 4.036}) {
+            shown->push_back({t, K::Lock, 198, 0, "blocks 197 and 198 lock end to end"});
+            panel.setEvents(std::make_shared<const std::vector<jl::Event>>(*shown));
+        }
+        QVERIFY2(list->item(0)->text().startsWith("4.032–4.036 s: blocks 197 and 198 lock and unlock again and again"),
+                 qPrintable(list->item(0)->text()));
+        QVERIFY(list->item(0)->toolTip().isEmpty());
     }
 
     void exportsWriteWhatTheyPromise() {
