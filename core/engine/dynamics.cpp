@@ -9,7 +9,7 @@ Powers Dynamics::evaluate(World& w, double t, double within) {
     w.updateKinematics(t, within);
     Powers powers;
     accumulateForces(w, force_, powers);
-    solver_.assemble(w);
+    const bool stale = solver_.prepare(w);
 
     // Pin acceleration: J a + sum(sigma * -omega^2 r) = 0, where a is the
     // unconstrained acceleration: a kinematic body's prescribed one, a
@@ -41,7 +41,10 @@ Powers Dynamics::evaluate(World& w, double t, double within) {
         const Pin& p = pins[size_t(welds[i].pin)];
         rhs_[weldRows + Eigen::Index(i)] = -(welds[i].arm * (unconstrained(p.bodyA)[2] - unconstrained(p.bodyB)[2]));
     }
-    solver_.solve(rhs_, lambda_);
+    if (stale)
+        solver_.factorAndSolve(w, rhs_, lambda_);
+    else
+        solver_.solve(rhs_, lambda_);
 
     // a = W (f + J^T lambda) for dynamic bodies; kinematic ones keep theirs.
     jv_ = force_;

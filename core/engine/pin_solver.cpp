@@ -16,21 +16,7 @@ namespace {
 // of the equal solutions instead of dividing by zero.
 constexpr double kRegularisation = 1e-12;
 
-// W-weighted coupling of two points r1, r2 of a body with inverse mass and
-// inertia (im, ii): im * 1 + ii * perp(r1) perp(r2)^T, written out.
-inline Eigen::Matrix2d couplingOf(double im, double ii, const Vec2& r1, const Vec2& r2) {
-    Eigen::Matrix2d m;
-    m << im + ii * r1.y() * r2.y(), -ii * r1.y() * r2.x(), -ii * r1.x() * r2.y(), im + ii * r1.x() * r2.x();
-    return m;
-}
-
 }  // namespace
-
-// W-weighted coupling of two points r1, r2 of one body: J1 W J2^T.
-Eigen::Matrix2d PinSolver::coupling(int body, const Vec2& r1, const Vec2& r2) const {
-    const Eigen::Vector2d& im = inverse_[size_t(body)];
-    return couplingOf(im[0], im[1], r1, r2);
-}
 
 void PinSolver::order(const World& w) {
     const std::vector<Pin>& pins = w.pins();
@@ -120,9 +106,21 @@ void PinSolver::assemble(const World& w) { assemble(w, nullptr); }
 void PinSolver::assemble(const World& w, const std::vector<Eigen::Vector2d>& inverseMass) { assemble(w, &inverseMass); }
 
 void PinSolver::assemble(const World& w, const std::vector<Eigen::Vector2d>* inverseMass) {
+    if (!prepare(w, inverseMass)) return;
+    if (chain_)
+        factorChain(nullptr, nullptr);
+    else
+        factorSparse(w);
+    assembledPlain_ = !inverseMass;
+    assembledRevision_ = w.revision();
+}
+
+bool PinSolver::prepare(const World& w) { return prepare(w, nullptr); }
+
+bool PinSolver::prepare(const World& w, const std::vector<Eigen::Vector2d>* inverseMass) {
     if (!inverseMass && assembledPlain_ && version_ == w.structureVersion() && assembledRevision_ == w.revision() &&
         sameTurns(w))
-        return;
+        return false;
     assembledPlain_ = false;
     if (version_ != w.structureVersion()) order(w);
     updateBodies(w, inverseMass);
@@ -149,11 +147,19 @@ void PinSolver::assemble(const World& w, const std::vector<Eigen::Vector2d>* inv
         const PinRow& p = pins_[size_t(welds[i].pin)];
         welds_[i] = {p.bodyA, p.bodyB, p.dynA, p.dynB, welds[i].arm};
     }
-    if (chain_)
-        factorChain();
-    else
+    return true;
+}
+
+void PinSolver::factorAndSolve(const World& w, const Eigen::VectorXd& r, Eigen::VectorXd& x) {
+    if (chain_) {
+        x.resize(r.size());
+        factorChain(&r, &x);
+        backSubstitute(x);
+    } else {
         factorSparse(w);
-    assembledPlain_ = !inverseMass;
+        x = ldlt_.solve(r);
+    }
+    assembledPlain_ = true;
     assembledRevision_ = w.revision();
 }
 
@@ -166,43 +172,38 @@ bool PinSolver::sameTurns(const World& w) const {
     return true;
 }
 
-namespace {
-
-// The inverse of the symmetric [[a, b], [b, c]]; a singular pivot
-// (redundant pins) gets the tiny diagonal shift first.
-inline Eigen::Matrix2d symmetricInverse(double a, double b, double c) {
-    const double scale = std::max({std::abs(a), std::abs(b), std::abs(c)});
-    double det = a * c - b * b;
-    if (!(std::abs(det) > 1e-13 * scale * scale)) {
-        const double shift = kRegularisation * (scale > 0 ? scale : 1.0);
-        a += shift;
-        c += shift;
-        det = a * c - b * b;
-    }
-    const double inv = 1.0 / det;
-    Eigen::Matrix2d m;
-    m << c * inv, -b * inv, -b * inv, a * inv;
-    return m;
-}
-
-}  // namespace
 
 // Block LDL^T along each path. The pivots S_i = D_i - B^T S_{i-1}^{-1} B are
-// symmetric (J W J^T is), so only three of their entries are formed: each
-// link's work is what its own 2 x 2 blocks need and no more (this runs for
-// every link at every evaluation).
-void PinSolver::factorChain() {
+// symmetric (J W J^T is), so only three of their entries are formed. Each
+// link waits on the one before, so what counts is the chain of dependent
+// operations, not their number: S_i is formed as D_i - (B^T adj(S_{i-1}) B)
+// / det(S_{i-1}), where the product with the adjugate runs while the
+// division does, rather than after it (as B^T S_{i-1}^{-1} B would); the
+// multipliers L_i = B^T S_{i-1}^{-1} and the inverse pivots, which no later
+// link waits on, are formed beside the chain. The previous link's numbers
+// are carried in locals, and the arrays are reached through plain pointers.
+// Given a right-hand side r, the forward substitution y_i = r_i - L_i y_{i-1}
+// runs alongside, leaving S_i^{-1} y_i in x for backSubstitute.
+void PinSolver::factorChain(const Eigen::VectorXd* r, Eigen::VectorXd* x) {
     const size_t n = sequence_.size();
     invPivot_.resize(n);
     lower_.resize(n);
-    upper_.resize(n);
+    const int* sequence = sequence_.data();
+    const PinRow* pins = pins_.data();
+    const Eigen::Vector2d* inverse = inverse_.data();
+    const Link* links = links_.data();
+    Eigen::Matrix2d* invPivot = invPivot_.data();
+    Eigen::Matrix2d* lower = lower_.data();
     for (size_t path = 0; path + 1 < pathStart_.size(); ++path) {
         const size_t begin = size_t(pathStart_[path]), end = size_t(pathStart_[path + 1]);
+        double b00 = 0, b01 = 0, b10 = 0, b11 = 0;  // the previous link's coupling B
+        double p00 = 0, p01 = 0, p11 = 0, inv = 0;  // the previous pivot S and 1 / det S
+        Vec2 y;                                     // the previous link's forward substitution
         for (size_t i = begin; i < end; ++i) {
-            const PinRow& p = pins_[size_t(sequence_[i])];
+            const PinRow& p = pins[sequence[i]];
             double d00 = 0, d01 = 0, d11 = 0;  // D_i, each body's im 1 + ii perp(r) perp(r)^T
             const auto add = [&](int body, const Vec2& r) {
-                const Eigen::Vector2d& im = inverse_[size_t(body)];
+                const Eigen::Vector2d& im = inverse[body];
                 d00 += im[0] + im[1] * r.y() * r.y();
                 d01 -= im[1] * r.x() * r.y();
                 d11 += im[0] + im[1] * r.x() * r.x();
@@ -210,25 +211,47 @@ void PinSolver::factorChain() {
             if (p.dynA) add(p.bodyA, p.rA);
             if (p.dynB) add(p.bodyB, p.rB);
             if (i > begin) {
-                // Eliminate the previous pin: L = B^T S_{i-1}^{-1}, S_i = D_i - L B.
-                const Eigen::Matrix2d& b = upper_[i - 1];
-                const Eigen::Matrix2d& s = invPivot_[i - 1];
-                Eigen::Matrix2d& l = lower_[i];
-                l(0, 0) = b(0, 0) * s(0, 0) + b(1, 0) * s(1, 0);
-                l(0, 1) = b(0, 0) * s(0, 1) + b(1, 0) * s(1, 1);
-                l(1, 0) = b(0, 1) * s(0, 0) + b(1, 1) * s(1, 0);
-                l(1, 1) = b(0, 1) * s(0, 1) + b(1, 1) * s(1, 1);
-                d00 -= l(0, 0) * b(0, 0) + l(0, 1) * b(1, 0);
-                d01 -= l(0, 0) * b(0, 1) + l(0, 1) * b(1, 1);
-                d11 -= l(1, 0) * b(0, 1) + l(1, 1) * b(1, 1);
+                // Eliminate the previous pin. t = adj(S) B; B^T t is symmetric.
+                const double t00 = p11 * b00 - p01 * b10, t01 = p11 * b01 - p01 * b11;
+                const double t10 = p00 * b10 - p01 * b00, t11 = p00 * b11 - p01 * b01;
+                d00 -= (b00 * t00 + b10 * t10) * inv;
+                d01 -= (b00 * t01 + b10 * t11) * inv;
+                d11 -= (b01 * t01 + b11 * t11) * inv;
+                // L = B^T S^{-1} = t^T / det S.
+                lower[i] << t00 * inv, t10 * inv, t01 * inv, t11 * inv;
+                if (r) y = r->segment<2>(2 * sequence[i]) - lower[i] * y;
+            } else if (r) {
+                y = r->segment<2>(2 * sequence[i]);
             }
-            invPivot_[i] = symmetricInverse(d00, d01, d11);
+            // The pivot and its inverse; a singular one (redundant pins) gets
+            // the tiny diagonal shift first.
+            const double scale = std::max({std::abs(d00), std::abs(d01), std::abs(d11)});
+            double det = d00 * d11 - d01 * d01;
+            if (!(std::abs(det) > 1e-13 * scale * scale)) {
+                const double shift = kRegularisation * (scale > 0 ? scale : 1.0);
+                d00 += shift;
+                d11 += shift;
+                det = d00 * d11 - d01 * d01;
+            }
+            p00 = d00;
+            p01 = d01;
+            p11 = d11;
+            inv = 1.0 / det;
+            Eigen::Matrix2d& s = invPivot[i];
+            s << d11 * inv, -d01 * inv, -d01 * inv, d00 * inv;
+            if (r) x->segment<2>(2 * sequence[i]) = s * y;
             if (i + 1 < end) {
-                const Link& l = links_[i];
-                const PinRow& next = pins_[size_t(sequence_[i + 1])];
+                const Link& l = links[i];
+                const PinRow& next = pins[sequence[i + 1]];
                 const Vec2& r1 = p.bodyA == l.body ? p.rA : p.rB;
                 const Vec2& r2 = next.bodyA == l.body ? next.rA : next.rB;
-                upper_[i] = l.signPrev * l.signNext * coupling(l.body, r1, r2);
+                const Eigen::Vector2d& im = inverse[l.body];
+                const double sign = l.signPrev * l.signNext;
+                const double ii = im[1];
+                b00 = sign * (im[0] + ii * r1.y() * r2.y());
+                b01 = sign * (-ii * r1.y() * r2.x());
+                b10 = sign * (-ii * r1.x() * r2.y());
+                b11 = sign * (im[0] + ii * r1.x() * r2.x());
             }
         }
     }
@@ -291,20 +314,38 @@ void PinSolver::solve(const Eigen::VectorXd& r, Eigen::VectorXd& x) const {
         x = ldlt_.solve(r);
         return;
     }
+    // Each substitution carries the previous link's value in locals: read
+    // back from the vector just written, every link waited on a store.
+    const int* sequence = sequence_.data();
+    const Eigen::Matrix2d* lower = lower_.data();
+    const Eigen::Matrix2d* invPivot = invPivot_.data();
     for (size_t path = 0; path + 1 < pathStart_.size(); ++path) {
         const size_t begin = size_t(pathStart_[path]), end = size_t(pathStart_[path + 1]);
         if (begin == end) continue;
-        // Forward: y_i = r_i - L_i y_{i-1}, kept in x.
-        for (size_t i = begin; i < end; ++i) {
-            Vec2 y = r.segment<2>(2 * sequence_[i]);
-            if (i > begin) y -= lower_[i] * x.segment<2>(2 * sequence_[i - 1]);
-            x.segment<2>(2 * sequence_[i]) = y;
+        // Forward: y_i = r_i - L_i y_{i-1}; x keeps S_i^{-1} y_i.
+        Vec2 y = r.segment<2>(2 * sequence[begin]);
+        x.segment<2>(2 * sequence[begin]) = invPivot[begin] * y;
+        for (size_t i = begin + 1; i < end; ++i) {
+            y = r.segment<2>(2 * sequence[i]) - lower[i] * y;
+            x.segment<2>(2 * sequence[i]) = invPivot[i] * y;
         }
-        // Back: x_i = S_i^{-1} (y_i - B_i x_{i+1}).
-        for (size_t i = end; i-- > begin;) {
-            Vec2 y = x.segment<2>(2 * sequence_[i]);
-            if (i + 1 < end) y -= upper_[i] * x.segment<2>(2 * sequence_[i + 1]);
-            x.segment<2>(2 * sequence_[i]) = invPivot_[i] * y;
+    }
+    backSubstitute(x);
+}
+
+// Back: x_i = S_i^{-1} y_i - S_i^{-1} B_i x_{i+1}, where S_i^{-1} B_i is
+// L_{i+1}^T (S is symmetric): the forward pass left S_i^{-1} y_i in x, so
+// each link waits on one 2 x 2 product and a subtraction, not two products.
+void PinSolver::backSubstitute(Eigen::VectorXd& x) const {
+    const int* sequence = sequence_.data();
+    const Eigen::Matrix2d* lower = lower_.data();
+    for (size_t path = 0; path + 1 < pathStart_.size(); ++path) {
+        const size_t begin = size_t(pathStart_[path]), end = size_t(pathStart_[path + 1]);
+        if (end - begin < 2) continue;
+        Vec2 next = x.segment<2>(2 * sequence[end - 1]);
+        for (size_t i = end - 1; i-- > begin;) {
+            next = x.segment<2>(2 * sequence[i]) - lower[i + 1].transpose() * next;
+            x.segment<2>(2 * sequence[i]) = next;
         }
     }
 }

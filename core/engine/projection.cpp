@@ -73,9 +73,11 @@ ProjectionResult projectPositions(World& w, PinSolver& solver, double tolerance,
         }
         ++r.iterations;
         // Newton step: J dq = -C with dq = W J^T x.
-        solver.assemble(w);
         gap = -gap;
-        solver.solve(gap, x);
+        if (solver.prepare(w))
+            solver.factorAndSolve(w, gap, x);
+        else
+            solver.solve(gap, x);
         dq.setZero(w.q.size());
         solver.addJTranspose(x, dq);
         dq.array() *= w.invMassDiag.array();
@@ -105,10 +107,13 @@ ProjectionResult projectPositions(World& w, PinSolver& solver, double tolerance,
 void projectVelocities(World& w, PinSolver& solver, Eigen::VectorXd* impulses) {
     PinSolver::Scratch& s = solver.scratch;
     Eigen::VectorXd &jv = s.jv, &x = s.x, &dv = s.dq;
-    solver.assemble(w);
+    const bool stale = solver.prepare(w);
     solver.multiplyJ(w.v, jv);
     jv = -jv;
-    solver.solve(jv, x);
+    if (stale)
+        solver.factorAndSolve(w, jv, x);
+    else
+        solver.solve(jv, x);
     dv.setZero(w.v.size());
     solver.addJTranspose(x, dv);
     w.v.array() += dv.array() * w.invMassDiag.array();

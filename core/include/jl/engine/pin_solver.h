@@ -29,6 +29,12 @@ public:
     // whose bodies carry the stiffness and damping of one step as extra
     // mass (docs/model.md section 6.4).
     void assemble(const World& w, const std::vector<Eigen::Vector2d>& inverseMass);
+    // assemble() in two halves, for a caller that needs the arms to form its
+    // right-hand side: prepare() turns the arms (armA, armB) and returns
+    // whether the factorisation in hand is stale; if it is, factorAndSolve()
+    // factorises and solves in one sweep, else solve() uses the one in hand.
+    bool prepare(const World& w);
+    void factorAndSolve(const World& w, const Eigen::VectorXd& r, Eigen::VectorXd& x);
     // Solves (J W J^T) x = r; r and x hold 2 entries per pin, in w.pins()
     // order, then 1 per weld (w.welds()).
     void solve(const Eigen::VectorXd& r, Eigen::VectorXd& x) const;
@@ -88,8 +94,9 @@ private:
     void assemble(const World& w, const std::vector<Eigen::Vector2d>* inverseMass);
     void order(const World& w);
     void updateBodies(const World& w, const std::vector<Eigen::Vector2d>* inverseMass);
-    Eigen::Matrix2d coupling(int body, const Vec2& r1, const Vec2& r2) const;
-    void factorChain();
+    bool prepare(const World& w, const std::vector<Eigen::Vector2d>* inverseMass);
+    void factorChain(const Eigen::VectorXd* r, Eigen::VectorXd* x);
+    void backSubstitute(Eigen::VectorXd& x) const;
     void factorSparse(const World& w);
 
     long long version_ = -1;
@@ -112,7 +119,9 @@ private:
     std::vector<int> sequence_;
     std::vector<int> pathStart_;   // index into sequence_, plus a final end marker
     std::vector<Link> links_;      // links_[i] joins sequence_[i] and sequence_[i+1]
-    std::vector<Eigen::Matrix2d> invPivot_, lower_, upper_;
+    // S_i^{-1} and L_i = B_{i-1}^T S_{i-1}^{-1} per pin in path order (L_i from
+    // the second pin of a path on); back substitution uses L_{i+1}^T = S_i^{-1} B_i.
+    std::vector<Eigen::Matrix2d> invPivot_, lower_;
     // Sparse mode.
     Eigen::SparseMatrix<double> matrix_;
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
