@@ -172,8 +172,17 @@ double Stepper::attempt(World& w, Dynamics& d, double t, double h, Ledger& ledge
         const Powers p = d.evaluate(w, t + tableau_.c[i] * h, t + h / 2);
         if (last) endPowers_ = p;
         kl_[i] = rates(p);
-        kq_[i] = w.v;
-        kv_[i] = w.a;
+        // A stage's rates are its velocities and accelerations. Before the
+        // last stage they are moved, not copied (the next stage writes all
+        // of w.q and w.v, the evaluation all of w.a that it reads): on a long
+        // chain each copy is another pass over memory.
+        if (i + 1 < stages && kq_[i].size() == w.v.size() && kv_[i].size() == w.a.size()) {
+            kq_[i].swap(w.v);
+            kv_[i].swap(w.a);
+        } else {
+            kq_[i] = w.v;
+            kv_[i] = w.a;
+        }
     }
     Eigen::Vector3d dl = Eigen::Vector3d::Zero();
     if (!projectLast) {
