@@ -1,6 +1,7 @@
 #include "jl/engine/turns.h"
 
 #include <cmath>
+#include <vector>
 
 #if defined(JL_HAVE_LIBMVEC) && defined(__x86_64__)
 #include <immintrin.h>
@@ -64,33 +65,40 @@ void cosSinTwo(const double* angle, std::ptrdiff_t stride, std::size_t n, Eigen:
     }
 }
 
-using CosSin = void (*)(const double*, std::ptrdiff_t, std::size_t, Eigen::Vector2d*);
+#endif
 
-// Chosen once, by what this processor can do (at first use, not in a static
-// initialiser, which could run before the processor has been asked).
-void chosen(const double* angle, std::ptrdiff_t stride, std::size_t n, Eigen::Vector2d* out) {
-    static const CosSin routine = [] {
-        __builtin_cpu_init();
-        return __builtin_cpu_supports("avx2") ? cosSinFour : cosSinTwo;
-    }();
-    routine(angle, stride, n, out);
-}
-
-#else
-
-void chosen(const double* angle, std::ptrdiff_t stride, std::size_t n, Eigen::Vector2d* out) {
+// std::cos and std::sin: where there is no libmvec (or no x86-64), and in
+// tests, the answer the others are held to.
+void cosSinScalar(const double* angle, std::ptrdiff_t stride, std::size_t n, Eigen::Vector2d* out) {
     for (std::size_t i = 0; i < n; ++i) {
         const double a = angle[std::ptrdiff_t(i) * stride];
         out[i] = {std::cos(a), std::sin(a)};
     }
 }
 
+// The fastest this processor can run first (listed at first use, not in a
+// static initialiser, which could run before the processor has been asked).
+const std::vector<TurnRoutine>& routines() {
+    static const std::vector<TurnRoutine> list = [] {
+        std::vector<TurnRoutine> r;
+#if defined(JL_HAVE_LIBMVEC) && defined(__x86_64__)
+        __builtin_cpu_init();
+        if (__builtin_cpu_supports("avx2")) r.push_back({"libmvec avx2", cosSinFour});
+        r.push_back({"libmvec sse2", cosSinTwo});
 #endif
+        r.push_back({"scalar", cosSinScalar});
+        return r;
+    }();
+    return list;
+}
 
 }  // namespace
 
+const std::vector<TurnRoutine>& turnRoutines() { return routines(); }
+
 void cosSinOf(const double* angle, std::ptrdiff_t stride, std::size_t n, Eigen::Vector2d* out) {
-    if (n > 0) chosen(angle, stride, n, out);
+    static const TurnRoutine::Run run = routines().front().run;
+    if (n > 0) run(angle, stride, n, out);
 }
 
 }  // namespace jl

@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 
 #include <cstddef>
+#include <vector>
 
 namespace jl {
 
@@ -18,5 +19,16 @@ namespace jl {
 // angle goes through the same routine wherever it sits in the list, so a
 // turn gets the same bits whatever the number of bodies.
 void cosSinOf(const double* angle, std::ptrdiff_t stride, std::size_t n, Eigen::Vector2d* out);
+
+// Every routine this build and processor can run, the one cosSinOf uses
+// first: libmvec's AVX2 one where the processor has AVX2, its SSE2 one on
+// any x86-64, then std::cos and std::sin. Tests check each, not only the
+// one their machine happens to choose.
+struct TurnRoutine {
+    using Run = void (*)(const double* angle, std::ptrdiff_t stride, std::size_t n, Eigen::Vector2d* out);
+    const char* name;
+    Run run;
+};
+const std::vector<TurnRoutine>& turnRoutines();
 
 }  // namespace jl
