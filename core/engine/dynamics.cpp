@@ -9,49 +9,12 @@ Powers Dynamics::evaluate(World& w, double t, double within) {
     w.updateKinematics(t, within);
     Powers powers;
     accumulateForces(w, force_, powers);
-    const bool stale = solver_.prepare(w);
+    solver_.accelerations(w, force_, lambda_);
 
-    // Pin acceleration: J a + sum(sigma * -omega^2 r) = 0, where a is the
-    // unconstrained acceleration: a kinematic body's prescribed one, a
-    // dynamic one's W f. One pass over the pins forms each row's right-hand
-    // side from the forces as it goes (at 100,000 blocks a pass that wrote
-    // W f for every body and one more that read it back were two more
-    // streams through memory).
     const std::vector<Pin>& pins = w.pins();
     const std::vector<unsigned char>& kinematic = w.kinematicFlags();
-    const auto unconstrained = [&](int b) -> Eigen::Vector3d {
-        return kinematic[size_t(b)] ? Eigen::Vector3d(w.a.segment<3>(3 * b))
-                                    : Eigen::Vector3d(w.invMassDiag.segment<3>(3 * b).cwiseProduct(force_.segment<3>(3 * b)));
-    };
-    rhs_.resize(solver_.rowCount());
-    for (size_t i = 0; i < pins.size(); ++i) {
-        const int A = solver_.bodyA(int(i)), B = solver_.bodyB(int(i));
-        const Vec2& rA = solver_.armA(int(i));
-        const Vec2& rB = solver_.armB(int(i));
-        const Eigen::Vector3d aA = unconstrained(A), aB = unconstrained(B);
-        const Vec2 ua = aA.head<2>() + aA[2] * perp(rA);
-        const Vec2 ub = aB.head<2>() + aB[2] * perp(rB);
-        const double wa = w.v[3 * A + 2], wb = w.v[3 * B + 2];
-        rhs_.segment<2>(2 * Eigen::Index(i)) = wa * wa * rA - wb * wb * rB - (ua - ub);
-    }
-    // Welds fix a relative angle, a linear constraint: no velocity term.
     const Eigen::Index weldRows = 2 * Eigen::Index(pins.size());
     const std::vector<Weld>& welds = w.welds();
-    for (size_t i = 0; i < welds.size(); ++i) {
-        const Pin& p = pins[size_t(welds[i].pin)];
-        rhs_[weldRows + Eigen::Index(i)] = -(welds[i].arm * (unconstrained(p.bodyA)[2] - unconstrained(p.bodyB)[2]));
-    }
-    if (stale)
-        solver_.factorAndSolve(w, rhs_, lambda_);
-    else
-        solver_.solve(rhs_, lambda_);
-
-    // a = W (f + J^T lambda) for dynamic bodies; kinematic ones keep theirs.
-    jv_ = force_;
-    solver_.addJTranspose(lambda_, jv_);
-    for (int b = 0; b < w.bodyCount(); ++b)
-        if (!kinematic[size_t(b)]) w.a.segment<3>(3 * b) = w.invMassDiag.segment<3>(3 * b).cwiseProduct(jv_.segment<3>(3 * b));
-
     // Power of the pins at held bodies: force on the free side times the
     // velocity of the (shared) point. Only the pins with a held side, listed
     // anew whenever the world changes other than in its motion (every pin's

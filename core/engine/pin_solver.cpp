@@ -35,6 +35,9 @@ void PinSolver::order(const World& w) {
             ++count;
         }
     }
+    unpinned_.clear();
+    for (int b = 0; b < w.bodyCount(); ++b)
+        if (!w.body(b).kinematic && pinCountOfBody_[size_t(b)] == 0) unpinned_.push_back(b);
     welds_.resize(w.welds().size());
     chain_ = w.welds().empty() && !forceSparse_;
     for (int count : pinCountOfBody_)
@@ -108,7 +111,7 @@ void PinSolver::assemble(const World& w, const std::vector<Eigen::Vector2d>& inv
 void PinSolver::assemble(const World& w, const std::vector<Eigen::Vector2d>* inverseMass) {
     if (!prepare(w, inverseMass)) return;
     if (chain_)
-        factorChain(nullptr, nullptr);
+        factorChain([](int) { return Vec2(); }, nullptr);
     else
         factorSparse(w);
     assembledPlain_ = !inverseMass;
@@ -153,7 +156,7 @@ bool PinSolver::prepare(const World& w, const std::vector<Eigen::Vector2d>* inve
 void PinSolver::factorAndSolve(const World& w, const Eigen::VectorXd& r, Eigen::VectorXd& x) {
     if (chain_) {
         x.resize(r.size());
-        factorChain(&r, &x);
+        factorChain([&r](int pin) { return Vec2(r.segment<2>(2 * pin)); }, &x);
         backSubstitute(x);
     } else {
         factorSparse(w);
@@ -161,6 +164,103 @@ void PinSolver::factorAndSolve(const World& w, const Eigen::VectorXd& r, Eigen::
     }
     assembledPlain_ = true;
     assembledRevision_ = w.revision();
+}
+
+// The dynamics' accelerations. The pins' acceleration equations are
+// J a + sum(sigma * -omega^2 r) = 0, where a = u + W J^T lambda and u is the
+// unconstrained acceleration: a kinematic body's prescribed one, a dynamic
+// one's W f. Each row's right-hand side is formed from the forces as it is
+// needed (at 100,000 blocks a pass that wrote W f for every body and one
+// more that read it back were two more streams through memory).
+void PinSolver::accelerations(World& w, const Eigen::VectorXd& force, Eigen::VectorXd& lambda) {
+    const bool stale = prepare(w);
+    const std::vector<unsigned char>& kinematic = w.kinematicFlags();
+    const Eigen::VectorXd& v = w.v;
+    Eigen::VectorXd& a = w.a;
+    const Eigen::VectorXd& im = w.invMassDiag;
+    const auto unconstrained = [&](int b) -> Eigen::Vector3d {
+        return kinematic[size_t(b)] ? Eigen::Vector3d(a.segment<3>(3 * b))
+                                    : Eigen::Vector3d(im.segment<3>(3 * b).cwiseProduct(force.segment<3>(3 * b)));
+    };
+    const auto rhs = [&](int pin) -> Vec2 {
+        const PinRow& p = pins_[size_t(pin)];
+        const Eigen::Vector3d aA = unconstrained(p.bodyA), aB = unconstrained(p.bodyB);
+        const Vec2 ua = aA.head<2>() + aA[2] * perp(p.rA);
+        const Vec2 ub = aB.head<2>() + aB[2] * perp(p.rB);
+        const double wa = v[3 * p.bodyA + 2], wb = v[3 * p.bodyB + 2];
+        return wa * wa * p.rA - wb * wb * p.rB - (ua - ub);
+    };
+    if (!stale || !chain_) {
+        // One pass for the right-hand side (welds fix a relative angle, a
+        // linear constraint: no velocity term), the solve, then J^T lambda.
+        rhs_.resize(rowCount());
+        for (size_t i = 0; i < pins_.size(); ++i) rhs_.segment<2>(2 * Eigen::Index(i)) = rhs(int(i));
+        for (size_t i = 0; i < welds_.size(); ++i)
+            rhs_[Eigen::Index(2 * pins_.size() + i)] =
+                -(welds_[i].arm * (unconstrained(welds_[i].bodyA)[2] - unconstrained(welds_[i].bodyB)[2]));
+        if (stale)
+            factorAndSolve(w, rhs_, lambda);
+        else
+            solve(rhs_, lambda);
+        jv_ = force;
+        addJTranspose(lambda, jv_);
+        for (int b = 0; b < w.bodyCount(); ++b)
+            if (!kinematic[size_t(b)]) a.segment<3>(3 * b) = im.segment<3>(3 * b).cwiseProduct(jv_.segment<3>(3 * b));
+        return;
+    }
+    // Along chains, in the solve's two sweeps: each pin's right-hand side as
+    // the elimination reaches it, each body's acceleration as the back
+    // substitution has both of its pins' forces. Three passes over the pins
+    // and two over the bodies fewer, with the same arithmetic in the same
+    // order: at 100,000 blocks every pass streams from memory.
+    lambda.resize(rowCount());
+    factorChain(rhs, &lambda);
+    assembledPlain_ = true;
+    assembledRevision_ = w.revision();
+
+    // a = W (f + J^T lambda), the pins' forces added in the order of their
+    // index (as addJTranspose adds them).
+    const auto finish = [&](int body, int first, int second) {
+        if (kinematic[size_t(body)]) return;
+        Eigen::Vector3d f = force.segment<3>(3 * body);
+        for (int pin : {std::min(first, second), std::max(first, second)}) {
+            if (pin < 0) continue;
+            const PinRow& p = pins_[size_t(pin)];
+            const Vec2 l = lambda.segment<2>(2 * pin);
+            if (p.bodyA == body) {
+                f.head<2>() += l;
+                f[2] += cross(p.rA, l);
+            } else {
+                f.head<2>() -= l;
+                f[2] -= cross(p.rB, l);
+            }
+        }
+        a.segment<3>(3 * body) = im.segment<3>(3 * body).cwiseProduct(f);
+    };
+    const int* sequence = sequence_.data();
+    const Eigen::Matrix2d* lower = lower_.data();
+    for (size_t path = 0; path + 1 < pathStart_.size(); ++path) {
+        const size_t begin = size_t(pathStart_[path]), end = size_t(pathStart_[path + 1]);
+        if (begin == end) continue;
+        Vec2 next = lambda.segment<2>(2 * sequence[end - 1]);
+        for (size_t i = end - 1; i-- > begin;) {
+            next = lambda.segment<2>(2 * sequence[i]) - lower[i + 1].transpose() * next;
+            lambda.segment<2>(2 * sequence[i]) = next;
+            finish(links_[i].body, sequence[i], sequence[i + 1]);
+        }
+        // The path's two ends: the first pin's and the last pin's other body.
+        const PinRow& first = pins_[size_t(sequence[begin])];
+        const PinRow& last = pins_[size_t(sequence[end - 1])];
+        const int inner1 = end - begin > 1 ? links_[begin].body : -1;
+        const int inner2 = end - begin > 1 ? links_[end - 2].body : -1;
+        finish(first.bodyA == inner1 ? first.bodyB : first.bodyA, sequence[begin], -1);
+        if (end - begin == 1)
+            finish(first.bodyB, sequence[begin], -1);
+        else
+            finish(last.bodyA == inner2 ? last.bodyB : last.bodyA, sequence[end - 1], -1);
+    }
+    for (int b : unpinned_)
+        if (!kinematic[size_t(b)]) a.segment<3>(3 * b) = im.segment<3>(3 * b).cwiseProduct(force.segment<3>(3 * b));
 }
 
 // The matrix depends on the bodies' turns alone (and on what the revision
@@ -182,9 +282,11 @@ bool PinSolver::sameTurns(const World& w) const {
 // multipliers L_i = B^T S_{i-1}^{-1} and the inverse pivots, which no later
 // link waits on, are formed beside the chain. The previous link's numbers
 // are carried in locals, and the arrays are reached through plain pointers.
-// Given a right-hand side r, the forward substitution y_i = r_i - L_i y_{i-1}
-// runs alongside, leaving S_i^{-1} y_i in x for backSubstitute.
-void PinSolver::factorChain(const Eigen::VectorXd* r, Eigen::VectorXd* x) {
+// Given x, the forward substitution y_i = r_i - L_i y_{i-1} runs alongside
+// (r_i = rhs(pin), formed as the sweep reaches it), leaving S_i^{-1} y_i in
+// x for backSubstitute.
+template <class RowRhs>
+void PinSolver::factorChain(const RowRhs& rhs, Eigen::VectorXd* x) {
     const size_t n = sequence_.size();
     invPivot_.resize(n);
     lower_.resize(n);
@@ -219,9 +321,9 @@ void PinSolver::factorChain(const Eigen::VectorXd* r, Eigen::VectorXd* x) {
                 d11 -= (b01 * t01 + b11 * t11) * inv;
                 // L = B^T S^{-1} = t^T / det S.
                 lower[i] << t00 * inv, t10 * inv, t01 * inv, t11 * inv;
-                if (r) y = r->segment<2>(2 * sequence[i]) - lower[i] * y;
-            } else if (r) {
-                y = r->segment<2>(2 * sequence[i]);
+                if (x) y = rhs(sequence[i]) - lower[i] * y;
+            } else if (x) {
+                y = rhs(sequence[i]);
             }
             // The pivot and its inverse; a singular one (redundant pins) gets
             // the tiny diagonal shift first.
@@ -239,7 +341,7 @@ void PinSolver::factorChain(const Eigen::VectorXd* r, Eigen::VectorXd* x) {
             inv = 1.0 / det;
             Eigen::Matrix2d& s = invPivot[i];
             s << d11 * inv, -d01 * inv, -d01 * inv, d00 * inv;
-            if (r) x->segment<2>(2 * sequence[i]) = s * y;
+            if (x) x->segment<2>(2 * sequence[i]) = s * y;
             if (i + 1 < end) {
                 const Link& l = links[i];
                 const PinRow& next = pins[sequence[i + 1]];

@@ -49,7 +49,7 @@ public:
 
 private:
     PinSolver solver_;
-    Eigen::VectorXd force_, rhs_, lambda_, jv_;
+    Eigen::VectorXd force_, lambda_;
     std::vector<size_t> heldPins_;         // pins with exactly one held side
     std::uint64_t heldPinsRevision_ = 0;   // the World::revision they were listed for
     long long evaluations_ = 0;

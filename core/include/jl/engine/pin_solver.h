@@ -35,6 +35,12 @@ public:
     // factorises and solves in one sweep, else solve() uses the one in hand.
     bool prepare(const World& w);
     void factorAndSolve(const World& w, const Eigen::VectorXd& r, Eigen::VectorXd& x);
+    // The dynamics' accelerations: assembles at the world's positions, then
+    // sets every dynamic body's a = W (f + J^T lambda) with the pins' forces
+    // lambda that hold J a + (the pins' velocity terms) = 0; f: the applied
+    // forces, 3 per body; a kinematic body keeps its prescribed a. Along
+    // chains with a fresh factorisation, in the solve's two sweeps.
+    void accelerations(World& w, const Eigen::VectorXd& force, Eigen::VectorXd& lambda);
     // Solves (J W J^T) x = r; r and x hold 2 entries per pin, in w.pins()
     // order, then 1 per weld (w.welds()).
     void solve(const Eigen::VectorXd& r, Eigen::VectorXd& x) const;
@@ -95,7 +101,8 @@ private:
     void order(const World& w);
     void updateBodies(const World& w, const std::vector<Eigen::Vector2d>* inverseMass);
     bool prepare(const World& w, const std::vector<Eigen::Vector2d>* inverseMass);
-    void factorChain(const Eigen::VectorXd* r, Eigen::VectorXd* x);
+    template <class RowRhs>
+    void factorChain(const RowRhs& rhs, Eigen::VectorXd* x);
     void backSubstitute(Eigen::VectorXd& x) const;
     void factorSparse(const World& w);
 
@@ -115,6 +122,8 @@ private:
     // Chain mode: pins in path order, path starts, and links between neighbours.
     std::vector<std::array<int, 2>> pinsOfBody_;  // order(): the first two pins of each body
     std::vector<int> pinCountOfBody_;
+    std::vector<int> unpinned_;  // dynamic bodies with no pin
+    Eigen::VectorXd rhs_, jv_;   // accelerations() off the chains' sweeps
     std::vector<char> visited_;
     std::vector<int> sequence_;
     std::vector<int> pathStart_;   // index into sequence_, plus a final end marker
