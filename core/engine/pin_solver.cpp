@@ -157,7 +157,7 @@ void PinSolver::factorAndSolve(const World& w, const Eigen::VectorXd& r, Eigen::
     if (chain_) {
         x.resize(r.size());
         factorChain([&r](int pin) { return Vec2(r.segment<2>(2 * pin)); }, &x);
-        backSubstitute(x);
+        backSubstitute(x, [](size_t) {});
     } else {
         factorSparse(w);
         x = ldlt_.solve(r);
@@ -237,27 +237,22 @@ void PinSolver::accelerations(World& w, const Eigen::VectorXd& force, Eigen::Vec
         }
         a.segment<3>(3 * body) = im.segment<3>(3 * body).cwiseProduct(f);
     };
-    const int* sequence = sequence_.data();
-    const Eigen::Matrix2d* lower = lower_.data();
+    // A link's body has both of its pins' forces once the back substitution
+    // has passed it; a path's two end bodies (the first pin's and the last
+    // pin's other body) have their one pin's at the end.
+    backSubstitute(lambda, [&](size_t i) { finish(links_[i].body, sequence_[i], sequence_[i + 1]); });
     for (size_t path = 0; path + 1 < pathStart_.size(); ++path) {
         const size_t begin = size_t(pathStart_[path]), end = size_t(pathStart_[path + 1]);
         if (begin == end) continue;
-        Vec2 next = lambda.segment<2>(2 * sequence[end - 1]);
-        for (size_t i = end - 1; i-- > begin;) {
-            next = lambda.segment<2>(2 * sequence[i]) - lower[i + 1].transpose() * next;
-            lambda.segment<2>(2 * sequence[i]) = next;
-            finish(links_[i].body, sequence[i], sequence[i + 1]);
-        }
-        // The path's two ends: the first pin's and the last pin's other body.
-        const PinRow& first = pins_[size_t(sequence[begin])];
-        const PinRow& last = pins_[size_t(sequence[end - 1])];
+        const PinRow& first = pins_[size_t(sequence_[begin])];
+        const PinRow& last = pins_[size_t(sequence_[end - 1])];
         const int inner1 = end - begin > 1 ? links_[begin].body : -1;
         const int inner2 = end - begin > 1 ? links_[end - 2].body : -1;
-        finish(first.bodyA == inner1 ? first.bodyB : first.bodyA, sequence[begin], -1);
+        finish(first.bodyA == inner1 ? first.bodyB : first.bodyA, sequence_[begin], -1);
         if (end - begin == 1)
-            finish(first.bodyB, sequence[begin], -1);
+            finish(first.bodyB, sequence_[begin], -1);
         else
-            finish(last.bodyA == inner2 ? last.bodyB : last.bodyA, sequence[end - 1], -1);
+            finish(last.bodyA == inner2 ? last.bodyB : last.bodyA, sequence_[end - 1], -1);
     }
     for (int b : unpinned_)
         if (!kinematic[size_t(b)]) a.segment<3>(3 * b) = im.segment<3>(3 * b).cwiseProduct(force.segment<3>(3 * b));
@@ -432,13 +427,15 @@ void PinSolver::solve(const Eigen::VectorXd& r, Eigen::VectorXd& x) const {
             x.segment<2>(2 * sequence[i]) = invPivot[i] * y;
         }
     }
-    backSubstitute(x);
+    backSubstitute(x, [](size_t) {});
 }
 
 // Back: x_i = S_i^{-1} y_i - S_i^{-1} B_i x_{i+1}, where S_i^{-1} B_i is
 // L_{i+1}^T (S is symmetric): the forward pass left S_i^{-1} y_i in x, so
 // each link waits on one 2 x 2 product and a subtraction, not two products.
-void PinSolver::backSubstitute(Eigen::VectorXd& x) const {
+// passed(i) runs once x_i and x_{i+1} are final, for every link i.
+template <class Passed>
+void PinSolver::backSubstitute(Eigen::VectorXd& x, const Passed& passed) const {
     const int* sequence = sequence_.data();
     const Eigen::Matrix2d* lower = lower_.data();
     for (size_t path = 0; path + 1 < pathStart_.size(); ++path) {
@@ -448,6 +445,7 @@ void PinSolver::backSubstitute(Eigen::VectorXd& x) const {
         for (size_t i = end - 1; i-- > begin;) {
             next = x.segment<2>(2 * sequence[i]) - lower[i + 1].transpose() * next;
             x.segment<2>(2 * sequence[i]) = next;
+            passed(i);
         }
     }
 }

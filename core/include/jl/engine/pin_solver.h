@@ -103,7 +103,8 @@ private:
     bool prepare(const World& w, const std::vector<Eigen::Vector2d>* inverseMass);
     template <class RowRhs>
     void factorChain(const RowRhs& rhs, Eigen::VectorXd* x);
-    void backSubstitute(Eigen::VectorXd& x) const;
+    template <class Passed>
+    void backSubstitute(Eigen::VectorXd& x, const Passed& passed) const;
     void factorSparse(const World& w);
 
     long long version_ = -1;
