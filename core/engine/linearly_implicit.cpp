@@ -83,72 +83,93 @@ void Stepper::stiffMass(const World& w, Dynamics& d, double s) {
     stiff_.solver.assemble(w, stiffInverse_);
 }
 
-// z := (I - h^2 gamma^2 A)^{-1} z: (M + h^2 gamma^2 |K|) x = M z + J^T mu
-// with J x = J z. With y = M'^{-1} M z (the kept part of z), mu solves
-// (J M'^{-1} J^T) mu = J (z - y), and x = y + M'^{-1} J^T mu.
-void Stepper::solveStiff(const World& w, Eigen::VectorXd& z) {
-    z.array() *= mask_.array();  // held and dead bodies do not move by it
-    kept_ = keep_.cwiseProduct(z);
-    rest_ = z - kept_;
+// A stage's increments. With R_q = v + sum_j c_ij u_q,j / h and R_v = a +
+// sum_j c_ij u_v,j / h (held and dead bodies' rows zero: they follow their
+// path), u_q / (h gamma) - u_v = R_q and u_v / (h gamma) - A u_q = R_v, so
+// u_v = (I - h^2 gamma^2 A)^{-1} z - R_q with z = h gamma R_v + R_q, and
+// u_q = h gamma (R_q + u_v). (I - h^2 gamma^2 A)^{-1} z solves
+// (M + h^2 gamma^2 |K|) x = M z + J^T mu with J x = J z: with y = M'^{-1} M z
+// (the kept part of z), mu solves (J M'^{-1} J^T) mu = J (z - y), and
+// x = y + M'^{-1} J^T mu. What is known before the solve is formed in one
+// pass over the coordinates, and what follows it in one more: on a long
+// chain each pass streams every vector it touches from memory.
+void Stepper::rosenbrockStage(const World& w, int i, double h) {
+    const Rosenbrock& r = ros_;
+    const double hg = h * r.gamma;
+    const Eigen::Index n = w.v.size();
+    double c[Rosenbrock::stages];
+    const double* uq[Rosenbrock::stages];
+    const double* uv[Rosenbrock::stages];
+    for (int j = 0; j < i; ++j) {
+        c[j] = r.c[i][j] / h;
+        uq[j] = uq_[size_t(j)].data();
+        uv[j] = uv_[size_t(j)].data();
+    }
+    rq_.resize(n);
+    kept_.resize(n);
+    rest_.resize(n);
+    const double *v = w.v.data(), *a = w.a.data(), *mask = mask_.data(), *keep = keep_.data();
+    for (Eigen::Index e = 0; e < n; ++e) {
+        double q = v[e] * mask[e], p = a[e] * mask[e];
+        for (int j = 0; j < i; ++j) q = q + c[j] * uq[j][e];
+        for (int j = 0; j < i; ++j) p = p + c[j] * uv[j][e];
+        const double z = (hg * p + q) * mask[e];
+        rq_[e] = q;
+        kept_[e] = keep[e] * z;
+        rest_[e] = z - kept_[e];
+    }
     stiff_.solver.multiplyJ(rest_, rhs_);
     stiff_.solver.solve(rhs_, mu_);
-    jmu_.setZero(z.size());
+    jmu_.setZero(n);
     stiff_.solver.addJTranspose(mu_, jmu_);
-    for (int b = 0; b < w.bodyCount(); ++b) {
+    Eigen::VectorXd& uqi = uq_[size_t(i)];
+    Eigen::VectorXd& uvi = uv_[size_t(i)];
+    uqi.resize(n);
+    uvi.resize(n);
+    const auto finish = [&](Eigen::Index e, double x) {
+        uvi[e] = (kept_[e] + x) - rq_[e];
+        uqi[e] = hg * (rq_[e] + uvi[e]);
+    };
+    const Eigen::Index bodies = std::min<Eigen::Index>(w.bodyCount(), n / 3);
+    for (Eigen::Index b = 0; b < bodies; ++b) {
         const Eigen::Vector2d& im = stiffInverse_[size_t(b)];
-        jmu_.segment<2>(3 * b) *= im[0];
-        jmu_[3 * b + 2] *= im[1];
+        finish(3 * b, jmu_[3 * b] * im[0]);
+        finish(3 * b + 1, jmu_[3 * b + 1] * im[0]);
+        finish(3 * b + 2, jmu_[3 * b + 2] * im[1]);
     }
-    z = kept_ + jmu_;
+    for (Eigen::Index e = 3 * bodies; e < n; ++e) finish(e, jmu_[e]);
 }
 
 double Stepper::rosenbrockAttempt(World& w, Dynamics& d, double t, double h, Ledger& ledger) {
     const Rosenbrock& r = ros_;
     const double hg = h * r.gamma;
-    Eigen::Vector3d rl;
+    const Eigen::Index n = w.q.size();
+    const Eigen::VectorXd* uq[Rosenbrock::stages];
+    const Eigen::VectorXd* uv[Rosenbrock::stages];
+    for (int i = 0; i < Rosenbrock::stages; ++i) {
+        uq[i] = &uq_[size_t(i)];
+        uv[i] = &uv_[size_t(i)];
+    }
     for (int i = 0; i < Rosenbrock::stages; ++i) {
         if (i > 0) {
-            w.q = q0_;
-            w.v = v0_;
-            for (int j = 0; j < i; ++j) {
-                if (r.a[i][j] == 0) continue;
-                w.q.noalias() += r.a[i][j] * uq_[size_t(j)];
-                w.v.noalias() += r.a[i][j] * uv_[size_t(j)];
-            }
+            combineStages(w.q, &q0_, StageTerms(1.0, r.a[i], uq, size_t(i)), n);
+            combineStages(w.v, &v0_, StageTerms(1.0, r.a[i], uv, size_t(i)), n);
         }
         const Powers p = d.evaluate(w, t + r.alpha[i] * h, t + h / 2);
         if (i == 0) stiffMass(w, d, hg * hg);
-        rq_ = w.v.cwiseProduct(mask_);  // held bodies follow their path instead
-        rv_ = w.a.cwiseProduct(mask_);
-        rl = {p.held, p.user, p.damping};
-        for (int j = 0; j < i; ++j) {
-            const double cij = r.c[i][j] / h;
-            rq_.noalias() += cij * uq_[size_t(j)];
-            rv_.noalias() += cij * uv_[size_t(j)];
-            rl += cij * ul_[size_t(j)];
-        }
-        // (q, v): u_q / (h gamma) - u_v = R_q, u_v / (h gamma) - A u_q = R_v,
-        // so u_v = (I - h^2 gamma^2 A)^{-1} (h gamma R_v + R_q) - R_q.
-        z_ = hg * rv_ + rq_;
-        solveStiff(w, z_);
-        uv_[size_t(i)] = z_ - rq_;
-        uq_[size_t(i)] = hg * (rq_ + uv_[size_t(i)]);
+        rosenbrockStage(w, i, h);
+        Eigen::Vector3d rl(p.held, p.user, p.damping);
+        for (int j = 0; j < i; ++j) rl += (r.c[i][j] / h) * ul_[size_t(j)];
         ul_[size_t(i)] = hg * rl;  // the books have no stiff part: W is 0 there
     }
-    w.q = q0_;
-    w.v = v0_;
-    errQ_.setZero(w.q.size());
-    errV_.setZero(w.v.size());
+    combineStages(w.q, &q0_, StageTerms(1.0, r.m, uq, Rosenbrock::stages), n);
+    combineStages(w.v, &v0_, StageTerms(1.0, r.m, uv, Rosenbrock::stages), n);
     for (int i = 0; i < Rosenbrock::stages; ++i) {
-        w.q.noalias() += r.m[i] * uq_[size_t(i)];
-        w.v.noalias() += r.m[i] * uv_[size_t(i)];
         ledger.held += r.m[i] * ul_[size_t(i)][0];
         ledger.user += r.m[i] * ul_[size_t(i)][1];
         ledger.damping += r.m[i] * ul_[size_t(i)][2];
-        errQ_.noalias() += r.e[i] * uq_[size_t(i)];
-        errV_.noalias() += r.e[i] * uv_[size_t(i)];
     }
-    return errorNorm(w);
+    return errorNorm(w, StageTerms(1.0, r.e, uq, Rosenbrock::stages), StageTerms(1.0, r.e, uv, Rosenbrock::stages));
 }
 
 }  // namespace jl

@@ -14,7 +14,9 @@ MotionStep advanceAndProject(World& w, Dynamics& d, Stepper& s, double t, double
     const bool projected = m.step.endEvaluated || !m.step.projection.converged;
     m.projection = projected ? m.step.projection : projectPositions(w, d.solver(), tolerance);
     if (m.projection.converged) {
-        if (!projected) projectVelocities(w, d.solver());
+        // A projected end was checked by the stepper, after its projection.
+        if (projected) return m;
+        projectVelocities(w, d.solver());
         if (w.q.allFinite() && w.v.allFinite()) return m;
         m.step.finite = false;
         m.step.endEvaluated = false;

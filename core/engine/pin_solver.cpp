@@ -92,16 +92,23 @@ void PinSolver::order(const World& w) {
 // inertia, side by side in flat arrays for the passes over the pins (read
 // from the world's flat inverse masses: a Body, with its list of parts, is
 // a long stride to read two numbers from).
+// The world's own inverse masses change only with its revision: copied
+// again only then (at 100,000 blocks each copy streams two arrays).
 void PinSolver::updateBodies(const World& w, const std::vector<Eigen::Vector2d>* inverseMass) {
-    rotation_.resize(size_t(w.bodyCount()));
-    inverse_.resize(size_t(w.bodyCount()));
-    angle_.resize(size_t(w.bodyCount()));
-    for (int b = 0; b < w.bodyCount(); ++b) {
-        angle_[size_t(b)] = w.q[3 * b + 2];
-        inverse_[size_t(b)] = inverseMass ? (*inverseMass)[size_t(b)]
-                                          : Eigen::Vector2d(w.invMassDiag[3 * b], w.invMassDiag[3 * b + 2]);
-    }
+    const size_t n = size_t(w.bodyCount());
+    rotation_.resize(n);
+    angle_.resize(n);
+    for (size_t b = 0; b < n; ++b) angle_[b] = w.q[3 * Eigen::Index(b) + 2];
     cosSinOf(angle_.data(), 1, angle_.size(), rotation_.data());
+    if (inverseMass) {
+        inverse_ = *inverseMass;
+        inverseRevision_ = 0;  // no world's
+    } else if (inverseRevision_ != w.revision() || inverse_.size() != n) {
+        inverse_.resize(n);
+        for (size_t b = 0; b < n; ++b)
+            inverse_[b] = Eigen::Vector2d(w.invMassDiag[3 * Eigen::Index(b)], w.invMassDiag[3 * Eigen::Index(b) + 2]);
+        inverseRevision_ = w.revision();
+    }
 }
 
 void PinSolver::assemble(const World& w) { assemble(w, nullptr); }

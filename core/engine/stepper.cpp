@@ -1,5 +1,6 @@
 #include "jl/engine/stepper.h"
 
+#include "jl/engine/stage_sums.h"
 #include "jl/engine/world.h"
 
 #include <algorithm>
@@ -12,61 +13,6 @@ namespace jl {
 namespace {
 
 Eigen::Vector3d rates(const Powers& p) { return {p.held, p.user, p.damping}; }
-
-// The sum of M terms, M known to the compiler so that it can unroll the
-// terms and vectorize the elements.
-template <size_t M>
-void sumTerms(double* out, const Eigen::VectorXd* base, const double* c, const double* const* terms, Eigen::Index n) {
-    if (base) {
-        const double* b = base->data();
-        for (Eigen::Index e = 0; e < n; ++e) {
-            double sum = b[e];
-            for (size_t i = 0; i < M; ++i) sum = sum + c[i] * terms[i][e];
-            out[e] = sum;
-        }
-    } else {
-        for (Eigen::Index e = 0; e < n; ++e) {
-            double sum = 0.0;
-            for (size_t i = 0; i < M; ++i) sum = sum + c[i] * terms[i][e];
-            out[e] = sum;
-        }
-    }
-}
-
-// out = base + c_0 k_0 + c_1 k_1 + ... for the stages whose coefficient is
-// not zero, added in that order: bit for bit what one axpy after another
-// gives, in one pass over memory instead of one pass (reading and writing
-// `out`) per stage. A step of Dormand-Prince makes 28 such sums for q and
-// as many for v; on a long chain its vectors outgrow the cache, and those
-// passes were a sixth of the method's cost per block-step at 100,000 blocks.
-// `base` null: the sum starts from zero.
-void combineStages(Eigen::VectorXd& out, const Eigen::VectorXd* base, double scale, const double* coefficients,
-                   const std::vector<Eigen::VectorXd>& k, size_t count) {
-    constexpr size_t kMostStages = 9;  // Verner's 6(5) pair, the longest tableau
-    assert(count <= kMostStages);
-    double c[kMostStages];
-    const double* terms[kMostStages];
-    size_t m = 0;
-    for (size_t j = 0; j < count; ++j) {
-        if (coefficients[j] == 0) continue;
-        c[m] = scale * coefficients[j];
-        terms[m++] = k[j].data();
-    }
-    const Eigen::Index n = k[0].size();
-    out.resize(n);
-    switch (m) {
-    case 0: sumTerms<0>(out.data(), base, c, terms, n); break;
-    case 1: sumTerms<1>(out.data(), base, c, terms, n); break;
-    case 2: sumTerms<2>(out.data(), base, c, terms, n); break;
-    case 3: sumTerms<3>(out.data(), base, c, terms, n); break;
-    case 4: sumTerms<4>(out.data(), base, c, terms, n); break;
-    case 5: sumTerms<5>(out.data(), base, c, terms, n); break;
-    case 6: sumTerms<6>(out.data(), base, c, terms, n); break;
-    case 7: sumTerms<7>(out.data(), base, c, terms, n); break;
-    case 8: sumTerms<8>(out.data(), base, c, terms, n); break;
-    default: sumTerms<9>(out.data(), base, c, terms, n); break;
-    }
-}
 
 }  // namespace
 
@@ -151,6 +97,7 @@ double Stepper::attempt(World& w, Dynamics& d, double t, double h, Ledger& ledge
                         double projectionTolerance) {
     if (kind_ == Integrator::RosenbrockW) return rosenbrockAttempt(w, d, t, h, ledger);
     const size_t stages = tableau_.c.size();
+    const Eigen::Index n = w.q.size();
     // Dormand-Prince's last stage is taken at the fifth-order solution itself
     // (its row of a is b, and b's last weight is 0): projected onto the pins
     // first, it is the end of the step as the caller would project and
@@ -158,10 +105,21 @@ double Stepper::attempt(World& w, Dynamics& d, double t, double h, Ledger& ledge
     // differs by h/40 times the change of the rates that the projection
     // makes, a projection of a drift below the step's own error.
     const bool projectLast = projectionTolerance > 0 && lastStageIsEnd();
+    // The stage vectors the sums read. The first stage's velocities are the
+    // step's start, v0_, when it was given; the last stage's, when it is the
+    // end of the step, stay in w: each copy is another pass over memory on a
+    // long chain.
+    const Eigen::VectorXd* kq[StageTerms::most];
+    const Eigen::VectorXd* kv[StageTerms::most];
+    for (size_t i = 0; i < stages; ++i) {
+        kq[i] = &kq_[i];
+        kv[i] = &kv_[i];
+    }
+    if (firstKnown && startVelocitiesAreV0_) kq[0] = &v0_;
     for (size_t i = firstKnown ? 1 : 0; i < stages; ++i) {
         if (i > 0) {
-            combineStages(w.q, &q0_, h, tableau_.a[i].data(), kq_, i);
-            combineStages(w.v, &v0_, h, tableau_.a[i].data(), kv_, i);
+            combineStages(w.q, &q0_, StageTerms(h, tableau_.a[i].data(), kq, i), n);
+            combineStages(w.v, &v0_, StageTerms(h, tableau_.a[i].data(), kv, i), n);
         }
         const bool last = projectLast && i + 1 == stages;
         if (last) {
@@ -174,20 +132,24 @@ double Stepper::attempt(World& w, Dynamics& d, double t, double h, Ledger& ledge
         kl_[i] = rates(p);
         // A stage's rates are its velocities and accelerations. Before the
         // last stage they are moved, not copied (the next stage writes all
-        // of w.q and w.v, the evaluation all of w.a that it reads): on a long
-        // chain each copy is another pass over memory.
-        if (i + 1 < stages && kq_[i].size() == w.v.size() && kv_[i].size() == w.a.size()) {
+        // of w.q and w.v, the evaluation all of w.a that it reads); the
+        // projected end's stay where they are.
+        if (last) {
+            kq[i] = &w.v;
+            kv[i] = &w.a;
+        } else if (i + 1 < stages && kq_[i].size() == w.v.size() && kv_[i].size() == w.a.size()) {
             kq_[i].swap(w.v);
             kv_[i].swap(w.a);
         } else {
             kq_[i] = w.v;
             kv_[i] = w.a;
         }
+        if (i == 0) startVelocitiesAreV0_ = false;
     }
     Eigen::Vector3d dl = Eigen::Vector3d::Zero();
     if (!projectLast) {
-        combineStages(w.q, &q0_, h, tableau_.b.data(), kq_, stages);
-        combineStages(w.v, &v0_, h, tableau_.b.data(), kv_, stages);
+        combineStages(w.q, &q0_, StageTerms(h, tableau_.b.data(), kq, stages), n);
+        combineStages(w.v, &v0_, StageTerms(h, tableau_.b.data(), kv, stages), n);
     }
     for (size_t i = 0; i < stages; ++i) {
         const double bi = tableau_.b[i];
@@ -198,30 +160,19 @@ double Stepper::attempt(World& w, Dynamics& d, double t, double h, Ledger& ledge
     ledger.user += dl[1];
     ledger.damping += dl[2];
     if (tableau_.e.empty()) return 0;
-    combineStages(errQ_, nullptr, h, tableau_.e.data(), kq_, stages);
-    combineStages(errV_, nullptr, h, tableau_.e.data(), kv_, stages);
-    return errorNorm(w);
+    return errorNorm(w, StageTerms(h, tableau_.e.data(), kq, stages), StageTerms(h, tableau_.e.data(), kv, stages));
 }
 
-// RMS of the local error over dynamic coordinates, scaled by atol + rtol |y|.
-// A body counts once for each of its parts: the mean is over the parts the
-// scene has, however many of them move as one (a locked pair, a still
-// tail's segment of hundreds of blocks), so that joining parts that move
-// rigidly changes what the error control asks of the step in nothing.
-double Stepper::errorNorm(const World& w) const {
-    double sum = 0, n = 0;
-    const Eigen::Index bodies = std::min<Eigen::Index>(w.bodyCount(), w.q.size() / 3);
-    for (Eigen::Index b = 0; b < bodies; ++b) {
-        const double parts = double(w.body(int(b)).parts.size());
-        for (Eigen::Index i = 3 * b; i < 3 * b + 3; ++i) {
-            if (w.invMassDiag[i] == 0) continue;
-            const double sq = tolerance_ * (1 + std::max(std::abs(q0_[i]), std::abs(w.q[i])));
-            const double sv = tolerance_ * (1 + std::max(std::abs(v0_[i]), std::abs(w.v[i])));
-            sum += parts * ((errQ_[i] / sq) * (errQ_[i] / sq) + (errV_[i] / sv) * (errV_[i] / sv));
-            n += 2 * parts;
-        }
-    }
-    return n > 0 ? std::sqrt(sum / n) : 0.0;
+double Stepper::errorNorm(const World& w, const StageTerms& errorQ, const StageTerms& errorV) const {
+    ErrorNormInputs in;
+    in.tolerance = tolerance_;
+    in.n = 3 * std::min<Eigen::Index>(w.bodyCount(), w.q.size() / 3);
+    in.parts = w.coordinateParts().data();
+    in.q0 = q0_.data();
+    in.q1 = w.q.data();
+    in.v0 = v0_.data();
+    in.v1 = w.v.data();
+    return jl::errorNorm(in, errorQ, errorV);
 }
 
 void Stepper::symplecticEuler(World& w, Dynamics& d, double t, double h, Ledger& ledger, const Powers* atStart) {
@@ -242,9 +193,17 @@ StepOutcome Stepper::advance(World& w, Dynamics& d, double t, double h, Ledger& 
     // The first stage of every explicit Runge-Kutta trial is the start state
     // itself: given, or evaluated by the first trial and kept for the rest.
     bool firstKnown = false;
+    startVelocitiesAreV0_ = false;
+    // Its velocities are v0_'s; its accelerations are moved out of w.a (the
+    // first evaluation of the step writes all of w.a that it reads) unless
+    // the step makes no evaluation at all (explicit Euler), which leaves w.a
+    // as it found it.
     if (atStart && kind_ != Integrator::RosenbrockW && kind_ != Integrator::SymplecticEuler) {
-        kq_[0] = w.v;
-        kv_[0] = w.a;
+        startVelocitiesAreV0_ = true;
+        if (tableau_.c.size() > 1 && kv_[0].size() == w.a.size())
+            kv_[0].swap(w.a);
+        else
+            kv_[0] = w.a;
         kl_[0] = rates(*atStart);
         firstKnown = true;
     }
@@ -256,12 +215,14 @@ StepOutcome Stepper::advance(World& w, Dynamics& d, double t, double h, Ledger& 
         out.taken = h;
     } else {
         double trial = next_ > 0 ? std::min(next_, h) : h;
-        for (;;) {
-            // A rejected trial left its end state in w; the first stage of
-            // the next trial must be evaluated at the start of the step.
-            w.q = q0_;
-            w.v = v0_;
-            ledger = start;
+        for (bool first = true;; first = false) {
+            // A rejected trial left its end state in w; the next one starts
+            // again from the start of the step.
+            if (!first) {
+                w.q = q0_;
+                w.v = v0_;
+                ledger = start;
+            }
             const double err = attempt(w, d, t, trial, ledger, firstKnown, projectionTolerance);
             firstKnown = kind_ != Integrator::RosenbrockW;
             if (!std::isfinite(err) && trial > 1e-12) {  // diverged inside the step: much smaller

@@ -228,8 +228,11 @@ void World::indexBodies() const {
     kinematicBodies_.clear();
     kinematicFlags_.assign(bodies_.size(), 0);
     weights_.setZero(q.size());
+    coordinateParts_.setZero(q.size());
     for (int b = 0; b < bodyCount(); ++b) {
         const Body& body = bodies_[size_t(b)];
+        for (Eigen::Index i = 3 * b; i < 3 * b + 3 && i < std::min(q.size(), invMassDiag.size()); ++i)
+            if (invMassDiag[i] != 0) coordinateParts_[i] = double(body.parts.size());
         if (!body.alive) continue;
         if (body.kinematic) {
             kinematicBodies_.push_back(b);
@@ -254,6 +257,11 @@ const std::vector<unsigned char>& World::kinematicFlags() const {
 const Eigen::VectorXd& World::weights() const {
     indexBodies();
     return weights_;
+}
+
+const Eigen::VectorXd& World::coordinateParts() const {
+    indexBodies();
+    return coordinateParts_;
 }
 
 const std::vector<Pin>& World::pins() const {

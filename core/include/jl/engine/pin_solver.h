@@ -120,6 +120,7 @@ private:
     bool forceSparse_ = false;
     std::vector<Eigen::Vector2d> rotation_;  // (cos, sin) per body: one sincos per body, not per pin end
     std::vector<Eigen::Vector2d> inverse_;   // (1/m, 1/I) per body, or the ones assemble was given
+    std::uint64_t inverseRevision_ = 0;      // the world's whose own inverse_ holds; 0: none
     // Chain mode: pins in path order, path starts, and links between neighbours.
     std::vector<std::array<int, 2>> pinsOfBody_;  // order(): the first two pins of each body
     std::vector<int> pinCountOfBody_;

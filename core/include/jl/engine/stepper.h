@@ -6,6 +6,7 @@
 #include "jl/engine/dynamics.h"
 #include "jl/engine/integrator.h"
 #include "jl/engine/projection.h"
+#include "jl/engine/stage_sums.h"
 
 #include <Eigen/Core>
 
@@ -78,29 +79,30 @@ private:
     };
     static Rosenbrock rosenbrockTableau();
     // `firstKnown`: the first stage (the step's start) is already in
-    // kq_[0], kv_[0] and kl_[0].
+    // kv_[0] and kl_[0], and in kq_[0] or (startVelocitiesAreV0_) v0_.
     double attempt(World& w, Dynamics& d, double t, double h, Ledger& ledger, bool firstKnown,
                    double projectionTolerance);
     double rosenbrockAttempt(World& w, Dynamics& d, double t, double h, Ledger& ledger);
     void stiffMass(const World& w, Dynamics& d, double s);
-    void solveStiff(const World& w, Eigen::VectorXd& z);
+    void rosenbrockStage(const World& w, int i, double h);
     void symplecticEuler(World& w, Dynamics& d, double t, double h, Ledger& ledger, const Powers* atStart);
-    double errorNorm(const World& w) const;
+    double errorNorm(const World& w, const StageTerms& errorQ, const StageTerms& errorV) const;
 
     Integrator kind_;
     double tolerance_;
     double next_ = 0;
     Tableau tableau_;
     std::vector<Eigen::VectorXd> kq_, kv_;   // stage velocities and accelerations
+    bool startVelocitiesAreV0_ = false;      // the first stage's velocities are v0_'s, not in kq_[0]
     std::vector<Eigen::Vector3d> kl_;        // stage ledger rates
     Powers endPowers_;                       // of the last stage, when it is the projected end
     ProjectionResult endProjection_;
-    Eigen::VectorXd q0_, v0_, errQ_, errV_;
+    Eigen::VectorXd q0_, v0_;
     // Rosenbrock: the tableau, stage increments and the step's matrix.
     Rosenbrock ros_;
     std::vector<Eigen::VectorXd> uq_, uv_;
     std::vector<Eigen::Vector3d> ul_;
-    Eigen::VectorXd rq_, rv_, z_, mask_, keep_, kept_, rest_, rhs_, mu_, jmu_;
+    Eigen::VectorXd rq_, mask_, keep_, kept_, rest_, rhs_, mu_, jmu_;
     std::vector<double> stiffness_;              // d(moment)/d(angle) per body, N m/rad
     std::vector<Eigen::Vector2d> stiffInverse_;  // (1/m', 1/I') per body
     ScratchPinSolver stiff_;  // assembled at the start of every step

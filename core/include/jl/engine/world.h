@@ -207,10 +207,14 @@ public:
     // re-derived after a change of structure (a Body, with its list of
     // parts, is a long stride to read a flag from): the alive kinematic
     // bodies, a flag per body (1: kinematic), and each alive dynamic body's
-    // weight m g (3 per body, as force; the length of q).
+    // weight m g (3 per body, as force; the length of q), and on each of its
+    // coordinates with an inverse mass the number of its parts, 0 on the
+    // others (the length of q; the adaptive integrators' error norm weighs
+    // a coordinate by it).
     const std::vector<int>& kinematicBodies() const;
     const std::vector<unsigned char>& kinematicFlags() const;
     const Eigen::VectorXd& weights() const;
+    const Eigen::VectorXd& coordinateParts() const;
     const std::vector<Weld>& welds() const; // empty unless weld mode; with pins()
     // Constraint rows: 2 per pin, then 1 per weld.
     int constraintRows() const { return int(2 * pins().size() + welds().size()); }
@@ -311,6 +315,7 @@ private:
     mutable std::vector<int> kinematicBodies_;
     mutable std::vector<unsigned char> kinematicFlags_;
     mutable Eigen::VectorXd weights_;
+    mutable Eigen::VectorXd coordinateParts_;
     std::vector<Spring> springs_;
     std::vector<RotaryDamper> dampers_;
     std::vector<UserDrag> drags_;
