@@ -8,7 +8,19 @@ Powers Dynamics::evaluate(World& w, double t, double within) {
     ++evaluations_;
     w.updateKinematics(t, within);
     Powers powers;
-    accumulateForces(w, force_, powers);
+    // Gravity alone (no air damping, springs, loads or drags: a falling
+    // chain, a ladder in still air): the forces are the bodies' weights, the
+    // same until the world or gravity changes, and are copied again only
+    // then (on a long chain each copy is a pass over memory).
+    const World& cw = w;
+    const bool weightsOnly = cw.dampedParts().empty() && cw.springs().empty() && cw.rotaryDampers().empty() &&
+                             cw.loads().empty() && cw.drags().empty();
+    if (!weightsOnly || weightsRevision_ != cw.revision() || weightsGravity_ != cw.gravity ||
+        force_.size() != cw.q.size()) {
+        accumulateForces(cw, force_, powers);
+        weightsRevision_ = weightsOnly ? cw.revision() : 0;
+        weightsGravity_ = cw.gravity;
+    }
     solver_.accelerations(w, force_, lambda_);
 
     const std::vector<Pin>& pins = w.pins();

@@ -44,6 +44,7 @@ public:
     void restoreLast(const Last& l) {
         force_ = l.force;
         lambda_ = l.lambda;
+        weightsRevision_ = 0;
     }
     long long evaluations() const { return evaluations_; }
 
@@ -52,6 +53,10 @@ private:
     Eigen::VectorXd force_, lambda_;
     std::vector<size_t> heldPins_;         // pins with exactly one held side
     std::uint64_t heldPinsRevision_ = 0;   // the World::revision they were listed for
+    // force_ holds the weights of the world with this revision and gravity
+    // (0: it may hold other forces).
+    std::uint64_t weightsRevision_ = 0;
+    Vec2 weightsGravity_ = Vec2::Zero();
     long long evaluations_ = 0;
 };
 
