@@ -118,10 +118,7 @@ void Stepper::rosenbrockStage(const World& w, int i, double h) {
         kept_[e] = keep[e] * z;
         rest_[e] = z - kept_[e];
     }
-    stiff_.solver.multiplyJ(rest_, rhs_);
-    stiff_.solver.solve(rhs_, mu_);
-    jmu_.setZero(n);
-    stiff_.solver.addJTranspose(mu_, jmu_);
+    stiff_.solver.solveApplying(w, rest_, mu_, jmu_);
     Eigen::VectorXd& uqi = uq_[size_t(i)];
     Eigen::VectorXd& uvi = uv_[size_t(i)];
     uqi.resize(n);

@@ -225,15 +225,29 @@ void PinSolver::accelerations(World& w, const Eigen::VectorXd& force, Eigen::Vec
     assembledPlain_ = true;
     assembledRevision_ = w.revision();
 
-    // a = W (f + J^T lambda), the pins' forces added in the order of their
-    // index (as addJTranspose adds them).
+    // a = W (f + J^T lambda), the pins' forces added to f in the order of
+    // their index (as addJTranspose adds them).
+    backSubstituteApplying(
+        lambda, kinematic, [&](int body) -> Eigen::Vector3d { return force.segment<3>(3 * body); },
+        [&](int body, const Eigen::Vector3d& f) { a.segment<3>(3 * body) = im.segment<3>(3 * body).cwiseProduct(f); });
+}
+
+// Along chains, the back substitution of x (the forward one done), calling
+// apply(b, f) for every dynamic body b once, with f = start(b) plus the
+// forces J^T x of its pins added in the order of their index: a link's body
+// once the substitution has passed it, a path's two end bodies (the first
+// pin's and the last pin's other body) and the bodies with no pin at the
+// end.
+template <class Start, class Apply>
+void PinSolver::backSubstituteApplying(Eigen::VectorXd& x, const std::vector<unsigned char>& kinematic,
+                                       const Start& start, const Apply& apply) const {
     const auto finish = [&](int body, int first, int second) {
         if (kinematic[size_t(body)]) return;
-        Eigen::Vector3d f = force.segment<3>(3 * body);
+        Eigen::Vector3d f = start(body);
         for (int pin : {std::min(first, second), std::max(first, second)}) {
             if (pin < 0) continue;
             const PinRow& p = pins_[size_t(pin)];
-            const Vec2 l = lambda.segment<2>(2 * pin);
+            const Vec2 l = x.segment<2>(2 * pin);
             if (p.bodyA == body) {
                 f.head<2>() += l;
                 f[2] += cross(p.rA, l);
@@ -242,12 +256,9 @@ void PinSolver::accelerations(World& w, const Eigen::VectorXd& force, Eigen::Vec
                 f[2] -= cross(p.rB, l);
             }
         }
-        a.segment<3>(3 * body) = im.segment<3>(3 * body).cwiseProduct(f);
+        apply(body, f);
     };
-    // A link's body has both of its pins' forces once the back substitution
-    // has passed it; a path's two end bodies (the first pin's and the last
-    // pin's other body) have their one pin's at the end.
-    backSubstitute(lambda, [&](size_t i) { finish(links_[i].body, sequence_[i], sequence_[i + 1]); });
+    backSubstitute(x, [&](size_t i) { finish(links_[i].body, sequence_[i], sequence_[i + 1]); });
     for (size_t path = 0; path + 1 < pathStart_.size(); ++path) {
         const size_t begin = size_t(pathStart_[path]), end = size_t(pathStart_[path + 1]);
         if (begin == end) continue;
@@ -262,7 +273,37 @@ void PinSolver::accelerations(World& w, const Eigen::VectorXd& force, Eigen::Vec
             finish(last.bodyA == inner2 ? last.bodyB : last.bodyA, sequence_[end - 1], -1);
     }
     for (int b : unpinned_)
-        if (!kinematic[size_t(b)]) a.segment<3>(3 * b) = im.segment<3>(3 * b).cwiseProduct(force.segment<3>(3 * b));
+        if (!kinematic[size_t(b)]) apply(b, start(b));
+}
+
+// x = (J W J^T)^{-1} J u and jtx = J^T x with the factorisation in hand.
+// Along chains J u is formed row by row in the forward substitution and
+// J^T x body by body in the back substitution: no vector of rows, and no
+// pass that zeroes jtx and one more that adds into it.
+void PinSolver::solveApplying(const World& w, const Eigen::VectorXd& u, Eigen::VectorXd& x, Eigen::VectorXd& jtx) {
+    if (!chain_) {
+        multiplyJ(u, rhs_);
+        solve(rhs_, x);
+        jtx.setZero(u.size());
+        addJTranspose(x, jtx);
+        for (int b : w.kinematicBodies()) jtx.segment<3>(3 * b).setZero();
+        return;
+    }
+    x.resize(rowCount());
+    forwardSubstitute(
+        [&](int pin) -> Vec2 {
+            const PinRow& p = pins_[size_t(pin)];
+            const Vec2 ua = u.segment<2>(3 * p.bodyA) + u[3 * p.bodyA + 2] * perp(p.rA);
+            const Vec2 ub = u.segment<2>(3 * p.bodyB) + u[3 * p.bodyB + 2] * perp(p.rB);
+            return ua - ub;
+        },
+        x);
+    jtx.resize(u.size());
+    backSubstituteApplying(
+        x, w.kinematicFlags(), [](int) -> Eigen::Vector3d { return Eigen::Vector3d::Zero(); },
+        [&](int body, const Eigen::Vector3d& f) { jtx.segment<3>(3 * body) = f; });
+    for (int b : w.kinematicBodies()) jtx.segment<3>(3 * b).setZero();
+    for (Eigen::Index e = 3 * Eigen::Index(w.bodyCount()); e < jtx.size(); ++e) jtx[e] = 0;
 }
 
 // The matrix depends on the bodies' turns alone (and on what the revision
@@ -418,23 +459,28 @@ void PinSolver::solve(const Eigen::VectorXd& r, Eigen::VectorXd& x) const {
         x = ldlt_.solve(r);
         return;
     }
-    // Each substitution carries the previous link's value in locals: read
-    // back from the vector just written, every link waited on a store.
+    forwardSubstitute([&r](int pin) -> Vec2 { return r.segment<2>(2 * pin); }, x);
+    backSubstitute(x, [](size_t) {});
+}
+
+// Forward: y_i = r_i - L_i y_{i-1} (r_i = rhs(pin)); x keeps S_i^{-1} y_i.
+// Each substitution carries the previous link's value in locals: read back
+// from the vector just written, every link waited on a store.
+template <class RowRhs>
+void PinSolver::forwardSubstitute(const RowRhs& rhs, Eigen::VectorXd& x) const {
     const int* sequence = sequence_.data();
     const Eigen::Matrix2d* lower = lower_.data();
     const Eigen::Matrix2d* invPivot = invPivot_.data();
     for (size_t path = 0; path + 1 < pathStart_.size(); ++path) {
         const size_t begin = size_t(pathStart_[path]), end = size_t(pathStart_[path + 1]);
         if (begin == end) continue;
-        // Forward: y_i = r_i - L_i y_{i-1}; x keeps S_i^{-1} y_i.
-        Vec2 y = r.segment<2>(2 * sequence[begin]);
+        Vec2 y = rhs(sequence[begin]);
         x.segment<2>(2 * sequence[begin]) = invPivot[begin] * y;
         for (size_t i = begin + 1; i < end; ++i) {
-            y = r.segment<2>(2 * sequence[i]) - lower[i] * y;
+            y = rhs(sequence[i]) - lower[i] * y;
             x.segment<2>(2 * sequence[i]) = invPivot[i] * y;
         }
     }
-    backSubstitute(x, [](size_t) {});
 }
 
 // Back: x_i = S_i^{-1} y_i - S_i^{-1} B_i x_{i+1}, where S_i^{-1} B_i is

@@ -15,6 +15,21 @@ StageTerms::StageTerms(double scale, const double* coefficients, const Eigen::Ve
     }
 }
 
+void StageTerms::add(double coefficient, const Eigen::VectorXd& vector) {
+    assert(m < most);
+    if (coefficient == 0) return;
+    c[m] = coefficient;
+    x[m++] = vector.data();
+}
+
+void StageTerms::padTo(size_t count, const double* vector) {
+    assert(count <= most);
+    while (m < count) {
+        c[m] = 0;
+        x[m++] = vector;
+    }
+}
+
 namespace {
 
 // The sum of M terms, M known to the compiler so that it can unroll the
@@ -33,6 +48,20 @@ void sumTerms(double* out, const double* base, const StageTerms& t, Eigen::Index
             for (size_t i = 0; i < M; ++i) sum = sum + t.c[i] * t.x[i][e];
             out[e] = sum;
         }
+    }
+}
+
+template <size_t M>
+void sumPair(double* q, const double* q0, const StageTerms& tq, double* v, const double* v0, const StageTerms& tv,
+             Eigen::Index n) {
+    for (Eigen::Index e = 0; e < n; ++e) {
+        double sq = q0[e], sv = v0[e];
+        for (size_t i = 0; i < M; ++i) {
+            sq = sq + tq.c[i] * tq.x[i][e];
+            sv = sv + tv.c[i] * tv.x[i][e];
+        }
+        q[e] = sq;
+        v[e] = sv;
     }
 }
 
@@ -86,12 +115,39 @@ void combineStages(Eigen::VectorXd& out, const Eigen::VectorXd* base, const Stag
     case 6: sumTerms<6>(out.data(), b, t, n); break;
     case 7: sumTerms<7>(out.data(), b, t, n); break;
     case 8: sumTerms<8>(out.data(), b, t, n); break;
-    default: sumTerms<9>(out.data(), b, t, n); break;
+    case 9: sumTerms<9>(out.data(), b, t, n); break;
+    default: sumTerms<10>(out.data(), b, t, n); break;
     }
 }
 
-double errorNorm(const ErrorNormInputs& in, const StageTerms& tq, const StageTerms& tv) {
-    assert(tq.m == tv.m);
+void combineStages(Eigen::VectorXd& q, const Eigen::VectorXd& q0, const StageTerms& termsQ, Eigen::VectorXd& v,
+                   const Eigen::VectorXd& v0, const StageTerms& termsV, Eigen::Index n) {
+    // Run side by side, the shorter sum gets zero terms (on its base, which
+    // is read anyway).
+    StageTerms tq = termsQ, tv = termsV;
+    tq.padTo(tv.m, q0.data());
+    tv.padTo(tq.m, v0.data());
+    q.resize(n);
+    v.resize(n);
+    switch (tq.m) {
+    case 0: sumPair<0>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n); break;
+    case 1: sumPair<1>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n); break;
+    case 2: sumPair<2>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n); break;
+    case 3: sumPair<3>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n); break;
+    case 4: sumPair<4>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n); break;
+    case 5: sumPair<5>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n); break;
+    case 6: sumPair<6>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n); break;
+    case 7: sumPair<7>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n); break;
+    case 8: sumPair<8>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n); break;
+    case 9: sumPair<9>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n); break;
+    default: sumPair<10>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n); break;
+    }
+}
+
+double errorNorm(const ErrorNormInputs& in, const StageTerms& termsQ, const StageTerms& termsV) {
+    StageTerms tq = termsQ, tv = termsV;
+    tq.padTo(tv.m, in.q0);
+    tv.padTo(tq.m, in.v0);
     SquaresSum s;
     switch (tq.m) {
     case 0: s = errorSquares<0>(in, tq, tv); break;
@@ -103,7 +159,8 @@ double errorNorm(const ErrorNormInputs& in, const StageTerms& tq, const StageTer
     case 6: s = errorSquares<6>(in, tq, tv); break;
     case 7: s = errorSquares<7>(in, tq, tv); break;
     case 8: s = errorSquares<8>(in, tq, tv); break;
-    default: s = errorSquares<9>(in, tq, tv); break;
+    case 9: s = errorSquares<9>(in, tq, tv); break;
+    default: s = errorSquares<10>(in, tq, tv); break;
     }
     return s.count > 0 ? std::sqrt(s.sum / s.count) : 0.0;
 }

@@ -73,9 +73,49 @@ Stepper::Stepper(Integrator kind, double tolerance) : kind_(kind), tolerance_(to
         break;
     }
     const size_t s = tableau_.c.size();
-    kq_.resize(s);
     kv_.resize(s);
     kl_.resize(s);
+    nystrom_ = nystromOf(tableau_);
+}
+
+// The coefficients of the Nystrom form (Stepper::attempt): sums of products
+// of the tableau's, in long double so that they are the exact ones to
+// rounding.
+Stepper::Nystrom Stepper::nystromOf(const Tableau& t) {
+    const size_t s = t.c.size();
+    using Wide = long double;
+    Nystrom r;
+    r.rowSum.assign(s, 0.0);
+    r.aa.assign(s, std::vector<double>(s, 0.0));
+    for (size_t i = 0; i < s; ++i) {
+        Wide sum = 0;
+        for (size_t j = 0; j < i; ++j) sum += Wide(t.a[i][j]);
+        r.rowSum[i] = double(sum);
+        for (size_t k = 0; k < s; ++k) {
+            Wide aa = 0;
+            for (size_t j = k + 1; j < i; ++j) aa += Wide(t.a[i][j]) * Wide(t.a[j][k]);
+            r.aa[i][k] = double(aa);
+        }
+    }
+    // The same for a row of weights w over the stages: (w a)_k and sum w,
+    // over the first `count` stages.
+    const auto weigh = [&](const std::vector<double>& weights, size_t count, std::vector<double>& wa, double& total) {
+        wa.assign(s, 0.0);
+        Wide sum = 0;
+        for (size_t j = 0; j < count; ++j) sum += Wide(weights[j]);
+        total = double(sum);
+        for (size_t k = 0; k < s; ++k) {
+            Wide x = 0;
+            for (size_t j = k + 1; j < count; ++j) x += Wide(weights[j]) * Wide(t.a[j][k]);
+            wa[k] = double(x);
+        }
+    };
+    weigh(t.b, s, r.ba, r.bSum);
+    if (!t.e.empty()) {
+        weigh(t.e, s, r.ea, r.eSum);
+        weigh(t.e, s - 1, r.eaHead, r.eHeadSum);
+    }
+    return r;
 }
 
 int Stepper::order() const {
@@ -93,10 +133,20 @@ int Stepper::order() const {
 // One explicit Runge-Kutta step of size h from the state in w (which must be
 // saved in q0_, v0_). Leaves the new state in w; returns the error norm
 // (adaptive) or 0.
+//
+// The method is applied to q' = v, v' = a(q, v) in the form of Nystrom: a
+// stage's velocities V_i = v0 + h sum_j a_ij A_j, and its positions
+// Q_i = q0 + h sum_j a_ij V_j = q0 + h c_i v0 + h^2 sum_k (a a)_ik A_k, the
+// same in exact arithmetic (docs/model.md section 6.1). Only the stages'
+// accelerations A_j are kept: on a long chain every stage vector read is a
+// pass over memory, and reading the velocities' as well took half again as
+// many.
 double Stepper::attempt(World& w, Dynamics& d, double t, double h, Ledger& ledger, bool firstKnown,
                         double projectionTolerance) {
     if (kind_ == Integrator::RosenbrockW) return rosenbrockAttempt(w, d, t, h, ledger);
-    const size_t stages = tableau_.c.size();
+    const Tableau& r = tableau_;
+    const Nystrom& y = nystrom_;
+    const size_t stages = r.c.size();
     const Eigen::Index n = w.q.size();
     // Dormand-Prince's last stage is taken at the fifth-order solution itself
     // (its row of a is b, and b's last weight is 0): projected onto the pins
@@ -105,62 +155,63 @@ double Stepper::attempt(World& w, Dynamics& d, double t, double h, Ledger& ledge
     // differs by h/40 times the change of the rates that the projection
     // makes, a projection of a drift below the step's own error.
     const bool projectLast = projectionTolerance > 0 && lastStageIsEnd();
-    // The stage vectors the sums read. The first stage's velocities are the
-    // step's start, v0_, when it was given; the last stage's, when it is the
-    // end of the step, stay in w: each copy is another pass over memory on a
-    // long chain.
-    const Eigen::VectorXd* kq[StageTerms::most];
-    const Eigen::VectorXd* kv[StageTerms::most];
-    for (size_t i = 0; i < stages; ++i) {
-        kq[i] = &kq_[i];
-        kv[i] = &kv_[i];
-    }
-    if (firstKnown && startVelocitiesAreV0_) kq[0] = &v0_;
+    // The stages' accelerations: the last stage's stay in w.a (nothing
+    // after it writes w.a), the others are moved out of it.
+    const Eigen::VectorXd* A[StageTerms::most];
+    for (size_t i = 0; i < stages; ++i) A[i] = &kv_[i];
     for (size_t i = firstKnown ? 1 : 0; i < stages; ++i) {
         if (i > 0) {
-            combineStages(w.q, &q0_, StageTerms(h, tableau_.a[i].data(), kq, i), n);
-            combineStages(w.v, &v0_, StageTerms(h, tableau_.a[i].data(), kv, i), n);
+            StageTerms tq;
+            tq.add(h * y.rowSum[i], v0_);
+            for (size_t k = 0; k + 1 < i; ++k) tq.add(h * h * y.aa[i][k], *A[k]);
+            combineStages(w.q, q0_, tq, w.v, v0_, StageTerms(h, r.a[i].data(), A, i), n);
         }
-        const bool last = projectLast && i + 1 == stages;
-        if (last) {
+        const bool last = i + 1 == stages;
+        if (last && projectLast) {
             endProjection_ = projectPositions(w, d.solver(), projectionTolerance);
             if (!endProjection_.converged) return std::numeric_limits<double>::quiet_NaN();
             projectVelocities(w, d.solver());
         }
-        const Powers p = d.evaluate(w, t + tableau_.c[i] * h, t + h / 2);
-        if (last) endPowers_ = p;
+        const Powers p = d.evaluate(w, t + r.c[i] * h, t + h / 2);
+        if (last && projectLast) endPowers_ = p;
         kl_[i] = rates(p);
-        // A stage's rates are its velocities and accelerations. Before the
-        // last stage they are moved, not copied (the next stage writes all
-        // of w.q and w.v, the evaluation all of w.a that it reads); the
-        // projected end's stay where they are.
-        if (last) {
-            kq[i] = &w.v;
-            kv[i] = &w.a;
-        } else if (i + 1 < stages && kq_[i].size() == w.v.size() && kv_[i].size() == w.a.size()) {
-            kq_[i].swap(w.v);
+        // Moved, not copied: the next stage's evaluation writes all of w.a
+        // that it reads.
+        if (last)
+            A[i] = &w.a;
+        else if (kv_[i].size() == w.a.size())
             kv_[i].swap(w.a);
-        } else {
-            kq_[i] = w.v;
+        else
             kv_[i] = w.a;
-        }
-        if (i == 0) startVelocitiesAreV0_ = false;
     }
     Eigen::Vector3d dl = Eigen::Vector3d::Zero();
     if (!projectLast) {
-        combineStages(w.q, &q0_, StageTerms(h, tableau_.b.data(), kq, stages), n);
-        combineStages(w.v, &v0_, StageTerms(h, tableau_.b.data(), kv, stages), n);
+        StageTerms tq;
+        tq.add(h * y.bSum, v0_);
+        for (size_t k = 0; k + 1 < stages; ++k) tq.add(h * h * y.ba[k], *A[k]);
+        combineStages(w.q, q0_, tq, w.v, v0_, StageTerms(h, r.b.data(), A, stages), n);
     }
     for (size_t i = 0; i < stages; ++i) {
-        const double bi = tableau_.b[i];
+        const double bi = r.b[i];
         if (bi == 0) continue;
         dl += (h * bi) * kl_[i];
     }
     ledger.held += dl[0];
     ledger.user += dl[1];
     ledger.damping += dl[2];
-    if (tableau_.e.empty()) return 0;
-    return errorNorm(w, StageTerms(h, tableau_.e.data(), kq, stages), StageTerms(h, tableau_.e.data(), kv, stages));
+    if (r.e.empty()) return 0;
+    // The positions' error h sum_j e_j V_j in the same form; a projected
+    // last stage's velocities are w.v, not the sum.
+    StageTerms eq;
+    if (projectLast) {
+        eq.add(h * y.eHeadSum, v0_);
+        eq.add(h * r.e[stages - 1], w.v);
+        for (size_t k = 0; k + 1 < stages; ++k) eq.add(h * h * y.eaHead[k], *A[k]);
+    } else {
+        eq.add(h * y.eSum, v0_);
+        for (size_t k = 0; k + 1 < stages; ++k) eq.add(h * h * y.ea[k], *A[k]);
+    }
+    return errorNorm(w, eq, StageTerms(h, r.e.data(), A, stages));
 }
 
 double Stepper::errorNorm(const World& w, const StageTerms& errorQ, const StageTerms& errorV) const {
@@ -193,13 +244,10 @@ StepOutcome Stepper::advance(World& w, Dynamics& d, double t, double h, Ledger& 
     // The first stage of every explicit Runge-Kutta trial is the start state
     // itself: given, or evaluated by the first trial and kept for the rest.
     bool firstKnown = false;
-    startVelocitiesAreV0_ = false;
-    // Its velocities are v0_'s; its accelerations are moved out of w.a (the
-    // first evaluation of the step writes all of w.a that it reads) unless
-    // the step makes no evaluation at all (explicit Euler), which leaves w.a
-    // as it found it.
+    // Its accelerations are moved out of w.a (the first evaluation of the
+    // step writes all of w.a that it reads) unless the step makes no
+    // evaluation at all (explicit Euler), which leaves w.a as it found it.
     if (atStart && kind_ != Integrator::RosenbrockW && kind_ != Integrator::SymplecticEuler) {
-        startVelocitiesAreV0_ = true;
         if (tableau_.c.size() > 1 && kv_[0].size() == w.a.size())
             kv_[0].swap(w.a);
         else

@@ -44,6 +44,10 @@ public:
     // Solves (J W J^T) x = r; r and x hold 2 entries per pin, in w.pins()
     // order, then 1 per weld (w.welds()).
     void solve(const Eigen::VectorXd& r, Eigen::VectorXd& x) const;
+    // x = (J W J^T)^{-1} J u and jtx = J^T x (3 per body; zero on kinematic
+    // bodies) with the factorisation in hand: the linearly implicit
+    // integrator's solve with its own masses.
+    void solveApplying(const World& w, const Eigen::VectorXd& u, Eigen::VectorXd& x, Eigen::VectorXd& jtx);
     // out = J u: the relative velocity (or acceleration part) of every pin
     // for body vector u (3 per body, kinematic bodies included).
     void multiplyJ(const Eigen::VectorXd& u, Eigen::VectorXd& out) const;
@@ -103,8 +107,13 @@ private:
     bool prepare(const World& w, const std::vector<Eigen::Vector2d>* inverseMass);
     template <class RowRhs>
     void factorChain(const RowRhs& rhs, Eigen::VectorXd* x);
+    template <class RowRhs>
+    void forwardSubstitute(const RowRhs& rhs, Eigen::VectorXd& x) const;
     template <class Passed>
     void backSubstitute(Eigen::VectorXd& x, const Passed& passed) const;
+    template <class Start, class Apply>
+    void backSubstituteApplying(Eigen::VectorXd& x, const std::vector<unsigned char>& kinematic, const Start& start,
+                                const Apply& apply) const;
     void factorSparse(const World& w);
 
     long long version_ = -1;

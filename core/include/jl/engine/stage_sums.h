@@ -15,18 +15,30 @@ namespace jl {
 // The terms scale * coefficient[j] * k[j] of a sum, those with a zero
 // coefficient left out, in the order of j.
 struct StageTerms {
-    static constexpr size_t most = 9;  // Verner's 6(5) pair, the longest tableau
+    // Verner's 6(5) pair, the longest tableau, has 9 stages; a position
+    // sum has one more term, the start's velocity.
+    static constexpr size_t most = 10;
     double c[most] = {};
     const double* x[most] = {};
     size_t m = 0;
 
+    StageTerms() = default;
     StageTerms(double scale, const double* coefficients, const Eigen::VectorXd* const* k, size_t count);
+    // Appends c x, unless c is zero.
+    void add(double coefficient, const Eigen::VectorXd& vector);
+    // Zero terms on `vector` up to `count` terms (for sums run side by side).
+    void padTo(size_t count, const double* vector);
 };
 
 // out = base + c_0 k_0 + c_1 k_1 + ..., added in that order: bit for bit
 // what one axpy after another gives. `base` null: the sum starts from zero.
 // out may not be one of the terms.
 void combineStages(Eigen::VectorXd& out, const Eigen::VectorXd* base, const StageTerms& terms, Eigen::Index n);
+
+// q = q0 + (terms of q), v = v0 + (terms of v) in one pass over both: the
+// terms of a stage's positions and velocities read the same stage vectors.
+void combineStages(Eigen::VectorXd& q, const Eigen::VectorXd& q0, const StageTerms& termsQ, Eigen::VectorXd& v,
+                   const Eigen::VectorXd& v0, const StageTerms& termsV, Eigen::Index n);
 
 // The RMS of a step's error estimate over the dynamic coordinates (inverse
 // mass not zero: `parts` not zero), each scaled by tolerance (1 + max(|y0|, |y1|)). A body

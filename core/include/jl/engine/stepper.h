@@ -69,6 +69,16 @@ private:
         std::vector<double> c, b, e;           // e = b - b_embedded (adaptive only)
         std::vector<std::vector<double>> a;    // lower triangle
     };
+    // Derived from a tableau for its Nystrom form (Stepper::attempt):
+    // sum_j a_ij, (a a)_ik; (b a)_k and sum b; (e a)_k and sum e; the same
+    // over all stages but the last.
+    struct Nystrom {
+        std::vector<double> rowSum;
+        std::vector<std::vector<double>> aa;
+        std::vector<double> ba, ea, eaHead;
+        double bSum = 0, eSum = 0, eHeadSum = 0;
+    };
+    static Nystrom nystromOf(const Tableau& r);
     // The linearly implicit method (linearly_implicit.cpp), in the
     // transformed form of Hairer and Wanner: stage increments u_i solve
     // (I/(h gamma) - W) u_i = F(Y_i) + sum_j c_ij u_j / h.
@@ -79,7 +89,7 @@ private:
     };
     static Rosenbrock rosenbrockTableau();
     // `firstKnown`: the first stage (the step's start) is already in
-    // kv_[0] and kl_[0], and in kq_[0] or (startVelocitiesAreV0_) v0_.
+    // kv_[0] and kl_[0].
     double attempt(World& w, Dynamics& d, double t, double h, Ledger& ledger, bool firstKnown,
                    double projectionTolerance);
     double rosenbrockAttempt(World& w, Dynamics& d, double t, double h, Ledger& ledger);
@@ -92,8 +102,8 @@ private:
     double tolerance_;
     double next_ = 0;
     Tableau tableau_;
-    std::vector<Eigen::VectorXd> kq_, kv_;   // stage velocities and accelerations
-    bool startVelocitiesAreV0_ = false;      // the first stage's velocities are v0_'s, not in kq_[0]
+    Nystrom nystrom_;
+    std::vector<Eigen::VectorXd> kv_;        // stage accelerations
     std::vector<Eigen::Vector3d> kl_;        // stage ledger rates
     Powers endPowers_;                       // of the last stage, when it is the projected end
     ProjectionResult endProjection_;
@@ -102,7 +112,7 @@ private:
     Rosenbrock ros_;
     std::vector<Eigen::VectorXd> uq_, uv_;
     std::vector<Eigen::Vector3d> ul_;
-    Eigen::VectorXd rq_, mask_, keep_, kept_, rest_, rhs_, mu_, jmu_;
+    Eigen::VectorXd rq_, mask_, keep_, kept_, rest_, mu_, jmu_;
     std::vector<double> stiffness_;              // d(moment)/d(angle) per body, N m/rad
     std::vector<Eigen::Vector2d> stiffInverse_;  // (1/m', 1/I') per body
     ScratchPinSolver stiff_;  // assembled at the start of every step
