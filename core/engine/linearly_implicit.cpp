@@ -18,6 +18,7 @@
 #include <Eigen/LU>
 
 #include <algorithm>
+#include <cmath>
 
 namespace jl {
 
@@ -60,26 +61,34 @@ Stepper::Rosenbrock Stepper::rosenbrockTableau() {
 // (a compressed pin's negative stiffness is left out: it would lower the
 // inertia, possibly to zero, and a W-method keeps its order without it).
 void Stepper::stiffMass(const World& w, Dynamics& d, double s) {
-    const int bodies = w.bodyCount();
-    stiffInverse_.assign(size_t(bodies), Eigen::Vector2d::Zero());
-    mask_ = (w.invMassDiag.array() != 0).cast<double>();
-    keep_.setZero(w.q.size());
-    stiffness_.assign(size_t(bodies), 0.0);
-    const std::vector<Pin>& pins = w.pins();
+    const size_t bodies = size_t(w.bodyCount());
+    const Eigen::Index n = w.q.size();
+    // Which coordinates move (the inverse masses' pattern) changes only with
+    // the world's revision; the rest is written whole, once a step.
+    if (maskRevision_ != w.revision() || mask_.size() != n) {
+        mask_ = (w.invMassDiag.array() != 0).cast<double>();
+        maskRevision_ = w.revision();
+    }
+    stiffInverse_.resize(bodies);
+    keep_.resize(n);
+    stiffness_.assign(bodies, 0.0);
+    const PinSolver& solver = d.solver();
     const Eigen::VectorXd& lambda = d.pinForces();
-    for (size_t i = 0; i < pins.size(); ++i) {
+    for (int i = 0; i < solver.pinCount(); ++i) {
         const Vec2 l = lambda.segment<2>(2 * Eigen::Index(i));
-        stiffness_[size_t(pins[i].bodyA)] -= d.solver().armA(int(i)).dot(l);
-        stiffness_[size_t(pins[i].bodyB)] += d.solver().armB(int(i)).dot(l);
+        stiffness_[size_t(solver.bodyA(i))] -= solver.armA(i).dot(l);
+        stiffness_[size_t(solver.bodyB(i))] += solver.armB(i).dot(l);
     }
     // From the world's flat inverse masses (zero for held and dead bodies,
     // which then keep zeros): a Body is a long stride to read two numbers from.
-    for (int b = 0; b < bodies; ++b) {
-        const double invMass = w.invMassDiag[3 * b], invInertia = w.invMassDiag[3 * b + 2];
-        const double raise = 1 + s * invInertia * std::max(0.0, -stiffness_[size_t(b)]);
-        stiffInverse_[size_t(b)] = {invMass, invInertia / raise};
-        keep_.segment<3>(3 * b) = mask_.segment<3>(3 * b).cwiseProduct(Eigen::Vector3d(1, 1, 1 / raise));
+    for (size_t b = 0; b < bodies; ++b) {
+        const Eigen::Index i = 3 * Eigen::Index(b);
+        const double invMass = w.invMassDiag[i], invInertia = w.invMassDiag[i + 2];
+        const double raise = 1 + s * invInertia * std::max(0.0, -stiffness_[b]);
+        stiffInverse_[b] = {invMass, invInertia / raise};
+        keep_.segment<3>(i) = mask_.segment<3>(i).cwiseProduct(Eigen::Vector3d(1, 1, 1 / raise));
     }
+    for (Eigen::Index i = 3 * Eigen::Index(bodies); i < n; ++i) keep_[i] = 0;
     stiff_.solver.assemble(w, stiffInverse_);
 }
 
@@ -93,7 +102,7 @@ void Stepper::stiffMass(const World& w, Dynamics& d, double s) {
 // x = y + M'^{-1} J^T mu. What is known before the solve is formed in one
 // pass over the coordinates, and what follows it in one more: on a long
 // chain each pass streams every vector it touches from memory.
-void Stepper::rosenbrockStage(const World& w, int i, double h) {
+void Stepper::rosenbrockStage(World& w, int i, double h) {
     const Rosenbrock& r = ros_;
     const double hg = h * r.gamma;
     const Eigen::Index n = w.v.size();
@@ -123,9 +132,42 @@ void Stepper::rosenbrockStage(const World& w, int i, double h) {
     Eigen::VectorXd& uvi = uv_[size_t(i)];
     uqi.resize(n);
     uvi.resize(n);
+    // In the same pass, what follows from the increments: the next stage's
+    // state y0 + sum_j a_(i+1)j u_j, or after the last stage the step's end
+    // y0 + sum_j m_j u_j, summed as combineStages sums them (the terms with
+    // a zero coefficient left out, in the order of j), while u_i is at hand.
+    const double* next = i + 1 < Rosenbrock::stages ? r.a[i + 1] : r.m;
+    int terms = 0;
+    double cn[Rosenbrock::stages];
+    const double* nq[Rosenbrock::stages];
+    const double* nv[Rosenbrock::stages];
+    for (int j = 0; j < i; ++j) {
+        if (next[j] == 0) continue;
+        cn[terms] = next[j];
+        nq[terms] = uq[j];
+        nv[terms++] = uv[j];
+    }
+    const double ci = next[i];
+    w.q.resize(n);
+    w.v.resize(n);
+    double *q1 = w.q.data(), *v1 = w.v.data();
+    const double *q0 = q0_.data(), *v0 = v0_.data();
     const auto finish = [&](Eigen::Index e, double x) {
-        uvi[e] = (kept_[e] + x) - rq_[e];
-        uqi[e] = hg * (rq_[e] + uvi[e]);
+        const double dv = (kept_[e] + x) - rq_[e];
+        const double dq = hg * (rq_[e] + dv);
+        uvi[e] = dv;
+        uqi[e] = dq;
+        double sq = q0[e], sv = v0[e];
+        for (int j = 0; j < terms; ++j) {
+            sq = sq + cn[j] * nq[j][e];
+            sv = sv + cn[j] * nv[j][e];
+        }
+        if (ci != 0) {
+            sq = sq + ci * dq;
+            sv = sv + ci * dv;
+        }
+        q1[e] = sq;
+        v1[e] = sv;
     };
     const Eigen::Index bodies = std::min<Eigen::Index>(w.bodyCount(), n / 3);
     for (Eigen::Index b = 0; b < bodies; ++b) {
@@ -140,18 +182,8 @@ void Stepper::rosenbrockStage(const World& w, int i, double h) {
 double Stepper::rosenbrockAttempt(World& w, Dynamics& d, double t, double h, Ledger& ledger) {
     const Rosenbrock& r = ros_;
     const double hg = h * r.gamma;
-    const Eigen::Index n = w.q.size();
-    const Eigen::VectorXd* uq[Rosenbrock::stages];
-    const Eigen::VectorXd* uv[Rosenbrock::stages];
+    // Each stage leaves the next one's state in w (the last the step's end).
     for (int i = 0; i < Rosenbrock::stages; ++i) {
-        uq[i] = &uq_[size_t(i)];
-        uv[i] = &uv_[size_t(i)];
-    }
-    for (int i = 0; i < Rosenbrock::stages; ++i) {
-        if (i > 0) {
-            combineStages(w.q, &q0_, StageTerms(1.0, r.a[i], uq, size_t(i)), n);
-            combineStages(w.v, &v0_, StageTerms(1.0, r.a[i], uv, size_t(i)), n);
-        }
         const Powers p = d.evaluate(w, t + r.alpha[i] * h, t + h / 2);
         if (i == 0) stiffMass(w, d, hg * hg);
         rosenbrockStage(w, i, h);
@@ -159,12 +191,16 @@ double Stepper::rosenbrockAttempt(World& w, Dynamics& d, double t, double h, Led
         for (int j = 0; j < i; ++j) rl += (r.c[i][j] / h) * ul_[size_t(j)];
         ul_[size_t(i)] = hg * rl;  // the books have no stiff part: W is 0 there
     }
-    combineStages(w.q, &q0_, StageTerms(1.0, r.m, uq, Rosenbrock::stages), n);
-    combineStages(w.v, &v0_, StageTerms(1.0, r.m, uv, Rosenbrock::stages), n);
     for (int i = 0; i < Rosenbrock::stages; ++i) {
         ledger.held += r.m[i] * ul_[size_t(i)][0];
         ledger.user += r.m[i] * ul_[size_t(i)][1];
         ledger.damping += r.m[i] * ul_[size_t(i)][2];
+    }
+    const Eigen::VectorXd* uq[Rosenbrock::stages];
+    const Eigen::VectorXd* uv[Rosenbrock::stages];
+    for (int i = 0; i < Rosenbrock::stages; ++i) {
+        uq[i] = &uq_[size_t(i)];
+        uv[i] = &uv_[size_t(i)];
     }
     return errorNorm(w, StageTerms(1.0, r.e, uq, Rosenbrock::stages), StageTerms(1.0, r.e, uv, Rosenbrock::stages));
 }

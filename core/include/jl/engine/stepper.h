@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <vector>
 
 namespace jl {
@@ -94,7 +95,7 @@ private:
                    double projectionTolerance);
     double rosenbrockAttempt(World& w, Dynamics& d, double t, double h, Ledger& ledger);
     void stiffMass(const World& w, Dynamics& d, double s);
-    void rosenbrockStage(const World& w, int i, double h);
+    void rosenbrockStage(World& w, int i, double h);
     void symplecticEuler(World& w, Dynamics& d, double t, double h, Ledger& ledger, const Powers* atStart);
     double errorNorm(const World& w, const StageTerms& errorQ, const StageTerms& errorV) const;
 
@@ -113,6 +114,7 @@ private:
     std::vector<Eigen::VectorXd> uq_, uv_;
     std::vector<Eigen::Vector3d> ul_;
     Eigen::VectorXd rq_, mask_, keep_, kept_, rest_, mu_, jmu_;
+    std::uint64_t maskRevision_ = 0;  // the World::revision mask_ was made for
     std::vector<double> stiffness_;              // d(moment)/d(angle) per body, N m/rad
     std::vector<Eigen::Vector2d> stiffInverse_;  // (1/m', 1/I') per body
     ScratchPinSolver stiff_;  // assembled at the start of every step
