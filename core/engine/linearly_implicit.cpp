@@ -18,7 +18,6 @@
 #include <Eigen/LU>
 
 #include <algorithm>
-#include <cmath>
 
 namespace jl {
 
@@ -134,8 +133,8 @@ void Stepper::rosenbrockStage(World& w, int i, double h) {
     uvi.resize(n);
     // In the same pass, what follows from the increments: the next stage's
     // state y0 + sum_j a_(i+1)j u_j, or after the last stage the step's end
-    // y0 + sum_j m_j u_j, summed as combineStages sums them (the terms with
-    // a zero coefficient left out, in the order of j), while u_i is at hand.
+    // y0 + sum_j m_j u_j, summed as the explicit methods' stage sums are (the
+    // terms with a zero coefficient left out, in the order of j), while u_i is at hand.
     const double* next = i + 1 < Rosenbrock::stages ? r.a[i + 1] : r.m;
     int terms = 0;
     double cn[Rosenbrock::stages];

@@ -32,25 +32,9 @@ void StageTerms::padTo(size_t count, const double* vector) {
 
 namespace {
 
-// The sum of M terms, M known to the compiler so that it can unroll the
-// terms and vectorize the elements.
-template <size_t M>
-void sumTerms(double* out, const double* base, const StageTerms& t, Eigen::Index n) {
-    if (base) {
-        for (Eigen::Index e = 0; e < n; ++e) {
-            double sum = base[e];
-            for (size_t i = 0; i < M; ++i) sum = sum + t.c[i] * t.x[i][e];
-            out[e] = sum;
-        }
-    } else {
-        for (Eigen::Index e = 0; e < n; ++e) {
-            double sum = 0.0;
-            for (size_t i = 0; i < M; ++i) sum = sum + t.c[i] * t.x[i][e];
-            out[e] = sum;
-        }
-    }
-}
-
+// A stage's positions and velocities side by side, M terms each, M known
+// to the compiler so that it can unroll the terms and vectorize the
+// elements.
 template <size_t M>
 void sumPair(double* q, const double* q0, const StageTerms& tq, double* v, const double* v0, const StageTerms& tv,
              Eigen::Index n) {
@@ -101,24 +85,6 @@ SquaresSum errorSquares(const ErrorNormInputs& in, const StageTerms& tq, const S
 }
 
 }  // namespace
-
-void combineStages(Eigen::VectorXd& out, const Eigen::VectorXd* base, const StageTerms& t, Eigen::Index n) {
-    out.resize(n);
-    const double* b = base ? base->data() : nullptr;
-    switch (t.m) {
-    case 0: sumTerms<0>(out.data(), b, t, n); break;
-    case 1: sumTerms<1>(out.data(), b, t, n); break;
-    case 2: sumTerms<2>(out.data(), b, t, n); break;
-    case 3: sumTerms<3>(out.data(), b, t, n); break;
-    case 4: sumTerms<4>(out.data(), b, t, n); break;
-    case 5: sumTerms<5>(out.data(), b, t, n); break;
-    case 6: sumTerms<6>(out.data(), b, t, n); break;
-    case 7: sumTerms<7>(out.data(), b, t, n); break;
-    case 8: sumTerms<8>(out.data(), b, t, n); break;
-    case 9: sumTerms<9>(out.data(), b, t, n); break;
-    default: sumTerms<10>(out.data(), b, t, n); break;
-    }
-}
 
 void combineStages(Eigen::VectorXd& q, const Eigen::VectorXd& q0, const StageTerms& termsQ, Eigen::VectorXd& v,
                    const Eigen::VectorXd& v0, const StageTerms& termsV, Eigen::Index n) {

@@ -30,13 +30,10 @@ struct StageTerms {
     void padTo(size_t count, const double* vector);
 };
 
-// out = base + c_0 k_0 + c_1 k_1 + ..., added in that order: bit for bit
-// what one axpy after another gives. `base` null: the sum starts from zero.
-// out may not be one of the terms.
-void combineStages(Eigen::VectorXd& out, const Eigen::VectorXd* base, const StageTerms& terms, Eigen::Index n);
-
-// q = q0 + (terms of q), v = v0 + (terms of v) in one pass over both: the
-// terms of a stage's positions and velocities read the same stage vectors.
+// q = q0 + c_0 x_0 + c_1 x_1 + ... (the terms of q, added in that order:
+// bit for bit what one axpy after another gives), and v likewise, in one
+// pass over both: a stage's positions and velocities read the same stage
+// vectors. q and v may not be among the terms.
 void combineStages(Eigen::VectorXd& q, const Eigen::VectorXd& q0, const StageTerms& termsQ, Eigen::VectorXd& v,
                    const Eigen::VectorXd& v0, const StageTerms& termsV, Eigen::Index n);
 
@@ -46,7 +43,7 @@ void combineStages(Eigen::VectorXd& q, const Eigen::VectorXd& q0, const StageTer
 // has, however many of them move as one (a locked pair, a still tail's
 // segment of hundreds of blocks), so that joining parts that move rigidly
 // changes what the error control asks of the step in nothing. The estimate
-// itself (errorQ, errorV: its terms, as combineStages sums them from zero)
+// itself (errorQ, errorV: its terms, summed from zero in their order)
 // is formed in the same pass and never stored.
 struct ErrorNormInputs {
     double tolerance = 0;
