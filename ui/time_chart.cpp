@@ -59,6 +59,12 @@ TimeChart::TimeChart(const QString& title, const QString& unit, QWidget* parent)
 
     chart()->addAxis(timeAxis_, Qt::AlignBottom);
     chart()->addAxis(valueAxis_, Qt::AlignLeft);
+    // The cursor and the event marks are painted over the scene, not items of
+    // it: when the plot moves (a wider label, the margins that line the charts
+    // up) or time is rescaled, the scene repaints only its own items, and
+    // marks drawn where the plot was would stay on screen.
+    connect(chart(), &QChart::plotAreaChanged, viewport(), qOverload<>(&QWidget::update));
+    connect(timeAxis_, &QValueAxis::rangeChanged, viewport(), qOverload<>(&QWidget::update));
     fonts_ = {chart()->titleFont(), chart()->legend()->font(), timeAxis_->labelsFont(), timeAxis_->titleFont()};
     setToolTip(tr("Click to see that moment. Click a name in the legend to hide or show its curve."));
 }
@@ -125,10 +131,12 @@ void TimeChart::setCursorTime(double t) {
     if (t == cursor_) return;
     // Only the strips under the old and the new cursor: repainting whole
     // charts 60 times a second costs the window its responsiveness.
+    // The old strip is where the cursor was painted, not where cursor_ maps
+    // to now: the plot may have moved since.
     const QRect view = viewport()->rect();
     const int pad = large_ ? 4 : 3;
-    for (double x : {viewPointOf(cursor_, 0).x(), viewPointOf(t, 0).x()})
-        viewport()->update(QRect(int(x) - pad, view.top(), 2 * pad + 1, view.height()));
+    for (double x : {paintedCursorX_, viewPointOf(t, 0).x()})
+        if (std::isfinite(x)) viewport()->update(QRect(int(x) - pad, view.top(), 2 * pad + 1, view.height()));
     cursor_ = t;
 }
 
@@ -230,8 +238,11 @@ void TimeChart::drawForeground(QPainter* painter, const QRectF& rect) {
     painter->setRenderHint(QPainter::Antialiasing);
     if (cursor_ >= t0 && cursor_ <= t1) {
         const double x = xOf(cursor_);
+        paintedCursorX_ = mapFromScene(QPointF(x, plot.top())).x();
         painter->setPen(QPen(QColor(200, 30, 30), large_ ? 3.0 : 1.6));
         painter->drawLine(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
+    } else {
+        paintedCursorX_ = std::numeric_limits<double>::quiet_NaN();
     }
     painter->restore();
 }

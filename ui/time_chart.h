@@ -8,6 +8,7 @@
 #include <QFont>
 #include <QPointF>
 
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -66,6 +67,7 @@ private:
     QValueAxis* timeAxis_;
     QValueAxis* valueAxis_;
     double cursor_ = 0;
+    double paintedCursorX_ = std::numeric_limits<double>::quiet_NaN();  // in the viewport, where drawForeground last drew the cursor
     bool large_ = false;
     bool fixedValues_ = false;
     std::pair<double, double> extra_{0, 0};

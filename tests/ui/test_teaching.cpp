@@ -17,6 +17,7 @@
 #include <QLineSeries>
 #include <QListWidget>
 #include <QMouseEvent>
+#include <QScreen>
 #include <QSignalSpy>
 #include <QSvgRenderer>
 #include <QTemporaryDir>
@@ -82,6 +83,55 @@ private slots:
         QVERIFY2(worst < 1e-6, qPrintable(QString("the books are off by %1 J").arg(worst)));
         // ...while the energy itself changes by far more: the flat line says something.
         QVERIFY(swing > 1e-2);
+    }
+
+    // What is on the screen is what a chart draws, while a run comes in
+    // frame by frame and its values grow a hundredfold (a block that starts
+    // to spin): the value axis widens, its labels grow, the plot moves right,
+    // and the cursor moves on. The cursor and the event marks are painted
+    // over the chart, so a repaint that forgot where they were left old
+    // cursors standing on screen.
+    void theScreenShowsWhatAChartDrawsWhileARunComesIn() {
+        TimeChart chart("Angular speeds", "rad/s");
+        QLineSeries* curve = chart.addCurve("block 1", QColor(255, 127, 14));
+        chart.resize(480, 230);
+        chart.setTimeRange(0, 5);
+        chart.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&chart));
+        auto events = std::make_shared<std::vector<jl::Event>>();
+        std::vector<QPointF> points;
+        int compared = 0;
+        for (int i = 0; i < 240; ++i) {
+            const double t = 0.0125 * i;
+            const double amplitude = std::pow(150.0, std::min(1.0, t / 2));
+            points.emplace_back(t, amplitude * std::sin(40 * t));
+            if (i % 16 == 0) events->push_back(jl::Event{t, jl::EventKind::Lock, 1, 0, "lock"});
+            chart.setPoints(curve, points);
+            chart.fitValues(1);
+            chart.setEvents(std::make_shared<const std::vector<jl::Event>>(*events));
+            chart.setCursorTime(t);
+            QTest::qWait(1);
+            if (i % 8 != 7) continue;
+            QTest::qWait(20);  // painted and flushed what it was asked to
+            const QPoint at = chart.mapToGlobal(QPoint(0, 0));
+            const QImage shown = chart.screen()
+                                     ->grabWindow(0, at.x(), at.y(), chart.width(), chart.height())
+                                     .toImage()
+                                     .convertToFormat(QImage::Format_RGB32);
+            const QImage drawn = chart.grab().toImage().convertToFormat(QImage::Format_RGB32);
+            QCOMPARE(shown.size(), drawn.size());
+            int differing = 0;
+            for (int y = 0; y < drawn.height(); ++y)
+                for (int x = 0; x < drawn.width(); ++x) {
+                    const QColor a = shown.pixelColor(x, y), b = drawn.pixelColor(x, y);
+                    differing +=
+                        std::abs(a.red() - b.red()) + std::abs(a.green() - b.green()) + std::abs(a.blue() - b.blue()) > 60;
+                }
+            QVERIFY2(differing == 0,
+                     qPrintable(QString("%1 pixels on screen at t = %2 s differ from a fresh drawing").arg(differing).arg(t)));
+            ++compared;
+        }
+        QCOMPARE(compared, 30);
     }
 
     void decimationKeepsEveryPeakOfALongRun() {
