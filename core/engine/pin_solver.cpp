@@ -205,10 +205,7 @@ void PinSolver::accelerations(World& w, const Eigen::VectorXd& force, Eigen::Vec
         for (size_t i = 0; i < welds_.size(); ++i)
             rhs_[Eigen::Index(2 * pins_.size() + i)] =
                 -(welds_[i].arm * (unconstrained(welds_[i].bodyA)[2] - unconstrained(welds_[i].bodyB)[2]));
-        if (stale)
-            factorAndSolve(w, rhs_, lambda);
-        else
-            solve(rhs_, lambda);
+        solvePrepared(w, stale, rhs_, lambda);
         jv_ = force;
         addJTranspose(lambda, jv_);
         for (int b = 0; b < w.bodyCount(); ++b)

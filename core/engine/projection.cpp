@@ -74,10 +74,7 @@ ProjectionResult projectPositions(World& w, PinSolver& solver, double tolerance,
         ++r.iterations;
         // Newton step: J dq = -C with dq = W J^T x.
         gap = -gap;
-        if (solver.prepare(w))
-            solver.factorAndSolve(w, gap, x);
-        else
-            solver.solve(gap, x);
+        solver.solvePrepared(w, solver.prepare(w), gap, x);
         dq.setZero(w.q.size());
         solver.addJTranspose(x, dq);
         dq.array() *= w.invMassDiag.array();
@@ -110,10 +107,7 @@ void projectVelocities(World& w, PinSolver& solver, Eigen::VectorXd* impulses) {
     const bool stale = solver.prepare(w);
     solver.multiplyJ(w.v, jv);
     jv = -jv;
-    if (stale)
-        solver.factorAndSolve(w, jv, x);
-    else
-        solver.solve(jv, x);
+    solver.solvePrepared(w, stale, jv, x);
     dv.setZero(w.v.size());
     solver.addJTranspose(x, dv);
     w.v.array() += dv.array() * w.invMassDiag.array();

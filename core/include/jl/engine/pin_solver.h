@@ -35,6 +35,13 @@ public:
     // factorises and solves in one sweep, else solve() uses the one in hand.
     bool prepare(const World& w);
     void factorAndSolve(const World& w, const Eigen::VectorXd& r, Eigen::VectorXd& x);
+    // The one or the other, as prepare() said (`stale`).
+    void solvePrepared(const World& w, bool stale, const Eigen::VectorXd& r, Eigen::VectorXd& x) {
+        if (stale)
+            factorAndSolve(w, r, x);
+        else
+            solve(r, x);
+    }
     // The dynamics' accelerations: assembles at the world's positions, then
     // sets every dynamic body's a = W (f + J^T lambda) with the pins' forces
     // lambda that hold J a + (the pins' velocity terms) = 0; f: the applied
