@@ -270,20 +270,29 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
     const int n = int(std::min(frame_->poses.size(), shapes_.size()));
     const double blockPixels = shapes_.empty() ? 0 : shapes_.front().along * map.scale;
     const double thicknessPixels = shapes_.empty() ? 0 : shapes_.front().across * map.scale;
-    // A long ladder seen whole is a thread: each block a line along its
-    // length, drawn in one call per colour; no ribbons (they would coincide).
+    // A long ladder seen whole is a thread: the blocks' centre lines, end to
+    // end, one polyline per run of a colour; no ribbons (they would
+    // coincide). A point goes in once the thread has moved half a pixel:
+    // at 100,000 blocks a block is a few thousandths of a pixel, and a line
+    // that short is not drawn at all (the ladder vanished from the view).
     const bool thread = thicknessPixels < 2.5;
     // Blocks first, ribbons over their faces, hinges and words on top.
     if (thread) {
-        QVector<QLineF> lines;
+        QPolygonF line;
+        const auto add = [&line](const QPointF& at, bool always) {
+            if (line.isEmpty() || always || QLineF(line.back(), at).length() >= 0.5) line.append(at);
+        };
         for (int i = 0; i < std::min(n, firstParticle_); ++i) {
             const auto c = corners(i);
-            lines.append(QLineF(map((c[0] + c[2]) / 2), map((c[1] + c[3]) / 2)));
             const bool last = i + 1 >= std::min(n, firstParticle_) || shapes_[size_t(i + 1)].color != shapes_[size_t(i)].color;
+            add(map((c[0] + c[2]) / 2), false);
+            add(map((c[1] + c[3]) / 2), last);
             if (!last) continue;
-            p.setPen(QPen(shapes_[size_t(i)].color.darker(120), std::max(1.2, thicknessPixels), Qt::SolidLine, Qt::FlatCap));
-            p.drawLines(lines);
-            lines.clear();
+            if (line.size() == 1) line.append(line.back());
+            p.setPen(QPen(shapes_[size_t(i)].color.darker(120), std::max(1.2, thicknessPixels), Qt::SolidLine, Qt::SquareCap,
+                          Qt::BevelJoin));
+            p.drawPolyline(line);
+            line.clear();
         }
     } else {
         for (int i = 0; i < std::min(n, firstParticle_); ++i) {

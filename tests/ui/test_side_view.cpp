@@ -246,6 +246,42 @@ private slots:
         QVERIFY2(lines >= 1 && lines <= 6, qPrintable(QString("%1 grid lines across 400 px").arg(lines)));
     }
 
+    // A ladder of any length seen whole is a thread from its top block to
+    // its last: at 100,000 blocks a block is a few thousandths of a pixel,
+    // and drawn one by one the ladder left no mark at all.
+    void aLadderOfAnyLengthIsSeenWholeAsAThread() {
+        for (int blocks : {1000, 10000, 100000}) {
+            jl::Scene scene;
+            scene.ladder = jl::LadderSpec{};
+            scene.ladder->blocks = blocks;
+            SideView view;
+            view.setScene(scene);
+            const jl::Frame frame = runHeadless(scene, 0.0).frames.front();
+            view.showFrame(frame);
+            const QSize size(400, 500);
+            const QImage image = view.render(size);
+            const QRectF target(QPointF(0, 0), QSizeF(size));
+            const QPointF top = view.pixelOf(frame.poses.front().position, target);
+            const QPointF bottom = view.pixelOf(frame.poses[size_t(blocks - 1)].position, target);
+            QVERIFY(bottom.y() - top.y() > 200);  // seen whole, and long on screen
+            // The thread (the blocks' colour, darkened, over a near-white
+            // background and light grid) near every point of the line between them.
+            const QColor background = image.pixelColor(2, size.height() / 2);
+            const auto dark = [&](const QColor& c) {
+                return c.red() + c.green() + c.blue() < background.red() + background.green() + background.blue() - 90;
+            };
+            int missing = 0, samples = 0;
+            for (double y = top.y() + 2; y < bottom.y() - 2; y += 4, ++samples) {
+                const double x = top.x() + (bottom.x() - top.x()) * (y - top.y()) / (bottom.y() - top.y());
+                bool found = false;
+                for (int dx = -3; dx <= 3 && !found; ++dx)
+                    found = dark(image.pixelColor(int(std::lround(x)) + dx, int(y)));
+                missing += !found;
+            }
+            QVERIFY2(missing == 0, qPrintable(QString("%1 blocks: no thread at %2 of %3 heights").arg(blocks).arg(missing).arg(samples)));
+        }
+    }
+
     void theSideViewLegendFitsANarrowView() {
         ClassicAtRest c;
         SideView& view = c.view;
