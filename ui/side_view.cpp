@@ -288,7 +288,6 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
             add(map((c[0] + c[2]) / 2), false);
             add(map((c[1] + c[3]) / 2), last);
             if (!last) continue;
-            if (line.size() == 1) line.append(line.back());
             p.setPen(QPen(shapes_[size_t(i)].color.darker(120), std::max(1.2, thicknessPixels), Qt::SolidLine, Qt::SquareCap,
                           Qt::BevelJoin));
             p.drawPolyline(line);
