@@ -538,9 +538,30 @@ std::optional<std::pair<int, Vec2>> Simulation::pick(const Vec2& point) const {
     return std::nullopt;
 }
 
+Simulation::~Simulation() = default;
+
 std::shared_ptr<const Snapshot> Simulation::snapshot() const {
     return std::make_shared<const Snapshot>(Snapshot{world_, ladder_, stepper_, ledger_, t_, impactLoss_,
                                                      impactHeldWork_, nextAction_, nextDragSample_, stats_});
+}
+
+const Snapshot& Simulation::keepTrialStart() {
+    if (!trialStart_) {
+        trialStart_ = std::make_unique<Snapshot>(*snapshot());
+        return *trialStart_;
+    }
+    Snapshot& s = *trialStart_;
+    s.world = world_;
+    s.ladder = ladder_;
+    s.stepper = stepper_;
+    s.ledger = ledger_;
+    s.t = t_;
+    s.impactLoss = impactLoss_;
+    s.impactHeldWork = impactHeldWork_;
+    s.nextAction = nextAction_;
+    s.nextDragSample = nextDragSample_;
+    s.stats = stats_;
+    return s;
 }
 
 // Restores the state; recorded drags stay, so carrying on replays them.

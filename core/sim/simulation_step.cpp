@@ -231,7 +231,7 @@ void Simulation::settleHolds(double limit) {
 // If j closed again, or the run did not get a whole Zeno time, everything is
 // put back; otherwise the run carries on from where the trial got to.
 Simulation::Trial Simulation::tryLettingGo(int j, double limit) {
-    const std::shared_ptr<const Snapshot> before = snapshot();
+    const Snapshot& before = keepTrialStart();
     std::vector<Event> pending = std::exchange(pending_, {});
     const size_t gridFrames = gridFrames_.size();
     const double gridDoneUpTo = gridDoneUpTo_;
@@ -250,7 +250,7 @@ Simulation::Trial Simulation::tryLettingGo(int j, double limit) {
         pending_ = std::move(pending);
         return Trial::Kept;
     }
-    restore(*before);
+    restore(before);
     pending_ = std::move(pending);
     gridFrames_.resize(gridFrames);  // the trial's frames go with it
     gridDoneUpTo_ = gridDoneUpTo;

@@ -108,6 +108,7 @@ public:
 
     std::shared_ptr<const Snapshot> snapshot() const;
     void restore(const Snapshot& s);
+    ~Simulation();
     // FNV-1a over the bits of every block pose and velocity and the hinge modes.
     std::uint64_t stateHash() const;
 
@@ -142,6 +143,7 @@ private:
     void settleHolds(double limit);
     enum class Trial { ClosedAgain, Kept, Undecided };
     Trial tryLettingGo(int j, double limit);
+    const Snapshot& keepTrialStart();  // snapshot() into trialStart_, its storage reused
     void fail(const std::string& why);
 
     static constexpr double kOpenEnd = std::numeric_limits<double>::max();  // no time limit
@@ -173,6 +175,10 @@ private:
     double stepScale_ = 1;  // automatic step: halved after each step that blew up
     double imbalanceBase_ = 0;  // J, the books' imbalance at the last halving (the check watches growth past it)
     bool trial_ = false;  // inside tryLettingGo: holds are not settled
+    // The state a trial started from, copied into the same storage each time:
+    // a fresh copy of the world allocated every body's list of parts anew
+    // (a tenth of a run that chatters).
+    std::unique_ptr<Snapshot> trialStart_;
     // Kept from step to step so that stepping allocates nothing.
     Eigen::VectorXd stepStartQ_, stepStartV_;  // the state the step started from
     Ledger stepStartLedger_;
