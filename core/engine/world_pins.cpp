@@ -12,12 +12,15 @@ namespace jl {
 void World::rebuildPins() const {
     pinsStale_ = false;
     pins_.clear();
+    // The bodies a particle already joins; one list for all of them (a list
+    // per particle was an allocation each, at every change of structure).
+    thread_local std::vector<int> done;
     for (ParticleId id = 0; id < particleCount(); ++id) {
         const Particle& p = particles_[id];
         if (p.mergedInto >= 0 || p.at.size() < 2) continue;
         const Attachment& first = p.at.front();
         const int ba = parts_[first.part].body;
-        std::vector<int> done{ba};
+        done.assign(1, ba);
         for (size_t i = 1; i < p.at.size(); ++i) {
             const int bb = parts_[p.at[i].part].body;
             if (std::find(done.begin(), done.end(), bb) != done.end()) continue;
