@@ -16,14 +16,18 @@ namespace jl {
 // the unions (hence of the groups, hence of the bodies) is the one the
 // operations have always had, so trajectories stay the same bit for bit.
 std::vector<std::vector<PartId>> World::rigidGroups(const std::vector<PartId>& parts) const {
-    std::vector<std::pair<PartId, int>> index(parts.size());
+    // Scratch kept from call to call: a ladder regroups two bodies at every
+    // lock, fold and trial, and fresh vectors were most of what that cost.
+    thread_local std::vector<std::pair<PartId, int>> index;
+    index.resize(parts.size());
     for (int i = 0; i < int(parts.size()); ++i) index[size_t(i)] = {parts[size_t(i)], i};
     std::sort(index.begin(), index.end());
     const auto indexOf = [&](PartId p) {
         const auto it = std::lower_bound(index.begin(), index.end(), std::pair<PartId, int>{p, -1});
         return it != index.end() && it->first == p ? it->second : -1;
     };
-    std::vector<int> root(parts.size());
+    thread_local std::vector<int> root;
+    root.resize(parts.size());
     std::iota(root.begin(), root.end(), 0);
     auto find = [&](int i) {
         while (root[size_t(i)] != i) i = root[size_t(i)] = root[size_t(root[size_t(i)])];
@@ -33,14 +37,28 @@ std::vector<std::vector<PartId>> World::rigidGroups(const std::vector<PartId>& p
 
     // Two extended parts sharing two distinct particles are rigid together;
     // a point part is rigid with anything it shares a particle with.
-    std::vector<ParticleId> seen;
+    thread_local std::vector<ParticleId> seen;
+    seen.clear();
     for (PartId part : parts)
         for (ParticleId id : particlesOfPart_[size_t(part)])
             if (isLive(id)) seen.push_back(id);
     std::sort(seen.begin(), seen.end());
     seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
-    std::unordered_map<std::uint64_t, int> shared;
-    std::vector<int> members;
+    // How many particles each pair of parts shares so far: a short list
+    // searched in order for the few parts of a lock or a trial, a hash for
+    // the thousands of a still tail.
+    constexpr size_t kFewParts = 16;
+    const bool few = parts.size() <= kFewParts;
+    thread_local std::vector<std::pair<std::uint64_t, int>> sharedFew;
+    sharedFew.clear();
+    std::unordered_map<std::uint64_t, int> sharedMany;
+    const auto sharedCount = [&](std::uint64_t key) -> int& {
+        if (!few) return sharedMany[key];
+        for (auto& [k, count] : sharedFew)
+            if (k == key) return count;
+        return sharedFew.emplace_back(key, 0).second;
+    };
+    thread_local std::vector<int> members;
     for (ParticleId id : seen) {
         members.clear();
         for (const Attachment& x : particles_[size_t(id)].at)
@@ -53,11 +71,12 @@ std::vector<std::vector<PartId>> World::rigidGroups(const std::vector<PartId>& p
                 const std::uint64_t key = (std::uint64_t(std::uint32_t(x)) << 32) | std::uint32_t(y);
                 // In weld mode two extended parts stay apart: a weld holds them.
                 if (parts_[size_t(parts[size_t(x)])].isPoint || parts_[size_t(parts[size_t(y)])].isPoint ||
-                    (++shared[key] >= 2 && !weldRigidPairs_))
+                    (++sharedCount(key) >= 2 && !weldRigidPairs_))
                     unite(x, y);
             }
     }
-    std::vector<std::pair<int, PartId>> byRoot(parts.size());
+    thread_local std::vector<std::pair<int, PartId>> byRoot;
+    byRoot.resize(parts.size());
     for (int i = 0; i < int(parts.size()); ++i) byRoot[size_t(i)] = {find(i), parts[size_t(i)]};
     std::sort(byRoot.begin(), byRoot.end());
     std::vector<std::vector<PartId>> out;
