@@ -1,5 +1,7 @@
 #include "jl/sim/simulation.h"
 
+#include "snapshot.h"
+
 #include "jl/engine/energy.h"
 #include "jl/engine/motion.h"
 #include "jl/engine/projection.h"
@@ -47,17 +49,6 @@ double particleSpread(const World& w, ParticleId id) {
 }
 
 }  // namespace
-
-struct Snapshot {
-    World world;
-    std::optional<Ladder> ladder;
-    Stepper stepper;
-    Ledger ledger;
-    double t = 0, impactLoss = 0, impactHeldWork = 0;
-    size_t nextAction = 0;
-    std::vector<size_t> nextDragSample;
-    SolverFrame stats;
-};
 
 Simulation::Simulation(const Scene& scene)
     : scene_(scene), stepper_(scene.solver.integrator, scene.solver.tolerance) {}
@@ -536,74 +527,6 @@ std::optional<std::pair<int, Vec2>> Simulation::pick(const Vec2& point) const {
             return std::make_pair(i, local);
     }
     return std::nullopt;
-}
-
-Simulation::~Simulation() = default;
-
-std::shared_ptr<const Snapshot> Simulation::snapshot() const {
-    return std::make_shared<const Snapshot>(Snapshot{world_, ladder_, stepper_, ledger_, t_, impactLoss_,
-                                                     impactHeldWork_, nextAction_, nextDragSample_, stats_});
-}
-
-const Snapshot& Simulation::keepTrialStart() {
-    if (!trialStart_) {
-        trialStart_ = std::make_unique<Snapshot>(*snapshot());
-        return *trialStart_;
-    }
-    Snapshot& s = *trialStart_;
-    s.world = world_;
-    s.ladder = ladder_;
-    s.stepper = stepper_;
-    s.ledger = ledger_;
-    s.t = t_;
-    s.impactLoss = impactLoss_;
-    s.impactHeldWork = impactHeldWork_;
-    s.nextAction = nextAction_;
-    s.nextDragSample = nextDragSample_;
-    s.stats = stats_;
-    return s;
-}
-
-// Restores the state; recorded drags stay, so carrying on replays them.
-void Simulation::restore(const Snapshot& s) {
-    world_ = s.world;
-    ladder_ = s.ladder;
-    stepper_ = s.stepper;
-    ledger_ = s.ledger;
-    t_ = s.t;
-    impactLoss_ = s.impactLoss;
-    impactHeldWork_ = s.impactHeldWork;
-    nextAction_ = s.nextAction;
-    nextDragSample_ = s.nextDragSample;
-    nextDragSample_.resize(scene_.drags.size(), 0);
-    stats_ = s.stats;
-    dynamics_.solver().reset();  // its caches belong to the structure it last saw
-    dynamics_.evaluate(world_, t_);
-    liveDrag_ = -1;
-    pending_.clear();
-    gridDoneUpTo_ = std::min(gridDoneUpTo_, t_);  // grid instants after the restored time come again
-    failure_.clear();
-}
-
-std::uint64_t Simulation::stateHash() const {
-    std::uint64_t h = 1469598103934665603ull;
-    auto mix = [&](const void* data, size_t n) {
-        const auto* p = static_cast<const unsigned char*>(data);
-        for (size_t i = 0; i < n; ++i) h = (h ^ p[i]) * 1099511628211ull;
-    };
-    mix(&t_, sizeof t_);
-    for (PartId p : blocks_) {
-        const Pose pose = world_.partPose(p);
-        const Twist vel = world_.partVelocity(p);
-        const double x[6] = {pose.position.x(), pose.position.y(), pose.angle, vel.linear.x(), vel.linear.y(), vel.angular};
-        mix(x, sizeof x);
-    }
-    if (ladder_)
-        for (int j = 1; j < ladder_->blockCount(); ++j) {
-            const int state[2] = {int(ladder_->hinge(j).mode), ladder_->hinge(j).corner};
-            mix(state, sizeof state);
-        }
-    return h;
 }
 
 }  // namespace jl

@@ -18,6 +18,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -144,6 +145,12 @@ private:
     enum class Trial { ClosedAgain, Kept, Undecided };
     Trial tryLettingGo(int j, double limit);
     const Snapshot& keepTrialStart();  // snapshot() into trialStart_, its storage reused
+    // What a Snapshot holds, in its order (simulation_snapshot.cpp).
+    template <class Self>
+    static auto stateOf(Self& s) {
+        return std::tie(s.world_, s.ladder_, s.stepper_, s.ledger_, s.t_, s.impactLoss_, s.impactHeldWork_,
+                        s.nextAction_, s.nextDragSample_, s.stats_);
+    }
     void fail(const std::string& why);
 
     static constexpr double kOpenEnd = std::numeric_limits<double>::max();  // no time limit
