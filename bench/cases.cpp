@@ -82,9 +82,9 @@ bool advanceFor(World& w, Integrator kind, double p, double duration, double pro
 }
 
 void log(const BenchRow& r) {
-    std::fprintf(stderr, "  %-10s %-30s N=%-6d %s=%.1e  cost %.3e s/s  error %.3e%s\n", r.study.c_str(), r.method.c_str(),
-                 r.blocks, namesAdaptiveMethod(r.method) ? "tol" : "h", r.parameter,
-                 r.cost, r.error, r.finished ? "" : "  (failed)");
+    std::fprintf(stderr, "  %-10s %-30s N=%-6d %s=%.1e  cost %.3e s/s  error %.3e%s\n", r.study.c_str(),
+                 r.method.c_str(), r.blocks, namesAdaptiveMethod(r.method) ? "tol" : "h", r.parameter, r.cost, r.error,
+                 r.finished ? "" : "  (failed)");
 }
 
 }  // namespace
@@ -106,10 +106,11 @@ std::vector<BenchRow> pendulumStudy(const BenchPlan& plan) {
     const double period = pendulumPeriod(ip, mass, g, r, theta0);
     const Vec2 corner(-L / 2, -T / 2);
     const double rest = std::numbers::pi / 2 - std::atan2(corner.y(), corner.x());
-    const std::vector<double> perPeriod = plan.quick ? std::vector<double>{100, 1000, 10000}
-                                                     : std::vector<double>{50, 100, 300, 1000, 3000, 10000, 30000, 100000};
-    const std::vector<double> tolerances = plan.quick ? std::vector<double>{1e-4, 1e-8, 1e-12}
-                                                      : std::vector<double>{1e-3, 1e-5, 1e-7, 1e-9, 1e-11, 1e-12};
+    const std::vector<double> perPeriod = plan.quick
+                                              ? std::vector<double>{100, 1000, 10000}
+                                              : std::vector<double>{50, 100, 300, 1000, 3000, 10000, 30000, 100000};
+    const std::vector<double> tolerances =
+        plan.quick ? std::vector<double>{1e-4, 1e-8, 1e-12} : std::vector<double>{1e-3, 1e-5, 1e-7, 1e-9, 1e-11, 1e-12};
     std::vector<BenchRow> rows;
     for (const Method& m : methods()) {
         std::vector<double> steps;
@@ -122,7 +123,8 @@ std::vector<BenchRow> pendulumStudy(const BenchPlan& plan) {
                 w.combine(w.anchor(Vec2::Zero()), w.addParticle(block, corner));
                 if (!advanceFor(w, m.kind, p, period, 1e-12)) return false;
                 const double omegaScale = std::sqrt(mass * g * r / ip);
-                row.error = std::hypot(w.partPose(block).angle - rest - theta0, w.partVelocity(block).angular / omegaScale);
+                row.error =
+                    std::hypot(w.partPose(block).angle - rest - theta0, w.partVelocity(block).angular / omegaScale);
                 return true;
             };
             row.cost = timed(plan.minSeconds, once, row.finished) / period;
@@ -158,10 +160,11 @@ std::vector<BenchRow> chainStudy(const BenchPlan& plan, int n, bool independent,
         for (PartId p : parts) referenceOut.push_back(w.partPose(p).position);
     }
 
-    const std::vector<double> steps = plan.quick ? std::vector<double>{1e-3, 1e-4}
-                                                 : std::vector<double>{2e-3, 1e-3, 5e-4, 2.5e-4, 1e-4, 5e-5, 2e-5};
-    const std::vector<double> tolerances = plan.quick ? std::vector<double>{1e-5, 1e-9}
-                                                      : std::vector<double>{1e-3, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13};
+    const std::vector<double> steps =
+        plan.quick ? std::vector<double>{1e-3, 1e-4} : std::vector<double>{2e-3, 1e-3, 5e-4, 2.5e-4, 1e-4, 5e-5, 2e-5};
+    const std::vector<double> tolerances =
+        plan.quick ? std::vector<double>{1e-5, 1e-9}
+                   : std::vector<double>{1e-3, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13};
     std::vector<BenchRow> rows;
     for (const Method& m : methods())
         for (double p : parameters(m.kind, steps, tolerances)) {
@@ -172,7 +175,8 @@ std::vector<BenchRow> chainStudy(const BenchPlan& plan, int n, bool independent,
                 if (!advanceFor(w, m.kind, p, duration, 1e-10)) return false;
                 row.error = 0;
                 for (int i = 0; i < n; ++i)
-                    row.error = std::max(row.error, (w.partPose(parts[size_t(i)]).position - referenceOut[size_t(i)]).norm());
+                    row.error =
+                        std::max(row.error, (w.partPose(parts[size_t(i)]).position - referenceOut[size_t(i)]).norm());
                 return true;
             };
             row.cost = timed(plan.minSeconds, once, row.finished) / duration;
@@ -248,31 +252,42 @@ std::vector<BenchRow> ladderStudy(const BenchPlan& plan) {
             for (double p : c.params) {
                 Scene s = cascade(blocks, duration);
                 s.solver.integrator = c.kind;
-                if (adaptive(c.kind)) s.solver.tolerance = p; else s.solver.step = p;
+                if (adaptive(c.kind))
+                    s.solver.tolerance = p;
+                else
+                    s.solver.step = p;
                 s.solver.events = policy;
-                const std::string method = std::string(integratorWord(c.kind)) + (policy == EventPolicy::Located ? " located" : " end-of-step");
+                const std::string method = std::string(integratorWord(c.kind)) +
+                                           (policy == EventPolicy::Located ? " located" : " end-of-step");
                 BenchRow row{"ladder", method, blocks, p, 0, 0, true, ""};
                 CascadeResult result;
-                row.cost = timed(plan.minSeconds, [&] {
-                    result = runCascade(s);
-                    return result.failure.empty();
-                }, row.finished) / duration;
+                row.cost = timed(
+                               plan.minSeconds,
+                               [&] {
+                                   result = runCascade(s);
+                                   return result.failure.empty();
+                               },
+                               row.finished) /
+                           duration;
                 // Error: the worst block-centre distance at the end (m); the
                 // note: event sequence match and worst event-time error.
                 if (row.finished && result.poses.size() == reference.poses.size()) {
                     for (size_t i = 0; i < result.poses.size(); ++i)
-                        row.error = std::max(row.error, (result.poses[i].position - reference.poses[i].position).norm());
+                        row.error =
+                            std::max(row.error, (result.poses[i].position - reference.poses[i].position).norm());
                     size_t same = 0;
                     double worstTime = 0;
                     while (same < result.events.size() && same < reference.events.size() &&
                            result.events[same].kind == reference.events[same].kind &&
                            result.events[same].hinge == reference.events[same].hinge) {
-                        worstTime = std::max(worstTime, std::abs(result.events[same].time - reference.events[same].time));
+                        worstTime =
+                            std::max(worstTime, std::abs(result.events[same].time - reference.events[same].time));
                         ++same;
                     }
                     char note[160];
-                    std::snprintf(note, sizeof note, "%zu of %zu events in the reference order; worst time error %.2e s",
-                                  same, reference.events.size(), worstTime);
+                    std::snprintf(note, sizeof note,
+                                  "%zu of %zu events in the reference order; worst time error %.2e s", same,
+                                  reference.events.size(), worstTime);
                     row.note = note;
                 } else {
                     row.error = NAN;
@@ -287,8 +302,8 @@ std::vector<BenchRow> ladderStudy(const BenchPlan& plan) {
 // ---- scaling: cost per block-step against N ----
 
 std::vector<BenchRow> scalingStudy(const BenchPlan& plan) {
-    const std::vector<int> sizes = plan.quick ? std::vector<int>{10, 100, 1000}
-                                              : std::vector<int>{10, 100, 1000, 10000, 100000};
+    const std::vector<int> sizes =
+        plan.quick ? std::vector<int>{10, 100, 1000} : std::vector<int>{10, 100, 1000, 10000, 100000};
     const double blockSteps = plan.quick ? 2e5 : 2e6;
     // Each measurement is made again and again from the same start, and the
     // fastest counts: on a shared machine a run can be slowed by its
@@ -368,8 +383,8 @@ std::vector<BenchRow> scalingStudy(const BenchPlan& plan) {
                       c.rejected > 0 ? (" + " + std::to_string(c.rejected) + " rejected").c_str() : "",
                       row.finished ? "" : ", stopped: a step failed");
         row.note = note;
-        std::fprintf(stderr, "  scaling %-18s N=%-7d %5lld steps  %8.1f ns/block-step (fastest of %d)\n", row.method.c_str(),
-                     row.blocks, c.taken, row.error, c.repetitions);
+        std::fprintf(stderr, "  scaling %-18s N=%-7d %5lld steps  %8.1f ns/block-step (fastest of %d)\n",
+                     row.method.c_str(), row.blocks, c.taken, row.error, c.repetitions);
         rows.push_back(row);
     }
     return rows;
@@ -421,7 +436,10 @@ std::vector<BenchRow> longLadderRuns(int blocks, double duration) {
         s.script.front().at = 0.0;
         s.solver.integrator = c.kind;
         s.solver.stillTail = c.tail;
-        if (adaptive(c.kind)) s.solver.tolerance = c.parameter; else s.solver.step = c.parameter;
+        if (adaptive(c.kind))
+            s.solver.tolerance = c.parameter;
+        else
+            s.solver.step = c.parameter;
         return s;
     };
     const auto run = [&](const Config& c, Frame& f) {
@@ -462,7 +480,12 @@ std::vector<BenchRow> longLadderRuns(int blocks, double duration) {
                      std::string(integratorWord(c.kind)) + " located" +
                          (!adaptive(c.kind) && c.parameter == 0 ? " (the engine's step)" : "") +
                          (c.tail == StillTail::Separate ? ", full model" : ""),
-                     blocks, c.parameter, 0, NAN, true, ""};
+                     blocks,
+                     c.parameter,
+                     0,
+                     NAN,
+                     true,
+                     ""};
         row.finished = f.failure.empty();
         row.cost = cpu / std::max(f.time, 1e-300);
         if (i == 0) {
@@ -471,7 +494,8 @@ std::vector<BenchRow> longLadderRuns(int blocks, double duration) {
             row.error = 0;
         } else if (row.finished && f.poses.size() == exact.size()) {
             row.error = 0;
-            for (size_t k = 0; k < exact.size(); ++k) row.error = std::max(row.error, (f.poses[k].position - exact[k].position).norm());
+            for (size_t k = 0; k < exact.size(); ++k)
+                row.error = std::max(row.error, (f.poses[k].position - exact[k].position).norm());
         }
         char note[400];
         std::snprintf(note, sizeof note,

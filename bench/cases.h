@@ -12,13 +12,13 @@ namespace jl::bench {
 // One measured configuration. cost: CPU seconds of one thread per simulated
 // second; error: the study's error measure (see docs/performance.md).
 struct BenchRow {
-    std::string study;    // "pendulum", "chain10", "chain100", "ladder", "scaling", "peers..."
-    std::string method;   // integrator (and event policy), or peer engine
+    std::string study;   // "pendulum", "chain10", "chain100", "ladder", "scaling", "peers..."
+    std::string method;  // integrator (and event policy), or peer engine
     int blocks = 0;
-    double parameter = 0; // step (s) of fixed-step methods, tolerance of the adaptive one
+    double parameter = 0;  // step (s) of fixed-step methods, tolerance of the adaptive one
     double cost = 0;
     double error = 0;
-    bool finished = true; // false: the run failed (reported, no NaN)
+    bool finished = true;  // false: the run failed (reported, no NaN)
     std::string note;
 };
 

@@ -20,7 +20,7 @@ constexpr int kWidth = 860, kHeight = 520;
 constexpr double kLegend = 280;  // the legend's column at the right
 constexpr double kPad = 12;      // between the picture's edge and any text
 constexpr int kTitleSize = 14, kLabelSize = 12, kTickSize = 10;
-constexpr Rgb kPalette[] = {{31, 119, 180}, {214, 39, 40},  {44, 160, 44},  {255, 127, 14}, {148, 103, 189},
+constexpr Rgb kPalette[] = {{31, 119, 180}, {214, 39, 40},   {44, 160, 44},   {255, 127, 14}, {148, 103, 189},
                             {140, 86, 75},  {227, 119, 194}, {127, 127, 127}, {188, 189, 34}, {23, 190, 207}};
 
 std::string hex(Rgb c) {
@@ -79,7 +79,8 @@ Layout layout(const Chart& c, std::pair<int, int> xs, std::pair<int, int> ys) {
     l.xTickY = l.bottom + 10 + textHeight(kTickSize) / 2;
     auto widest = [](std::pair<int, int> range) {
         double w = 0;
-        for (int d = range.first; d <= range.second; ++d) w = std::max(w, textWidth("1e" + std::to_string(d), kTickSize));
+        for (int d = range.first; d <= range.second; ++d)
+            w = std::max(w, textWidth("1e" + std::to_string(d), kTickSize));
         return w;
     };
     const double xWidest = widest(xs);
@@ -89,7 +90,8 @@ Layout layout(const Chart& c, std::pair<int, int> xs, std::pair<int, int> ys) {
     double names = 0;
     for (const ChartSeries& series : c.series) names = std::max(names, textWidth(series.name, kTickSize));
     l.right = kWidth - std::max(kLegend, 16 + 24 + 6 + names + kPad);
-    const double xStep = (l.right - l.left) / (xs.second - xs.first), yStep = (l.bottom - l.top) / (ys.second - ys.first);
+    const double xStep = (l.right - l.left) / (xs.second - xs.first),
+                 yStep = (l.bottom - l.top) / (ys.second - ys.first);
     while (l.xStride * xStep < xWidest + 8) ++l.xStride;
     while (l.yStride * yStep < textHeight(kTickSize) + 4) ++l.yStride;
     const double half = textWidth(c.title, l.titleSize) / 2;

@@ -109,22 +109,20 @@ std::vector<BenchRow> rigidPairModelStudy(const BenchPlan& plan) {
     // The classic six blocks both ways; the thin 25-block ladder whose
     // ripple runs 23 hinges (docs/model.md section 15); and 25 thick blocks
     // turned the wrong way, where most pairs lock.
-    const std::vector<Case> cases =
-        plan.quick ? std::vector<Case>{{"models_classic6", 6, 0.012, 1.2, true}}
-                   : std::vector<Case>{{"models_classic6", 6, 0.012, 1.2, true},
-                                       {"models_wrongway6", 6, 0.012, 1.2, false},
-                                       {"models_thin25", 25, 0.003, 3.0, true},
-                                       {"models_wrongway25", 25, 0.012, 1.2, false}};
+    const std::vector<Case> cases = plan.quick ? std::vector<Case>{{"models_classic6", 6, 0.012, 1.2, true}}
+                                               : std::vector<Case>{{"models_classic6", 6, 0.012, 1.2, true},
+                                                                   {"models_wrongway6", 6, 0.012, 1.2, false},
+                                                                   {"models_thin25", 25, 0.003, 3.0, true},
+                                                                   {"models_wrongway25", 25, 0.012, 1.2, false}};
     struct Config {
         Integrator kind;
         double parameter;
     };
-    const std::vector<Config> configs =
-        plan.quick ? std::vector<Config>{{Integrator::RK4, 1e-3}}
-                   : std::vector<Config>{{Integrator::RK4, 1e-3},
-                                         {Integrator::RK4, 2.5e-4},
-                                         {Integrator::DormandPrince45, 1e-7},
-                                         {Integrator::DormandPrince45, 1e-10}};
+    const std::vector<Config> configs = plan.quick ? std::vector<Config>{{Integrator::RK4, 1e-3}}
+                                                   : std::vector<Config>{{Integrator::RK4, 1e-3},
+                                                                         {Integrator::RK4, 2.5e-4},
+                                                                         {Integrator::DormandPrince45, 1e-7},
+                                                                         {Integrator::DormandPrince45, 1e-10}};
     std::vector<BenchRow> rows;
     for (const Case& c : cases) {
         // One reference for all three models: merged, tight Dormand-Prince.
@@ -141,22 +139,34 @@ std::vector<BenchRow> rigidPairModelStudy(const BenchPlan& plan) {
         auto weldSim = start(tight, true);
         weldSim->advanceExactlyTo(c.duration);
         const Outcome weldedTight = finish(*weldSim);
-        BenchRow models{std::string(c.study) + "_tight", "dormand_prince45, welded against merged", c.blocks, 1e-12, 0,
-                        worstDistance(weldedTight.poses, reference.poses), reference.failure.empty() && weldedTight.failure.empty(), ""};
+        BenchRow models{std::string(c.study) + "_tight",
+                        "dormand_prince45, welded against merged",
+                        c.blocks,
+                        1e-12,
+                        0,
+                        worstDistance(weldedTight.poses, reference.poses),
+                        reference.failure.empty() && weldedTight.failure.empty(),
+                        ""};
         const auto [agree, worst] = eventAgreement(weldedTight.events, reference.events);
         char line[200];
         std::snprintf(line, sizeof line, "%zu of %zu events in the same order, worst time difference %.1e s", agree,
                       reference.events.size(), worst);
         models.note = line;
-        std::fprintf(stderr, "  %s: the two models at tolerance 1e-12 differ by %.2e m; %s\n", c.study, models.error, line);
+        std::fprintf(stderr, "  %s: the two models at tolerance 1e-12 differ by %.2e m; %s\n", c.study, models.error,
+                     line);
         rows.push_back(models);
         for (const Config& k : configs)
             for (const Model& m : kModels) {
                 Scene s = cascade(c.blocks, c.thickness, c.duration, c.rightWay);
                 s.solver.integrator = k.kind;
-                if (k.kind == Integrator::DormandPrince45) s.solver.tolerance = k.parameter; else s.solver.step = k.parameter;
+                if (k.kind == Integrator::DormandPrince45)
+                    s.solver.tolerance = k.parameter;
+                else
+                    s.solver.step = k.parameter;
                 s.solver.rigidPairs = m.pairs;
-                BenchRow row{c.study, std::string(integratorWord(k.kind)) + ", " + m.name, c.blocks, k.parameter, 0, 0, true, ""};
+                BenchRow row{
+                    c.study, std::string(integratorWord(k.kind)) + ", " + m.name, c.blocks, k.parameter, 0, 0, true,
+                    ""};
                 Outcome o;
                 int runs = 0;
                 const double begin = threadSeconds();
@@ -172,11 +182,12 @@ std::vector<BenchRow> rigidPairModelStudy(const BenchPlan& plan) {
                 const auto [same, worstTime] = eventAgreement(o.events, reference.events);
                 row.error = row.finished ? worstDistance(o.poses, reference.poses) : NAN;
                 char note[240];
-                std::snprintf(note, sizeof note,
-                              "%.1f dynamic bodies, %.1f constraint rows on average; %zu of %zu events in the reference "
-                              "order, worst time error %.1e s%s%s",
-                              o.bodies, o.rows, same, reference.events.size(), worstTime, row.finished ? "" : "; failed: ",
-                              o.failure.c_str());
+                std::snprintf(
+                    note, sizeof note,
+                    "%.1f dynamic bodies, %.1f constraint rows on average; %zu of %zu events in the reference "
+                    "order, worst time error %.1e s%s%s",
+                    o.bodies, o.rows, same, reference.events.size(), worstTime,
+                    row.finished ? "" : "; failed: ", o.failure.c_str());
                 row.note = note;
                 std::fprintf(stderr, "  %s %-40s cost %.3g error %.3g  %s\n", c.study, row.method.c_str(), row.cost,
                              row.error, note);

@@ -52,7 +52,8 @@ std::vector<Vec2> runMujoco(int n, double h, int steps, const char* integrator) 
                                          "' gravity='0 0 -9.81'><flag contact='disable'/></option><worldbody>"
                                    : "<mujoco>";
         for (int i = first; i < last; ++i)
-            x += std::string("<body pos='") + (i == 0 ? "0" : std::to_string(kL)) + " 0 0'><joint type='hinge' axis='0 1 0'/>" + geom;
+            x += std::string("<body pos='") + (i == 0 ? "0" : std::to_string(kL)) +
+                 " 0 0'><joint type='hinge' axis='0 1 0'/>" + geom;
         if (last < n) x += "<include file='chain" + std::to_string(last / perFile) + ".xml'/>";
         for (int i = first; i < last; ++i) x += "</body>";
         x += first == 0 ? "</worldbody></mujoco>" : "</mujoco>";
@@ -183,9 +184,11 @@ std::vector<PeerRun> measurePeers(int n, const std::vector<double>& steps, doubl
                 r.finished = false;
                 r.error = NAN;
             } else {
-                for (size_t i = 0; i < centres.size(); ++i) r.error = std::max(r.error, (centres[i] - reference[i]).norm());
+                for (size_t i = 0; i < centres.size(); ++i)
+                    r.error = std::max(r.error, (centres[i] - reference[i]).norm());
             }
-            std::fprintf(stderr, "  %-26s N=%-5d h=%.1e  cost %.3e s/s  error %.3e m\n", name.c_str(), n, h, r.cost, r.error);
+            std::fprintf(stderr, "  %-26s N=%-5d h=%.1e  cost %.3e s/s  error %.3e m\n", name.c_str(), n, h, r.cost,
+                         r.error);
             out.push_back(r);
         }
     }
@@ -193,14 +196,17 @@ std::vector<PeerRun> measurePeers(int n, const std::vector<double>& steps, doubl
 }
 
 std::string peerVersions() {
-    return "MuJoCo " + std::string(mj_versionString()) + " (Debian libmujoco-dev), Box2D " + std::to_string(b2_version.major) +
-           "." + std::to_string(b2_version.minor) + "." + std::to_string(b2_version.revision) +
-           " (libbox2d-dev), Bullet " + std::to_string(btGetVersion()) + " double precision (libbullet-dev, float64 libraries)";
+    return "MuJoCo " + std::string(mj_versionString()) + " (Debian libmujoco-dev), Box2D " +
+           std::to_string(b2_version.major) + "." + std::to_string(b2_version.minor) + "." +
+           std::to_string(b2_version.revision) + " (libbox2d-dev), Bullet " + std::to_string(btGetVersion()) +
+           " double precision (libbullet-dev, float64 libraries)";
 }
 
 #else
 
-std::vector<PeerRun> measurePeers(int, const std::vector<double>&, double, const std::vector<Vec2>&, double) { return {}; }
+std::vector<PeerRun> measurePeers(int, const std::vector<double>&, double, const std::vector<Vec2>&, double) {
+    return {};
+}
 
 std::string peerVersions() { return "not measured: this build has JL_BENCH_PEERS off"; }
 

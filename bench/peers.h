@@ -10,12 +10,12 @@
 namespace jl::bench {
 
 struct PeerRun {
-    std::string engine;   // "mujoco 2.2.2 rk4", ...
+    std::string engine;  // "mujoco 2.2.2 rk4", ...
     int blocks = 0;
-    double step = 0;      // s
-    double cost = 0;      // CPU s per simulated s
-    double error = 0;     // m, largest block-centre error at the end
-    bool finished = true; // false: it blew up or produced NaN
+    double step = 0;       // s
+    double cost = 0;       // CPU s per simulated s
+    double error = 0;      // m, largest block-centre error at the end
+    bool finished = true;  // false: it blew up or produced NaN
 };
 
 // Falling chain of n blocks (docs/model.md section 16.1) run to `duration`

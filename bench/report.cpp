@@ -36,7 +36,8 @@ std::string cpuModel() {
 }
 
 void table(std::ostream& md, const std::vector<BenchRow>& rows, const char* parameter, const char* error) {
-    md << "| method | N | " << parameter << " | CPU s per simulated s | " << error << " | note |\n|---|---:|---:|---:|---:|---|\n";
+    md << "| method | N | " << parameter << " | CPU s per simulated s | " << error
+       << " | note |\n|---|---:|---:|---:|---:|---|\n";
     for (const BenchRow& r : rows)
         md << "| " << r.method << " | " << r.blocks << " | " << num(r.parameter) << " | " << num(r.cost) << " | "
            << (r.finished ? num(r.error) : "failed") << " | " << r.note << " |\n";
@@ -103,10 +104,10 @@ std::string stabilityTarget(const StabilityStudy& s, bool quick, bool& ok) {
                      {"y", sig(y, 3)},
                      {"rk4_imaginary", sig(s.imaginaryRk4, 4)}};
     if (y <= s.imaginaryRk4) {
-        v["cost"] = std::isfinite(big.turnedCost) ? " At the largest step that ran, the turned-over ladder cost " +
-                                                        sig(big.turnedCost, 3) + " CPU s per simulated s (" +
-                                                        sig(1 / big.turnedCost, 3) + "x real time)."
-                                                  : "";
+        v["cost"] = std::isfinite(big.turnedCost)
+                        ? " At the largest step that ran, the turned-over ladder cost " + sig(big.turnedCost, 3) +
+                              " CPU s per simulated s (" + sig(1 / big.turnedCost, 3) + "x real time)."
+                        : "";
         return filled("stability_within", v, ok);
     }
     const double yTurn = y * std::sqrt(big.peakTension);
@@ -131,7 +132,8 @@ std::string stabilityTarget(const StabilityStudy& s, bool quick, bool& ok) {
         v["cost"] = " At the largest step that ran, the turned-over ladder cost " + sig(big.turnedCost, 3) +
                     " CPU s per simulated s (" + sig(1 / big.turnedCost, 3) + "x real time, " +
                     sig(1e9 * big.turnedCost / evaluations, 3) + " ns per block per evaluation): faster than real " +
-                    "time at that step needs " + sig(1e9 / evaluations, 3) + " ns, " + sig(big.turnedCost, 2) + "x less.";
+                    "time at that step needs " + sig(1e9 / evaluations, 3) + " ns, " + sig(big.turnedCost, 2) +
+                    "x less.";
     }
     return filled("stability_beyond", v, ok);
 }
@@ -169,7 +171,8 @@ std::string stability(const StabilityStudy& s, bool quick, bool& ok) {
                    {"checks_rows", checks.str()},
                    {"limits_rows", limits.str()},
                    {"tension_rows", tension.str()},
-                   {"above_rest", above.empty() ? "" : ", or, like the hanging runs, a little above the one at rest (" + above + ")"},
+                   {"above_rest",
+                    above.empty() ? "" : ", or, like the hanging runs, a little above the one at rest (" + above + ")"},
                    {"integrator_rows", integrators.str()},
                    {"omega_rows", omegas.str()},
                    {"target", stabilityTarget(s, quick, ok)}},
@@ -241,8 +244,8 @@ std::string eventCost(const std::vector<EventCostRow>& rows, bool quick, bool& o
            << (r.perEvent > 0 ? "" : ": below the subtraction's noise") << " (" << cpuTime(r.perEventControl)
            << " against the turning step) | " << sig(r.perEvent / r.plainStepCpu, 3) << " | "
            << cpuTime(r.perEventInStep) << " in " << r.eventfulSteps << (r.eventfulSteps == 1 ? " step (" : " steps (")
-           << sig(r.perEventInStep / r.plainStepCpu, 3) << " plain steps) |" << (r.failure.empty() ? "" : " " + r.failure)
-           << "\n";
+           << sig(r.perEventInStep / r.plainStepCpu, 3) << " plain steps) |"
+           << (r.failure.empty() ? "" : " " + r.failure) << "\n";
         if (r.events > 0) {
             window.add(r.perEvent, r.blocks);
             direct.add(r.perEventInStep, r.blocks);
@@ -282,8 +285,8 @@ std::string exampleStep(const ExampleRow& r) {
     const std::string who = r.automaticStep ? "engine: " : "scene: ";
     std::string step;
     if (r.adaptive)
-        step = "adaptive, tolerance " + sig(r.tolerance, 3) + ", mean " +
-               ms(r.simulated / double(std::max(r.steps, 1LL)));
+        step =
+            "adaptive, tolerance " + sig(r.tolerance, 3) + ", mean " + ms(r.simulated / double(std::max(r.steps, 1LL)));
     else if (r.smallestStep == r.largestStep)
         step = who + ms(r.smallestStep);
     else
@@ -301,8 +304,8 @@ void exampleBudget(std::ostream& md, const ExampleRow* r, const std::string& wha
     const double limit = cpuFor3s * r->asked / 3.0;
     const bool met = r->failure.empty() && r->simulated >= r->asked - 1e-9 && r->cpu <= limit;
     md << "- " << what << " for " << sig(r->asked, 3) << " s in at most " << sig(limit, 3) << " CPU s"
-       << (r->asked < 3 ? " (" + sig(cpuFor3s, 3) + " CPU s for 3 s, scaled)" : std::string()) << ": "
-       << sig(r->cpu, 3) << " CPU s — **" << (met ? "met" : "missed") << "**"
+       << (r->asked < 3 ? " (" + sig(cpuFor3s, 3) + " CPU s for 3 s, scaled)" : std::string()) << ": " << sig(r->cpu, 3)
+       << " CPU s — **" << (met ? "met" : "missed") << "**"
        << (r->failure.empty() ? "" : " (failed: " + r->failure + ")") << ".\n";
 }
 
@@ -329,8 +332,8 @@ std::string examplesSection(const ExamplesStudy& s, bool quick, bool& ok) {
        << "|---|---:|---:|---:|---:|---:|---|---:|---|\n";
     for (const ExampleRow& r : s.rows) {
         const double per = r.perSimulated();
-        md << "| " << r.scene << " | " << r.blocks << " | " << sig(r.simulated, 3) << " | " << sig(r.cpu, 3)
-           << " | " << sig(per, 3)
+        md << "| " << r.scene << " | " << r.blocks << " | " << sig(r.simulated, 3) << " | " << sig(r.cpu, 3) << " | "
+           << sig(per, 3)
            << (r.simulated > 0 ? (per <= 1 ? " (faster than real time)" : " (slower than real time)") : "") << " | "
            << r.steps << " | " << exampleStep(r) << " | " << r.hingeEvents << " | " << r.failure << " |\n";
     }
@@ -371,14 +374,16 @@ std::string targets(const BenchResults& r) {
             const double ours = bestErrorWithin(it->second, p.cost);
             const double ratio = p.finished ? p.error / ours : INFINITY;
             if (ratio >= 100) ++met;
-            detail << "  - " << p.method << " h = " << num(p.parameter) << ": peer error " << num(p.error)
-                   << " m at " << num(p.cost) << " s/s; ours at that cost " << num(ours) << " m (ratio "
-                   << num(ratio) << ")\n";
+            detail << "  - " << p.method << " h = " << num(p.parameter) << ": peer error " << num(p.error) << " m at "
+                   << num(p.cost) << " s/s; ours at that cost " << num(ours) << " m (ratio " << num(ratio) << ")\n";
         }
-        if (total == 0) md << "- Falling chain N = 100, error 100x below each peer at its cost: **not measured** (" << r.peers << ").\n";
+        if (total == 0)
+            md << "- Falling chain N = 100, error 100x below each peer at its cost: **not measured** (" << r.peers
+               << ").\n";
         else
-            md << "- Falling chain N = 100, error at least 100x below each peer at the peer's cost: **" << (met == total ? "met" : "missed")
-               << "** (met in " << met << " of " << total << " peer runs).\n" << detail.str();
+            md << "- Falling chain N = 100, error at least 100x below each peer at the peer's cost: **"
+               << (met == total ? "met" : "missed") << "** (met in " << met << " of " << total << " peer runs).\n"
+               << detail.str();
     }
     // 2. N = 1,000: 5x cheaper than Bullet Featherstone + RK4 at equal error.
     if (auto it = r.chains.find(1000); it != r.chains.end()) {
@@ -390,11 +395,15 @@ std::string targets(const BenchResults& r) {
             const double ours = bestCostWithin(it->second, p.error);
             if (p.finished && p.cost / ours >= 5) ++met;
             detail << "  - h = " << num(p.parameter) << ": Bullet " << num(p.cost) << " s/s at error " << num(p.error)
-                   << " m; ours " << num(ours) << " s/s at an error no larger (" << num(p.cost / ours) << "x cheaper)\n";
+                   << " m; ours " << num(ours) << " s/s at an error no larger (" << num(p.cost / ours)
+                   << "x cheaper)\n";
         }
-        if (total == 0) md << "- N = 1,000, 5x cheaper than Bullet Featherstone + RK4: **not measured** (" << r.peers << ").\n";
-        else md << "- N = 1,000, at least 5x cheaper than Bullet Featherstone + RK4 at equal error: **" << (met == total ? "met" : "missed")
-                << "** (met in " << met << " of " << total << " runs).\n" << detail.str();
+        if (total == 0)
+            md << "- N = 1,000, 5x cheaper than Bullet Featherstone + RK4: **not measured** (" << r.peers << ").\n";
+        else
+            md << "- N = 1,000, at least 5x cheaper than Bullet Featherstone + RK4 at equal error: **"
+               << (met == total ? "met" : "missed") << "** (met in " << met << " of " << total << " runs).\n"
+               << detail.str();
     } else {
         md << "- N = 1,000 against Bullet: not run in --quick mode.\n";
     }
@@ -410,12 +419,15 @@ std::string targets(const BenchResults& r) {
         }
         md << "- Long ladder, " << blocks << " blocks turned over, 0.5 s in at most " << num(budget)
            << " CPU s with a block-centre error at most 1e-6 m: ";
-        if (!ran) md << "not run" << (r.quick ? " in --quick mode (1,000 blocks for 0.03 s only)" : "") << ".\n";
-        else if (!best) md << "**missed**: no run reached 1e-6 m (see the long-ladder rows).\n";
+        if (!ran)
+            md << "not run" << (r.quick ? " in --quick mode (1,000 blocks for 0.03 s only)" : "") << ".\n";
+        else if (!best)
+            md << "**missed**: no run reached 1e-6 m (see the long-ladder rows).\n";
         else
             md << "**" << (best->cost * 0.5 <= budget ? "met" : "missed") << "**: the cheapest run within 1e-6 m is "
                << best->method << " at " << num(best->parameter) << ", " << num(best->cost * 0.5) << " CPU s ("
-               << num(best->cost * 0.5 / budget) << "x the budget)" << (r.quick ? "; quick run: 0.03 s only" : "") << ".\n";
+               << num(best->cost * 0.5 / budget) << "x the budget)" << (r.quick ? "; quick run: 0.03 s only" : "")
+               << ".\n";
     }
     // 4. Flat cost per block-step.
     std::vector<std::string> methods;
@@ -430,9 +442,9 @@ std::string targets(const BenchResults& r) {
                 hi = std::max(hi, s.error);
                 largest = std::max(largest, s.blocks);
             }
-        md << "- Cost per block-step flat within 1.5x, " << m << ", N = 10 .. " << largest << ": max/min = " << num(hi / lo)
-           << " — **" << (hi / lo <= 1.5 ? "met" : "missed") << "**" << (largest < 100000 ? " (quick run: not up to 100,000)" : "")
-           << ".\n";
+        md << "- Cost per block-step flat within 1.5x, " << m << ", N = 10 .. " << largest
+           << ": max/min = " << num(hi / lo) << " — **" << (hi / lo <= 1.5 ? "met" : "missed") << "**"
+           << (largest < 100000 ? " (quick run: not up to 100,000)" : "") << ".\n";
     }
     return md.str();
 }
@@ -459,8 +471,10 @@ bool writeReport(const BenchResults& r, const std::filesystem::path& plots, cons
     for (const BenchRow& l : r.longLadder) {
         const bool tolerance = namesAdaptiveMethod(l.method);
         longLadder << "- " << l.blocks << " blocks, " << l.method;
-        if (tolerance) longLadder << ", tolerance " << num(l.parameter);
-        else if (l.parameter > 0) longLadder << ", dt = " << num(l.parameter) << " s";
+        if (tolerance)
+            longLadder << ", tolerance " << num(l.parameter);
+        else if (l.parameter > 0)
+            longLadder << ", dt = " << num(l.parameter) << " s";
         longLadder << ": " << l.note << "\n";
     }
     const std::string text = filled("performance",
@@ -490,7 +504,8 @@ bool writeReport(const BenchResults& r, const std::filesystem::path& plots, cons
 namespace {
 
 // One section alone, as `jladder bench --only NAME` writes it.
-bool writeSection(const char* name, bool quick, const std::filesystem::path& report, const std::string& section, bool ok) {
+bool writeSection(const char* name, bool quick, const std::filesystem::path& report, const std::string& section,
+                  bool ok) {
     std::ostringstream md;
     md << "<!-- Generated by `jladder bench --only " << name << (quick ? " --quick" : "") << "` on " << cpuModel()
        << ". -->\n\n"

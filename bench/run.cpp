@@ -25,8 +25,8 @@ bool writeCsv(const std::vector<BenchRow>& rows, const std::filesystem::path& pa
     f << "study,method,blocks,parameter,cost_cpu_s_per_sim_s,error,finished,note\n";
     f.precision(6);
     for (const BenchRow& r : rows)
-        f << r.study << ',' << r.method << ',' << r.blocks << ',' << r.parameter << ',' << r.cost << ',' << r.error << ','
-          << (r.finished ? 1 : 0) << ",\"" << r.note << "\"\n";
+        f << r.study << ',' << r.method << ',' << r.blocks << ',' << r.parameter << ',' << r.cost << ',' << r.error
+          << ',' << (r.finished ? 1 : 0) << ",\"" << r.note << "\"\n";
     return saveText(path, f.str());
 }
 
@@ -74,11 +74,11 @@ bool writeStabilityCsv(const StabilityStudy& s, const std::filesystem::path& pat
     for (const StabilityRow& r : s.rows)
         f << r.blocks << ',' << r.omegaMax << ',' << std::sqrt(r.referenceOmega2) << ',' << r.handUpper << ','
           << r.handAiry << ',' << r.engine.iterations << ',' << r.engine.residual << ',' << r.rk4Limit << ','
-          << r.symplecticLimit << ',' << r.dopriLimit << ',' << r.horizon << ',' << r.seededPass << ','
-          << r.seededFail << ',' << r.hangingPass << ',' << r.hangingFail << ',' << r.turnedPass << ','
-          << r.turnedFail << ',' << r.hangingCost << ',' << r.turnedCost << ',' << r.handTension << ','
-          << r.peakTension << ',' << r.peakTime << ',' << r.turnedPeakLimit << ',' << r.dopriSteps << ','
-          << r.dopriRejected << ',' << r.dopriMeanStep << ',' << r.dopriCost << '\n';
+          << r.symplecticLimit << ',' << r.dopriLimit << ',' << r.horizon << ',' << r.seededPass << ',' << r.seededFail
+          << ',' << r.hangingPass << ',' << r.hangingFail << ',' << r.turnedPass << ',' << r.turnedFail << ','
+          << r.hangingCost << ',' << r.turnedCost << ',' << r.handTension << ',' << r.peakTension << ',' << r.peakTime
+          << ',' << r.turnedPeakLimit << ',' << r.dopriSteps << ',' << r.dopriRejected << ',' << r.dopriMeanStep << ','
+          << r.dopriCost << '\n';
     return saveText(path, f.str());
 }
 
@@ -136,7 +136,7 @@ bool runBench(const BenchRequest& request) {
         std::fprintf(stderr, "examples at default settings\n");
         const ExamplesStudy study = examplesStudy(plan, examplesDir);
         return (writeExamplesCsv(study, out / "examples.csv") && writeExamplesReport(study, plan.quick, report) &&
-                      study.error.empty());
+                study.error.empty());
     }
 
     BenchResults results;
@@ -144,7 +144,8 @@ bool runBench(const BenchRequest& request) {
     std::fprintf(stderr, "pendulum\n");
     results.pendulum = pendulumStudy(plan);
     const std::vector<int> chainSizes = plan.quick ? std::vector<int>{10, 100} : std::vector<int>{10, 100, 1000};
-    const std::vector<double> peerSteps = plan.quick ? std::vector<double>{1e-3, 1e-4} : std::vector<double>{1e-3, 5e-4, 2.5e-4, 1e-4};
+    const std::vector<double> peerSteps =
+        plan.quick ? std::vector<double>{1e-3, 1e-4} : std::vector<double>{1e-3, 5e-4, 2.5e-4, 1e-4};
     for (int n : chainSizes) {
         std::fprintf(stderr, "falling chain N=%d\n", n);
         std::vector<Vec2> reference;
@@ -171,20 +172,26 @@ bool runBench(const BenchRequest& request) {
 
     bool ok = writeCsv(results.pendulum, out / "pendulum.csv") && writeCsv(results.ladder, out / "ladder.csv") &&
               writeCsv(results.scaling, out / "scaling.csv") && writeCsv(results.longLadder, out / "long_ladder.csv") &&
-              writeStabilityCsv(results.stability, out / "stability.csv") && writeCsv(results.models, out / "models.csv") &&
+              writeStabilityCsv(results.stability, out / "stability.csv") &&
+              writeCsv(results.models, out / "models.csv") &&
               writeEventCostCsv(results.eventCost, out / "events.csv") &&
               writeExamplesCsv(results.examples, out / "examples.csv");
-    ok = writeChart(workPrecision("Physical pendulum, one exact period (theta0 = 2 rad)", "error (rad)", results.pendulum),
-                    out, "pendulum") && ok;
+    ok = writeChart(
+             workPrecision("Physical pendulum, one exact period (theta0 = 2 rad)", "error (rad)", results.pendulum),
+             out, "pendulum") &&
+         ok;
     for (const auto& [n, rows] : results.chains) {
         const std::string name = "chain" + std::to_string(n);
         ok = writeCsv(rows, out / (name + ".csv")) && ok;
         ok = writeChart(workPrecision("Falling chain, N = " + std::to_string(n) + ", t = 0.5 s",
                                       "largest block-centre error (m)", rows),
-                        out, name) && ok;
+                        out, name) &&
+             ok;
     }
-    ok = writeChart(workPrecision("Ladder cascade, 6 blocks, t = 1.2 s", "largest block-centre error (m)", results.ladder),
-                    out, "ladder") && ok;
+    ok = writeChart(
+             workPrecision("Ladder cascade, 6 blocks, t = 1.2 s", "largest block-centre error (m)", results.ladder),
+             out, "ladder") &&
+         ok;
     std::vector<BenchRow> longLadder;
     for (const BenchRow& r : results.longLadder)
         if (r.error > 0) {  // not the reference itself
@@ -193,9 +200,12 @@ bool runBench(const BenchRequest& request) {
         }
     ok = writeChart(workPrecision("Long ladder turned over from t = 0, t = 0.5 s (reference: Dormand-Prince at 1e-10)",
                                   "largest block-centre error (m)", longLadder),
-                    out, "long_ladder") && ok;
-    Chart scaling{"Cost per block-step, falling chain (dt = 1 ms; the Euler methods 0.1 ms)", "blocks N",
-                  "ns per block-step (CPU)", {}};
+                    out, "long_ladder") &&
+         ok;
+    Chart scaling{"Cost per block-step, falling chain (dt = 1 ms; the Euler methods 0.1 ms)",
+                  "blocks N",
+                  "ns per block-step (CPU)",
+                  {}};
     std::map<std::string, size_t> index;
     for (const BenchRow& r : results.scaling) {
         if (!index.count(r.method)) {

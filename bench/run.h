@@ -10,11 +10,11 @@
 namespace jl::bench {
 
 struct BenchRequest {
-    bool quick = false;                    // fewer sizes and steps: fits in CI
-    std::string only;                      // "", or one study: stability, models, events, examples
-    std::filesystem::path out = "docs/bench";       // CSV and SVG
+    bool quick = false;                        // fewer sizes and steps: fits in CI
+    std::string only;                          // "", or one study: stability, models, events, examples
+    std::filesystem::path out = "docs/bench";  // CSV and SVG
     std::filesystem::path report = "docs/performance.md";
-    std::filesystem::path examples = "examples";    // the scenes of the examples study
+    std::filesystem::path examples = "examples";  // the scenes of the examples study
 };
 
 // False if a study failed or a file could not be written (said on stderr).

@@ -99,8 +99,10 @@ void bisect(int blocks, bool turned, double predicted, double horizon, double ra
         double cost = 0;
         std::string failure;
         const bool r = runs(blocks, turned, h, horizon, cost, failure);
-        if (r) passCost = cost;  // a passing step always becomes the new lower end
-        else if (!(h > hi)) hiWhy = failure;  // and a failing one, not above hi, the new upper end
+        if (r)
+            passCost = cost;  // a passing step always becomes the new lower end
+        else if (!(h > hi))
+            hiWhy = failure;  // and a failing one, not above hi, the new upper end
         std::fprintf(stderr, "    N=%-6d %-8s dt=%.4e s: %s (%.3g CPU s per simulated s)%s%s\n", blocks,
                      turned ? "turned" : "hanging", h, r ? "runs" : "fails", cost, r ? "" : " ", failure.c_str());
         return r;
@@ -263,10 +265,12 @@ double modeGrowth(int blocks, const EngineMode& m, double step, double horizon) 
         const PartId part = rest.simulation->blockPart(i);
         const Pose pose = w0.partPose(part);
         const Eigen::Vector3d v = s * m.mode.segment<3>(3 * w0.part(part).body);
-        scene.ladder->initial.poses.push_back({i, {pose.position.x(), pose.position.y()}, pose.angle, {v[0], v[1]}, v[2]});
+        scene.ladder->initial.poses.push_back(
+            {i, {pose.position.x(), pose.position.y()}, pose.angle, {v[0], v[1]}, v[2]});
     }
     Simulation::Built built = Simulation::build(scene);
-    if (!built.simulation || !built.simulation->advanceTo(horizon) || !built.simulation->failure().empty()) return INFINITY;
+    if (!built.simulation || !built.simulation->advanceTo(horizon) || !built.simulation->failure().empty())
+        return INFINITY;
     const World& w = built.simulation->world();
     if (w.q.size() != m.q0.size()) return INFINITY;
     const double a = (m.mass.array() * (w.q - m.q0).array() * m.mode.array()).sum();
@@ -351,7 +355,8 @@ StabilityStudy stabilityStudy(const BenchPlan& plan) {
         std::fprintf(stderr, "  check %-52s engine %.12g  reference %.12g  exact %.12g\n", c.what.c_str(), c.engine,
                      c.reference, c.exact);
 
-    const std::vector<int> sizes = plan.quick ? std::vector<int>{10, 100, 1000} : std::vector<int>{10, 100, 1000, 10000};
+    const std::vector<int> sizes =
+        plan.quick ? std::vector<int>{10, 100, 1000} : std::vector<int>{10, 100, 1000, 10000};
     for (int blocks : sizes) {
         StabilityRow row;
         row.blocks = blocks;
@@ -399,7 +404,8 @@ StabilityStudy stabilityStudy(const BenchPlan& plan) {
         bisect(blocks, true, row.rk4Limit, row.horizon, ratio, row.turnedPass, row.turnedFail, row.turnedCost,
                row.turnedWhy, row.runs);
         row.measureCpu = threadSeconds() - start;
-        std::fprintf(stderr, "  N=%-6d measured RK4 limit over %.3g s: seeded mode %.5e..%.5e s, hanging %.4e..%.4e s, "
+        std::fprintf(stderr,
+                     "  N=%-6d measured RK4 limit over %.3g s: seeded mode %.5e..%.5e s, hanging %.4e..%.4e s, "
                      "turned %.4e..%.4e s "
                      "(%.1f s)\n",
                      blocks, row.horizon, row.seededPass, row.seededFail, row.hangingPass, row.hangingFail,
@@ -441,11 +447,13 @@ StabilityStudy stabilityStudy(const BenchPlan& plan) {
             row.dopriMeanStep = f.time / double(std::max<long long>(f.solver.steps, 1));
             row.dopriCost = cpu / std::max(f.time, 1e-300);
             row.dopriFailure = f.failure;
-            std::fprintf(stderr, "  N=%-6d dormand_prince45 tol %.0e: %lld steps (mean %.4e s), %lld rejected, %.3g CPU s "
-                         "per simulated s%s%s; tension x%.3f from the hand, x%.3f at t = %.4f s: RK4 limit there %.4e s\n",
-                         blocks, scene.solver.tolerance, row.dopriSteps, row.dopriMeanStep, row.dopriRejected,
-                         row.dopriCost, f.failure.empty() ? "" : "; ", f.failure.c_str(), row.handTension,
-                         row.peakTension, row.peakTime, row.turnedPeakLimit);
+            std::fprintf(
+                stderr,
+                "  N=%-6d dormand_prince45 tol %.0e: %lld steps (mean %.4e s), %lld rejected, %.3g CPU s "
+                "per simulated s%s%s; tension x%.3f from the hand, x%.3f at t = %.4f s: RK4 limit there %.4e s\n",
+                blocks, scene.solver.tolerance, row.dopriSteps, row.dopriMeanStep, row.dopriRejected, row.dopriCost,
+                f.failure.empty() ? "" : "; ", f.failure.c_str(), row.handTension, row.peakTension, row.peakTime,
+                row.turnedPeakLimit);
         }
         study.rows.push_back(row);
     }

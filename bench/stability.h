@@ -18,10 +18,10 @@ namespace jl::bench {
 // metric on K x = -(da/dq) x, x tangent to the pins (finite differences of
 // Dynamics::evaluate about the equilibrium that Simulation::build makes).
 struct EngineMode {
-    double omega2 = 0;    // (rad/s)^2, largest Ritz value
-    double residual = 0;  // ||K y - omega2 y||_M of its Ritz vector y (an eigenvalue lies this close)
-    int iterations = 0;   // Lanczos steps (two evaluations each)
-    double cpu = 0;       // s
+    double omega2 = 0;               // (rad/s)^2, largest Ritz value
+    double residual = 0;             // ||K y - omega2 y||_M of its Ritz vector y (an eigenvalue lies this close)
+    int iterations = 0;              // Lanczos steps (two evaluations each)
+    double cpu = 0;                  // s
     Eigen::VectorXd q0, mode, mass;  // the equilibrium, y (unit in the mass metric), the mass metric
 };
 EngineMode engineOmega2(int blocks);
@@ -70,8 +70,8 @@ struct StabilityRow {
     double dopriMeanStep = 0, dopriCost = 0;
     long long dopriSteps = 0, dopriRejected = 0;
     std::string dopriFailure;
-    int runs = 0;                // simulations in the bisections
-    double measureCpu = 0;       // s
+    int runs = 0;           // simulations in the bisections
+    double measureCpu = 0;  // s
 };
 
 struct StabilityStudy {

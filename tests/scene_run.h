@@ -32,9 +32,9 @@ inline std::unique_ptr<Simulation> simulateFile(const std::string& relativePath)
 }
 
 struct Run {
-    std::vector<Event> events;        // hinge events only (script actions left out)
-    double worstBalance = 0;          // J, |E - (E0 + W - D)|
-    double worstResidual = 0;         // m
+    std::vector<Event> events;  // hinge events only (script actions left out)
+    double worstBalance = 0;    // J, |E - (E0 + W - D)|
+    double worstResidual = 0;   // m
     double lastImpactLoss = 0;
     bool impactLossNeverFell = true;
     std::string failure;

@@ -14,10 +14,10 @@ using namespace jl::test;
 namespace {
 
 std::string ladderScene(int blocks, const char* turn, const char* extra = "") {
-    return std::string("format: jacobs-ladder/1\nladder: {blocks: ") + std::to_string(blocks) +
-           ", held: [0]}\n" + extra + (turn[0] ? std::string("script: [{at: 0.2, turn: {block: 0, by: ") + turn +
-                                                     ", duration: 0.3}}]\n"
-                                               : std::string());
+    return std::string("format: jacobs-ladder/1\nladder: {blocks: ") + std::to_string(blocks) + ", held: [0]}\n" +
+           extra +
+           (turn[0] ? std::string("script: [{at: 0.2, turn: {block: 0, by: ") + turn + ", duration: 0.3}}]\n"
+                    : std::string());
 }
 
 // The classic cascade with every length times `s` and every time of the
@@ -26,11 +26,12 @@ std::string ladderScene(int blocks, const char* turn, const char* extra = "") {
 std::string scaledClassic(double s) {
     char text[512];
     const double r = std::sqrt(s);
-    std::snprintf(text, sizeof text,
-                  "format: jacobs-ladder/1\n"
-                  "ladder: {blocks: 6, held: [0], block: {length: %.17g, thickness: %.17g, width: %.17g, density: 600}}\n"
-                  "script: [{at: %.17g, turn: {block: 0, by: 180deg, duration: %.17g}}]\n",
-                  0.06 * s, 0.012 * s, 0.045 * s, 0.2 * r, 0.3 * r);
+    std::snprintf(
+        text, sizeof text,
+        "format: jacobs-ladder/1\n"
+        "ladder: {blocks: 6, held: [0], block: {length: %.17g, thickness: %.17g, width: %.17g, density: 600}}\n"
+        "script: [{at: %.17g, turn: {block: 0, by: 180deg, duration: %.17g}}]\n",
+        0.06 * s, 0.012 * s, 0.045 * s, 0.2 * r, 0.3 * r);
     return text;
 }
 
@@ -72,8 +73,9 @@ private slots:
         QVERIFY(reference > 0.02 && reference < 0.04);
         for (double s : {0.01, 0.05, 10.0, 50.0}) {
             const double span = firstLockSpan(s);
-            QVERIFY2(std::abs(span - reference) < 6e-5,
-                     qPrintable(QString("scale %1: locked %2 (scaled s), full size %3").arg(s).arg(span).arg(reference)));
+            QVERIFY2(
+                std::abs(span - reference) < 6e-5,
+                qPrintable(QString("scale %1: locked %2 (scaled s), full size %3").arg(s).arg(span).arg(reference)));
         }
     }
 
@@ -146,7 +148,8 @@ private slots:
         QVERIFY(t0 > 0);
         std::vector<double> errors;
         for (const char* h : {"4e-3", "2e-3", "1e-3"}) {
-            const double t = firstFoldTime(ladderScene(6, "180deg", (std::string("solver: {integrator: rk4, step: ") + h + "}\n").c_str()));
+            const double t = firstFoldTime(
+                ladderScene(6, "180deg", (std::string("solver: {integrator: rk4, step: ") + h + "}\n").c_str()));
             errors.push_back(std::abs(t - t0));
             qInfo("step %s s: first fold at %.9f s, error %.2e s", h, t, errors.back());
         }
@@ -155,7 +158,9 @@ private slots:
         qInfo("observed order of the event time: %.2f", order);
         QVERIFY2(order > 2.5, qPrintable(QString::number(order)));
         QVERIFY(errors[2] < 1e-6);
-        const double late = firstFoldTime(ladderScene(6, "180deg", "solver: {integrator: rk4, step: 1e-3, events: end_of_step}\n")) - t0;
+        const double late =
+            firstFoldTime(ladderScene(6, "180deg", "solver: {integrator: rk4, step: 1e-3, events: end_of_step}\n")) -
+            t0;
         qInfo("end of step: %.2e s late", late);
         QVERIFY2(late >= 0 && late <= 1e-3 + 1e-6, qPrintable(QString::number(late)));
     }

@@ -30,14 +30,15 @@ private slots:
         QCOMPARE(t.front(), 0.0015);
         QVERIFY(std::abs(t.back() - 0.015) < 1e-15);
         QCOMPARE(axisValues({DesignParameter::Density, 600, 600, 1}), std::vector<double>{600});  // one value
-        QVERIFY(axisValues({DesignParameter::Blocks, 6, 5, 1}).empty());   // backwards
-        QVERIFY(axisValues({DesignParameter::Blocks, 6, 50, 0}).empty());  // no step
+        QVERIFY(axisValues({DesignParameter::Blocks, 6, 5, 1}).empty());                          // backwards
+        QVERIFY(axisValues({DesignParameter::Blocks, 6, 50, 0}).empty());                         // no step
     }
 
     void aDesignSetsOneParameter() {
         const Scene base = turnedLadder(6, 0.012);
         QCOMPARE(withParameter(base, DesignParameter::Blocks, 12.4).ladder->blocks, 12);
-        QCOMPARE(withParameter(base, DesignParameter::Blocks, 1).ladder->blocks, 2);  // a ladder has two blocks at least
+        QCOMPARE(withParameter(base, DesignParameter::Blocks, 1).ladder->blocks,
+                 2);  // a ladder has two blocks at least
         QCOMPARE(withParameter(base, DesignParameter::Blocks, 1e300).ladder->blocks, range::kMostBlocks);
         QCOMPARE(withParameter(base, DesignParameter::Blocks, std::nan("")).ladder->blocks, range::kFewestBlocks);
         QCOMPARE(withParameter(base, DesignParameter::Length, 0.08).ladder->block.length, 0.08);
@@ -52,8 +53,9 @@ private slots:
         QCOMPARE(std::string(describe(DesignParameter::HingeDamping).word), std::string("hinge_damping"));
         // Read back: what withParameter set, for every parameter.
         const std::pair<DesignParameter, double> set[] = {
-            {DesignParameter::Blocks, 9},         {DesignParameter::Thickness, 0.004}, {DesignParameter::Length, 0.07},
-            {DesignParameter::Width, 0.05},       {DesignParameter::Density, 700},     {DesignParameter::HingeDamping, 2e-5},
+            {DesignParameter::Blocks, 9},        {DesignParameter::Thickness, 0.004},
+            {DesignParameter::Length, 0.07},     {DesignParameter::Width, 0.05},
+            {DesignParameter::Density, 700},     {DesignParameter::HingeDamping, 2e-5},
             {DesignParameter::TurnDuration, 0.4}};
         for (const auto& [p, v] : set) QCOMPARE(parameterValue(withParameter(base, p, v), p), v);
         QVERIFY(std::isnan(parameterValue(Scene{}, DesignParameter::Blocks)));
@@ -134,7 +136,8 @@ private slots:
         // Cell (i, j) is the design of xs[i] and ys[j].
         QCOMPARE(one.at(2, 1).hinges, 7);
         QCOMPARE(one.at(0, 0).hinges, 3);
-        const RippleReach alone = firstRippleReach(withParameter(turnedLadder(8, 0.012), DesignParameter::Thickness, 0.006));
+        const RippleReach alone =
+            firstRippleReach(withParameter(turnedLadder(8, 0.012), DesignParameter::Thickness, 0.006));
         QCOMPARE(one.at(2, 0).reached, alone.reached);
         QCOMPARE(one.at(2, 0).flipTimes, alone.flipTimes);
         QVERIFY(rippleMapCsv(one).starts_with("blocks,thickness,hinges,reached,"));

@@ -6,9 +6,9 @@
 #include "jl/sim/recording.h"
 #include "tests/scene_run.h"
 
-#include <cmath>
-
 #include <QtTest>
+
+#include <cmath>
 
 using namespace jl;
 using namespace jl::test;
@@ -36,9 +36,7 @@ private slots:
         QCOMPARE(hashAfter(1.2, 0.0137), once);
     }
 
-    void hashChangesWhenTheStateDoes() {
-        QVERIFY(hashAfter(1.2, 0.1) != hashAfter(1.0, 0.1));
-    }
+    void hashChangesWhenTheStateDoes() { QVERIFY(hashAfter(1.2, 0.1) != hashAfter(1.0, 0.1)); }
 
     void restoreCarriesOnBitIdentically() {
         auto sim = simulateFile(kClassic);
@@ -60,8 +58,8 @@ private slots:
         auto sim = simulateFile(kClassic);
         QVERIFY(sim);
         sim->advanceTo(0.55);  // mid-cascade: the hand turning, blocks swinging
-        for (Integrator kind : {Integrator::ExplicitEuler, Integrator::SymplecticEuler, Integrator::RK4,
-                                Integrator::DormandPrince45}) {
+        for (Integrator kind :
+             {Integrator::ExplicitEuler, Integrator::SymplecticEuler, Integrator::RK4, Integrator::DormandPrince45}) {
             struct Run {
                 World w;
                 Dynamics d;

@@ -52,7 +52,8 @@ class EventLocation : public QObject {
 private slots:
     // Any motion polynomial of degree 5 in time is reproduced exactly.
     void quinticMotionIsExact() {
-        const double c[3][6] = {{0.3, -1.2, 4.0, -7.5, 2.25, 9.0}, {-2.0, 0.5, 0.0, 3.0, -1.0, 0.7}, {1.0, 0, 0, 0, 0, -4.0}};
+        const double c[3][6] = {
+            {0.3, -1.2, 4.0, -7.5, 2.25, 9.0}, {-2.0, 0.5, 0.0, 3.0, -1.0, 0.7}, {1.0, 0, 0, 0, 0, -4.0}};
         auto poly = [&](int i, double t, int derivative) {
             double sum = 0;
             for (int p = derivative; p < 6; ++p) {
@@ -62,7 +63,8 @@ private slots:
             }
             return sum;
         };
-        const KnownMotion m{[&](int i, double t) { return poly(i, t, 0); }, [&](int i, double t) { return poly(i, t, 1); },
+        const KnownMotion m{[&](int i, double t) { return poly(i, t, 0); },
+                            [&](int i, double t) { return poly(i, t, 1); },
                             [&](int i, double t) { return poly(i, t, 2); }, 3};
         const auto [dq, dv] = m.worstError(0.4, 0.7);
         QVERIFY2(dq < 1e-13 && dv < 1e-13, qPrintable(QString("position error %1, velocity error %2").arg(dq).arg(dv)));
@@ -72,7 +74,8 @@ private slots:
     // h^5 in velocity: halving the step divides them by about 64 and 32.
     void errorOrderIsSixAndFive() {
         const double w = 7.0;
-        const KnownMotion m{[&](int, double t) { return std::sin(w * t); }, [&](int, double t) { return w * std::cos(w * t); },
+        const KnownMotion m{[&](int, double t) { return std::sin(w * t); },
+                            [&](int, double t) { return w * std::cos(w * t); },
                             [&](int, double t) { return -w * w * std::sin(w * t); }, 1};
         const auto [q1, v1] = m.worstError(0.1, 0.02);
         const auto [q2, v2] = m.worstError(0.1, 0.01);

@@ -20,9 +20,9 @@ using namespace jl::test;
 namespace {
 
 // The examples whose claims a test below checks (a new example needs one).
-const std::set<std::string> kClaimsChecked = {
-    "back-and-forth.yaml", "classic.yaml", "falling-chain.yaml", "heavy-middle.yaml", "long-ladder.yaml",
-    "particles-and-springs.yaml", "pendulum.yaml", "two-ripples.yaml", "wrong-way.yaml"};
+const std::set<std::string> kClaimsChecked = {"back-and-forth.yaml", "classic.yaml",     "falling-chain.yaml",
+                                              "heavy-middle.yaml",   "long-ladder.yaml", "particles-and-springs.yaml",
+                                              "pendulum.yaml",       "two-ripples.yaml", "wrong-way.yaml"};
 
 // What "small" means for the energy books of a ladder: lifting all of it
 // through its own height, m g N L (1 J for the classic ladder).
@@ -145,7 +145,8 @@ private slots:
         if (QTest::currentTestFailed()) return;
         const auto first = firstFlips(r.events);
         QCOMPARE(reach(first), 5);
-        for (int j : {1, 2}) QVERIFY2(std::abs(first.at(j + 1) - first.at(j) - 0.14) < 0.015, qPrintable(QString::number(j)));
+        for (int j : {1, 2})
+            QVERIFY2(std::abs(first.at(j + 1) - first.at(j) - 0.14) < 0.015, qPrintable(QString::number(j)));
         QVERIFY(std::abs(first.at(4) - first.at(3) - 0.4) < 0.05);
         QVERIFY(std::abs(first.at(5) - first.at(4) - 0.13) < 0.015);
     }
@@ -177,14 +178,16 @@ private slots:
             return n;
         };
         const auto flips = flipsOf(r.events);
-        for (int j = 1; j <= 5; ++j) QVERIFY2(flips.count(j) && flips.at(j) == 2, qPrintable(QString("hinge %1").arg(j)));
+        for (int j = 1; j <= 5; ++j)
+            QVERIFY2(flips.count(j) && flips.at(j) == 2, qPrintable(QString("hinge %1").arg(j)));
         for (int j = 6; j <= 10; ++j) QVERIFY2(!flips.count(j), qPrintable(QString("hinge %1 flipped").arg(j)));
         QVERIFY(flips.count(11));
         const auto first = firstFlips(r.events);
         QVERIFY(first.at(4) < 0.9 && first.at(5) > 0.9);
         const auto second = firstFlips(r.events, 1.0);
         QVERIFY(second.count(1) && second.count(5) && second.at(1) < second.at(5));
-        for (int j = 1; j < 4; ++j) QVERIFY(first.at(j + 1) - first.at(j) > 0.1 && first.at(j + 1) - first.at(j) < 0.16);
+        for (int j = 1; j < 4; ++j)
+            QVERIFY(first.at(j + 1) - first.at(j) > 0.1 && first.at(j + 1) - first.at(j) < 0.16);
 
         // The same ladder turned over alone: its ripple reaches all eleven hinges.
         SceneLoad load = loadScene(std::string(JL_SOURCE_DIR) + "/examples/two-ripples.yaml");
@@ -200,7 +203,8 @@ private slots:
             auto other = Simulation::build(s).simulation;
             const auto n = flipsOf(runUntil(*other, 4.0).events);
             for (int j = 1; j <= 10; ++j)
-                QVERIFY2(n.count(j) && n.at(j) >= 2, qPrintable(QString("turned back at %1 s: hinge %2").arg(at).arg(j)));
+                QVERIFY2(n.count(j) && n.at(j) >= 2,
+                         qPrintable(QString("turned back at %1 s: hinge %2").arg(at).arg(j)));
         }
     }
 
@@ -343,8 +347,8 @@ private slots:
               f.energy.dampingLoss);
         QVERIFY(peak > 1e-3);
         QVERIFY(f.energy.dampingLoss > 0);
-        QVERIFY(lastSecond < peak);        // settling
-        QVERIFY(lastSecond > 0.01 * peak); // slowly: still moving at the end
+        QVERIFY(lastSecond < peak);         // settling
+        QVERIFY(lastSecond > 0.01 * peak);  // slowly: still moving at the end
     }
 };
 

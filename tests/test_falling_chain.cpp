@@ -69,7 +69,8 @@ private slots:
     }
 
     void energyErrorShrinksAtFirstOrderWithEuler() {
-        const ChainRun a = fall(5, Integrator::ExplicitEuler, 2e-4, 0.4), b = fall(5, Integrator::ExplicitEuler, 1e-4, 0.4);
+        const ChainRun a = fall(5, Integrator::ExplicitEuler, 2e-4, 0.4),
+                       b = fall(5, Integrator::ExplicitEuler, 1e-4, 0.4);
         const double order = std::log2(a.energyError / b.energyError);
         qInfo("explicit Euler energy error %.3e -> %.3e: order %.2f", a.energyError, b.energyError, order);
         QVERIFY2(order > 0.8 && order < 1.3, qPrintable(QString::number(order)));
@@ -111,7 +112,8 @@ private slots:
         Chain onPins, offPins;
         for (Chain* c : {&onPins, &offPins}) buildFallingChain(c->w, 20);
         for (int i = 0; i < 40; ++i) {
-            const MotionStep m = advanceAndProject(onPins.w, onPins.d, onPins.s, onPins.t, 0.5 - onPins.t, onPins.ledger, 1e-12);
+            const MotionStep m =
+                advanceAndProject(onPins.w, onPins.d, onPins.s, onPins.t, 0.5 - onPins.t, onPins.ledger, 1e-12);
             QVERIFY(m.ok() && m.step.endEvaluated);
             // What the step left is the end as evaluated afresh, bit for bit.
             const Eigen::VectorXd a = onPins.w.a;

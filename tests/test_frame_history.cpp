@@ -3,7 +3,6 @@
 // never frame 0, the protected frame or a keyframe's snapshot, and an evicted
 // frame re-simulated from the keyframe before it is the frame first recorded.
 #include "jl/sim/frame_history.h"
-
 #include "tests/scene_run.h"
 
 #include <QtTest>
@@ -68,10 +67,10 @@ private slots:
         const std::size_t budget = 40'000;
         record(h, 120, budget, 70);
         QVERIFY(h.bytes() <= budget);
-        QVERIFY(h.frame(0));          // the scene as built
-        QVERIFY(h.frame(70));         // the frame on screen
-        QVERIFY(h.frame(h.head()));   // the newest
-        QVERIFY(!h.frame(1));         // the oldest others went first
+        QVERIFY(h.frame(0));         // the scene as built
+        QVERIFY(h.frame(70));        // the frame on screen
+        QVERIFY(h.frame(h.head()));  // the newest
+        QVERIFY(!h.frame(1));        // the oldest others went first
         for (int i = 0; i < h.count(); ++i) {
             const auto [k, snap] = h.keyframeAtOrBefore(i);
             QCOMPARE(k, i / 25 * 25);

@@ -48,7 +48,7 @@ struct Outcome {
     std::string failure;
     long long events = 0;
     double time = 0;
-    double until = 0;          // s, the time asked for
+    double until = 0;  // s, the time asked for
 };
 
 Outcome run(const Scene& scene, double until, double frameInterval = 0.01) {
@@ -111,9 +111,12 @@ void requireSoundOrDiagnosed(const Outcome& o) {
     // flowed through the books if more did (a hand spinning the top block at
     // 100 turns a second puts in 1,300 J where m g H is 0.4 J).
     const double scale = std::max(o.energyScale, o.flowed);
-    QVERIFY2(o.worstBalance <= 3e-5 * scale, qPrintable(QString("balance %1 J of scale %2 J").arg(o.worstBalance).arg(scale)));
-    if (o.failure.empty()) QVERIFY(o.time >= o.until - 1e-9);
-    else QVERIFY2(o.failure.rfind("at t = ", 0) == 0 && o.failure.size() > 30, o.failure.c_str());
+    QVERIFY2(o.worstBalance <= 3e-5 * scale,
+             qPrintable(QString("balance %1 J of scale %2 J").arg(o.worstBalance).arg(scale)));
+    if (o.failure.empty())
+        QVERIFY(o.time >= o.until - 1e-9);
+    else
+        QVERIFY2(o.failure.rfind("at t = ", 0) == 0 && o.failure.size() > 30, o.failure.c_str());
 }
 
 // Two 60 x 12 x 45 mm blocks of density 600 (m = 19.44 g), block 0 held
@@ -158,7 +161,8 @@ private slots:
         Scene s = ladderScene(6);
         BlockOverride heavy;
         heavy.index = 3;
-        heavy.mass = 1e4 * s.ladder->block.density * s.ladder->block.length * s.ladder->block.thickness * s.ladder->block.width;
+        heavy.mass =
+            1e4 * s.ladder->block.density * s.ladder->block.length * s.ladder->block.thickness * s.ladder->block.width;
         s.ladder->overrides.push_back(heavy);
         s.script.push_back(turn(0.1, kPi, 0.3));
         s.solver.integrator = Integrator::DormandPrince45;
@@ -401,8 +405,10 @@ private slots:
         const double loss = kMass * (kG * tau) * (kG * tau) / 2;
         qInfo("user work %.12g J (m g (L + g tau^2/2) = %.12g J), impact loss %.12g J (m (g tau)^2/2 = %.12g J)",
               after.energy.userWork, lift, after.energy.impactLoss, loss);
-        QVERIFY2(std::abs(after.energy.userWork - lift) < 1e-9 * lift, qPrintable(QString::number(after.energy.userWork, 'g', 15)));
-        QVERIFY2(std::abs(after.energy.impactLoss - loss) < 1e-9 * loss, qPrintable(QString::number(after.energy.impactLoss, 'g', 15)));
+        QVERIFY2(std::abs(after.energy.userWork - lift) < 1e-9 * lift,
+                 qPrintable(QString::number(after.energy.userWork, 'g', 15)));
+        QVERIFY2(std::abs(after.energy.impactLoss - loss) < 1e-9 * loss,
+                 qPrintable(QString::number(after.energy.impactLoss, 'g', 15)));
         QVERIFY(std::abs(after.energy.heldWork) < 1e-15);
         QVERIFY(after.energy.kinetic < 1e-20);
         QVERIFY(std::abs(after.energy.balance()) < 1e-15);
@@ -446,11 +452,13 @@ private slots:
             lowest = std::min(lowest, f.hinges[0].foldAngle);
             highest = std::max(highest, f.hinges[0].foldAngle);
             worst = std::max(worst, std::abs(f.energy.balance()));
-            for (const Event& e : f.events) locked = locked || ((e.kind == EventKind::Lock || e.kind == EventKind::Fold) && e.hinge == 1);
+            for (const Event& e : f.events)
+                locked = locked || ((e.kind == EventKind::Lock || e.kind == EventKind::Fold) && e.hinge == 1);
         }
         qInfo("phi in [%.3g, %.3g], balance %.2e J", lowest, highest, worst);
         QVERIFY(locked);
-        QVERIFY2(lowest >= -1e-6 && highest <= kPi + 1e-6, qPrintable(QString("phi in [%1, %2]").arg(lowest).arg(highest)));
+        QVERIFY2(lowest >= -1e-6 && highest <= kPi + 1e-6,
+                 qPrintable(QString("phi in [%1, %2]").arg(lowest).arg(highest)));
         QVERIFY2(worst < 1e-9, qPrintable(QString::number(worst)));
     }
 
@@ -537,7 +545,8 @@ private slots:
             QCOMPARE(cutRun.simulation->time(), at);
             QVERIFY2(cutRun.simulation->ladder()->hinge(1).mode == HingeMode::Cut, c.name);
             const EnergyFrame a = plain.simulation->frame().energy, b = cutRun.simulation->frame().energy;
-            qInfo("%s: E %.15g J without the cut, %.15g J with it; balance %.3g J, %.3g J", c.name, a.total(), b.total(), a.balance(), b.balance());
+            qInfo("%s: E %.15g J without the cut, %.15g J with it; balance %.3g J, %.3g J", c.name, a.total(),
+                  b.total(), a.balance(), b.balance());
             const double withinTolerance = 2 * kMass * kG * c.scene.solver.projectionTolerance;
             QVERIFY2(std::abs(a.total() - b.total()) < withinTolerance, c.name);
             QCOMPARE(b.userWork, a.userWork);

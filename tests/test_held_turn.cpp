@@ -38,7 +38,8 @@ Frame turned(int blocks, Integrator integrator, double step, double tolerance = 
 
 double largestDistance(const Frame& a, const Frame& b) {
     double worst = 0;
-    for (size_t i = 0; i < a.poses.size(); ++i) worst = std::max(worst, (a.poses[i].position - b.poses[i].position).norm());
+    for (size_t i = 0; i < a.poses.size(); ++i)
+        worst = std::max(worst, (a.poses[i].position - b.poses[i].position).norm());
     return worst;
 }
 

@@ -31,7 +31,9 @@ constexpr double m = 600 * L * T * 0.045;
 // "weld" (two bodies, a pin and a weld): the hand answers hold for both.
 std::string flatHeldBlock(double phi, const char* turn, const QString& pairs = "merge") {
     return "format: jacobs-ladder/1\n"
-           "solver: {rigid_pairs: " + pairs.toStdString() + "}\n"
+           "solver: {rigid_pairs: " +
+           pairs.toStdString() +
+           "}\n"
            "ladder:\n"
            "  blocks: 2\n"
            "  held: [0]\n"
@@ -77,9 +79,9 @@ private slots:
         QCOMPARE(int(corners.size()), 5);
         for (int i = 0; i < 5; ++i)
             for (int k = 0; k < 4; ++k) QCOMPARE(corners[size_t(i)][size_t(k)], ladder.cornerLocal(i, k));
-        QCOMPARE(corners[2][2].x(), 0.01);  // half the overridden thickness
-        QCOMPARE(corners[0][1].y(), 0.03);  // even blocks: corner 1 at the top end
-        QCOMPARE(corners[1][1].y(), -0.03); // odd blocks: at the bottom end
+        QCOMPARE(corners[2][2].x(), 0.01);   // half the overridden thickness
+        QCOMPARE(corners[0][1].y(), 0.03);   // even blocks: corner 1 at the top end
+        QCOMPARE(corners[1][1].y(), -0.03);  // odd blocks: at the bottom end
         for (int j = 1; j < 5; ++j) {
             const int k = ladder.hinge(j).corner;
             const Vec2 a = ladder.cornerWorld(w, j - 1, k), b = ladder.cornerWorld(w, j, k);
@@ -101,7 +103,8 @@ private slots:
         QCOMPARE(sim->ladder()->hinge(1).mode, HingeMode::OpenLocked);
         const double expected = m * g * L / (2 * T);
         const double n = contactNow(*sim, 1).normal;
-        QVERIFY2(std::abs(n / expected - 1) < 1e-6, qPrintable(QString("N = %1, m g L / 2T = %2").arg(n).arg(expected)));
+        QVERIFY2(std::abs(n / expected - 1) < 1e-6,
+                 qPrintable(QString("N = %1, m g L / 2T = %2").arg(n).arg(expected)));
         QVERIFY(r.lastImpactLoss > 0);  // the plastic impact dissipated energy
         QVERIFY2(r.worstBalance < 1e-8, qPrintable(QString::number(r.worstBalance)));
     }
@@ -159,9 +162,12 @@ private slots:
         const double exact = (std::comp_ellint_1(k) + std::ellint_1(k, std::asin(std::sin(a / 2) / k))) / omega0;
         char tol[32];
         std::snprintf(tol, sizeof tol, "%.17g", eventTolerance);
-        auto sim = simulate("format: jacobs-ladder/1\n"
-                            "solver: {integrator: rk4, step: 1e-4, event_tolerance: " + std::string(tol) + "}\n"
-                            "ladder: {blocks: 2, held: [0], initial: {fold_angles: [1.2]}}\n");
+        auto sim = simulate(
+            "format: jacobs-ladder/1\n"
+            "solver: {integrator: rk4, step: 1e-4, event_tolerance: " +
+            std::string(tol) +
+            "}\n"
+            "ladder: {blocks: 2, held: [0], initial: {fold_angles: [1.2]}}\n");
         QVERIFY(sim);
         const Run r = runUntil(*sim, exact + 0.01);
         QVERIFY(r.failure.empty());
@@ -185,9 +191,12 @@ private slots:
     void locatingALockRunsNoStepAgain() {
         std::vector<long long> extra;
         for (const char* tolerance : {"1e-6", "1e-12"}) {
-            auto sim = simulate("format: jacobs-ladder/1\n"
-                                "solver: {integrator: rk4, step: 1e-3, event_tolerance: " + std::string(tolerance) + "}\n"
-                                "ladder: {blocks: 2, held: [0], initial: {fold_angles: [1.2]}}\n");
+            auto sim = simulate(
+                "format: jacobs-ladder/1\n"
+                "solver: {integrator: rk4, step: 1e-3, event_tolerance: " +
+                std::string(tolerance) +
+                "}\n"
+                "ladder: {blocks: 2, held: [0], initial: {fold_angles: [1.2]}}\n");
             QVERIFY(sim);
             long long before = sim->frame().solver.evaluations, plain = 0, eventful = -1;
             while (eventful < 0 && sim->time() < 0.2) {
@@ -196,8 +205,10 @@ private slots:
                 const long long now = f.solver.evaluations;
                 bool locked = false;
                 for (const Event& e : f.events) locked = locked || e.kind == EventKind::Lock;
-                if (locked) eventful = now - before;
-                else plain = now - before;
+                if (locked)
+                    eventful = now - before;
+                else
+                    plain = now - before;
                 before = now;
             }
             QVERIFY(eventful > 0 && plain > 0);
@@ -218,7 +229,8 @@ private slots:
         const double k = 0.572;  // N/m: about 0.3 m g at the 0.1 m stretch
         auto sim = simulate(flatHeldBlock(1.4, "90deg") +
                             "springs: [{a: {body: world, local: [-0.06, 0.1]}, b: {body: 'block:1', local: [0, 0]}, "
-                            "stiffness: " + std::to_string(k) + ", rest_length: 0}]\n");
+                            "stiffness: " +
+                            std::to_string(k) + ", rest_length: 0}]\n");
         QVERIFY(sim);
         const Run r = runUntil(*sim, 0.9);
         QVERIFY(r.failure.empty());
@@ -227,7 +239,8 @@ private slots:
         const Vec2 p = sim->ladder()->cornerWorld(w, 0, sim->ladder()->hinge(1).corner);
         const Vec2 c = w.partPose(sim->blockPart(1)).position;
         const Vec2 spring = k * (Vec2(-0.06, 0.1) - c), weight = m * w.gravity;
-        const double expected = m * g * L / (2 * T) * (cross(c - p, weight) + cross(c - p, spring)) / cross(c - p, weight);
+        const double expected =
+            m * g * L / (2 * T) * (cross(c - p, weight) + cross(c - p, spring)) / cross(c - p, weight);
         const double n = contactNow(*sim, 1).normal;
         qInfo("N = %.9f N, by hand %.9f N (without the spring %.9f N)", n, expected, m * g * L / (2 * T));
         QVERIFY2(std::abs(n / expected - 1) < 1e-6, qPrintable(QString("N = %1, by hand %2").arg(n).arg(expected)));
@@ -237,9 +250,10 @@ private slots:
     // falling and turning after its hinge is cut, loses nothing to the
     // damper (it once kept acting across the cut).
     void aCutHingeLosesItsDamper() {
-        auto sim = simulate("format: jacobs-ladder/1\n"
-                            "ladder: {blocks: 2, held: [0], hinges: {damping: 1e-3}, initial: {fold_angles: [1.2]}}\n"
-                            "script: [{at: 0.05, cut: {hinge: 1}}]\n");
+        auto sim = simulate(
+            "format: jacobs-ladder/1\n"
+            "ladder: {blocks: 2, held: [0], hinges: {damping: 1e-3}, initial: {fold_angles: [1.2]}}\n"
+            "script: [{at: 0.05, cut: {hinge: 1}}]\n");
         QVERIFY(sim);
         double lossAtCut = -1, omega0 = 0;
         const Run r = runUntil(*sim, 0.2, [&](const Frame& f) {
@@ -262,17 +276,19 @@ private slots:
     // once jumped by 0.02 J at the grab (the hold's velocity jump was left to
     // the next projection, unbooked).
     void grabbingAMovingBlockIsBookedLikeAnImpact() {
-        auto sim = simulate("format: jacobs-ladder/1\n"
-                            "ladder: {blocks: 6, held: [0]}\n"
-                            "script:\n"
-                            "  - {at: 0.2, turn: {block: 0, by: 180deg, duration: 0.3}}\n"
-                            "  - {at: 0.8, hold: {block: 3}}\n"
-                            "  - {at: 1.0, release: {block: 3}}\n");
+        auto sim = simulate(
+            "format: jacobs-ladder/1\n"
+            "ladder: {blocks: 6, held: [0]}\n"
+            "script:\n"
+            "  - {at: 0.2, turn: {block: 0, by: 180deg, duration: 0.3}}\n"
+            "  - {at: 0.8, hold: {block: 3}}\n"
+            "  - {at: 1.0, release: {block: 3}}\n");
         QVERIFY(sim);
         double speedBefore = 0;
         const Run r = runUntil(*sim, 1.5, [&](const Frame& f) {
             if (f.time < 0.8) speedBefore = sim->world().partVelocity(sim->blockPart(3)).linear.norm();
-            if (f.time >= 0.8 && f.time < 1.0) QCOMPARE(sim->world().partVelocity(sim->blockPart(3)).linear.norm(), 0.0);
+            if (f.time >= 0.8 && f.time < 1.0)
+                QCOMPARE(sim->world().partVelocity(sim->blockPart(3)).linear.norm(), 0.0);
         });
         QVERIFY2(r.failure.empty(), r.failure.c_str());
         QVERIFY(speedBefore > 0.05);  // it was moving when the hand took it
@@ -285,9 +301,10 @@ private slots:
     // (the first one won) and an undetermined contact force. The run stops
     // and says so, naming the blocks, instead of following one hand.
     void aLockBetweenTwoHeldBlocksStopsTheRunAndSaysWhy() {
-        auto sim = simulate("format: jacobs-ladder/1\n"
-                            "ladder: {blocks: 2, held: [0, 1], initial: {fold_angles: [1.2]}}\n"
-                            "script: [{at: 0.1, turn: {block: 1, by: 90deg, duration: 0.3}}]\n");
+        auto sim = simulate(
+            "format: jacobs-ladder/1\n"
+            "ladder: {blocks: 2, held: [0, 1], initial: {fold_angles: [1.2]}}\n"
+            "script: [{at: 0.1, turn: {block: 1, by: 90deg, duration: 0.3}}]\n");
         QVERIFY(sim);
         const Run r = runUntil(*sim, 1.0);
         QVERIFY(!r.failure.empty());
@@ -407,9 +424,10 @@ private slots:
         const Vec2 c = w.partPose(b).position;
         const double ip = w.part(b).inertia + m * (c - h).squaredNorm();
         const double omega = cross(c - h, P) / ip;
-        QVERIFY2(std::abs(v.angular / omega - 1) < 1e-9, qPrintable(QString("omega %1, by hand %2").arg(v.angular).arg(omega)));
+        QVERIFY2(std::abs(v.angular / omega - 1) < 1e-9,
+                 qPrintable(QString("omega %1, by hand %2").arg(v.angular).arg(omega)));
         QVERIFY((v.linear - omega * perp(c - h)).norm() < 1e-9 * std::abs(omega) * (c - h).norm());
-        QVERIFY(sim->ladder()->foldRate(w, 1) > 0);  // opening
+        QVERIFY(sim->ladder()->foldRate(w, 1) > 0);                                    // opening
         QVERIFY2(r.worstBalance < 1e-8, qPrintable(QString::number(r.worstBalance)));  // as the lock case
     }
 
@@ -428,12 +446,15 @@ private slots:
     void lockConservesMomentumWithoutHeldBlocks_data() { bothModelsOfRigidPairs(); }
     void lockConservesMomentumWithoutHeldBlocks() {
         QFETCH(QString, pairs);
-        auto sim = simulate("format: jacobs-ladder/1\n"
-                            "solver: {rigid_pairs: " + pairs.toStdString() + "}\n"
-                            "gravity: [0, 0]\n"
-                            "ladder: {blocks: 2, held: [], initial: {fold_angles: [0.6]}}\n"
-                            "script:\n"
-                            "  - {at: 0, push: {block: 1, impulse: [0.004, 0.001], point: [0, -0.02]}}\n");
+        auto sim = simulate(
+            "format: jacobs-ladder/1\n"
+            "solver: {rigid_pairs: " +
+            pairs.toStdString() +
+            "}\n"
+            "gravity: [0, 0]\n"
+            "ladder: {blocks: 2, held: [], initial: {fold_angles: [0.6]}}\n"
+            "script:\n"
+            "  - {at: 0, push: {block: 1, impulse: [0.004, 0.001], point: [0, -0.02]}}\n");
         QVERIFY(sim);
         auto momentum = [&](Vec2& p, double& spin) {
             const World& w = sim->world();
@@ -489,10 +510,13 @@ private slots:
     void noHingeChattersMoreThanThreeTimesInARow() {
         QFETCH(QString, ladder);
         QFETCH(double, until);
-        auto sim = simulate("format: jacobs-ladder/1\n"
-                            "solver: {step: 2.5e-4}\n"
-                            "ladder: " + ladder.toStdString() + "\n"
-                            "script: [{at: 0.2, turn: {block: 0, by: 180deg, duration: 0.3}}]\n");
+        auto sim = simulate(
+            "format: jacobs-ladder/1\n"
+            "solver: {step: 2.5e-4}\n"
+            "ladder: " +
+            ladder.toStdString() +
+            "\n"
+            "script: [{at: 0.2, turn: {block: 0, by: 180deg, duration: 0.3}}]\n");
         QVERIFY(sim);
         const Run r = runUntil(*sim, until);
         QVERIFY2(r.failure.empty(), r.failure.c_str());
@@ -507,10 +531,13 @@ private slots:
     void threeBlockCascadeFoldsAndFlipsInOrder_data() { bothModelsOfRigidPairs(); }
     void threeBlockCascadeFoldsAndFlipsInOrder() {
         QFETCH(QString, pairs);
-        auto sim = simulate("format: jacobs-ladder/1\n"
-                            "solver: {rigid_pairs: " + pairs.toStdString() + "}\n"
-                            "ladder: {blocks: 3, held: [0]}\n"
-                            "script: [{at: 0.2, turn: {block: 0, by: 180deg, duration: 0.3}}]\n");
+        auto sim = simulate(
+            "format: jacobs-ladder/1\n"
+            "solver: {rigid_pairs: " +
+            pairs.toStdString() +
+            "}\n"
+            "ladder: {blocks: 3, held: [0]}\n"
+            "script: [{at: 0.2, turn: {block: 0, by: 180deg, duration: 0.3}}]\n");
         QVERIFY(sim);
         const Run r = runUntil(*sim, 1.0);
         QVERIFY(r.failure.empty());

@@ -145,8 +145,8 @@ private slots:
         const auto [coarse, coarseDrift] = run(Integrator::RosenbrockW, 60);
         const auto [fine, fineDrift] = run(Integrator::RosenbrockW, 120);
         const double e1 = distance(coarse), e2 = distance(fine), order = std::log2(e1 / e2);
-        qInfo("block centres %.3e m off with 60 steps, %.3e with 120: order %.3f; energy %.2e J, %.2e J", e1, e2,
-              order, coarseDrift, fineDrift);
+        qInfo("block centres %.3e m off with 60 steps, %.3e with 120: order %.3f; energy %.2e J, %.2e J", e1, e2, order,
+              coarseDrift, fineDrift);
         QVERIFY2(std::abs(order - 3) < 0.3, qPrintable(QString::number(order)));
         QVERIFY(e2 < 1e-5);
         QVERIFY(fineDrift < 1e-4);

@@ -92,13 +92,18 @@ private slots:
                 // Cubic Hermite root would be better; the step is tiny, and
                 // linear interpolation errs by O(h^2) ~ 1e-8 of the period.
                 const double tc = t - h * now / (now - prev);
-                if (firstCrossing < 0) firstCrossing = tc; else crossing = tc;
+                if (firstCrossing < 0)
+                    firstCrossing = tc;
+                else
+                    crossing = tc;
             }
             prev = now;
         }
         QVERIFY(crossing > 0);
         QVERIFY2(std::abs((crossing - firstCrossing) / linear - 1) < 1e-6,
-                 qPrintable(QString("measured %1 s, formula %2 s").arg(crossing - firstCrossing, 0, 'g', 12).arg(linear, 0, 'g', 12)));
+                 qPrintable(QString("measured %1 s, formula %2 s")
+                                .arg(crossing - firstCrossing, 0, 'g', 12)
+                                .arg(linear, 0, 'g', 12)));
     }
 
     void largeAmplitudeReturnsAfterExactEllipticPeriod() {
@@ -146,7 +151,8 @@ private slots:
         const PartId a = w.addBox(m, Vec2(L, T), W, Pose{centre + rotate(angle, Vec2(-L / 2, 0)), angle});
         const PartId b = w.addBox(m, Vec2(L, T), W, Pose{centre + rotate(angle, Vec2(L / 2, 0)), angle});
         QVERIFY(!w.combine(w.anchor(Vec2::Zero()), w.addParticle(a, Vec2(-L / 2, -T / 2))));
-        for (double y : {-T / 2, T / 2}) QVERIFY(!w.combine(w.addParticle(a, Vec2(L / 2, y)), w.addParticle(b, Vec2(-L / 2, y))));
+        for (double y : {-T / 2, T / 2})
+            QVERIFY(!w.combine(w.addParticle(a, Vec2(L / 2, y)), w.addParticle(b, Vec2(-L / 2, y))));
         QCOMPARE(int(w.welds().size()), weld ? 1 : 0);
         QCOMPARE(w.part(a).body == w.part(b).body, !weld);
         const double period = pendulumPeriod(inertia, M, g, r, theta0);
@@ -219,7 +225,8 @@ private slots:
             QCOMPARE(f.time, k * every);
             const double swing = f.poses[0].angle - rest;
             const double expected = k % 4 == 0 ? (k % 8 == 0 ? theta0 : -theta0) : k % 2 == 0 ? 0.0 : NAN;
-            if (!std::isnan(expected)) QVERIFY2(std::abs(swing - expected) < 1e-7, qPrintable(QString("k = %1: %2").arg(k).arg(swing)));
+            if (!std::isnan(expected))
+                QVERIFY2(std::abs(swing - expected) < 1e-7, qPrintable(QString("k = %1: %2").arg(k).arg(swing)));
         }
         // The grid times fall inside steps, not on their ends: they were read off.
         QVERIFY(a.steps > 40);

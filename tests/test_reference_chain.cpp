@@ -59,7 +59,8 @@ private slots:
         const int steps = 5000;
         for (int i = 0; i < steps; ++i) QVERIFY(advanceAndProject(w, d, s, i * 1e-4, 1e-4, ledger, 1e-12).ok());
         double worst = 0;
-        for (int i = 0; i < n; ++i) worst = std::max(worst, (w.partPose(parts[size_t(i)]).position - reference.centre(i)).norm());
+        for (int i = 0; i < n; ++i)
+            worst = std::max(worst, (w.partPose(parts[size_t(i)]).position - reference.centre(i)).norm());
         qInfo("engine (RK4, 0.1 ms) against reference: %.3e m", worst);
         QVERIFY2(worst < 1e-6, qPrintable(QString::number(worst)));
     }

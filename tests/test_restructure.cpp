@@ -75,7 +75,6 @@ QString invalidity(const World& w) {
     return {};
 }
 
-
 // A chain of n boxes end to end, hinged at their ends, turning as one rigid
 // body (angular velocity w about the origin) with particles for a second,
 // locking join of each neighbouring pair at the lower box's centre.
@@ -94,7 +93,8 @@ struct RigidChain {
         for (int i = 1; i < n; ++i) {
             QVERIFY(!w.combine(w.addParticle(boxes[size_t(i - 1)], Vec2(0, -0.03)),
                                w.addParticle(boxes[size_t(i)], Vec2(0, 0.03)), false));
-            locks.push_back({w.addParticle(boxes[size_t(i - 1)], Vec2(0, -0.06)), w.addParticle(boxes[size_t(i)], Vec2(0, 0))});
+            locks.push_back(
+                {w.addParticle(boxes[size_t(i - 1)], Vec2(0, -0.06)), w.addParticle(boxes[size_t(i)], Vec2(0, 0))});
         }
     }
 };
@@ -231,7 +231,8 @@ private slots:
         World w;
         w.gravity = Vec2::Zero();
         const PartId held = w.addBox(0.02, Vec2(0.012, 0.06), 0.045, Pose{});
-        const PartId free = w.addBox(0.02, Vec2(0.012, 0.06), 0.045, Pose{Vec2(0, -0.06), 0}, Twist{Vec2(0.3, -0.1), 2.0});
+        const PartId free =
+            w.addBox(0.02, Vec2(0.012, 0.06), 0.045, Pose{Vec2(0, -0.06), 0}, Twist{Vec2(0.3, -0.1), 2.0});
         w.hold(held, Drive(w.partPose(held)));
         // The hand carries its block at 1 m/s: in the world frame the impact speeds the free block up.
         w.v.segment<2>(3 * w.part(held).body) = Vec2(1.0, 0);
@@ -257,11 +258,11 @@ private slots:
         QVERIFY(s.w.combine(-1, s.aRight).has_value());
         QVERIFY(s.w.combine(s.aRight, s.aRight).has_value());
         QVERIFY(s.w.combine(s.aRight, s.aTop).has_value());  // two points of one part
-        QVERIFY(s.w.separate(s.aRight).has_value());          // nothing combined into it
+        QVERIFY(s.w.separate(s.aRight).has_value());         // nothing combined into it
         QVERIFY(unchanged(q, v, 0));
         QVERIFY(!s.w.combine(s.aRight, s.bLeft));
         q = s.w.q, v = s.w.v;
-        const auto error = s.w.combine(s.bLeft, s.aTop);      // absorbed: reported, not reused
+        const auto error = s.w.combine(s.bLeft, s.aTop);  // absorbed: reported, not reused
         QVERIFY(error.has_value());
         QVERIFY(error->message.find("combined into") != std::string::npos);
         QVERIFY(unchanged(q, v, 1));
@@ -360,8 +361,9 @@ private slots:
         std::uniform_real_distribution<double> u(-1, 1);
         std::vector<ParticleId> particles;
         for (int i = 0; i < 100; ++i) {
-            const PartId p = w.addBox(0.01 + 0.02 * (u(rng) + 1), Vec2(0.06, 0.012), 0.045,
-                                      Pose{Vec2(0.07 * (i % 10), 0.07 * (i / 10)), u(rng)}, Twist{Vec2(u(rng), u(rng)), u(rng)});
+            const PartId p =
+                w.addBox(0.01 + 0.02 * (u(rng) + 1), Vec2(0.06, 0.012), 0.045,
+                         Pose{Vec2(0.07 * (i % 10), 0.07 * (i / 10)), u(rng)}, Twist{Vec2(u(rng), u(rng)), u(rng)});
             for (int k = 0; k < 4; ++k)
                 particles.push_back(w.addParticle(p, Vec2((k & 1) ? 0.03 : -0.03, (k & 2) ? 0.006 : -0.006)));
         }
@@ -382,7 +384,12 @@ private slots:
                 error = w.combine(a, b);
                 if (!error) joined.push_back(a);
             }
-            if (error) ++refused; else if (split) ++separated; else ++combined;
+            if (error)
+                ++refused;
+            else if (split)
+                ++separated;
+            else
+                ++combined;
             const QString bad = invalidity(w);
             QVERIFY2(bad.isEmpty(), qPrintable(QString("after operation %1: %2").arg(op).arg(bad)));
         }

@@ -124,7 +124,8 @@ private slots:
     // asks for yaw 0, edge-on, keeps it through a save and a load.
     void anEdgeOnViewIsKeptAsWritten() {
         QVERIFY(ViewSpec{}.yaw != 0);
-        const SceneLoad load = parseScene("format: jacobs-ladder/1\nladder: {blocks: 3}\nview: {yaw: 0}\n", "edge.yaml");
+        const SceneLoad load =
+            parseScene("format: jacobs-ladder/1\nladder: {blocks: 3}\nview: {yaw: 0}\n", "edge.yaml");
         QVERIFY(load.scene);
         QCOMPARE(load.scene->view.yaw, 0.0);
         QCOMPARE(reloaded(*load.scene).view.yaw, 0.0);
@@ -135,7 +136,8 @@ private slots:
         QVERIFY(!one.scene);
         QVERIFY2(one.errors.front().format().find(">= 2") != std::string::npos, one.errors.front().format().c_str());
         QCOMPARE(LoadLimits{}.maxBlocks, range::kMostBlocks);
-        const std::string most = "format: jacobs-ladder/1\nladder: {blocks: " + std::to_string(range::kMostBlocks + 1) + "}\n";
+        const std::string most =
+            "format: jacobs-ladder/1\nladder: {blocks: " + std::to_string(range::kMostBlocks + 1) + "}\n";
         QVERIFY(!parseScene(most, "most.yaml").scene);
     }
 

@@ -28,9 +28,7 @@ std::string readBytes(const fs::path& path) {
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-void writeBytes(const fs::path& path, const std::string& text) {
-    std::ofstream(path, std::ios::binary) << text;
-}
+void writeBytes(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
 
 std::string allErrors(const SceneLoad& load) {
     std::string out;
@@ -53,12 +51,14 @@ Scene ladderScene() {
     l.held = {0, 4};
     l.initial.kind = InitialState::Kind::Poses;
     for (int i = 0; i < l.blocks; ++i)
-        l.initial.poses.push_back({i, {0.001 * i, -0.06 * i - 1e-17}, std::numbers::pi / (i + 3), {i * 0.5, -0.25}, 1.0 / 3.0});
+        l.initial.poses.push_back(
+            {i, {0.001 * i, -0.06 * i - 1e-17}, std::numbers::pi / (i + 3), {i * 0.5, -0.25}, 1.0 / 3.0});
     s.gravity = {0.5, -9.80665};
     s.linearDamping = 0.01;
     s.angularDamping = 2e-5;
     s.duration = 12.75;
-    s.solver = {Integrator::DormandPrince45, 2.5e-4, 1e-9, 1e-12, EventPolicy::EndOfStep, 1e-10, 1.0 / 120.0, RigidPairs::Weld};
+    s.solver = {Integrator::DormandPrince45, 2.5e-4, 1e-9,        1e-12,
+                EventPolicy::EndOfStep,      1e-10,  1.0 / 120.0, RigidPairs::Weld};
     using K = ScriptAction::Kind;
     ScriptAction turn{.kind = K::Turn, .at = 0.2, .block = 0, .angle = -std::numbers::pi, .duration = 0.3};
     ScriptAction turn2{.kind = K::Turn, .at = 1.1, .block = 4, .angle = 1.2345678901234567, .duration = 0.7};
@@ -129,7 +129,7 @@ private slots:
         l.initial.kind = InitialState::Kind::FoldAngles;
         l.initial.foldAngles = {0, std::atan(0.2), std::nextafter(std::numbers::pi, 0.0)};
         l.initial.poses = {{0, {0.5, 5e-324}, 0.1, {}, 0}};  // the smallest double
-        l.block.density = std::nextafter(1.0, 2.0);        // just inside the range
+        l.block.density = std::nextafter(1.0, 2.0);          // just inside the range
         s.duration = std::nextafter(5.0, 6.0);
         const SceneLoad back = parseScene(sceneToYaml(s), "saved.yaml");
         QVERIFY2(back.scene, allErrors(back).c_str());
@@ -332,8 +332,8 @@ private slots:
         QTest::newRow("block mass") << "ladder: {block: {mass: %1}}" << 1e-6 << 1e6;
         QTest::newRow("gravity") << "gravity: [0, %1]" << -1e3 << 1e3;
         QTest::newRow("at") << "script: [{at: %1, hold: {block: 1}}]" << 0.0 << 1e5;
-        QTest::newRow("stiffness") << "particles: [{name: p}]\nsprings: [{a: {body: world}, b: {body: p}, stiffness: %1}]"
-                                   << 0.0 << 1e7;
+        QTest::newRow("stiffness")
+            << "particles: [{name: p}]\nsprings: [{a: {body: world}, b: {body: p}, stiffness: %1}]" << 0.0 << 1e7;
     }
 
     void rangesIncludeTheirEnds() {

@@ -22,8 +22,9 @@ namespace {
 std::string ladderScene(int blocks, const std::string& script, const std::string& solver = "",
                         const std::string& extra = "") {
     return "format: jacobs-ladder/1\n"
-           "ladder: {blocks: " + std::to_string(blocks) + "}\n" + extra +
-           (script.empty() ? "" : "script:\n" + script) + (solver.empty() ? "" : "solver: {" + solver + "}\n");
+           "ladder: {blocks: " +
+           std::to_string(blocks) + "}\n" + extra + (script.empty() ? "" : "script:\n" + script) +
+           (solver.empty() ? "" : "solver: {" + solver + "}\n");
 }
 
 const std::string kTurn = "  - {at: 0, turn: {block: 0, by: 180deg, duration: 0.3}}\n";
@@ -37,8 +38,10 @@ std::unique_ptr<Simulation> withTail(const std::string& yaml, bool joined) {
     std::string text = yaml;
     const std::string word = joined ? "joined" : "separate";
     const auto solver = text.find("solver: {");
-    if (solver == std::string::npos) text += "solver: {still_tail: " + word + "}\n";
-    else text.insert(solver + 9, "still_tail: " + word + ", ");
+    if (solver == std::string::npos)
+        text += "solver: {still_tail: " + word + "}\n";
+    else
+        text.insert(solver + 9, "still_tail: " + word + ", ");
     return simulate(text);
 }
 
@@ -117,8 +120,10 @@ private slots:
         for (double t = 0.05; t <= until + 1e-9; t += 0.05) {
             QVERIFY(joined->advanceExactlyTo(t) && full->advanceExactlyTo(t));
             const Frame fa = joined->frame(), fb = full->frame();
-            for (const Event& e : fa.events) if (e.hinge > 0) a.push_back(e);
-            for (const Event& e : fb.events) if (e.hinge > 0) b.push_back(e);
+            for (const Event& e : fa.events)
+                if (e.hinge > 0) a.push_back(e);
+            for (const Event& e : fb.events)
+                if (e.hinge > 0) b.push_back(e);
             worst = std::max(worst, largestDistance(fa, fb));
             // The pin forces of a segment and of its blocks one by one differ
             // in rounding, and so may the step chosen from them, in rounding;
@@ -128,8 +133,9 @@ private slots:
                          qPrintable(QString("%1 steps against %2").arg(fa.solver.steps).arg(fb.solver.steps)));
             } else {
                 QCOMPARE(fa.solver.steps, fb.solver.steps);
-                QVERIFY2(std::abs(fa.solver.largestStep - fb.solver.largestStep) <= 1e-9 * fb.solver.largestStep,
-                         qPrintable(QString("%1 s against %2 s").arg(fa.solver.largestStep).arg(fb.solver.largestStep)));
+                QVERIFY2(
+                    std::abs(fa.solver.largestStep - fb.solver.largestStep) <= 1e-9 * fb.solver.largestStep,
+                    qPrintable(QString("%1 s against %2 s").arg(fa.solver.largestStep).arg(fb.solver.largestStep)));
             }
             QCOMPARE(fa.solver.stepHalvings, 0);
             QVERIFY(fa.solver.stillFrom == -1 || fa.solver.stillFrom >= firstStill);  // it only wakes
@@ -163,9 +169,10 @@ private slots:
     // A push deep in the tail, a hold, a cut: each wakes what it touches
     // first, and the motion is the full model's.
     void whatTheScriptTouchesMovesOnItsOwn() {
-        const std::string pushAndHold = ladderScene(240,
-                                                    "  - {at: 0.05, push: {block: 150, impulse: [0.002, 0], point: [0, 0.02]}}\n"
-                                                    "  - {at: 0.1, hold: {block: 190}}\n");
+        const std::string pushAndHold =
+            ladderScene(240,
+                        "  - {at: 0.05, push: {block: 150, impulse: [0.002, 0], point: [0, 0.02]}}\n"
+                        "  - {at: 0.1, hold: {block: 190}}\n");
         const std::string cut = ladderScene(240, "  - {at: 0.05, cut: {hinge: 100}}\n");
         for (const bool cutting : {false, true}) {
             const std::string& scene = cutting ? cut : pushAndHold;

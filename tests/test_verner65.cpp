@@ -72,7 +72,8 @@ private slots:
         d.evaluate(probe.world, 0);
         const double omega = fastestVibration(probe.world, d.pinForces());
         const double limit = imaginaryStabilityLimit(Integrator::Verner65) / omega;
-        QVERIFY(imaginaryStabilityLimit(Integrator::Verner65) > 2.5 * imaginaryStabilityLimit(Integrator::DormandPrince45));
+        QVERIFY(imaginaryStabilityLimit(Integrator::Verner65) >
+                2.5 * imaginaryStabilityLimit(Integrator::DormandPrince45));
         const double inside = kineticGrowth(n, 0.9 * limit, 400), outside = kineticGrowth(n, 1.5 * limit, 400);
         qInfo("fastest vibration %.0f rad/s, limit %.3g s: kinetic energy x %.3g at 0.9 of it, x %.3g at 1.5", omega,
               limit, inside, outside);
@@ -109,8 +110,8 @@ private slots:
         const Frame v = test::classicCascade(Integrator::Verner65, 1e-11);
         QVERIFY(dp.failure.empty() && v.failure.empty());
         const double worst = test::worstEventTimeDifference(v, dp);
-        qInfo("%zu events, worst time difference %.3g s; books %.3g J, %lld steps against %lld", dp.events.size(), worst,
-              v.energy.balance(), v.solver.steps, dp.solver.steps);
+        qInfo("%zu events, worst time difference %.3g s; books %.3g J, %lld steps against %lld", dp.events.size(),
+              worst, v.energy.balance(), v.solver.steps, dp.solver.steps);
         QVERIFY2(worst < 1e-6, qPrintable(QString::number(worst)));
         QVERIFY(std::abs(v.energy.balance()) < 1e-8);
     }

@@ -18,7 +18,8 @@ constexpr int kInstanceFloats = 12;
 
 // 36 vertices of a unit cube, position and outward normal interleaved.
 QByteArray unitCube() {
-    const std::array<std::array<float, 3>, 6> normals = {{{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}}};
+    const std::array<std::array<float, 3>, 6> normals = {
+        {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}}};
     QByteArray data;
     data.reserve(36 * 6 * sizeof(float));
     auto push = [&data](float x) { data.append(reinterpret_cast<const char*>(&x), sizeof x); };
@@ -81,10 +82,18 @@ void BlockInstances::showFrame(const jl::Frame& frame, int grabbed) {
         // Held blocks are a shade darker: the hand has them.
         const float shade = held ? 0.8f : 1.0f;
         const float hi = int(i) == grabbed ? 1.0f : 0.0f;
-        const float values[kInstanceFloats] = {float(p.position.x()), float(p.position.y()), float(p.angle), 0.0f,
-                                               s.across, s.along, s.out, hi,
-                                               float(s.color.redF()) * shade, float(s.color.greenF()) * shade,
-                                               float(s.color.blueF()) * shade, 1.0f};
+        const float values[kInstanceFloats] = {float(p.position.x()),
+                                               float(p.position.y()),
+                                               float(p.angle),
+                                               0.0f,
+                                               s.across,
+                                               s.along,
+                                               s.out,
+                                               hi,
+                                               float(s.color.redF()) * shade,
+                                               float(s.color.greenF()) * shade,
+                                               float(s.color.blueF()) * shade,
+                                               1.0f};
         std::copy(std::begin(values), std::end(values), f);
     }
     instances_->setData(data);

@@ -12,7 +12,7 @@
 namespace Qt3DCore {
 class QBuffer;
 class QAttribute;
-}
+}  // namespace Qt3DCore
 namespace Qt3DRender {
 class QGeometryRenderer;
 }

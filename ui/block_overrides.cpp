@@ -18,7 +18,9 @@ namespace {
 enum Column { Index, Thickness, Width, Density, Mass, Colour, Columns };
 
 // Shown value of an optional field: empty when the ladder's value applies.
-QString cell(const std::optional<double>& v, double scale) { return v ? QString::number(*v * scale, 'g', 6) : QString(); }
+QString cell(const std::optional<double>& v, double scale) {
+    return v ? QString::number(*v * scale, 'g', 6) : QString();
+}
 std::optional<double> read(const QString& text, double scale) {
     bool ok = false;
     const double v = text.trimmed().toDouble(&ok);
@@ -37,10 +39,14 @@ BlockOverrides::BlockOverrides(Document* doc, QWidget* parent) : QWidget(parent)
     box->setContentsMargins(0, 0, 0, 0);
     table_ = new QTableWidget(0, Columns, this);
     table_->setObjectName("blockOverrides");
-    table_->setHorizontalHeaderLabels({tr("Block"), tr("T (mm)"), tr("W (mm)"), tr("ρ (kg/m³)"), tr("m (g)"), tr("Colour")});
-    const QStringList tips = {tr("Which block (0 is the top)."), tr("Thickness of this block, across the ladder."),
-                              tr("Width of this block, out of the plane."), tr("Density of this block."),
-                              tr("Mass of this block; overrides the density."), tr("Colour, as #rrggbb.")};
+    table_->setHorizontalHeaderLabels(
+        {tr("Block"), tr("T (mm)"), tr("W (mm)"), tr("ρ (kg/m³)"), tr("m (g)"), tr("Colour")});
+    const QStringList tips = {tr("Which block (0 is the top)."),
+                              tr("Thickness of this block, across the ladder."),
+                              tr("Width of this block, out of the plane."),
+                              tr("Density of this block."),
+                              tr("Mass of this block; overrides the density."),
+                              tr("Colour, as #rrggbb.")};
     for (int c = 0; c < Columns; ++c) table_->horizontalHeaderItem(c)->setToolTip(tips[c]);
     table_->setToolTip(tr("Blocks that differ from the rest; an empty cell keeps the ladder's value."));
     table_->verticalHeader()->hide();
@@ -49,12 +55,15 @@ BlockOverrides::BlockOverrides(Document* doc, QWidget* parent) : QWidget(parent)
     box->addWidget(table_);
     connect(table_, &QTableWidget::cellChanged, this, [this](int row, int) { commitRow(row); });
 
-    auto [add, remove] = addRowButtons(this, box, tr("Override a block"), tr("Adds the first block without an override, to make it different."), tr("The selected block goes back to the ladder's values."));
+    auto [add, remove] = addRowButtons(this, box, tr("Override a block"),
+                                       tr("Adds the first block without an override, to make it different."),
+                                       tr("The selected block goes back to the ladder's values."));
     connect(add, &QPushButton::clicked, this, [this] {
         if (!doc_->scene().ladder) return;
         auto overrides = doc_->scene().ladder->overrides;
         int index = 0;
-        while (std::any_of(overrides.begin(), overrides.end(), [index](const auto& o) { return o.index == index; })) ++index;
+        while (std::any_of(overrides.begin(), overrides.end(), [index](const auto& o) { return o.index == index; }))
+            ++index;
         if (index >= doc_->scene().ladder->blocks) return;
         jl::BlockOverride o;
         o.index = index;
@@ -86,7 +95,8 @@ void BlockOverrides::commitRow(int row) {
     jl::BlockOverride& o = overrides[size_t(row)];
     bool ok = false;
     const int index = text(Index).toInt(&ok);
-    const bool taken = std::any_of(overrides.begin(), overrides.end(), [&](const auto& x) { return &x != &o && x.index == index; });
+    const bool taken =
+        std::any_of(overrides.begin(), overrides.end(), [&](const auto& x) { return &x != &o && x.index == index; });
     if (ok && index >= 0 && index < doc_->scene().ladder->blocks && !taken) o.index = index;
     o.thickness = read(text(Thickness), 1000);
     o.width = read(text(Width), 1000);
@@ -105,7 +115,7 @@ void BlockOverrides::refresh() {
         const jl::BlockOverride& o = overrides[size_t(r)];
         const QString colour = o.color ? QColor(o.color->r, o.color->g, o.color->b).name() : QString();
         const QString values[Columns] = {QString::number(o.index), cell(o.thickness, 1000), cell(o.width, 1000),
-                                         cell(o.density, 1), cell(o.mass, 1000), colour};
+                                         cell(o.density, 1),       cell(o.mass, 1000),      colour};
         for (int c = 0; c < Columns; ++c) setCellText(table_, r, c, values[c]);
         table_->item(r, Colour)->setBackground(o.color ? QBrush(QColor(o.color->r, o.color->g, o.color->b)) : QBrush());
     }

@@ -50,16 +50,16 @@ jl::Scene Document::newScene() {
     return s;
 }
 
-QString Document::displayName() const {
-    return path_.isEmpty() ? tr("Untitled") : QFileInfo(path_).fileName();
-}
+QString Document::displayName() const { return path_.isEmpty() ? tr("Untitled") : QFileInfo(path_).fileName(); }
 
 void Document::reset(const jl::Scene& scene, const QString& path, bool modified) {
     scene_ = scene;
     path_ = path;
     undo_.clear();
-    if (modified) undo_.resetClean();  // no clean state reachable: it is unsaved work
-    else undo_.setClean();
+    if (modified)
+        undo_.resetClean();  // no clean state reachable: it is unsaved work
+    else
+        undo_.setClean();
     emit modifiedChanged(modified);
     emit pathChanged(path_);
     emit changed(SceneChange::Whole);

@@ -11,12 +11,17 @@ namespace jl::ui {
 // the colours of the timeline's marks, so a mark means the same everywhere.
 inline QColor eventColor(jl::EventKind k) {
     switch (k) {
-    case jl::EventKind::FlipFlop: return {214, 96, 40};
-    case jl::EventKind::Fold: return {60, 120, 200};
-    case jl::EventKind::Lock: return {90, 150, 70};
-    case jl::EventKind::Unlock:
-    case jl::EventKind::Unfold: return {130, 130, 130};
-    default: return {150, 90, 170};
+        case jl::EventKind::FlipFlop:
+            return {214, 96, 40};
+        case jl::EventKind::Fold:
+            return {60, 120, 200};
+        case jl::EventKind::Lock:
+            return {90, 150, 70};
+        case jl::EventKind::Unlock:
+        case jl::EventKind::Unfold:
+            return {130, 130, 130};
+        default:
+            return {150, 90, 170};
     }
 }
 

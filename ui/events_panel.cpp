@@ -15,8 +15,9 @@ bool lockOrUnlock(const jl::Event& e) {
 }
 
 QString runInWords(const jl::Event& first, const jl::Event& last, int count) {
-    return QObject::tr("%1–%2 s: blocks %3 and %4 lock and unlock again and again (%5 events): they rest against each "
-                       "other with almost no force")
+    return QObject::tr(
+               "%1–%2 s: blocks %3 and %4 lock and unlock again and again (%5 events): they rest against each "
+               "other with almost no force")
         .arg(first.time, 0, 'f', 3)
         .arg(last.time, 0, 'f', 3)
         .arg(first.hinge - 1)
@@ -28,10 +29,7 @@ QString runInWords(const jl::Event& first, const jl::Event& last, int count) {
 // impact's own impulse parts it again (the knocks down a long ladder's free
 // end), one row rather than two that read as if nothing happened.
 QString knockInWords(const jl::Event& e) {
-    return QObject::tr("%1 s: blocks %2 and %3 knock end to end")
-        .arg(e.time, 0, 'f', 3)
-        .arg(e.hinge - 1)
-        .arg(e.hinge);
+    return QObject::tr("%1 s: blocks %2 and %3 knock end to end").arg(e.time, 0, 'f', 3).arg(e.hinge - 1).arg(e.hinge);
 }
 
 }  // namespace
@@ -59,9 +57,8 @@ EventsPanel::EventsPanel(QWidget* parent) : QWidget(parent) {
     list_->setToolTip(tr("What happened at each hinge, in order; click one to see the ladder at that instant."));
     list_->setUniformItemSizes(true);
     box->addWidget(list_);
-    connect(list_, &QListWidget::itemClicked, this, [this](QListWidgetItem* item) {
-        emit instantRequested(item->data(Qt::UserRole).toDouble());
-    });
+    connect(list_, &QListWidget::itemClicked, this,
+            [this](QListWidgetItem* item) { emit instantRequested(item->data(Qt::UserRole).toDouble()); });
 }
 
 QListWidgetItem* EventsPanel::addRow(const QString& text, double time) {
@@ -78,14 +75,16 @@ void EventsPanel::append(size_t index) {
     if (lockOrUnlock(e) && it != runs_.end() && e.time - (*events_)[it->second.last].time <= kRunGap) {
         Run& run = it->second;
         const jl::Event& before = (*events_)[run.last];
-        const bool knock = e.kind == jl::EventKind::Unlock && before.kind == jl::EventKind::Lock && before.time == e.time;
+        const bool knock =
+            e.kind == jl::EventKind::Unlock && before.kind == jl::EventKind::Lock && before.time == e.time;
         run.last = index;
         ++run.count;
         if (run.count < kRunRow) {
             if (knock) {  // the lock's row
                 run.rows.back()->setText(knockInWords(e));
-                run.rows.back()->setToolTip(tr("A lock and an unlock at one instant: the two blocks close end to end "
-                                               "and the impact parts them again at once."));
+                run.rows.back()->setToolTip(
+                    tr("A lock and an unlock at one instant: the two blocks close end to end "
+                       "and the impact parts them again at once."));
             } else
                 run.rows.push_back(addRow(eventInWords(e), e.time));
             return;

@@ -35,8 +35,8 @@ private:
     // the run is one row, so the log still reads as a story.
     struct Run {
         size_t first = 0, last = 0;          // event indices
-        int count = 0;                        // events in the run
-        std::vector<QListWidgetItem*> rows;   // one row each until merged, then the run's row
+        int count = 0;                       // events in the run
+        std::vector<QListWidgetItem*> rows;  // one row each until merged, then the run's row
     };
     void append(size_t index);
     QListWidgetItem* addRow(const QString& text, double time);

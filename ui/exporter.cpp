@@ -73,7 +73,8 @@ struct FramesFrom : jl::RecordTarget {
 
 ExportResult Exporter::imageSequence(const jl::Scene& scene, const SequenceRequest& r) {
     const int total = frameCount(r.from, r.to, r.fps);
-    if (total == 0) return failed(QObject::tr("The time range is empty: choose an end after the start and a positive frame rate."));
+    if (total == 0)
+        return failed(QObject::tr("The time range is empty: choose an end after the start and a positive frame rate."));
     if (r.size.isEmpty()) return failed(QObject::tr("The picture size is empty."));
     if (!QDir().mkpath(r.directory)) return failed(QObject::tr("Could not make the folder %1.").arg(r.directory));
     auto built = jl::Simulation::build(scene);
@@ -119,12 +120,18 @@ ExportResult Exporter::imageSequence(const jl::Scene& scene, const SequenceReque
     const bool twoPasses = !r.painter && double(total) * sim.blockCount() <= kMaxPosesInMemory;
     // Two passes when they fit in memory: first the whole range, so that one
     // framing holds every picture; else each picture as its frame comes.
-    if (twoPasses) target.each = [&](jl::Frame&& f) { frames.push_back(std::move(f)); return true; };
-    else target.each = [&](jl::Frame&& f) { return draw(f); };
+    if (twoPasses)
+        target.each = [&](jl::Frame&& f) {
+            frames.push_back(std::move(f));
+            return true;
+        };
+    else
+        target.each = [&](jl::Frame&& f) { return draw(f); };
     const jl::Recording run = jl::record(sim, r.to, grid, &target);
     if (!result.ok) return result;
     if (!run.failure.empty())
-        return failed(QObject::tr("The run stopped at %1 s: %2").arg(run.time).arg(QString::fromStdString(run.failure)));
+        return failed(
+            QObject::tr("The run stopped at %1 s: %2").arg(run.time).arg(QString::fromStdString(run.failure)));
     if (twoPasses) {
         QRectF all;
         for (const jl::Frame& f : frames) all = all.united(view.extentOf(f));
@@ -164,7 +171,8 @@ struct TableRows : jl::RecordTarget {
 }  // namespace
 
 ExportResult Exporter::tables(const jl::Scene& scene, double from, double to, double every, const QString& directory) {
-    if (!(every > 0) || !(to >= from)) return failed(QObject::tr("The time range is empty: choose an end after the start and a positive interval."));
+    if (!(every > 0) || !(to >= from))
+        return failed(QObject::tr("The time range is empty: choose an end after the start and a positive interval."));
     if (!QDir().mkpath(directory)) return failed(QObject::tr("Could not make the folder %1.").arg(directory));
     auto built = jl::Simulation::build(scene);
     if (!built.simulation) return failed(QObject::tr("The scene does not build."));
@@ -173,13 +181,15 @@ ExportResult Exporter::tables(const jl::Scene& scene, double from, double to, do
     rows.from = from;
     const jl::Recording run = jl::record(*built.simulation, to, jl::FrameGrid{from, every}, &rows);
     if (!run.failure.empty())
-        return failed(QObject::tr("The run stopped at %1 s: %2").arg(run.time).arg(QString::fromStdString(run.failure)));
+        return failed(
+            QObject::tr("The run stopped at %1 s: %2").arg(run.time).arg(QString::fromStdString(run.failure)));
     std::ostringstream poses, energy, log;
     jl::writePosesCsv(poses, rows.frames);
     jl::writeEnergyCsv(energy, rows.frames);
     jl::writeEventsCsv(log, rows.events);
     ExportResult result{true, {}, {}};
-    const std::pair<const char*, std::string> files[] = {{"poses.csv", poses.str()}, {"energy.csv", energy.str()}, {"events.csv", log.str()}};
+    const std::pair<const char*, std::string> files[] = {
+        {"poses.csv", poses.str()}, {"energy.csv", energy.str()}, {"events.csv", log.str()}};
     for (const auto& [name, text] : files) {
         const QString path = QDir(directory).filePath(name);
         if (const auto error = saveText(path, text)) return failed(*error);
@@ -191,9 +201,10 @@ ExportResult Exporter::tables(const jl::Scene& scene, double from, double to, do
 QString Exporter::ffmpeg() { return QStandardPaths::findExecutable("ffmpeg"); }
 
 QString Exporter::ffmpegMissing() {
-    return QObject::tr("Making a video needs ffmpeg, which is not installed on this computer. "
-                       "Install it (for example \"sudo apt install ffmpeg\") or export an image sequence "
-                       "instead and make the video elsewhere.");
+    return QObject::tr(
+        "Making a video needs ffmpeg, which is not installed on this computer. "
+        "Install it (for example \"sudo apt install ffmpeg\") or export an image sequence "
+        "instead and make the video elsewhere.");
 }
 
 ExportResult Exporter::video(const jl::Scene& scene, SequenceRequest request, const QString& videoPath) {
@@ -206,10 +217,18 @@ ExportResult Exporter::video(const jl::Scene& scene, SequenceRequest request, co
     request.size = QSize(request.size.width() / 2 * 2, request.size.height() / 2 * 2);
     const ExportResult frames = imageSequence(scene, request);
     if (!frames.ok) return frames;
-    QStringList args{"-y", "-loglevel", "error", "-framerate", QString::number(request.fps), "-i",
+    QStringList args{"-y",
+                     "-loglevel",
+                     "error",
+                     "-framerate",
+                     QString::number(request.fps),
+                     "-i",
                      QDir(pictures.path()).filePath("frame_%05d.png")};
     if (QFileInfo(videoPath).suffix().compare("mp4", Qt::CaseInsensitive) == 0)
-        args << "-c:v" << "libx264" << "-pix_fmt" << "yuv420p";
+        args << "-c:v"
+             << "libx264"
+             << "-pix_fmt"
+             << "yuv420p";
     args << videoPath;
     QProcess process;
     process.start(program, args);

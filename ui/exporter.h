@@ -31,9 +31,9 @@ struct SequenceRequest {
     double from = 0, to = 1;  // s, both ends included when on the grid
     double fps = 30;          // pictures per simulated second
     QSize size{1280, 720};
-    QString directory;        // frame_00000.png, frame_00001.png, ...
-    SideViewOptions look{};   // for the side view, when no painter is given
-    FramePainter painter;     // optional: draws each frame instead of the side view
+    QString directory;                                  // frame_00000.png, frame_00001.png, ...
+    SideViewOptions look{};                             // for the side view, when no painter is given
+    FramePainter painter;                               // optional: draws each frame instead of the side view
     std::function<bool(int done, int total)> progress;  // false cancels
 };
 

@@ -19,7 +19,8 @@ FileErrorsDialog::FileErrorsDialog(const QString& path, const std::vector<jl::Di
     setAttribute(Qt::WA_DeleteOnClose);
     auto* box = new QVBoxLayout(this);
     auto* intro = new QLabel(tr("<b>%1</b> was not opened: it has %n problem(s). The scene you had open is unchanged.",
-                                nullptr, int(errors.size())).arg(path.toHtmlEscaped()),
+                                nullptr, int(errors.size()))
+                                 .arg(path.toHtmlEscaped()),
                              this);
     intro->setWordWrap(true);
     box->addWidget(intro);

@@ -83,7 +83,8 @@ LadderPanel::LadderPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_
     estimate_ = new ReachEstimate(reach);
     auto* mapButton = new QPushButton(tr("Design map..."), reach);
     mapButton->setObjectName("designMapButton");
-    mapButton->setToolTip(tr("How far the first ripple travels over two of the design's parameters, one simulation per design."));
+    mapButton->setToolTip(
+        tr("How far the first ripple travels over two of the design's parameters, one simulation per design."));
     connect(mapButton, &QPushButton::clicked, this, &LadderPanel::designMapRequested);
     reachRow->addWidget(estimate_, 1);
     reachRow->addWidget(mapButton);
@@ -105,14 +106,14 @@ QPushButton* LadderPanel::colorButton(const QString& key, const QString& tip) {
         const bool block = key == "blockColor";
         const QColor c = QColorDialog::getColor(toQColor(block ? l.block.color : l.ribbons.color), this);
         if (!c.isValid()) return;
-        editLadder(key, block ? tr("Change block colour") : tr("Change ribbon colour"), [block, c](jl::LadderSpec& l) {
-            (block ? l.block.color : l.ribbons.color) = toColor(c);
-        });
+        editLadder(key, block ? tr("Change block colour") : tr("Change ribbon colour"),
+                   [block, c](jl::LadderSpec& l) { (block ? l.block.color : l.ribbons.color) = toColor(c); });
     });
     return b;
 }
 
-void LadderPanel::editLadder(const QString& key, const QString& text, const std::function<void(jl::LadderSpec&)>& edit) {
+void LadderPanel::editLadder(const QString& key, const QString& text,
+                             const std::function<void(jl::LadderSpec&)>& edit) {
     if (!doc_->scene().ladder) return;
     jl::LadderSpec l = *doc_->scene().ladder;
     edit(l);

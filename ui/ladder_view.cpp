@@ -130,10 +130,12 @@ void LadderView::showFrame(const jl::Frame& frame) {
     // Ribbons are a few pixels wide at best when the whole of a long ladder is
     // in view, yet they cost more to draw than all the blocks: show them close up.
     const bool ribbonsShow = ribbonsVisible_ && camera_.distance() < kRibbonDistanceInBlocks * blockLength_;
-    if (ribbonsShow || ribbonsShown_) buildRibbons(*ribbons_, ribbonsShow ? frame : jl::Frame{}, blockWidth_, ribbonWidth_, ribbonInset_);
+    if (ribbonsShow || ribbonsShown_)
+        buildRibbons(*ribbons_, ribbonsShow ? frame : jl::Frame{}, blockWidth_, ribbonWidth_, ribbonInset_);
     ribbonsShown_ = ribbonsShow;
     // The spring is drawn in front of the blocks, on the face toward the viewer.
-    buildDragLine(*dragLine_, frame, float(blockWidth_ / 2 + 0.002), float(std::max(0.0015, camera_.distance() * 0.003)));
+    buildDragLine(*dragLine_, frame, float(blockWidth_ / 2 + 0.002),
+                  float(std::max(0.0015, camera_.distance() * 0.003)));
     if (frame.dragging && grabbed_ < 0) {
         // Which block: the one whose centre is nearest the grabbed point.
         double best = 1e300;
@@ -162,9 +164,9 @@ void LadderView::frameLadder() {
 }
 
 bool LadderView::frameMotion() {
-    constexpr double kShare = 0.2;       // of the largest motion that counts as moving
-    constexpr int kNeighbours = 2;       // blocks either side, for context
-    constexpr size_t kReach = 3;         // blocks apart that still make one moving stretch
+    constexpr double kShare = 0.2;  // of the largest motion that counts as moving
+    constexpr int kNeighbours = 2;  // blocks either side, for context
+    constexpr size_t kReach = 3;    // blocks apart that still make one moving stretch
     const size_t n = std::min({shownPoses_.size(), earlierPoses_.size(), shapes_.size()});
     std::vector<double> moved(n);
     double most = 0;
@@ -213,7 +215,8 @@ bool LadderView::showsWholeLadder() const {
     const QMatrix4x4 viewProjection = camera()->projectionMatrix() * camera()->viewMatrix();
     for (const QVector3D& c : ladderCorners()) {
         const QVector4D clip = viewProjection * QVector4D(c, 1);
-        if (clip.w() <= 0 || std::abs(clip.x()) > kSlack * clip.w() || std::abs(clip.y()) > kSlack * clip.w()) return false;
+        if (clip.w() <= 0 || std::abs(clip.x()) > kSlack * clip.w() || std::abs(clip.y()) > kSlack * clip.w())
+            return false;
     }
     return true;
 }
@@ -283,7 +286,8 @@ std::optional<LadderView::Grab> LadderView::grabAt(const jl::Vec2& point) const 
     const size_t n = std::min(shapes_.size(), shownPoses_.size());
     for (size_t i = n; i-- > 0;) {
         const jl::Vec2 local = jl::rotate(-shownPoses_[i].angle, point - shownPoses_[i].position);
-        if (std::abs(local.x()) <= shapes_[i].across / 2 + margin && std::abs(local.y()) <= shapes_[i].along / 2 + margin)
+        if (std::abs(local.x()) <= shapes_[i].across / 2 + margin &&
+            std::abs(local.y()) <= shapes_[i].along / 2 + margin)
             return Grab{int(i), local};
     }
     return std::nullopt;
@@ -295,8 +299,10 @@ void LadderView::mouseMoveEvent(QMouseEvent* e) {
     if (dragging_) {  // until the release, whatever else the buttons do
         if (const auto p = planePoint(e->position())) emit dragMoved(*p);
     } else if ((e->buttons() & Qt::RightButton) || (orbiting_ && (e->buttons() & Qt::LeftButton))) {
-        if (walk_) camera_.lookAround(-float(delta.x()) * kLookDegreesPerPixel, float(delta.y()) * kLookDegreesPerPixel);
-        else camera_.orbit(-float(delta.x()) * kOrbitDegreesPerPixel, float(delta.y()) * kOrbitDegreesPerPixel);
+        if (walk_)
+            camera_.lookAround(-float(delta.x()) * kLookDegreesPerPixel, float(delta.y()) * kLookDegreesPerPixel);
+        else
+            camera_.orbit(-float(delta.x()) * kOrbitDegreesPerPixel, float(delta.y()) * kOrbitDegreesPerPixel);
         updateCamera();
     } else if (e->buttons() & Qt::MiddleButton) {
         camera_.pan(float(delta.x()) / float(height()), float(delta.y()) / float(height()));
@@ -320,8 +326,10 @@ void LadderView::wheelEvent(QWheelEvent* e) {
     // Toward the point of the ladder's plane under the pointer; walking, or
     // with the plane out of sight, toward the middle of the view.
     const auto p = walk_ ? std::nullopt : planePoint(e->position());
-    if (p) camera_.zoomAbout(steps, QVector3D(float(p->x()), float(p->y()), 0));
-    else camera_.zoom(steps);
+    if (p)
+        camera_.zoomAbout(steps, QVector3D(float(p->x()), float(p->y()), 0));
+    else
+        camera_.zoom(steps);
     updateCamera();
 }
 
@@ -335,7 +343,8 @@ void LadderView::keyPressEvent(QKeyEvent* e) {
         setWalkMode(false);
         return;
     }
-    const bool walkKey = k == Qt::Key_W || k == Qt::Key_A || k == Qt::Key_S || k == Qt::Key_D || k == Qt::Key_Q || k == Qt::Key_E;
+    const bool walkKey =
+        k == Qt::Key_W || k == Qt::Key_A || k == Qt::Key_S || k == Qt::Key_D || k == Qt::Key_Q || k == Qt::Key_E;
     if (walk_ && walkKey && !(e->modifiers() & Qt::ControlModifier)) {
         if (!e->isAutoRepeat()) keysDown_.insert(k);
         if (!walkTimer_.isActive()) {

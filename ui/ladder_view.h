@@ -111,7 +111,7 @@ private:
     jl::ViewSpec view_;
     std::vector<BlockShape> shapes_;
     std::vector<jl::Pose> shownPoses_;
-    double shownTime_ = 0;  // s, the frame drawn
+    double shownTime_ = 0;                // s, the frame drawn
     std::vector<jl::Pose> earlierPoses_;  // of the frame drawn before it (frameMotion)
     double earlierTime_ = 0;
     // The ladder is framed again on the first frame after a load or a change

@@ -15,8 +15,8 @@ namespace jl::ui {
 namespace {
 
 // The teaching order of docs/teaching.md; files not named here come after.
-const char* const kTeachingOrder[] = {"classic",  "wrong-way", "back-and-forth",        "heavy-middle",
-                                      "long-ladder", "pendulum", "particles-and-springs", "falling-chain"};
+const char* const kTeachingOrder[] = {"classic",     "wrong-way", "back-and-forth",        "heavy-middle",
+                                      "long-ladder", "pendulum",  "particles-and-springs", "falling-chain"};
 
 int rank(const QString& baseName) {
     const auto it = std::find(std::begin(kTeachingOrder), std::end(kTeachingOrder), baseName.toStdString());
@@ -84,8 +84,9 @@ void LessonPanel::showScene(const jl::Scene& scene) {
     QString description = QString::fromStdString(scene.description).trimmed().toHtmlEscaped();
     description.replace("\n\n", "</p><p>");
     if (title.isEmpty() && description.isEmpty()) {
-        text_->setHtml(tr("<p><i>This scene has no title or description. Add them in the scene file "
-                          "(<tt>title:</tt> and <tt>description:</tt>) to make it a lesson.</i></p>"));
+        text_->setHtml(
+            tr("<p><i>This scene has no title or description. Add them in the scene file "
+               "(<tt>title:</tt> and <tt>description:</tt>) to make it a lesson.</i></p>"));
         return;
     }
     text_->setHtml(QString("<h3>%1</h3><p>%2</p>").arg(title, description));

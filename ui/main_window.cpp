@@ -6,8 +6,8 @@
 #include "ui/ladder_panel.h"
 #include "ui/ladder_view.h"
 #include "ui/presentation_mode.h"
-#include "ui/screen_fit.h"
 #include "ui/scene_text_dialog.h"
+#include "ui/screen_fit.h"
 #include "ui/script_panel.h"
 #include "ui/shader_material.h"
 #include "ui/sim_controller.h"
@@ -25,11 +25,11 @@
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
+#include <QShowEvent>
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QStatusBar>
 #include <QStyle>
-#include <QShowEvent>
 #include <QTimer>
 #include <QToolBar>
 #include <QVBoxLayout>
@@ -45,7 +45,9 @@ constexpr double kMinSpeed = 0.01, kMaxSpeed = 4.0;
 constexpr int kSpeedTicks = 200;
 // A run's rate is read over this many seconds before it says how long is left.
 constexpr double kSecondsBeforeTimeLeft = 2.0;
-int speedToTick(double s) { return int(std::lround(kSpeedTicks * std::log(s / kMinSpeed) / std::log(kMaxSpeed / kMinSpeed))); }
+int speedToTick(double s) {
+    return int(std::lround(kSpeedTicks * std::log(s / kMinSpeed) / std::log(kMaxSpeed / kMinSpeed)));
+}
 double tickToSpeed(int t) { return kMinSpeed * std::pow(kMaxSpeed / kMinSpeed, double(t) / kSpeedTicks); }
 
 // Paused on an event's instant, which lies between two recorded frames.
@@ -80,7 +82,9 @@ MainWindow::MainWindow(Options options) : options_(options) {
     viewContainer_->setObjectName("ladderView");
     viewContainer_->setFocusPolicy(Qt::StrongFocus);
     viewContainer_->setMinimumSize(320, 240);
-    viewContainer_->setToolTip(tr("Left-drag a block to push it; left-drag elsewhere (or right-drag) to orbit; wheel to zoom toward the pointer; middle-drag to pan; Home resets the view; F frames the ladder, M the blocks that are moving."));
+    viewContainer_->setToolTip(
+        tr("Left-drag a block to push it; left-drag elsewhere (or right-drag) to orbit; wheel to zoom toward the "
+           "pointer; middle-drag to pan; Home resets the view; F frames the ladder, M the blocks that are moving."));
     timeline_ = new Timeline(this);
     auto* centre = new QWidget(this);
     auto* box = new QVBoxLayout(centre);
@@ -120,20 +124,28 @@ MainWindow::MainWindow(Options options) : options_(options) {
 MainWindow::~MainWindow() = default;
 
 void MainWindow::createActions() {
-    auto make = [this](const QString& text, const QList<QKeySequence>& keys, QStyle::StandardPixmap icon, const QString& tip) {
+    auto make = [this](const QString& text, const QList<QKeySequence>& keys, QStyle::StandardPixmap icon,
+                       const QString& tip) {
         auto* a = new QAction(text, this);
         a->setShortcuts(keys);
         if (icon != QStyle::SP_CustomBase) a->setIcon(style()->standardIcon(icon));
-        a->setToolTip(tip + (keys.isEmpty() ? QString() : QString(" (%1)").arg(keys.first().toString(QKeySequence::NativeText))));
+        a->setToolTip(
+            tip + (keys.isEmpty() ? QString() : QString(" (%1)").arg(keys.first().toString(QKeySequence::NativeText))));
         a->setStatusTip(tip);
         return a;
     };
-    newAct_ = make(tr("&New"), QKeySequence::keyBindings(QKeySequence::New), QStyle::SP_FileIcon, tr("A new ladder of six blocks"));
-    openAct_ = make(tr("&Open..."), QKeySequence::keyBindings(QKeySequence::Open), QStyle::SP_DialogOpenButton, tr("Open a scene file"));
-    saveAct_ = make(tr("&Save"), QKeySequence::keyBindings(QKeySequence::Save), QStyle::SP_DialogSaveButton, tr("Save the scene"));
-    saveAsAct_ = make(tr("Save &As..."), QKeySequence::keyBindings(QKeySequence::SaveAs), QStyle::SP_CustomBase, tr("Save the scene under a new name"));
-    revertAct_ = make(tr("&Revert"), {}, QStyle::SP_BrowserReload, tr("Throw away unsaved changes and read the file again"));
-    quitAct_ = make(tr("&Quit"), QKeySequence::keyBindings(QKeySequence::Quit), QStyle::SP_CustomBase, tr("Quit the program"));
+    newAct_ = make(tr("&New"), QKeySequence::keyBindings(QKeySequence::New), QStyle::SP_FileIcon,
+                   tr("A new ladder of six blocks"));
+    openAct_ = make(tr("&Open..."), QKeySequence::keyBindings(QKeySequence::Open), QStyle::SP_DialogOpenButton,
+                    tr("Open a scene file"));
+    saveAct_ = make(tr("&Save"), QKeySequence::keyBindings(QKeySequence::Save), QStyle::SP_DialogSaveButton,
+                    tr("Save the scene"));
+    saveAsAct_ = make(tr("Save &As..."), QKeySequence::keyBindings(QKeySequence::SaveAs), QStyle::SP_CustomBase,
+                      tr("Save the scene under a new name"));
+    revertAct_ =
+        make(tr("&Revert"), {}, QStyle::SP_BrowserReload, tr("Throw away unsaved changes and read the file again"));
+    quitAct_ =
+        make(tr("&Quit"), QKeySequence::keyBindings(QKeySequence::Quit), QStyle::SP_CustomBase, tr("Quit the program"));
     undoAct_ = doc_->undoStack()->createUndoAction(this, tr("&Undo"));
     undoAct_->setShortcuts(QKeySequence::Undo);
     redoAct_ = doc_->undoStack()->createRedoAction(this, tr("&Redo"));
@@ -143,17 +155,25 @@ void MainWindow::createActions() {
     undoAct_->setIcon(QIcon::fromTheme("edit-undo", style()->standardIcon(QStyle::SP_ArrowBack)));
     redoAct_->setIcon(QIcon::fromTheme("edit-redo", style()->standardIcon(QStyle::SP_ArrowForward)));
     playAct_ = make(tr("&Play"), {Qt::Key_Space}, QStyle::SP_MediaPlay, tr("Play or pause the simulation"));
-    stepAct_ = make(tr("Step &forward"), {Qt::Key_Right, Qt::Key_Period}, QStyle::SP_MediaSeekForward, tr("One frame forward"));
-    backAct_ = make(tr("Step &back"), {Qt::Key_Left, Qt::Key_Comma}, QStyle::SP_MediaSeekBackward, tr("One frame back"));
-    restartAct_ = make(tr("&Restart"), {QKeySequence(Qt::CTRL | Qt::Key_R)}, QStyle::SP_MediaSkipBackward, tr("Back to the start"));
-    resetViewAct_ = make(tr("Reset &view"), {Qt::Key_Home}, QStyle::SP_CustomBase, tr("Look at the whole ladder again"));
-    frameAct_ = make(tr("&Frame the ladder"), {Qt::Key_F}, QStyle::SP_CustomBase, tr("Fit the whole ladder in the view, seen from where you are"));
-    frameMotionAct_ = make(tr("Frame the &moving blocks"), {Qt::Key_M}, QStyle::SP_CustomBase,
-                           tr("Fit the blocks that moved most in the last frame in the view: on a long ladder, where the action is"));
+    stepAct_ = make(tr("Step &forward"), {Qt::Key_Right, Qt::Key_Period}, QStyle::SP_MediaSeekForward,
+                    tr("One frame forward"));
+    backAct_ =
+        make(tr("Step &back"), {Qt::Key_Left, Qt::Key_Comma}, QStyle::SP_MediaSeekBackward, tr("One frame back"));
+    restartAct_ = make(tr("&Restart"), {QKeySequence(Qt::CTRL | Qt::Key_R)}, QStyle::SP_MediaSkipBackward,
+                       tr("Back to the start"));
+    resetViewAct_ =
+        make(tr("Reset &view"), {Qt::Key_Home}, QStyle::SP_CustomBase, tr("Look at the whole ladder again"));
+    frameAct_ = make(tr("&Frame the ladder"), {Qt::Key_F}, QStyle::SP_CustomBase,
+                     tr("Fit the whole ladder in the view, seen from where you are"));
+    frameMotionAct_ =
+        make(tr("Frame the &moving blocks"), {Qt::Key_M}, QStyle::SP_CustomBase,
+             tr("Fit the blocks that moved most in the last frame in the view: on a long ladder, where the action is"));
     frameMotionAct_->setObjectName("frameMotionAction");
-    walkAct_ = make(tr("&Walk mode"), {Qt::Key_V}, QStyle::SP_CustomBase, tr("Walk around the room: W A S D to move, Q E down and up, drag to look, Esc to stop"));
+    walkAct_ = make(tr("&Walk mode"), {Qt::Key_V}, QStyle::SP_CustomBase,
+                    tr("Walk around the room: W A S D to move, Q E down and up, drag to look, Esc to stop"));
     walkAct_->setCheckable(true);
-    followAct_ = make(tr("F&ollow the ladder"), {}, QStyle::SP_CustomBase, tr("Move the camera with the ladder, so a ladder that swings away stays in view"));
+    followAct_ = make(tr("F&ollow the ladder"), {}, QStyle::SP_CustomBase,
+                      tr("Move the camera with the ladder, so a ladder that swings away stays in view"));
     followAct_->setCheckable(true);
     followAct_->setObjectName("followAction");
     connect(followAct_, &QAction::toggled, this, [this](bool on) {
@@ -176,7 +196,8 @@ void MainWindow::createActions() {
     connect(frameAct_, &QAction::triggered, this, [this] { view_->frameLadder(); });
     connect(frameMotionAct_, &QAction::triggered, this, [this] {
         if (!view_->frameMotion())
-            statusBar()->showMessage(tr("Nothing moved between the last two frames: the whole ladder is framed."), 4000);
+            statusBar()->showMessage(tr("Nothing moved between the last two frames: the whole ladder is framed."),
+                                     4000);
     });
     connect(walkAct_, &QAction::toggled, this, [this](bool on) { view_->setWalkMode(on); });
     connect(view_, &LadderView::walkModeChanged, walkAct_, &QAction::setChecked);
@@ -193,7 +214,8 @@ void MainWindow::createMenus() {
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
     edit->addActions({undoAct_, redoAct_});
     edit->addSeparator();
-    QAction* text = edit->addAction(tr("&Title and Description..."), this, [this] { SceneTextDialog(doc_, this).exec(); });
+    QAction* text =
+        edit->addAction(tr("&Title and Description..."), this, [this] { SceneTextDialog(doc_, this).exec(); });
     text->setObjectName("sceneTextAction");
     text->setStatusTip(tr("Edit the scene's title and description: the lesson the Lesson panel shows"));
     QMenu* sim = menuBar()->addMenu(tr("&Simulation"));
@@ -209,9 +231,10 @@ void MainWindow::createMenus() {
     QAction* controls = help->addAction(tr("&Controls"), this, &MainWindow::showControls);
     controls->setShortcut(QKeySequence::HelpContents);
     help->addAction(tr("&About"), this, [this] {
-        QMessageBox::about(this, tr("About Jacob's Ladder Studio"),
-                           tr("<b>Jacob's Ladder Studio</b> %1<p>Build, simulate and teach with a virtual Jacob's ladder.</p>")
-                               .arg(QApplication::applicationVersion()));
+        QMessageBox::about(
+            this, tr("About Jacob's Ladder Studio"),
+            tr("<b>Jacob's Ladder Studio</b> %1<p>Build, simulate and teach with a virtual Jacob's ladder.</p>")
+                .arg(QApplication::applicationVersion()));
     });
     updateRecentMenu();
 }
@@ -227,15 +250,18 @@ void MainWindow::showControls() {
     }
     std::sort(rows.begin(), rows.end());
     rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
-    for (const auto& [what, key] : rows) keys += QString("<tr><td><b>%1</b></td><td>%2</td></tr>").arg(key.toHtmlEscaped(), what.toHtmlEscaped());
-    const QString mouse = tr(
-        "<tr><td><b>Left-drag a block</b></td><td>push it with a spring (a held block: move the hand); recorded, so a replay repeats it</td></tr>"
-        "<tr><td><b>Left-drag off the blocks, or right-drag</b></td><td>orbit the camera about the ladder</td></tr>"
-        "<tr><td><b>Middle-drag</b></td><td>pan</td></tr>"
-        "<tr><td><b>Wheel</b></td><td>zoom toward the pointer</td></tr>"
-        "<tr><td><b>Walk mode</b></td><td>W A S D to move, Q E down and up, drag to look, Esc to stop</td></tr>"
-        "<tr><td><b>Timeline, plots</b></td><td>click or drag to see that moment</td></tr>"
-        "<tr><td><b>An event's mark on the timeline, an entry in Events</b></td><td>click to see that event's instant</td></tr>");
+    for (const auto& [what, key] : rows)
+        keys += QString("<tr><td><b>%1</b></td><td>%2</td></tr>").arg(key.toHtmlEscaped(), what.toHtmlEscaped());
+    const QString mouse =
+        tr("<tr><td><b>Left-drag a block</b></td><td>push it with a spring (a held block: move the hand); recorded, so "
+           "a replay repeats it</td></tr>"
+           "<tr><td><b>Left-drag off the blocks, or right-drag</b></td><td>orbit the camera about the ladder</td></tr>"
+           "<tr><td><b>Middle-drag</b></td><td>pan</td></tr>"
+           "<tr><td><b>Wheel</b></td><td>zoom toward the pointer</td></tr>"
+           "<tr><td><b>Walk mode</b></td><td>W A S D to move, Q E down and up, drag to look, Esc to stop</td></tr>"
+           "<tr><td><b>Timeline, plots</b></td><td>click or drag to see that moment</td></tr>"
+           "<tr><td><b>An event's mark on the timeline, an entry in Events</b></td><td>click to see that event's "
+           "instant</td></tr>");
     auto* box = findChild<QMessageBox*>("controlsHelp");
     if (!box) {
         box = new QMessageBox(QMessageBox::Information, tr("Controls"), {}, QMessageBox::Close, this);
@@ -243,7 +269,8 @@ void MainWindow::showControls() {
         box->setModal(false);
         box->setTextFormat(Qt::RichText);
     }
-    box->setText(tr("<h3>Mouse</h3><table cellspacing=4>%1</table><h3>Keys</h3><table cellspacing=4>%2</table>").arg(mouse, keys));
+    box->setText(tr("<h3>Mouse</h3><table cellspacing=4>%1</table><h3>Keys</h3><table cellspacing=4>%2</table>")
+                     .arg(mouse, keys));
     box->show();
 }
 
@@ -335,7 +362,8 @@ void MainWindow::createTeaching() {
     connect(teaching_, &TeachingDocks::lessonRequested, this, [this](const QString& path) {
         if (maybeSave()) openFile(path);
     });
-    connect(teaching_, &TeachingDocks::message, this, [this](const QString& text) { statusBar()->showMessage(text, 5000); });
+    connect(teaching_, &TeachingDocks::message, this,
+            [this](const QString& text) { statusBar()->showMessage(text, 5000); });
     QDockWidget* side = teaching_->sideViewDock();
     addDockWidget(Qt::RightDockWidgetArea, side);
     // The script is seldom edited in class: the side view shares its place, in front.
@@ -368,8 +396,7 @@ void MainWindow::createTeaching() {
         }
         plotsHeightBefore_ = plots->height();
         QTimer::singleShot(0, this, [this, plots] {
-            if (presentation_->active())
-                resizeDocks({plots}, {std::max(plots->height(), height() / 3)}, Qt::Vertical);
+            if (presentation_->active()) resizeDocks({plots}, {std::max(plots->height(), height() / 3)}, Qt::Vertical);
         });
     });
 }
@@ -387,17 +414,25 @@ void MainWindow::createStatusBar() {
     warningLabel_->setObjectName("warning");
     warningLabel_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     statusBar()->addWidget(warningLabel_, 1);
-    timeLabel_ = label("time", tr("Simulated time of the frame on screen, and how far the run has been recorded."), 150);
-    rateLabel_ = label("rate", tr("Real-time factor (simulated seconds per second) and solver steps per second; "
-                                  "after an edit, how far the run back to the moment on screen has got."), 190);
-    energyLabel_ = label("energy", tr("Kinetic plus potential energy; in brackets, what the energy books fail to explain."), 190);
+    timeLabel_ =
+        label("time", tr("Simulated time of the frame on screen, and how far the run has been recorded."), 150);
+    rateLabel_ = label("rate",
+                       tr("Real-time factor (simulated seconds per second) and solver steps per second; "
+                          "after an edit, how far the run back to the moment on screen has got."),
+                       190);
+    energyLabel_ =
+        label("energy", tr("Kinetic plus potential energy; in brackets, what the energy books fail to explain."), 190);
     residualLabel_ = label("residual", tr("Largest gap left in a hinge pin after the last step."), 130);
-    stepLabel_ = label("step", tr("The integrator's last step: the scene's own; (auto) the engine's choice, at most 1 ms "
-                                  "and short enough to stay stable on long ladders; or (adaptive) the one the adaptive "
-                                  "integrator's error control chose for its tolerance."), 150);
-    stillLabel_ = label("still", tr("Blocks the motion has not reached yet: they hang still, joined into a few rigid "
-                                    "bodies, until it comes near them. The same motion, for much less computing "
-                                    "(docs/model.md section 3.7; solver.still_tail: separate turns it off)."), 120);
+    stepLabel_ = label("step",
+                       tr("The integrator's last step: the scene's own; (auto) the engine's choice, at most 1 ms "
+                          "and short enough to stay stable on long ladders; or (adaptive) the one the adaptive "
+                          "integrator's error control chose for its tolerance."),
+                       150);
+    stillLabel_ = label("still",
+                        tr("Blocks the motion has not reached yet: they hang still, joined into a few rigid "
+                           "bodies, until it comes near them. The same motion, for much less computing "
+                           "(docs/model.md section 3.7; solver.still_tail: separate turns it off)."),
+                        120);
     stillLabel_->hide();
 }
 
@@ -464,7 +499,8 @@ void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {
             done = tr("%1, %2 left").arg(done, durationText((1 - s->seekProgress) * wall / ran));
         rateLabel_->setText(tr("running to t = %1 s (%2)").arg(s->seekingTo, 0, 'f', 3).arg(done));
     } else if (s->playing)
-        rateLabel_->setText(tr("%1× real time · %2 steps/s").arg(s->realTimeFactor, 0, 'f', 2).arg(s->stepsPerSecond, 0, 'f', 0));
+        rateLabel_->setText(
+            tr("%1× real time · %2 steps/s").arg(s->realTimeFactor, 0, 'f', 2).arg(s->stepsPerSecond, 0, 'f', 0));
     else if (atInstant(*s))
         rateLabel_->setText(tr("paused between frames %1 and %2").arg(s->frameIndex).arg(s->frameIndex + 1));
     else
@@ -497,8 +533,10 @@ void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {
     } else {
         warningLabel_->setStyleSheet({});
         QString note;
-        if (s->dragging) note = tr("Pushing a block: release the button to let go.");
-        else if (atInstant(*s)) note = eventsInWords(s->frame->events);
+        if (s->dragging)
+            note = tr("Pushing a block: release the button to let go.");
+        else if (atInstant(*s))
+            note = eventsInWords(s->frame->events);
         warningLabel_->setText(note);
     }
     syncRecordedDrags(*s);
@@ -526,9 +564,9 @@ void MainWindow::syncRecordedDrags(const SimStatus& s) {
     if (s.loadSerial != loadsPosted_ || s.dragging || !s.recorded) return;
     if (s.recorded->drags == doc_->scene().drags) return;
     changeScene(doc_,
-                SceneField<std::vector<jl::DragRecord>>{UndoId::RecordDrag, "drags", SceneChange::Drags,
-                                                        [](const jl::Scene& sc) { return sc.drags; },
-                                                        [](jl::Scene& sc, const std::vector<jl::DragRecord>& v) { sc.drags = v; }},
+                SceneField<std::vector<jl::DragRecord>>{
+                    UndoId::RecordDrag, "drags", SceneChange::Drags, [](const jl::Scene& sc) { return sc.drags; },
+                    [](jl::Scene& sc, const std::vector<jl::DragRecord>& v) { sc.drags = v; }},
                 s.recorded->drags, tr("Push a block"));
 }
 

@@ -71,9 +71,12 @@ void MainWindow::openDialog() {
 bool MainWindow::save() {
     if (doc_->path().isEmpty()) return saveAsDialog();
     switch (askAboutComments(doc_->path())) {
-        case CommentsChoice::SaveOver: return saveTo(doc_->path());
-        case CommentsChoice::SaveAs: return saveAsDialog();
-        case CommentsChoice::Cancel: return false;
+        case CommentsChoice::SaveOver:
+            return saveTo(doc_->path());
+        case CommentsChoice::SaveAs:
+            return saveAsDialog();
+        case CommentsChoice::Cancel:
+            return false;
     }
     return false;
 }
@@ -112,15 +115,16 @@ bool MainWindow::saveAsDialog() {
 
 void MainWindow::revert() {
     if (doc_->path().isEmpty() || !doc_->isModified()) return;
-    const auto answer = QMessageBox::question(this, tr("Revert"), tr("Throw away the changes made since %1 was saved?").arg(doc_->displayName()));
+    const auto answer = QMessageBox::question(
+        this, tr("Revert"), tr("Throw away the changes made since %1 was saved?").arg(doc_->displayName()));
     if (answer == QMessageBox::Yes) openFile(doc_->path());
 }
 
 bool MainWindow::maybeSave() {
     if (!doc_->isModified() || !options_.askToSave) return true;
-    const auto answer = QMessageBox::warning(this, tr("Unsaved changes"),
-                                             tr("%1 has changes that are not saved. Save them?").arg(doc_->displayName()),
-                                             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    const auto answer = QMessageBox::warning(
+        this, tr("Unsaved changes"), tr("%1 has changes that are not saved. Save them?").arg(doc_->displayName()),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
     if (answer == QMessageBox::Save) return save();
     return answer == QMessageBox::Discard;
 }
@@ -183,11 +187,12 @@ void MainWindow::offerRecovery() {
     const QByteArray text = file.readAll();
     file.close();
     QString from;
-    if (text.startsWith("# recovered-from: ")) from = QString::fromUtf8(text.mid(18, text.indexOf('\n') - 18)).trimmed();
-    const auto answer = QMessageBox::question(
-        this, tr("Recover unsaved work"),
-        tr("The program stopped last time with unsaved changes to %1. Open the recovered copy?")
-            .arg(from.isEmpty() ? tr("an untitled scene") : from));
+    if (text.startsWith("# recovered-from: "))
+        from = QString::fromUtf8(text.mid(18, text.indexOf('\n') - 18)).trimmed();
+    const auto answer =
+        QMessageBox::question(this, tr("Recover unsaved work"),
+                              tr("The program stopped last time with unsaved changes to %1. Open the recovered copy?")
+                                  .arg(from.isEmpty() ? tr("an untitled scene") : from));
     if (answer != QMessageBox::Yes) {
         Document::removeRecovery();
         return;

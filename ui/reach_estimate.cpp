@@ -80,9 +80,10 @@ void ReachEstimate::estimate(const jl::Scene& scene) {
     if (longest < scriptEnd(scene) + 0.5) {
         settle_->stop();
         computing_ = false;
-        setText(tr("First ripple: not estimated for a ladder of %1 blocks, which would take long to run; the design map "
-                   "runs any design whole.")
-                    .arg(blocks));
+        setText(
+            tr("First ripple: not estimated for a ladder of %1 blocks, which would take long to run; the design map "
+               "runs any design whole.")
+                .arg(blocks));
         emit estimated();
         return;
     }
@@ -94,24 +95,24 @@ void ReachEstimate::estimate(const jl::Scene& scene) {
 void ReachEstimate::start() {
     runKey_ = key_;
     stop_ = std::make_shared<std::atomic<bool>>(false);
-    watcher_.setFuture(QtConcurrent::run(
-        &pool_, [design = design_, stop = stop_, longest = longest_] {
-            // Only on a core nobody else wants: the simulation the user
-            // watches and the window come first.
-            QThread::currentThread()->setPriority(QThread::IdlePriority);
-            return jl::firstRippleReach(design, stop.get(), longest);
-        }));
+    watcher_.setFuture(QtConcurrent::run(&pool_, [design = design_, stop = stop_, longest = longest_] {
+        // Only on a core nobody else wants: the simulation the user
+        // watches and the window come first.
+        QThread::currentThread()->setPriority(QThread::IdlePriority);
+        return jl::firstRippleReach(design, stop.get(), longest);
+    }));
 }
 
 void ReachEstimate::show(const jl::RippleReach& r) {
-    QString text = !r.whole ? tr("In the first %1 s (a whole run of this design is %2 s), the first ripple reaches hinge %3 of %4")
-                                  .arg(r.until, 0, 'g', 3)
-                                  .arg(jl::rippleRunTime(design_), 0, 'f', 0)
-                                  .arg(r.reached)
-                                  .arg(r.hinges)
-                   : r.reached >= r.hinges && r.hinges > 0
-                       ? tr("The first ripple reaches the bottom: hinge %1 of %2").arg(r.reached).arg(r.hinges)
-                       : tr("The first ripple reaches hinge %1 of %2").arg(r.reached).arg(r.hinges);
+    QString text =
+        !r.whole ? tr("In the first %1 s (a whole run of this design is %2 s), the first ripple reaches hinge %3 of %4")
+                       .arg(r.until, 0, 'g', 3)
+                       .arg(jl::rippleRunTime(design_), 0, 'f', 0)
+                       .arg(r.reached)
+                       .arg(r.hinges)
+        : r.reached >= r.hinges && r.hinges > 0
+            ? tr("The first ripple reaches the bottom: hinge %1 of %2").arg(r.reached).arg(r.hinges)
+            : tr("The first ripple reaches hinge %1 of %2").arg(r.reached).arg(r.hinges);
     if (r.reached >= 2) text += tr(", one flip every %1 s").arg(r.meanTimeBetweenFlips, 0, 'f', 3);
     if (!r.failure.empty()) text += tr("; the run failed: %1").arg(QString::fromStdString(r.failure));
     setText(text);

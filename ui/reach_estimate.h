@@ -38,8 +38,8 @@ private:
 
     jl::Scene design_;
     double longest_ = 0;  // s of simulated time the run may take (the design's whole run, or less)
-    QByteArray key_;     // of the design asked for last (and of its run: see estimate)
-    QByteArray runKey_;  // of the design being run
+    QByteArray key_;      // of the design asked for last (and of its run: see estimate)
+    QByteArray runKey_;   // of the design being run
     bool computing_ = false;
     QTimer* settle_;  // a burst of edits (typing 1000) starts one run
     std::shared_ptr<std::atomic<bool>> stop_;

@@ -40,7 +40,8 @@ Room::Room(Qt3DCore::QNode* parent) : Qt3DCore::QEntity(parent) {
     addComponent(transform_);
     // Built for a unit room whose table top is at y = 0, centred under the ladder.
     const float floorY = -kTableHeight;
-    box(this, {0, -kTop / 2, 0}, {kTableWidth, kTop, kTableDepth}, QColor(118, 126, 138), 20);  // a slate bench top: the wood stands out
+    box(this, {0, -kTop / 2, 0}, {kTableWidth, kTop, kTableDepth}, QColor(118, 126, 138),
+        20);  // a slate bench top: the wood stands out
     for (float sx : {-1.f, 1.f})
         for (float sz : {-1.f, 1.f})
             box(this, {sx * (kTableWidth / 2 - 0.06f), floorY / 2 - kTop / 2, sz * (kTableDepth / 2 - 0.06f)},

@@ -29,7 +29,7 @@ namespace {
 
 // Ten colours told apart by most eyes and projectors (Tableau 10).
 QColor curveColor(int i) {
-    static const QColor palette[] = {{31, 119, 180}, {255, 127, 14}, {44, 160, 44},  {214, 39, 40},  {148, 103, 189},
+    static const QColor palette[] = {{31, 119, 180}, {255, 127, 14},  {44, 160, 44},   {214, 39, 40},  {148, 103, 189},
                                      {140, 86, 75},  {227, 119, 194}, {127, 127, 127}, {188, 189, 34}, {23, 190, 207}};
     return palette[size_t(i) % std::size(palette)];
 }
@@ -42,15 +42,24 @@ struct EnergyLook {
 
 EnergyLook energyLook(EnergyTrace t) {
     switch (t) {
-    case EnergyTrace::Kinetic: return {{214, 39, 40}, 1.6, Qt::SolidLine};
-    case EnergyTrace::Potential: return {{31, 119, 180}, 1.6, Qt::SolidLine};
-    case EnergyTrace::Total: return {{20, 20, 20}, 2.4, Qt::SolidLine};
-    case EnergyTrace::ImpactLoss: return {{255, 127, 14}, 1.6, Qt::DashLine};
-    case EnergyTrace::DampingLoss: return {{140, 86, 75}, 1.6, Qt::DashLine};
-    case EnergyTrace::HeldWork: return {{44, 160, 44}, 1.6, Qt::DashDotLine};
-    case EnergyTrace::UserWork: return {{23, 190, 207}, 1.6, Qt::DashDotLine};
-    case EnergyTrace::Balance: return {{148, 103, 189}, 2.8, Qt::SolidLine};
-    case EnergyTrace::Count: break;
+        case EnergyTrace::Kinetic:
+            return {{214, 39, 40}, 1.6, Qt::SolidLine};
+        case EnergyTrace::Potential:
+            return {{31, 119, 180}, 1.6, Qt::SolidLine};
+        case EnergyTrace::Total:
+            return {{20, 20, 20}, 2.4, Qt::SolidLine};
+        case EnergyTrace::ImpactLoss:
+            return {{255, 127, 14}, 1.6, Qt::DashLine};
+        case EnergyTrace::DampingLoss:
+            return {{140, 86, 75}, 1.6, Qt::DashLine};
+        case EnergyTrace::HeldWork:
+            return {{44, 160, 44}, 1.6, Qt::DashDotLine};
+        case EnergyTrace::UserWork:
+            return {{23, 190, 207}, 1.6, Qt::DashDotLine};
+        case EnergyTrace::Balance:
+            return {{148, 103, 189}, 2.8, Qt::SolidLine};
+        case EnergyTrace::Count:
+            break;
     }
     return {};
 }
@@ -63,7 +72,8 @@ std::vector<int> parseIndexList(const QString& text, int lo, int hi) {
     for (auto it = item.globalMatch(text); it.hasNext();) {
         const auto m = it.next();
         const int a = m.captured(1).toInt(), b = m.captured(2).isEmpty() ? a : m.captured(2).toInt();
-        for (int i = std::max(lo, std::min(a, b)); i <= std::min(hi, std::max(a, b)) && out.size() < 64; ++i) out.push_back(i);
+        for (int i = std::max(lo, std::min(a, b)); i <= std::min(hi, std::max(a, b)) && out.size() < 64; ++i)
+            out.push_back(i);
     }
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
@@ -118,7 +128,8 @@ RunPlots::RunPlots(QWidget* parent) : QWidget(parent) {
         charts->addWidget(c, 1);
         connect(c, &TimeChart::seekRequested, this, &RunPlots::seekRequested);
         // One time axis for the eye: the three plots keep the same left and right edges.
-        connect(c->chart(), &QChart::plotAreaChanged, this, [this] { QTimer::singleShot(0, this, &RunPlots::alignCharts); });
+        connect(c->chart(), &QChart::plotAreaChanged, this,
+                [this] { QTimer::singleShot(0, this, &RunPlots::alignCharts); });
     }
     box->addWidget(chartsArea_, 1);
     for (int t = 0; t < int(EnergyTrace::Count); ++t) {
@@ -262,9 +273,12 @@ void RunPlots::refresh() {
     // The books in words: how far E strays from E0 + W - D over the whole run.
     double books = 0;
     for (double v : traces_.energy(EnergyTrace::Balance)) books = std::max(books, std::abs(v));
-    charts_[0]->chart()->setTitle(traces_.count() == 0 ? tr("Energy and its books")
-                                                        : tr("Energy and its books (they balance to %1 J)").arg(books, 0, 'g', 2));
-    charts_[0]->valueAxis()->setTitleText(energyScale_ == 1 ? tr("energy (J)") : energyScale_ == 1e3 ? tr("energy (mJ)") : tr("energy (µJ)"));
+    charts_[0]->chart()->setTitle(traces_.count() == 0
+                                      ? tr("Energy and its books")
+                                      : tr("Energy and its books (they balance to %1 J)").arg(books, 0, 'g', 2));
+    charts_[0]->valueAxis()->setTitleText(energyScale_ == 1     ? tr("energy (J)")
+                                          : energyScale_ == 1e3 ? tr("energy (mJ)")
+                                                                : tr("energy (µJ)"));
     for (int e = 0; e < int(EnergyTrace::Count); ++e) {
         std::vector<QPointF> pts = decimate(t, traces_.energy(EnergyTrace(e)), 0, t1, buckets(charts_[0]));
         for (QPointF& p : pts) p.setY(p.y() * energyScale_);
@@ -278,7 +292,8 @@ void RunPlots::refresh() {
     }
     for (size_t i = 0; i < blocks_.size(); ++i) {
         std::vector<QPointF> pts;
-        if (blocks_[i] < traces_.blockCount()) pts = decimate(t, traces_.angularSpeed(blocks_[i]), 0, t1, buckets(charts_[2]));
+        if (blocks_[i] < traces_.blockCount())
+            pts = decimate(t, traces_.angularSpeed(blocks_[i]), 0, t1, buckets(charts_[2]));
         charts_[2]->setPoints(speedCurves_[i], pts);
     }
     charts_[0]->fitValues(1e-6 * energyScale_);

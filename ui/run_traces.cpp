@@ -11,15 +11,24 @@ namespace jl::ui {
 
 QString traceName(EnergyTrace t) {
     switch (t) {
-    case EnergyTrace::Kinetic: return QObject::tr("kinetic");
-    case EnergyTrace::Potential: return QObject::tr("potential");
-    case EnergyTrace::Total: return QObject::tr("total E");
-    case EnergyTrace::ImpactLoss: return QObject::tr("impact loss");
-    case EnergyTrace::DampingLoss: return QObject::tr("damping loss");
-    case EnergyTrace::HeldWork: return QObject::tr("hand's work");
-    case EnergyTrace::UserWork: return QObject::tr("drags' work");
-    case EnergyTrace::Balance: return QObject::tr("balance");
-    case EnergyTrace::Count: break;
+        case EnergyTrace::Kinetic:
+            return QObject::tr("kinetic");
+        case EnergyTrace::Potential:
+            return QObject::tr("potential");
+        case EnergyTrace::Total:
+            return QObject::tr("total E");
+        case EnergyTrace::ImpactLoss:
+            return QObject::tr("impact loss");
+        case EnergyTrace::DampingLoss:
+            return QObject::tr("damping loss");
+        case EnergyTrace::HeldWork:
+            return QObject::tr("hand's work");
+        case EnergyTrace::UserWork:
+            return QObject::tr("drags' work");
+        case EnergyTrace::Balance:
+            return QObject::tr("balance");
+        case EnergyTrace::Count:
+            break;
     }
     return {};
 }
@@ -49,11 +58,12 @@ void RunTraces::append(const jl::Frame& frame) {
     }
     time_.push_back(frame.time);
     const jl::EnergyFrame& e = frame.energy;
-    const double values[] = {e.kinetic,    e.potential, e.total(),  e.impactLoss,
-                             e.dampingLoss, e.heldWork, e.userWork, e.balance()};
+    const double values[] = {e.kinetic,     e.potential, e.total(),  e.impactLoss,
+                             e.dampingLoss, e.heldWork,  e.userWork, e.balance()};
     for (size_t i = 0; i < energy_.size(); ++i) energy_[i].push_back(values[i]);
     for (size_t j = 0; j < fold_.size(); ++j)
-        fold_[j].push_back(j < frame.hinges.size() ? frame.hinges[j].foldAngle : std::numeric_limits<double>::quiet_NaN());
+        fold_[j].push_back(j < frame.hinges.size() ? frame.hinges[j].foldAngle
+                                                   : std::numeric_limits<double>::quiet_NaN());
     for (size_t i = 0; i < angle_.size(); ++i) {
         double a = frame.poses[i].angle;
         // Keep the curve continuous: a block turning past pi is not a jump.

@@ -21,8 +21,8 @@ struct Shown {
 Shown within(jl::Bound b, double scale) { return {b.lo * scale, b.hi * scale}; }
 
 // A field of the ladder spec, read as 0 when the scene has no ladder.
-NumberField ladderNumber(QString key, QString label, QString unit, QString tip, Shown range,
-                         double scale, int decimals, std::function<double(const jl::LadderSpec&)> get,
+NumberField ladderNumber(QString key, QString label, QString unit, QString tip, Shown range, double scale, int decimals,
+                         std::function<double(const jl::LadderSpec&)> get,
                          std::function<void(jl::LadderSpec&, double)> set) {
     NumberField f;
     f.key = std::move(key), f.label = std::move(label), f.unit = std::move(unit), f.tip = std::move(tip);
@@ -35,8 +35,8 @@ NumberField ladderNumber(QString key, QString label, QString unit, QString tip, 
     return f;
 }
 
-NumberField solverNumber(QString key, QString label, QString unit, QString tip, Shown range,
-                         double scale, int decimals, bool scientific, double jl::SolverSpec::*member) {
+NumberField solverNumber(QString key, QString label, QString unit, QString tip, Shown range, double scale, int decimals,
+                         bool scientific, double jl::SolverSpec::*member) {
     NumberField f;
     f.key = std::move(key), f.label = std::move(label), f.unit = std::move(unit), f.tip = std::move(tip);
     f.min = range.min, f.max = range.max, f.scale = scale, f.decimals = decimals, f.scientific = scientific;
@@ -50,9 +50,10 @@ NumberField solverNumber(QString key, QString label, QString unit, QString tip, 
 // the field says what that comes to rather than showing "0 g".
 NumberField blockMassField() {
     using L = jl::LadderSpec;
-    NumberField f = ladderNumber("mass", tr("Block mass"), "g", tr("Mass of every block; 0 means computed from the density."),
-                                 {0, jl::range::mass.hi * 1000}, 1000, 2, [](const L& l) { return l.block.mass.value_or(0.0); },
-                                 [](L& l, double v) { l.block.mass = v > 0 ? std::optional<double>(v) : std::nullopt; });
+    NumberField f = ladderNumber(
+        "mass", tr("Block mass"), "g", tr("Mass of every block; 0 means computed from the density."),
+        {0, jl::range::mass.hi * 1000}, 1000, 2, [](const L& l) { return l.block.mass.value_or(0.0); },
+        [](L& l, double v) { l.block.mass = v > 0 ? std::optional<double>(v) : std::nullopt; });
     f.unset = [](const jl::Scene& s) {
         if (!s.ladder) return QString();
         jl::BlockSpec b = s.ladder->block;
@@ -86,24 +87,41 @@ void setBlockCount(jl::LadderSpec& ladder, int n) {
 std::vector<NumberField> ladderNumberFields() {
     using L = jl::LadderSpec;
     return {
-        ladderNumber("blocks", tr("Blocks"), "", tr("How many blocks hang in the ladder; changing it rebuilds the ladder."),
-                     {jl::range::kFewestBlocks, jl::range::kMostBlocks}, 1, 0, [](const L& l) { return double(l.blocks); },
-                     [](L& l, double v) { setBlockCount(l, int(v)); }),
-        ladderNumber("length", tr("Block length"), "mm", tr("Along the ladder; every block shares it, so the far corners meet when folded."),
-                     within(jl::range::size, 1000), 1000, 1, [](const L& l) { return l.block.length; }, [](L& l, double v) { l.block.length = v; }),
-        ladderNumber("thickness", tr("Block thickness"), "mm", tr("Across the ladder, in its plane; thin blocks carry the ripple further."),
-                     within(jl::range::size, 1000), 1000, 2, [](const L& l) { return l.block.thickness; }, [](L& l, double v) { l.block.thickness = v; }),
-        ladderNumber("width", tr("Block width"), "mm", tr("Out of the ladder's plane; changes only the mass and the drawing."),
-                     within(jl::range::size, 1000), 1000, 1, [](const L& l) { return l.block.width; }, [](L& l, double v) { l.block.width = v; }),
-        ladderNumber("density", tr("Density"), "kg/m³", tr("Of the wood; gives each block's mass unless a mass is set."),
-                     within(jl::range::density, 1), 1, 0, [](const L& l) { return l.block.density; }, [](L& l, double v) { l.block.density = v; }),
+        ladderNumber(
+            "blocks", tr("Blocks"), "", tr("How many blocks hang in the ladder; changing it rebuilds the ladder."),
+            {jl::range::kFewestBlocks, jl::range::kMostBlocks}, 1, 0, [](const L& l) { return double(l.blocks); },
+            [](L& l, double v) { setBlockCount(l, int(v)); }),
+        ladderNumber(
+            "length", tr("Block length"), "mm",
+            tr("Along the ladder; every block shares it, so the far corners meet when folded."),
+            within(jl::range::size, 1000), 1000, 1, [](const L& l) { return l.block.length; },
+            [](L& l, double v) { l.block.length = v; }),
+        ladderNumber(
+            "thickness", tr("Block thickness"), "mm",
+            tr("Across the ladder, in its plane; thin blocks carry the ripple further."), within(jl::range::size, 1000),
+            1000, 2, [](const L& l) { return l.block.thickness; }, [](L& l, double v) { l.block.thickness = v; }),
+        ladderNumber(
+            "width", tr("Block width"), "mm", tr("Out of the ladder's plane; changes only the mass and the drawing."),
+            within(jl::range::size, 1000), 1000, 1, [](const L& l) { return l.block.width; },
+            [](L& l, double v) { l.block.width = v; }),
+        ladderNumber(
+            "density", tr("Density"), "kg/m³", tr("Of the wood; gives each block's mass unless a mass is set."),
+            within(jl::range::density, 1), 1, 0, [](const L& l) { return l.block.density; },
+            [](L& l, double v) { l.block.density = v; }),
         blockMassField(),
-        ladderNumber("ribbonWidth", tr("Ribbon width"), "mm", tr("Width of the ribbons across the block faces (drawing only)."),
-                     within(jl::range::ribbonSize, 1000), 1000, 1, [](const L& l) { return l.ribbons.width; }, [](L& l, double v) { l.ribbons.width = v; }),
-        ladderNumber("damping", tr("Hinge damping"), "N·m·s", tr("Viscous torque in free hinges; above about 1e-5 it stops long ripples."),
-                     within(jl::range::angularDamping, 1), 1, 7, [](const L& l) { return l.hinges.damping; }, [](L& l, double v) { l.hinges.damping = v; }),
-        ladderNumber("restitution", tr("Restitution"), "", tr("Bounce at a lock or fold, 0 (plastic) to just under 1."),
-                     within(jl::range::restitution, 1), 1, 3, [](const L& l) { return l.hinges.restitution; }, [](L& l, double v) { l.hinges.restitution = v; }),
+        ladderNumber(
+            "ribbonWidth", tr("Ribbon width"), "mm", tr("Width of the ribbons across the block faces (drawing only)."),
+            within(jl::range::ribbonSize, 1000), 1000, 1, [](const L& l) { return l.ribbons.width; },
+            [](L& l, double v) { l.ribbons.width = v; }),
+        ladderNumber(
+            "damping", tr("Hinge damping"), "N·m·s",
+            tr("Viscous torque in free hinges; above about 1e-5 it stops long ripples."),
+            within(jl::range::angularDamping, 1), 1, 7, [](const L& l) { return l.hinges.damping; },
+            [](L& l, double v) { l.hinges.damping = v; }),
+        ladderNumber(
+            "restitution", tr("Restitution"), "", tr("Bounce at a lock or fold, 0 (plastic) to just under 1."),
+            within(jl::range::restitution, 1), 1, 3, [](const L& l) { return l.hinges.restitution; },
+            [](L& l, double v) { l.hinges.restitution = v; }),
     };
 }
 
@@ -111,13 +129,17 @@ std::vector<NumberField> solverNumberFields() {
     using S = jl::SolverSpec;
     return {
         automaticStepField(),
-        solverNumber("tolerance", tr("Error tolerance"), "", tr("Local error allowed per step by the adaptive integrator."),
-                     within(jl::range::tolerance, 1), 1, 0, true, &S::tolerance),
-        solverNumber("projectionTolerance", tr("Pin tolerance"), "m", tr("Largest gap left in a pin after the constraint projection."),
+        solverNumber("tolerance", tr("Error tolerance"), "",
+                     tr("Local error allowed per step by the adaptive integrator."), within(jl::range::tolerance, 1), 1,
+                     0, true, &S::tolerance),
+        solverNumber("projectionTolerance", tr("Pin tolerance"), "m",
+                     tr("Largest gap left in a pin after the constraint projection."),
                      within(jl::range::projectionTolerance, 1), 1, 0, true, &S::projectionTolerance),
-        solverNumber("eventTolerance", tr("Event tolerance"), "s", tr("How precisely the time of a lock, fold or flip is located."),
+        solverNumber("eventTolerance", tr("Event tolerance"), "s",
+                     tr("How precisely the time of a lock, fold or flip is located."),
                      within(jl::range::eventTolerance, 1), 1, 0, true, &S::eventTolerance),
-        solverNumber("frameInterval", tr("Frame interval"), "ms", tr("Simulated time between recorded frames (the timeline's resolution)."),
+        solverNumber("frameInterval", tr("Frame interval"), "ms",
+                     tr("Simulated time between recorded frames (the timeline's resolution)."),
                      within(jl::range::frameInterval, 1000), 1000, 2, false, &S::frameInterval),
     };
 }
@@ -137,8 +159,10 @@ void changeNumber(Document* doc, const NumberField& f, double si) {
     jl::Scene copy = doc->scene();
     f.set(copy, si);
     const QString text = QCoreApplication::translate("SceneFields", "Change %1").arg(f.label.toLower());
-    if (f.change == SceneChange::Solver) changeScene(doc, solverField(f.key), copy.solver, text);
-    else if (copy.ladder) changeScene(doc, ladderField(f.key), *copy.ladder, text);
+    if (f.change == SceneChange::Solver)
+        changeScene(doc, solverField(f.key), copy.solver, text);
+    else if (copy.ladder)
+        changeScene(doc, ladderField(f.key), *copy.ladder, text);
 }
 
 }  // namespace jl::ui

@@ -13,17 +13,17 @@
 namespace jl::ui {
 
 struct NumberField {
-    QString key;       // stable name, also the undo merge key
+    QString key;  // stable name, also the undo merge key
     QString label;
-    QString unit;      // as shown, after the scale is applied
-    QString tip;       // one line: what it means and its effect
-    double min = 0, max = 1;    // in shown units
-    double scale = 1;  // shown = SI * scale (mm for lengths)
-    int decimals = 3;  // 0: an integer field
+    QString unit;             // as shown, after the scale is applied
+    QString tip;              // one line: what it means and its effect
+    double min = 0, max = 1;  // in shown units
+    double scale = 1;         // shown = SI * scale (mm for lengths)
+    int decimals = 3;         // 0: an integer field
     bool scientific = false;  // tolerances: typed as 1e-8
     SceneChange change = SceneChange::Ladder;
-    std::function<double(const jl::Scene&)> get;       // SI
-    std::function<void(jl::Scene&, double)> set;       // SI
+    std::function<double(const jl::Scene&)> get;  // SI
+    std::function<void(jl::Scene&, double)> set;  // SI
     // Shown instead of the minimum when that means "not set" (e.g. a mass
     // that follows from the density): says what the engine will use.
     std::function<QString(const jl::Scene&)> unset;

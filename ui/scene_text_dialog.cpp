@@ -38,10 +38,14 @@ private:
 QString withoutControls(const QString& text, bool keepNewlines) {
     QString out;
     for (QChar c : text) {
-        if (c == '\n' && keepNewlines) out += c;
-        else if (c == '\t') out += ' ';
-        else if (c.category() != QChar::Other_Control && c.category() != QChar::Other_Format) out += c;
-        else if (c == '\n' || c == '\r') out += ' ';
+        if (c == '\n' && keepNewlines)
+            out += c;
+        else if (c == '\t')
+            out += ' ';
+        else if (c.category() != QChar::Other_Control && c.category() != QChar::Other_Format)
+            out += c;
+        else if (c == '\n' || c == '\r')
+            out += ' ';
     }
     return out;
 }

@@ -36,29 +36,44 @@ jl::Point2 readPair(const QString& s, double scale) {
 // What the "amount" column means for each kind of action, in the units shown.
 QString amountText(const jl::ScriptAction& a) {
     switch (a.kind) {
-    case Kind::Turn: return QString::number(a.angle * 180 / std::numbers::pi, 'g', 6) + "°";
-    case Kind::Move: return pair(a.offset, 1000) + " mm";
-    case Kind::Push: return pair(a.impulse, 1) + " N·s";
-    case Kind::Cut: return QObject::tr("hinge %1").arg(a.hinge);
-    case Kind::Join: return QObject::tr("block %1, corners %2/%3").arg(a.otherBlock).arg(a.corner).arg(a.otherCorner);
-    default: return {};
+        case Kind::Turn:
+            return QString::number(a.angle * 180 / std::numbers::pi, 'g', 6) + "°";
+        case Kind::Move:
+            return pair(a.offset, 1000) + " mm";
+        case Kind::Push:
+            return pair(a.impulse, 1) + " N·s";
+        case Kind::Cut:
+            return QObject::tr("hinge %1").arg(a.hinge);
+        case Kind::Join:
+            return QObject::tr("block %1, corners %2/%3").arg(a.otherBlock).arg(a.corner).arg(a.otherCorner);
+        default:
+            return {};
     }
 }
 void readAmount(jl::ScriptAction& a, QString s) {
     s.remove(QRegularExpression("[^0-9eE+\\-.,/ ]"));
     switch (a.kind) {
-    case Kind::Turn: a.angle = s.trimmed().toDouble() * std::numbers::pi / 180; break;
-    case Kind::Move: a.offset = readPair(s, 1000); break;
-    case Kind::Push: a.impulse = readPair(s, 1); break;
-    case Kind::Cut: a.hinge = s.trimmed().toInt(); break;
-    case Kind::Join: {
-        const QStringList p = s.split(QRegularExpression("[,/ ]+"), Qt::SkipEmptyParts);
-        a.otherBlock = p.value(0).toInt();
-        a.corner = p.value(1).toInt();
-        a.otherCorner = p.value(2).toInt();
-        break;
-    }
-    default: break;
+        case Kind::Turn:
+            a.angle = s.trimmed().toDouble() * std::numbers::pi / 180;
+            break;
+        case Kind::Move:
+            a.offset = readPair(s, 1000);
+            break;
+        case Kind::Push:
+            a.impulse = readPair(s, 1);
+            break;
+        case Kind::Cut:
+            a.hinge = s.trimmed().toInt();
+            break;
+        case Kind::Join: {
+            const QStringList p = s.split(QRegularExpression("[,/ ]+"), Qt::SkipEmptyParts);
+            a.otherBlock = p.value(0).toInt();
+            a.corner = p.value(1).toInt();
+            a.otherCorner = p.value(2).toInt();
+            break;
+        }
+        default:
+            break;
     }
 }
 }  // namespace
@@ -69,16 +84,21 @@ ScriptPanel::ScriptPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_
     table_->setObjectName("script");
     table_->setHorizontalHeaderLabels({tr("At (s)"), tr("Action"), tr("Block"), tr("Amount"), tr("Duration (s)")});
     table_->horizontalHeaderItem(At)->setToolTip(tr("When the action starts, in simulated seconds."));
-    table_->horizontalHeaderItem(Action)->setToolTip(tr("Turn or move a held block, hold or release one, push, cut a hinge, join two blocks."));
+    table_->horizontalHeaderItem(Action)->setToolTip(
+        tr("Turn or move a held block, hold or release one, push, cut a hinge, join two blocks."));
     table_->horizontalHeaderItem(Block)->setToolTip(tr("The block acted on (0 is the top)."));
-    table_->horizontalHeaderItem(Amount)->setToolTip(tr("Turn: degrees, counter-clockwise. Move: mm. Push: N·s. Cut: hinge. Join: block, corners."));
-    table_->horizontalHeaderItem(Duration)->setToolTip(tr("How long a turn or move takes; the motion starts and ends smoothly."));
+    table_->horizontalHeaderItem(Amount)->setToolTip(
+        tr("Turn: degrees, counter-clockwise. Move: mm. Push: N·s. Cut: hinge. Join: block, corners."));
+    table_->horizontalHeaderItem(Duration)->setToolTip(
+        tr("How long a turn or move takes; the motion starts and ends smoothly."));
     table_->horizontalHeader()->setStretchLastSection(true);
     table_->verticalHeader()->hide();
     box->addWidget(table_);
     connect(table_, &QTableWidget::cellChanged, this, [this](int row, int) { commitRow(row); });
 
-    auto [add, remove] = addRowButtons(this, box, tr("Add turn"), tr("Adds a half turn of the top block after the last action."), tr("Removes the selected action."));
+    auto [add, remove] =
+        addRowButtons(this, box, tr("Add turn"), tr("Adds a half turn of the top block after the last action."),
+                      tr("Removes the selected action."));
     connect(add, &QPushButton::clicked, this, [this] {
         auto script = doc_->scene().script;
         jl::ScriptAction a;

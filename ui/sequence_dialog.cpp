@@ -31,8 +31,9 @@ SequenceDialog::SequenceDialog(Kind kind, double from, double to, double duratio
     fps_ = new QDoubleSpinBox(this);
     fps_->setRange(1, 1000);
     fps_->setValue(30);
-    fps_->setToolTip(tr("Pictures per simulated second. A video plays them at this rate too: "
-                        "more pictures per second than 30 make a slow-motion video."));
+    fps_->setToolTip(
+        tr("Pictures per simulated second. A video plays them at this rate too: "
+           "more pictures per second than 30 make a slow-motion video."));
     width_ = new QSpinBox(this);
     height_ = new QSpinBox(this);
     for (QSpinBox* s : {width_, height_}) {
@@ -41,7 +42,8 @@ SequenceDialog::SequenceDialog(Kind kind, double from, double to, double duratio
     }
     width_->setValue(1280);
     height_->setValue(720);
-    target_ = new QLineEdit(kind == Kind::Video ? QDir::home().filePath("ladder.mp4") : QDir::home().filePath("ladder-frames"), this);
+    target_ = new QLineEdit(
+        kind == Kind::Video ? QDir::home().filePath("ladder.mp4") : QDir::home().filePath("ladder-frames"), this);
     auto* browse = new QPushButton(tr("Browse..."), this);
     auto* where = new QHBoxLayout;
     where->addWidget(target_, 1);
@@ -62,7 +64,8 @@ SequenceDialog::SequenceDialog(Kind kind, double from, double to, double duratio
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     connect(browse, &QPushButton::clicked, this, &SequenceDialog::browse);
-    for (QDoubleSpinBox* s : {from_, to_, fps_}) connect(s, &QDoubleSpinBox::valueChanged, this, &SequenceDialog::updateCount);
+    for (QDoubleSpinBox* s : {from_, to_, fps_})
+        connect(s, &QDoubleSpinBox::valueChanged, this, &SequenceDialog::updateCount);
     updateCount();
 }
 
@@ -71,9 +74,10 @@ void SequenceDialog::updateCount() {
 }
 
 void SequenceDialog::browse() {
-    const QString chosen = kind_ == Kind::Video
-                               ? QFileDialog::getSaveFileName(this, tr("Video file"), target_->text(), tr("MP4 video (*.mp4);;Any (*)"))
-                               : QFileDialog::getExistingDirectory(this, tr("Folder for the pictures"), target_->text());
+    const QString chosen =
+        kind_ == Kind::Video
+            ? QFileDialog::getSaveFileName(this, tr("Video file"), target_->text(), tr("MP4 video (*.mp4);;Any (*)"))
+            : QFileDialog::getExistingDirectory(this, tr("Folder for the pictures"), target_->text());
     if (!chosen.isEmpty()) target_->setText(chosen);
 }
 

@@ -24,6 +24,7 @@ enum class ShaderOptions {
 };
 
 // Loads qrc:/shaders/<name>.vert and .frag.
-Qt3DRender::QMaterial* shaderMaterial(const QString& name, Qt3DCore::QNode* parent, ShaderOptions options = ShaderOptions::Solid);
+Qt3DRender::QMaterial* shaderMaterial(const QString& name, Qt3DCore::QNode* parent,
+                                      ShaderOptions options = ShaderOptions::Solid);
 
 }  // namespace jl::ui

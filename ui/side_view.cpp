@@ -29,7 +29,8 @@ void haloText(QPainter& p, const QPointF& centre, const QString& text, const QCo
     QPainterPath path;
     path.addText(box.left(), box.top() + m.ascent(), p.font(), text);
     p.save();
-    p.setPen(QPen(QColor(255, 255, 255, 220), std::max(2.0, m.height() / 5), Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+    p.setPen(
+        QPen(QColor(255, 255, 255, 220), std::max(2.0, m.height() / 5), Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
     p.setBrush(Qt::NoBrush);
     p.drawPath(path);
     p.setPen(Qt::NoPen);
@@ -51,10 +52,14 @@ void arrow(QPainter& p, const QPointF& from, const QPointF& to, double head) {
 
 QColor hingeColor(jl::HingeMode mode) {
     switch (mode) {
-    case jl::HingeMode::Free: return {46, 160, 67};
-    case jl::HingeMode::OpenLocked: return {31, 100, 200};
-    case jl::HingeMode::Folded: return {220, 90, 20};
-    case jl::HingeMode::Cut: return {150, 150, 150};
+        case jl::HingeMode::Free:
+            return {46, 160, 67};
+        case jl::HingeMode::OpenLocked:
+            return {31, 100, 200};
+        case jl::HingeMode::Folded:
+            return {220, 90, 20};
+        case jl::HingeMode::Cut:
+            return {150, 150, 150};
     }
     return kInk;
 }
@@ -75,8 +80,9 @@ SideView::SideView(QWidget* parent) : QWidget(parent) {
     setObjectName("sideView");
     setMinimumSize(160, 160);
     setAttribute(Qt::WA_OpaquePaintEvent);
-    setToolTip(tr("The ladder seen from the side, as the paper draws it. Hinges: green free, blue locked open, "
-                  "orange folded. Wheel: zoom; drag: pan; double-click: follow the whole ladder again."));
+    setToolTip(
+        tr("The ladder seen from the side, as the paper draws it. Hinges: green free, blue locked open, "
+           "orange folded. Wheel: zoom; drag: pan; double-click: follow the whole ladder again."));
 }
 
 // Where the ladder is drawn: all of `target` but a band at the top (the
@@ -146,7 +152,8 @@ void SideView::setScene(const jl::Scene& scene) {
     if (scene.ladder && !jl::Ladder::validate(*scene.ladder)) {
         // The engine's own numbering, not a copy of its rule.
         cornerLocal_ = jl::blockCorners(*scene.ladder);
-        ribbonColor_ = QColor(scene.ladder->ribbons.color.r, scene.ladder->ribbons.color.g, scene.ladder->ribbons.color.b);
+        ribbonColor_ =
+            QColor(scene.ladder->ribbons.color.r, scene.ladder->ribbons.color.g, scene.ladder->ribbons.color.b);
         ribbonThickness_ = scene.ladder->ribbons.thickness;
     }
     frame_ = std::make_shared<const jl::Frame>();
@@ -260,11 +267,13 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
     p.setPen(QPen(kGrid, 1));
     for (double x = std::floor((framing_.left() - 1) / cell) * cell; x <= framing_.right() + 1; x += cell) {
         const double px = map(jl::Vec2(x, 0)).x();
-        if (px >= target.left() && px <= target.right()) p.drawLine(QPointF(px, target.top()), QPointF(px, target.bottom()));
+        if (px >= target.left() && px <= target.right())
+            p.drawLine(QPointF(px, target.top()), QPointF(px, target.bottom()));
     }
     for (double y = std::floor((framing_.top() - 1) / cell) * cell; y <= framing_.bottom() + 1; y += cell) {
         const double py = map(jl::Vec2(0, y)).y();
-        if (py >= target.top() && py <= target.bottom()) p.drawLine(QPointF(target.left(), py), QPointF(target.right(), py));
+        if (py >= target.top() && py <= target.bottom())
+            p.drawLine(QPointF(target.left(), py), QPointF(target.right(), py));
     }
 
     const int n = int(std::min(frame_->poses.size(), shapes_.size()));
@@ -284,12 +293,13 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
         };
         for (int i = 0; i < std::min(n, firstParticle_); ++i) {
             const auto c = corners(i);
-            const bool last = i + 1 >= std::min(n, firstParticle_) || shapes_[size_t(i + 1)].color != shapes_[size_t(i)].color;
+            const bool last =
+                i + 1 >= std::min(n, firstParticle_) || shapes_[size_t(i + 1)].color != shapes_[size_t(i)].color;
             add(map((c[0] + c[2]) / 2), false);
             add(map((c[1] + c[3]) / 2), last);
             if (!last) continue;
-            p.setPen(QPen(shapes_[size_t(i)].color.darker(120), std::max(1.2, thicknessPixels), Qt::SolidLine, Qt::SquareCap,
-                          Qt::BevelJoin));
+            p.setPen(QPen(shapes_[size_t(i)].color.darker(120), std::max(1.2, thicknessPixels), Qt::SolidLine,
+                          Qt::SquareCap, Qt::BevelJoin));
             p.drawPolyline(line);
             line.clear();
         }
@@ -300,7 +310,8 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
             const QPolygonF poly({map(c[0]), map(c[1]), map(c[3]), map(c[2])});
             const QColor wood = shapes_[size_t(i)].color;
             const bool held = i < int(frame_->held.size()) && frame_->held[size_t(i)];
-            p.setPen(QPen(held ? kInk : wood.darker(170), (held ? 2.2 : 1.1) * ui, Qt::SolidLine, Qt::SquareCap, Qt::MiterJoin));
+            p.setPen(QPen(held ? kInk : wood.darker(170), (held ? 2.2 : 1.1) * ui, Qt::SolidLine, Qt::SquareCap,
+                          Qt::MiterJoin));
             p.setBrush(wood);
             p.drawPolygon(poly);
         }
@@ -317,7 +328,8 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
         QVector<QLineF> segments;  // one call for all: a ladder has two ribbons per hinge
         for (const jl::RibbonFrame& r : frame_->ribbons) {
             if (!r.visible) continue;
-            for (size_t k = 1; k < r.points.size(); ++k) segments.append(QLineF(map(r.points[k - 1]), map(r.points[k])));
+            for (size_t k = 1; k < r.points.size(); ++k)
+                segments.append(QLineF(map(r.points[k - 1]), map(r.points[k])));
         }
         p.drawLines(segments);
     }
@@ -350,7 +362,8 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
             for (int k = 0; k < 4; ++k) {
                 const jl::Vec2 r = c[size_t(k)] - centre;
                 const double a = r.dot(along), b = r.dot(across);
-                const jl::Vec2 spot = centre + along * (a - std::copysign(std::min(inset, std::abs(a)), a)) + across * (b * 0.5);
+                const jl::Vec2 spot =
+                    centre + along * (a - std::copysign(std::min(inset, std::abs(a)), a)) + across * (b * 0.5);
                 const QPointF at = map(spot);
                 haloText(p, at, QString::number(k), kCornerInk);
             }
@@ -400,7 +413,8 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
     const double pad = 8 * ui;
     if (options_.clock) {
         p.setPen(kInk);
-        p.drawText(QPointF(target.left() + pad, target.top() + pad + m.ascent()), tr("t = %1 s").arg(frame_->time, 0, 'f', 3));
+        p.drawText(QPointF(target.left() + pad, target.top() + pad + m.ascent()),
+                   tr("t = %1 s").arg(frame_->time, 0, 'f', 3));
         // At an event's instant (N, or a click on it), what happened there:
         // in presentation mode the class sees no status bar.
         QStringList happened;
@@ -434,8 +448,8 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
     // drawing keeps out of the top and bottom bands).
     if (options_.legend && !frame_->hinges.empty()) {
         const std::pair<jl::HingeMode, QString> items[] = {{jl::HingeMode::Free, tr("free")},
-                                                            {jl::HingeMode::OpenLocked, tr("locked open")},
-                                                            {jl::HingeMode::Folded, tr("folded")}};
+                                                           {jl::HingeMode::OpenLocked, tr("locked open")},
+                                                           {jl::HingeMode::Folded, tr("folded")}};
         // Narrower than the row: smaller type, never cut.
         double fit = 1.0;
         {

@@ -30,8 +30,8 @@ struct SideViewOptions {
     bool orientation = false;    // lengthwise orientation: corner 0 towards corner 1
     bool ribbons = true;
     bool legend = true;
-    bool clock = true;           // "t = 0.700 s" in a corner, and under it the events of that very instant
-    double scale = 1.0;          // fonts and lines; 2 or more for a projector
+    bool clock = true;   // "t = 0.700 s" in a corner, and under it the events of that very instant
+    double scale = 1.0;  // fonts and lines; 2 or more for a projector
 };
 
 class SideView : public QWidget {

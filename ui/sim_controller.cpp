@@ -41,8 +41,10 @@ void SimController::play() { worker_->post(cmd::Play{}); }
 void SimController::pause() { worker_->post(cmd::Pause{}); }
 void SimController::togglePlay() {
     const auto s = status();
-    if (s && s->playing) pause();
-    else play();
+    if (s && s->playing)
+        pause();
+    else
+        play();
 }
 void SimController::stepForward() { worker_->post(cmd::StepForward{}); }
 void SimController::stepBack() { worker_->post(cmd::StepBack{}); }

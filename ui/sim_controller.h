@@ -39,7 +39,8 @@ public:
     // A push on `block` at `local` (its own frame), as the view found it in
     // the frame of time `shownTime` it showed (block -1: whatever block the
     // worker finds at `point` in its own state).
-    void beginDrag(const jl::Vec2& point, int block = -1, const jl::Vec2& local = jl::Vec2::Zero(), double shownTime = -1);
+    void beginDrag(const jl::Vec2& point, int block = -1, const jl::Vec2& local = jl::Vec2::Zero(),
+                   double shownTime = -1);
     void moveDrag(const jl::Vec2& target);
     void endDrag();
 

@@ -80,8 +80,10 @@ void SimWorker::run() {
                 apply(c);
                 if (quit_) return;
             }
-            if (playing_) advancePaced();
-            else if (framesWanted_ > 0 && simulateNextFrame()) --framesWanted_;
+            if (playing_)
+                advancePaced();
+            else if (framesWanted_ > 0 && simulateNextFrame())
+                --framesWanted_;
             if (!failure_.empty()) framesWanted_ = 0;
         } catch (const std::exception& e) {
             fail(std::string("internal error: ") + e.what());
@@ -113,13 +115,17 @@ void SimWorker::apply(const SimCommand& c) {
                 playing_ = false;
                 // One frame on: shown at once when recorded, else simulated
                 // between commands (see run()).
-                if (cursor_ < history_.head()) showFrame(cursor_ + 1);
-                else if (sim_ && failure_.empty()) ++framesWanted_;
+                if (cursor_ < history_.head())
+                    showFrame(cursor_ + 1);
+                else if (sim_ && failure_.empty())
+                    ++framesWanted_;
             } else if constexpr (std::is_same_v<T, cmd::StepBack>) {
                 playing_ = false;
                 // From an instant between two frames, back is the frame before it.
-                if (showingInstant()) showFrame(cursor_);
-                else if (cursor_ > 0) showFrame(cursor_ - 1);
+                if (showingInstant())
+                    showFrame(cursor_);
+                else if (cursor_ > 0)
+                    showFrame(cursor_ - 1);
             } else if constexpr (std::is_same_v<T, cmd::Restart>) {
                 if (history_.count() > 0) showFrame(0);
                 rebasePace();
@@ -256,7 +262,8 @@ std::shared_ptr<const jl::Frame> SimWorker::instantFrame(double time, int before
 }
 
 bool SimWorker::showingInstant() const {
-    return shown_ && history_.count() > 0 && std::abs(shown_->time - cursor_ * history_.interval()) > 1e-9 * history_.interval();
+    return shown_ && history_.count() > 0 &&
+           std::abs(shown_->time - cursor_ * history_.interval()) > 1e-9 * history_.interval();
 }
 
 void SimWorker::apply(const cmd::DragBegin& c) {
@@ -315,8 +322,10 @@ void SimWorker::advancePaced() {
             dirty_ = true;
             return;
         }
-        if (cursor_ < history_.head()) showFrame(cursor_ + 1);
-        else if (!simulateNextFrame()) return;
+        if (cursor_ < history_.head())
+            showFrame(cursor_ + 1);
+        else if (!simulateNextFrame())
+            return;
         if (Clock::now() - start > kWorkSlice) break;
     }
     // The engine is slower than the clock: carry on from here rather than
@@ -359,7 +368,8 @@ void SimWorker::publish() {
         feedChanged_ = true;
     }
     if (feedChanged_) {
-        publishedFeed_ = std::make_shared<const std::vector<std::shared_ptr<const jl::Frame>>>(feed_.begin(), feed_.end());
+        publishedFeed_ =
+            std::make_shared<const std::vector<std::shared_ptr<const jl::Frame>>>(feed_.begin(), feed_.end());
         feedChanged_ = false;
     }
     auto s = std::make_shared<SimStatus>();

@@ -3,8 +3,8 @@
 #pragma once
 
 #include "jl/scene/scene.h"
-#include "jl/sim/simulation.h"
 #include "jl/sim/frame_history.h"
+#include "jl/sim/simulation.h"
 #include "ui/sim_status.h"
 
 #include <atomic>
@@ -19,18 +19,28 @@
 namespace jl::ui {
 
 namespace cmd {
-struct Load { jl::Scene scene; };
+struct Load {
+    jl::Scene scene;
+};
 struct Play {};
 struct Pause {};
 struct StepForward {};
 struct StepBack {};
 struct Restart {};
-struct Seek { double time; };
+struct Seek {
+    double time;
+};
 // The state at exactly `time` (an event's instant), which lies between two
 // frames: shown, paused, without being recorded; the cursor is the frame before it.
-struct ShowInstant { double time; };
-struct Speed { double factor; };
-struct Budget { std::size_t bytes; };
+struct ShowInstant {
+    double time;
+};
+struct Speed {
+    double factor;
+};
+struct Budget {
+    std::size_t bytes;
+};
 // A push at `point`: on `block` (-1: the block there, picked in the worker's
 // state) at `local` in its frame, in the frame of time `shownTime` that the
 // window showed at the press (negative: the frame the worker is at).
@@ -40,14 +50,16 @@ struct DragBegin {
     jl::Vec2 local = jl::Vec2::Zero();
     double shownTime = -1;
 };
-struct DragMove { jl::Vec2 target; };
+struct DragMove {
+    jl::Vec2 target;
+};
 struct DragEnd {};
 struct Quit {};
 }  // namespace cmd
 
-using SimCommand = std::variant<cmd::Load, cmd::Play, cmd::Pause, cmd::StepForward, cmd::StepBack,
-                                cmd::Restart, cmd::Seek, cmd::ShowInstant, cmd::Speed, cmd::Budget, cmd::DragBegin,
-                                cmd::DragMove, cmd::DragEnd, cmd::Quit>;
+using SimCommand =
+    std::variant<cmd::Load, cmd::Play, cmd::Pause, cmd::StepForward, cmd::StepBack, cmd::Restart, cmd::Seek,
+                 cmd::ShowInstant, cmd::Speed, cmd::Budget, cmd::DragBegin, cmd::DragMove, cmd::DragEnd, cmd::Quit>;
 
 class SimWorker {
 public:
@@ -125,7 +137,7 @@ private:
     FrameHistory history_;
     int cursor_ = 0;
     bool playing_ = false;
-    double seekingTo_ = -1;  // s, while simulateTo (or instantFrame) is on its way there
+    double seekingTo_ = -1;    // s, while simulateTo (or instantFrame) is on its way there
     double seekProgress_ = 0;  // 0 .. 1 of that way
     // Playing stops once at the scene's duration; Play from there goes on past it.
     double duration_ = 0;  // s, 0: none

@@ -71,16 +71,19 @@ bool SimWorker::simulateNextFrame() {
     const int next = history_.count();
     FramePtr first;
     midFrame_ = true;
-    const bool ok = framesThrough(*sim_, next, carried_, [&](int k, FramePtr f) {
-        if (k != history_.count()) return;  // the grid gives each frame once, in order
-        if (!f->events.empty()) {
-            events_->insert(events_->end(), f->events.begin(), f->events.end());
-            eventsChanged_ = true;
-        }
-        history_.append(f, history_.isKeyframeIndex(k) ? sim_->snapshot() : nullptr, k);
-        feed(f);
-        if (k == next) first = f;
-    }, true);
+    const bool ok = framesThrough(
+        *sim_, next, carried_,
+        [&](int k, FramePtr f) {
+            if (k != history_.count()) return;  // the grid gives each frame once, in order
+            if (!f->events.empty()) {
+                events_->insert(events_->end(), f->events.begin(), f->events.end());
+                eventsChanged_ = true;
+            }
+            history_.append(f, history_.isKeyframeIndex(k) ? sim_->snapshot() : nullptr, k);
+            feed(f);
+            if (k == next) first = f;
+        },
+        true);
     if (abort_) return false;
     // A command came in: the frame is finished later, from where it got to
     // (the steps do not depend on when they are taken).
@@ -197,14 +200,14 @@ void SimWorker::discardFuture() {
     // run's frames too, and so are the events after the cursor's time.
     carried_.clear();
     std::vector<jl::Event> since;
-    if (sim_->time() < tc &&
-        !framesThrough(*sim_, cursor_, since, [&](int k, FramePtr f) {
+    if (sim_->time() < tc && !framesThrough(*sim_, cursor_, since, [&](int k, FramePtr f) {
             if (k <= cursor_ || k != history_.count()) return;  // already on record
             events_->insert(events_->end(), f->events.begin(), f->events.end());
             history_.append(f, history_.isKeyframeIndex(k) ? sim_->snapshot() : nullptr, cursor_);
             feed(std::move(f));
         }))
-        return fail(sim_->failure().empty() ? std::string("the run could not be resumed at this frame") : sim_->failure());
+        return fail(sim_->failure().empty() ? std::string("the run could not be resumed at this frame")
+                                            : sim_->failure());
     std::erase_if(since, [tc](const jl::Event& e) { return e.time <= tc; });  // already in the log
     carried_ = std::move(since);
     midFrame_ = false;

@@ -34,7 +34,8 @@ SimulationPanel::SimulationPanel(Document* doc, QWidget* parent) : QWidget(paren
     integrator_ = new QComboBox(this);
     integrator_->setObjectName("integrator");
     addWords<jl::Integrator>(integrator_, jl::kIntegrators);
-    const QString integratorTip = tr("How the motion is integrated between events; the adaptive one follows the tolerance.");
+    const QString integratorTip =
+        tr("How the motion is integrated between events; the adaptive one follows the tolerance.");
     integrator_->setToolTip(integratorTip);
     auto* il = new QLabel(tr("Integrator"));
     il->setToolTip(integratorTip);
@@ -48,7 +49,8 @@ SimulationPanel::SimulationPanel(Document* doc, QWidget* parent) : QWidget(paren
     events_ = new QComboBox(this);
     events_->setObjectName("eventPolicy");
     addWords<jl::EventPolicy>(events_, jl::kEventPolicies);
-    const QString eventsTip = tr("Where locks, folds and flips happen: at their exact time, or after the step that crossed them.");
+    const QString eventsTip =
+        tr("Where locks, folds and flips happen: at their exact time, or after the step that crossed them.");
     events_->setToolTip(eventsTip);
     auto* el = new QLabel(tr("Events"));
     el->setToolTip(eventsTip);
@@ -65,8 +67,9 @@ SimulationPanel::SimulationPanel(Document* doc, QWidget* parent) : QWidget(paren
     history_->setSingleStep(64);
     history_->setSuffix(" MB");
     history_->setKeyboardTracking(false);
-    const QString historyTip = tr("Memory for recorded frames (a setting of this computer, not of the scene); "
-                                  "older frames beyond it are re-simulated when you scrub back.");
+    const QString historyTip =
+        tr("Memory for recorded frames (a setting of this computer, not of the scene); "
+           "older frames beyond it are re-simulated when you scrub back.");
     history_->setToolTip(historyTip);
     auto* hl = new QLabel(tr("History memory"));
     hl->setToolTip(historyTip);

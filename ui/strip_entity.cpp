@@ -37,7 +37,8 @@ StripEntity::StripEntity(Qt3DCore::QNode* parent, bool unlit) : Qt3DCore::QEntit
 
 void StripEntity::setColor(const QColor& c) { color_->setValue(c); }
 
-void StripEntity::addQuad(const QVector3D& a, const QVector3D& b, const QVector3D& c, const QVector3D& d, const QVector3D& n) {
+void StripEntity::addQuad(const QVector3D& a, const QVector3D& b, const QVector3D& c, const QVector3D& d,
+                          const QVector3D& n) {
     for (const QVector3D* p : {&a, &b, &c, &a, &c, &d})
         data_.insert(data_.end(), {p->x(), p->y(), p->z(), n.x(), n.y(), n.z()});
 }
@@ -85,7 +86,8 @@ void buildDragLine(StripEntity& strip, const jl::Frame& frame, float z, float wi
         // A small square at each end: where it is held, and where the hand is.
         for (const jl::Vec2& c : {a, b}) {
             const double s = width * 2;
-            strip.addQuad(v(c + jl::Vec2(-s, -s)), v(c + jl::Vec2(s, -s)), v(c + jl::Vec2(s, s)), v(c + jl::Vec2(-s, s)), n);
+            strip.addQuad(v(c + jl::Vec2(-s, -s)), v(c + jl::Vec2(s, -s)), v(c + jl::Vec2(s, s)),
+                          v(c + jl::Vec2(-s, s)), n);
         }
     }
     strip.commit();

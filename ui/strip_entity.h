@@ -13,11 +13,11 @@
 namespace Qt3DCore {
 class QBuffer;
 class QAttribute;
-}
+}  // namespace Qt3DCore
 namespace Qt3DRender {
 class QGeometryRenderer;
 class QParameter;
-}
+}  // namespace Qt3DRender
 
 namespace jl::ui {
 

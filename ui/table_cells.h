@@ -12,12 +12,14 @@
 namespace jl::ui {
 
 inline void setCellText(QTableWidget* table, int row, int column, const QString& text) {
-    if (QTableWidgetItem* item = table->item(row, column)) item->setText(text);
-    else table->setItem(row, column, new QTableWidgetItem(text));
+    if (QTableWidgetItem* item = table->item(row, column))
+        item->setText(text);
+    else
+        table->setItem(row, column, new QTableWidgetItem(text));
 }
 
 inline std::pair<QPushButton*, QPushButton*> addRowButtons(QWidget* parent, QBoxLayout* box, const QString& addText,
-                                                          const QString& addTip, const QString& removeTip) {
+                                                           const QString& addTip, const QString& removeTip) {
     auto* buttons = new QHBoxLayout;
     auto* add = new QPushButton(addText, parent);
     add->setToolTip(addTip);

@@ -1,8 +1,8 @@
 #include "ui/teaching_docks.h"
 
+#include "ui/document.h"
 #include "ui/exporter.h"
 #include "ui/lessons.h"
-#include "ui/document.h"
 #include "ui/pacing.h"
 #include "ui/run_plots.h"
 #include "ui/sequence_dialog.h"
@@ -68,10 +68,12 @@ void TeachingDocks::createMenus() {
         connect(a, &QAction::triggered, this, slot);
         return a;
     };
-    add(tr("Run to the next &event"), Qt::Key_N, tr("Show the ladder at the instant of the next event, simulating on if needed"),
+    add(tr("Run to the next &event"), Qt::Key_N,
+        tr("Show the ladder at the instant of the next event, simulating on if needed"),
         [this] { pacing_->runToNextEvent(); });
     add(tr("&Loop a stretch"), Qt::Key_L,
-        tr("Press once where the loop starts and once where it ends; press again to stop looping"), [this] { markLoop(); });
+        tr("Press once where the loop starts and once where it ends; press again to stop looping"),
+        [this] { markLoop(); });
     presentationAction_ = teach->addAction(tr("&Presentation mode"));
     presentationAction_->setShortcut(Qt::Key_F5);
     presentationAction_->setStatusTip(tr("Full screen, large type, only the views; Esc or F5 to leave"));
@@ -147,7 +149,8 @@ void TeachingDocks::markLoop() {
 }
 
 void TeachingDocks::sideViewPicture() {
-    const QString path = QFileDialog::getSaveFileName(parent_, tr("Side view as a picture"), "side-view.png", tr("PNG picture (*.png)"));
+    const QString path =
+        QFileDialog::getSaveFileName(parent_, tr("Side view as a picture"), "side-view.png", tr("PNG picture (*.png)"));
     if (path.isEmpty()) return;
     // Twice the size on screen: sharp on slides.
     if (!sideView_->render(sideView_->size() * 2).save(path, "PNG"))
@@ -167,7 +170,8 @@ void TeachingDocks::exportSequence(bool video) {
     if (dialog.exec() != QDialog::Accepted) return;
     SequenceRequest r = dialog.request();
     r.look = sideView_->options();
-    QProgressDialog progress(tr("Drawing the pictures..."), tr("Cancel"), 0, Exporter::frameCount(r.from, r.to, r.fps), parent_);
+    QProgressDialog progress(tr("Drawing the pictures..."), tr("Cancel"), 0, Exporter::frameCount(r.from, r.to, r.fps),
+                             parent_);
     progress.setWindowModality(Qt::WindowModal);
     r.progress = [&progress](int done, int) {
         progress.setValue(done);
@@ -178,25 +182,31 @@ void TeachingDocks::exportSequence(bool video) {
     const jl::Scene scene = s && s->recorded ? *s->recorded : doc_->scene();
     const ExportResult result = video ? Exporter::video(scene, r, dialog.target()) : Exporter::imageSequence(scene, r);
     progress.reset();
-    if (!result.ok) QMessageBox::warning(parent_, tr("Not exported"), result.error);
-    else say(tr("Exported %n file(s).", nullptr, int(result.files.size())));
+    if (!result.ok)
+        QMessageBox::warning(parent_, tr("Not exported"), result.error);
+    else
+        say(tr("Exported %n file(s).", nullptr, int(result.files.size())));
 }
 
 void TeachingDocks::exportTables() {
-    const QString dir = QFileDialog::getExistingDirectory(parent_, tr("Folder for poses.csv, energy.csv and events.csv"));
+    const QString dir =
+        QFileDialog::getExistingDirectory(parent_, tr("Folder for poses.csv, energy.csv and events.csv"));
     if (dir.isEmpty()) return;
     const auto s = latest();
     // Every frame of the recorded run, as the timeline has them.
     const jl::Scene scene = s && s->recorded ? *s->recorded : doc_->scene();
     const double end = s && s->headTime > 0 ? s->headTime : scene.duration;
     const ExportResult result = Exporter::tables(scene, 0, end, scene.solver.frameInterval, dir);
-    if (!result.ok) QMessageBox::warning(parent_, tr("Not exported"), result.error);
-    else say(tr("Wrote %1.").arg(result.files.join(", ")));
+    if (!result.ok)
+        QMessageBox::warning(parent_, tr("Not exported"), result.error);
+    else
+        say(tr("Wrote %1.").arg(result.files.join(", ")));
 }
 
 void TeachingDocks::exportEvents() {
     const auto s = latest();
-    const QString path = QFileDialog::getSaveFileName(parent_, tr("Event log as CSV"), "events.csv", tr("CSV table (*.csv)"));
+    const QString path =
+        QFileDialog::getSaveFileName(parent_, tr("Event log as CSV"), "events.csv", tr("CSV table (*.csv)"));
     if (path.isEmpty()) return;
     const ExportResult result = Exporter::eventsCsv(s && s->events ? *s->events : std::vector<jl::Event>{}, path);
     if (!result.ok) QMessageBox::warning(parent_, tr("Not exported"), result.error);

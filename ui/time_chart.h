@@ -23,7 +23,8 @@ public:
     explicit TimeChart(const QString& title, const QString& unit, QWidget* parent = nullptr);
 
     // A curve of the chart; its points are set by setPoints.
-    QLineSeries* addCurve(const QString& name, const QColor& color, qreal width = 2.0, Qt::PenStyle style = Qt::SolidLine);
+    QLineSeries* addCurve(const QString& name, const QColor& color, qreal width = 2.0,
+                          Qt::PenStyle style = Qt::SolidLine);
     // Hidden curves keep their points; the legend shows them struck out.
     void setCurveShown(QLineSeries* curve, bool shown);
     void setPoints(QLineSeries* curve, const std::vector<QPointF>& points);
@@ -67,7 +68,8 @@ private:
     QValueAxis* timeAxis_;
     QValueAxis* valueAxis_;
     double cursor_ = 0;
-    double paintedCursorX_ = std::numeric_limits<double>::quiet_NaN();  // in the viewport, where drawForeground last drew the cursor
+    double paintedCursorX_ =
+        std::numeric_limits<double>::quiet_NaN();  // in the viewport, where drawForeground last drew the cursor
     bool large_ = false;
     bool fixedValues_ = false;
     std::pair<double, double> extra_{0, 0};

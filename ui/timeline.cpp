@@ -18,12 +18,17 @@ constexpr double kMarkReach = 3;  // px either side of an event's mark that stil
 
 QColor markColor(jl::EventKind k) {
     switch (k) {
-    case jl::EventKind::FlipFlop: return QColor(214, 96, 40);
-    case jl::EventKind::Fold: return QColor(60, 120, 200);
-    case jl::EventKind::Lock: return QColor(90, 150, 70);
-    case jl::EventKind::Unlock:
-    case jl::EventKind::Unfold: return QColor(130, 130, 130);
-    default: return QColor(150, 90, 170);
+        case jl::EventKind::FlipFlop:
+            return QColor(214, 96, 40);
+        case jl::EventKind::Fold:
+            return QColor(60, 120, 200);
+        case jl::EventKind::Lock:
+            return QColor(90, 150, 70);
+        case jl::EventKind::Unlock:
+        case jl::EventKind::Unfold:
+            return QColor(130, 130, 130);
+        default:
+            return QColor(150, 90, 170);
     }
 }
 }  // namespace
@@ -32,8 +37,9 @@ Timeline::Timeline(QWidget* parent) : QWidget(parent) {
     setObjectName("timeline");
     setMinimumHeight(40);
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
-    setToolTip(tr("Simulated time: the shaded part is recorded; press or drag to see any moment. "
-                  "Marks: orange flip-flop, blue fold, green lock, grey unlock or unfold; press one to see that instant."));
+    setToolTip(
+        tr("Simulated time: the shaded part is recorded; press or drag to see any moment. "
+           "Marks: orange flip-flop, blue fold, green lock, grey unlock or unfold; press one to see that instant."));
 }
 
 void Timeline::setDuration(double seconds) {
@@ -70,9 +76,7 @@ QRectF Timeline::track() const {
 
 QSize Timeline::sizeHint() const { return {600, int(std::ceil(6 + 20 + QFontMetricsF(labelFont()).height() + 5))}; }
 double Timeline::xOf(double t) const { return track().left() + track().width() * std::clamp(t / span(), 0.0, 1.0); }
-double Timeline::timeAt(int x) const {
-    return std::clamp((x - track().left()) / track().width(), 0.0, 1.0) * span();
-}
+double Timeline::timeAt(int x) const { return std::clamp((x - track().left()) / track().width(), 0.0, 1.0) * span(); }
 
 std::vector<Timeline::Label> Timeline::labels() const {
     const QRectF r = track();
@@ -108,7 +112,8 @@ void Timeline::paintEvent(QPaintEvent*) {
     const QRectF r = track();
     const QPalette pal = palette();
     p.fillRect(r, pal.color(QPalette::Base));
-    p.fillRect(QRectF(r.left(), r.top(), xOf(recorded_) - r.left(), r.height()), pal.color(QPalette::Highlight).lighter(170));
+    p.fillRect(QRectF(r.left(), r.top(), xOf(recorded_) - r.left(), r.height()),
+               pal.color(QPalette::Highlight).lighter(170));
     p.setPen(pal.color(QPalette::Mid));
     p.drawRect(r);
 
@@ -153,8 +158,10 @@ const jl::Event* Timeline::eventNear(double x) const {
 void Timeline::mousePressEvent(QMouseEvent* e) {
     if (e->button() != Qt::LeftButton) return;
     const double x = e->position().x();
-    if (const jl::Event* hit = eventNear(x)) emit instantRequested(hit->time);
-    else emit seekRequested(timeAt(int(x)));
+    if (const jl::Event* hit = eventNear(x))
+        emit instantRequested(hit->time);
+    else
+        emit seekRequested(timeAt(int(x)));
 }
 
 bool Timeline::event(QEvent* e) {

@@ -84,12 +84,13 @@ void ValueForm::refresh() {
         const double shown = f.get(doc_->scene()) * f.scale;
         QWidget* w = editors_[i];
         const QSignalBlocker block(w);
-        if (auto* s = qobject_cast<QSpinBox*>(w)) s->setValue(int(std::lround(shown)));
+        if (auto* s = qobject_cast<QSpinBox*>(w))
+            s->setValue(int(std::lround(shown)));
         else if (auto* d = qobject_cast<QDoubleSpinBox*>(w)) {
             if (f.unset) d->setSpecialValueText(f.unset(doc_->scene()));
             d->setValue(shown);
-        }
-        else if (auto* e = qobject_cast<QLineEdit*>(w)) e->setText(QString::number(shown, 'g', 6));
+        } else if (auto* e = qobject_cast<QLineEdit*>(w))
+            e->setText(QString::number(shown, 'g', 6));
     }
 }
 

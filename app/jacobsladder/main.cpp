@@ -65,8 +65,10 @@ int main(int argc, char** argv) {
 
     jl::ui::MainWindow window;
     window.show();
-    if (!parser.positionalArguments().isEmpty()) window.openFile(parser.positionalArguments().first());
-    else window.offerRecovery();
+    if (!parser.positionalArguments().isEmpty())
+        window.openFile(parser.positionalArguments().first());
+    else
+        window.offerRecovery();
     if (parser.isSet(orbit)) window.ladderView()->orbit(parser.value(orbit).toFloat(), 0);
     if (parser.isSet(seek)) window.controller()->seek(parser.value(seek).toDouble());
     if (parser.isSet(play)) window.controller()->play();

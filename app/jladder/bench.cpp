@@ -54,7 +54,8 @@ int bench(const std::vector<std::string>& args) {
     request.only = only;
     request.out = o.get("--out").value_or("docs/bench");
     request.report =
-        o.get("--report").value_or(!only.empty() ? (request.out / (only + ".md")).string() : std::string("docs/performance.md"));
+        o.get("--report")
+            .value_or(!only.empty() ? (request.out / (only + ".md")).string() : std::string("docs/performance.md"));
     request.examples = o.get("--examples").value_or("examples");
     const bool ok = bench::runBench(request);
     std::printf("{\"out\":%s,\"report\":%s,\"ok\":%s}\n", jsonString(request.out.string()).c_str(),

@@ -14,15 +14,16 @@ namespace jl::cli {
 int exportFrames(const std::vector<std::string>& args) {
     Options o = parse(args, {"--until", "--every", "--csv", "--energy", "--events"}, {"--help"});
     if (o.has("--help")) {
-        std::fputs("usage: jladder export SCENE [--until T] [--every DT] [--csv POSES.csv] [--energy ENERGY.csv]\n"
-                   "                      [--events EVENTS.json]\n"
-                   "Runs SCENE headless (to T, default the scene's duration) and writes block poses\n"
-                   "(t,block,x,y,theta), energies (kinetic, potential, total, work by the hand and\n"
-                   "drags, losses, balance) every DT (default the scene's frame interval) and events.\n"
-                   "Files are written as the run goes and replace the old ones only when it\n"
-                   "completes; a run that fails or is interrupted leaves them as they were and\n"
-                   "what it computed in FILE.partial. No output may be the scene or another output.\n",
-                   stdout);
+        std::fputs(
+            "usage: jladder export SCENE [--until T] [--every DT] [--csv POSES.csv] [--energy ENERGY.csv]\n"
+            "                      [--events EVENTS.json]\n"
+            "Runs SCENE headless (to T, default the scene's duration) and writes block poses\n"
+            "(t,block,x,y,theta), energies (kinetic, potential, total, work by the hand and\n"
+            "drags, losses, balance) every DT (default the scene's frame interval) and events.\n"
+            "Files are written as the run goes and replace the old ones only when it\n"
+            "completes; a run that fails or is interrupted leaves them as they were and\n"
+            "what it computed in FILE.partial. No output may be the scene or another output.\n",
+            stdout);
         return 0;
     }
     if (o.error.empty() && o.positional.size() != 1) o.error = "give exactly one scene file";
@@ -42,7 +43,8 @@ int exportFrames(const std::vector<std::string>& args) {
     for (const Diagnostic& d : load.errors) std::fprintf(stderr, "%s\n", d.format().c_str());
     if (!load.scene) return 1;
     const double until = o.get("--until") ? o.number("--until", range::duration).value_or(0) : load.scene->duration;
-    const double every = o.get("--every") ? o.number("--every", range::frameInterval).value_or(0) : load.scene->solver.frameInterval;
+    const double every =
+        o.get("--every") ? o.number("--every", range::frameInterval).value_or(0) : load.scene->solver.frameInterval;
     if (!o.error.empty()) {
         std::fprintf(stderr, "jladder export: %s\n", o.error.c_str());
         return 2;

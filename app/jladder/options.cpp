@@ -12,9 +12,7 @@
 
 namespace jl::cli {
 
-bool Options::has(const std::string& flag) const {
-    return std::find(flags.begin(), flags.end(), flag) != flags.end();
-}
+bool Options::has(const std::string& flag) const { return std::find(flags.begin(), flags.end(), flag) != flags.end(); }
 
 std::optional<std::string> Options::get(const std::string& name) const {
     auto it = named.find(name);

@@ -77,8 +77,8 @@ int table(const std::optional<std::string>& out) {
         int n;
         double t;
     };
-    const std::vector<Case> cases = {{6, 0.012}, {8, 0.012}, {12, 0.012}, {25, 0.012}, {50, 0.012},
-                                     {12, 0.006}, {25, 0.004}, {25, 0.003}};
+    const std::vector<Case> cases = {{6, 0.012},  {8, 0.012},  {12, 0.012}, {25, 0.012},
+                                     {50, 0.012}, {12, 0.006}, {25, 0.004}, {25, 0.003}};
     std::string text =
         "| blocks | thickness (mm) | hinges the first ripple flips | mean time between flips | other hinges flipped | "
         "hinge events | most quick cycles of one hinge in a row | failure |\n"
@@ -105,12 +105,18 @@ std::optional<double> quantity(const std::string& text, DesignParameter p, std::
     const std::string unit(end);
     double scale = 0;
     const bool length = p == DesignParameter::Thickness || p == DesignParameter::Length || p == DesignParameter::Width;
-    if (unit.empty()) scale = 1;
-    else if (length && unit == "mm") scale = 1e-3;
-    else if (length && unit == "cm") scale = 1e-2;
-    else if (length && unit == "m") scale = 1;
-    else if (p == DesignParameter::TurnDuration && unit == "ms") scale = 1e-3;
-    else if (p == DesignParameter::TurnDuration && unit == "s") scale = 1;
+    if (unit.empty())
+        scale = 1;
+    else if (length && unit == "mm")
+        scale = 1e-3;
+    else if (length && unit == "cm")
+        scale = 1e-2;
+    else if (length && unit == "m")
+        scale = 1;
+    else if (p == DesignParameter::TurnDuration && unit == "ms")
+        scale = 1e-3;
+    else if (p == DesignParameter::TurnDuration && unit == "s")
+        scale = 1;
     if (end == text.c_str() || !(scale > 0) || !std::isfinite(v)) {
         error = "'" + text + "' is not a value of " + std::string(describe(p).word);
         return std::nullopt;
@@ -139,7 +145,6 @@ std::optional<DesignAxis> axis(const std::string& text, DesignParameter p, std::
     return x;
 }
 
-
 }  // namespace
 
 int reach(const std::vector<std::string>& args) {
@@ -166,10 +171,12 @@ int reach(const std::vector<std::string>& args) {
     const auto csvPath = o.get("--csv"), svgPath = o.get("--svg"), scenePath = o.get("--scene");
     for (const auto& [option, path] : {std::pair{"--csv", csvPath}, std::pair{"--svg", svgPath}})
         if (o.error.empty() && path && scenePath && sameFile(*path, *scenePath))
-            o.error = std::string(option) + " " + *path + " is the scene file " + *scenePath + "; writing it would destroy the scene";
+            o.error = std::string(option) + " " + *path + " is the scene file " + *scenePath +
+                      "; writing it would destroy the scene";
     if (o.error.empty() && csvPath && svgPath && sameFile(*csvPath, *svgPath) &&
         !(writtenDirectly(*csvPath) && writtenDirectly(*svgPath)))
-        o.error = "--csv and --svg name the same file (" + *csvPath + "); one would overwrite the other, give each its own";
+        o.error =
+            "--csv and --svg name the same file (" + *csvPath + "); one would overwrite the other, give each its own";
     if (!o.error.empty()) {
         std::fprintf(stderr, "jladder reach: %s\n", o.error.c_str());
         return 2;
@@ -201,8 +208,10 @@ int reach(const std::vector<std::string>& args) {
     const std::string csv = rippleMapCsv(map);
     const std::string title = o.get("--title").value_or("How far the first ripple travels");
     std::vector<std::pair<std::string, std::string>> files;
-    if (auto path = o.get("--csv")) files.emplace_back(*path, csv);
-    else if (!print(csv)) return 1;
+    if (auto path = o.get("--csv"))
+        files.emplace_back(*path, csv);
+    else if (!print(csv))
+        return 1;
     if (auto path = o.get("--svg")) files.emplace_back(*path, rippleMapSvg(map, title));
     return saveAll(files) ? 0 : 1;
 }

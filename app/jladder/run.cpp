@@ -43,10 +43,9 @@ const char* kRunHelp =
 }  // namespace
 
 int run(const std::vector<std::string>& args) {
-    Options o = parse(args,
-                      {"--until", "--events", "--frames", "--every", "--integrator", "--step", "--tolerance",
-                       "--event-policy"},
-                      {"--help"});
+    Options o = parse(
+        args, {"--until", "--events", "--frames", "--every", "--integrator", "--step", "--tolerance", "--event-policy"},
+        {"--help"});
     if (o.has("--help")) {
         std::fputs(kRunHelp, stdout);
         return 0;
@@ -70,7 +69,8 @@ int run(const std::vector<std::string>& args) {
         std::fprintf(stderr, "jladder run: %s\n", o.error.c_str());
         return 2;
     }
-    const double every = o.get("--every") ? o.number("--every", range::frameInterval).value_or(0) : load.scene->solver.frameInterval;
+    const double every =
+        o.get("--every") ? o.number("--every", range::frameInterval).value_or(0) : load.scene->solver.frameInterval;
     if (!o.error.empty()) {
         std::fprintf(stderr, "jladder run: %s\n", o.error.c_str());
         return 2;

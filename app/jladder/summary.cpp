@@ -45,12 +45,11 @@ std::string summaryJson(const Recording& r, const std::string& scenePath) {
     s << "{\"scene\":" << jsonString(scenePath) << ",\"time\":" << jsonNumber(r.time) << ",\"steps\":" << r.steps
       << ",\"evaluations\":" << r.evaluations << ",\"step\":" << stepJson(r.solver) << ",\"events\":" << r.events
       << ",\"energy_start\":" << jsonNumber(r.energyStart) << ",\"energy_end\":" << jsonNumber(r.energyEnd)
-      << ",\"worst_energy_balance\":" << jsonNumber(r.worstBalance)
-      << ",\"max_residual\":" << jsonNumber(r.worstResidual)
+      << ",\"worst_energy_balance\":" << jsonNumber(r.worstBalance) << ",\"max_residual\":"
+      << jsonNumber(r.worstResidual)
       // The first block of the still tail at the end (docs/model.md section 3.7): null if none hangs still.
       << ",\"still_from\":" << (r.solver.stillFrom >= 0 ? std::to_string(r.solver.stillFrom) : std::string("null"))
-      << ",\"wall_seconds\":" << jsonNumber(r.wallSeconds)
-      << ",\"failure\":" << failureJson(r) << "}";
+      << ",\"wall_seconds\":" << jsonNumber(r.wallSeconds) << ",\"failure\":" << failureJson(r) << "}";
     return s.str();
 }
 

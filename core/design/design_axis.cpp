@@ -29,9 +29,10 @@ Scene withParameter(Scene s, DesignParameter p, double value) {
         case DesignParameter::Blocks:
             // Clamped before rounding: lround of a value beyond a long (or of
             // a NaN) is unspecified.
-            l.blocks = std::isnan(value) ? range::kFewestBlocks
-                                         : int(std::lround(std::clamp(value, double(range::kFewestBlocks),
-                                                                      double(range::kMostBlocks))));
+            l.blocks =
+                std::isnan(value)
+                    ? range::kFewestBlocks
+                    : int(std::lround(std::clamp(value, double(range::kFewestBlocks), double(range::kMostBlocks))));
             break;
         case DesignParameter::Thickness:
             l.block.thickness = value;
@@ -61,12 +62,18 @@ double parameterValue(const Scene& s, DesignParameter p) {
     if (!s.ladder) return none;
     const LadderSpec& l = *s.ladder;
     switch (p) {
-        case DesignParameter::Blocks: return l.blocks;
-        case DesignParameter::Thickness: return l.block.thickness;
-        case DesignParameter::Length: return l.block.length;
-        case DesignParameter::Width: return l.block.width;
-        case DesignParameter::Density: return l.block.density;
-        case DesignParameter::HingeDamping: return l.hinges.damping;
+        case DesignParameter::Blocks:
+            return l.blocks;
+        case DesignParameter::Thickness:
+            return l.block.thickness;
+        case DesignParameter::Length:
+            return l.block.length;
+        case DesignParameter::Width:
+            return l.block.width;
+        case DesignParameter::Density:
+            return l.block.density;
+        case DesignParameter::HingeDamping:
+            return l.hinges.damping;
         case DesignParameter::TurnDuration:
             for (const ScriptAction& a : s.script)
                 if (a.kind == ScriptAction::Kind::Turn) return a.duration;

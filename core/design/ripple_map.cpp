@@ -128,9 +128,9 @@ std::string rippleMapSvg(const RippleMap& m, const std::string& title) {
             const double x0 = left + cell * double(i);
             const double fraction = r.hinges > 0 ? double(r.reached) / r.hinges : 0;
             const bool failed = !r.failure.empty() || r.cancelled;
-            s << "<rect x='" << fixed(x0, 1) << "' y='" << fixed(y0, 1) << "' width='" << fixed(cell, 0)
-              << "' height='" << fixed(cell, 0) << "' fill='" << (failed ? "#d0d0d0" : colour(fraction))
-              << "' stroke='white'><title>" << r.reached << " of " << r.hinges << " hinges"
+            s << "<rect x='" << fixed(x0, 1) << "' y='" << fixed(y0, 1) << "' width='" << fixed(cell, 0) << "' height='"
+              << fixed(cell, 0) << "' fill='" << (failed ? "#d0d0d0" : colour(fraction)) << "' stroke='white'><title>"
+              << r.reached << " of " << r.hinges << " hinges"
               << (failed ? "; " + xmlEscaped(r.cancelled ? "cancelled" : r.failure) : "") << "</title></rect>\n"
               << "<text x='" << fixed(x0 + cell / 2, 1) << "' y='" << fixed(y0 + cell / 2 + 4, 1)
               << "' text-anchor='middle' fill='" << (fraction > 0.6 ? "white" : "black") << "'>"

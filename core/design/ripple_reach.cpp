@@ -46,8 +46,10 @@ int longestQuickRow(const std::vector<Event>& events) {
         if (releases(e.kind)) releasedAt[e.hinge] = e.time;
         if (e.kind != EventKind::Lock && e.kind != EventKind::Fold) continue;
         const auto r = releasedAt.find(e.hinge);
-        if (r != releasedAt.end() && e.time - r->second <= kWindow) longest = std::max(longest, ++row[e.hinge]);
-        else row[e.hinge] = 0;
+        if (r != releasedAt.end() && e.time - r->second <= kWindow)
+            longest = std::max(longest, ++row[e.hinge]);
+        else
+            row[e.hinge] = 0;
     }
     return longest;
 }

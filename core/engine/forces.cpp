@@ -10,8 +10,7 @@ namespace {
 
 // Adds force f at world point x on part's body; a force on a kinematic body
 // does no work on the system but its reaction does: that is the held power.
-void applyAt(const World& w, PartId part, const Vec2& x, const Vec2& f, Eigen::VectorXd& force,
-             Powers& powers) {
+void applyAt(const World& w, PartId part, const Vec2& x, const Vec2& f, Eigen::VectorXd& force, Powers& powers) {
     const int b = w.part(part).body;
     const Vec2 r = x - w.q.segment<2>(3 * b);
     if (w.body(b).kinematic) {
@@ -104,8 +103,8 @@ void accumulateForces(const World& w, Eigen::VectorXd& force, Powers& powers) {
         const Vec2 x = w.partPose(p).position;
         applyAt(w, p, x, -part.linearDamping * vel.linear, force, powers);
         applyTorque(w, p, -part.angularDamping * vel.angular, force, powers);
-        powers.damping += part.linearDamping * vel.linear.squaredNorm() +
-                          part.angularDamping * vel.angular * vel.angular;
+        powers.damping +=
+            part.linearDamping * vel.linear.squaredNorm() + part.angularDamping * vel.angular * vel.angular;
     }
     for (const Spring& s : w.springs()) {
         Vec2 xa, xb, f;  // f on a

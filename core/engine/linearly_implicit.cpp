@@ -12,7 +12,6 @@
 // inertia raised by h^2 gamma^2 |k|. The O(N) chain solver solves it as it
 // solves the dynamics: one factorisation per step, one solve per stage.
 #include "jl/engine/stepper.h"
-
 #include "jl/engine/world.h"
 
 #include <Eigen/LU>
@@ -26,12 +25,12 @@ Stepper::Rosenbrock Stepper::rosenbrockTableau() {
     // (I - h gamma W) k_i = h F(y0 + sum alpha_ij k_j) + h W sum gamma_ij k_j.
     constexpr double g = 4.3586652150845900e-01;
     Eigen::Matrix4d gamma, alpha;
-    gamma << g, 0, 0, 0,                                                  //
-        -8.7173304301691801e-01, g, 0, 0,                                 //
-        -9.0338057013044082e-01, 5.4180672388095326e-02, g, 0,            //
+    gamma << g, 0, 0, 0,                                        //
+        -8.7173304301691801e-01, g, 0, 0,                       //
+        -9.0338057013044082e-01, 5.4180672388095326e-02, g, 0,  //
         2.4212380706095346e-01, -1.2232505839045147e+00, 5.4526025533510214e-01, g;
     alpha << 0, 0, 0, 0,                                        //
-        8.7173304301691801e-01, 0, 0, 0,                         //
+        8.7173304301691801e-01, 0, 0, 0,                        //
         8.4457060015369423e-01, -1.1299064236484185e-01, 0, 0,  //
         0, 0, 1, 0;
     const Eigen::RowVector4d b(2.4212380706095346e-01, -1.2232505839045147e+00, 1.5452602553351020e+00, g);

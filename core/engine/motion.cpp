@@ -4,8 +4,8 @@
 
 namespace jl {
 
-MotionStep advanceAndProject(World& w, Dynamics& d, Stepper& s, double t, double h, Ledger& ledger,
-                             double tolerance, bool exact, const Powers* atStart) {
+MotionStep advanceAndProject(World& w, Dynamics& d, Stepper& s, double t, double h, Ledger& ledger, double tolerance,
+                             bool exact, const Powers* atStart) {
     MotionStep m;
     const Ledger l0 = ledger;
     m.step = s.advance(w, d, t, h, ledger, exact, atStart, tolerance);

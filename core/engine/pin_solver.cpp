@@ -71,8 +71,8 @@ void PinSolver::order(const World& w) {
                     const int o = neighbour(pin, b);
                     if (o >= 0 && o != from && !visited_[size_t(o)]) {
                         next = o;
-                        links_.push_back({b, pins[size_t(pin)].bodyA == b ? 1.0 : -1.0,
-                                          pins[size_t(o)].bodyA == b ? 1.0 : -1.0});
+                        links_.push_back(
+                            {b, pins[size_t(pin)].bodyA == b ? 1.0 : -1.0, pins[size_t(o)].bodyA == b ? 1.0 : -1.0});
                         break;
                     }
                 }
@@ -312,7 +312,6 @@ bool PinSolver::sameTurns(const World& w) const {
     return true;
 }
 
-
 // Block LDL^T along each path. The pivots S_i = D_i - B^T S_{i-1}^{-1} B are
 // symmetric (J W J^T is), so only three of their entries are formed. Each
 // link waits on the one before, so what counts is the chain of dependent
@@ -532,4 +531,3 @@ void PinSolver::addJTranspose(const Eigen::VectorXd& x, Eigen::VectorXd& f) cons
 }
 
 }  // namespace jl
-

@@ -36,14 +36,19 @@ double fastestTurn(const World& w) {
 
 double imaginaryStabilityLimit(Integrator integrator) {
     switch (integrator) {
-    case Integrator::RK4: return 2 * std::sqrt(2.0);
-    case Integrator::DormandPrince45: return 0.9972;
-    case Integrator::Verner65: return 2.5842;
-    // L-stable on the stiffness its W holds: no limit from the vibration
-    // (what is left of the step's choice is accuracy, its error control's).
-    case Integrator::RosenbrockW: return std::numeric_limits<double>::infinity();
-    case Integrator::ExplicitEuler:
-    case Integrator::SymplecticEuler: return 2.0;
+        case Integrator::RK4:
+            return 2 * std::sqrt(2.0);
+        case Integrator::DormandPrince45:
+            return 0.9972;
+        case Integrator::Verner65:
+            return 2.5842;
+        // L-stable on the stiffness its W holds: no limit from the vibration
+        // (what is left of the step's choice is accuracy, its error control's).
+        case Integrator::RosenbrockW:
+            return std::numeric_limits<double>::infinity();
+        case Integrator::ExplicitEuler:
+        case Integrator::SymplecticEuler:
+            return 2.0;
     }
     return 2.0;
 }

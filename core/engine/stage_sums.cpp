@@ -96,17 +96,39 @@ void combineStages(Eigen::VectorXd& q, const Eigen::VectorXd& q0, const StageTer
     q.resize(n);
     v.resize(n);
     switch (tq.m) {
-    case 0: sumPair<0>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n); break;
-    case 1: sumPair<1>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n); break;
-    case 2: sumPair<2>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n); break;
-    case 3: sumPair<3>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n); break;
-    case 4: sumPair<4>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n); break;
-    case 5: sumPair<5>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n); break;
-    case 6: sumPair<6>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n); break;
-    case 7: sumPair<7>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n); break;
-    case 8: sumPair<8>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n); break;
-    case 9: sumPair<9>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n); break;
-    default: sumPair<10>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n); break;
+        case 0:
+            sumPair<0>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n);
+            break;
+        case 1:
+            sumPair<1>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n);
+            break;
+        case 2:
+            sumPair<2>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n);
+            break;
+        case 3:
+            sumPair<3>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n);
+            break;
+        case 4:
+            sumPair<4>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n);
+            break;
+        case 5:
+            sumPair<5>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n);
+            break;
+        case 6:
+            sumPair<6>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n);
+            break;
+        case 7:
+            sumPair<7>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n);
+            break;
+        case 8:
+            sumPair<8>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n);
+            break;
+        case 9:
+            sumPair<9>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n);
+            break;
+        default:
+            sumPair<10>(q.data(), q0.data(), tq, v.data(), v0.data(), tv, n);
+            break;
     }
 }
 
@@ -116,17 +138,39 @@ double errorNorm(const ErrorNormInputs& in, const StageTerms& termsQ, const Stag
     tv.padTo(tq.m, in.v0);
     SquaresSum s;
     switch (tq.m) {
-    case 0: s = errorSquares<0>(in, tq, tv); break;
-    case 1: s = errorSquares<1>(in, tq, tv); break;
-    case 2: s = errorSquares<2>(in, tq, tv); break;
-    case 3: s = errorSquares<3>(in, tq, tv); break;
-    case 4: s = errorSquares<4>(in, tq, tv); break;
-    case 5: s = errorSquares<5>(in, tq, tv); break;
-    case 6: s = errorSquares<6>(in, tq, tv); break;
-    case 7: s = errorSquares<7>(in, tq, tv); break;
-    case 8: s = errorSquares<8>(in, tq, tv); break;
-    case 9: s = errorSquares<9>(in, tq, tv); break;
-    default: s = errorSquares<10>(in, tq, tv); break;
+        case 0:
+            s = errorSquares<0>(in, tq, tv);
+            break;
+        case 1:
+            s = errorSquares<1>(in, tq, tv);
+            break;
+        case 2:
+            s = errorSquares<2>(in, tq, tv);
+            break;
+        case 3:
+            s = errorSquares<3>(in, tq, tv);
+            break;
+        case 4:
+            s = errorSquares<4>(in, tq, tv);
+            break;
+        case 5:
+            s = errorSquares<5>(in, tq, tv);
+            break;
+        case 6:
+            s = errorSquares<6>(in, tq, tv);
+            break;
+        case 7:
+            s = errorSquares<7>(in, tq, tv);
+            break;
+        case 8:
+            s = errorSquares<8>(in, tq, tv);
+            break;
+        case 9:
+            s = errorSquares<9>(in, tq, tv);
+            break;
+        default:
+            s = errorSquares<10>(in, tq, tv);
+            break;
     }
     return s.count > 0 ? std::sqrt(s.sum / s.count) : 0.0;
 }

@@ -27,7 +27,7 @@ struct Weights {
 Weights positionWeights(double s) {
     const double s2 = s * s, s3 = s2 * s, s4 = s3 * s, s5 = s4 * s;
     return {1 - 10 * s3 + 15 * s4 - 6 * s5, s - 6 * s3 + 8 * s4 - 3 * s5, 0.5 * (s2 - 3 * s3 + 3 * s4 - s5),
-            0.5 * (s3 - 2 * s4 + s5),       -4 * s3 + 7 * s4 - 3 * s5,     10 * s3 - 15 * s4 + 6 * s5};
+            0.5 * (s3 - 2 * s4 + s5),       -4 * s3 + 7 * s4 - 3 * s5,    10 * s3 - 15 * s4 + 6 * s5};
 }
 
 }  // namespace

@@ -18,59 +18,56 @@ Eigen::Vector3d rates(const Powers& p) { return {p.held, p.user, p.damping}; }
 
 Stepper::Stepper(Integrator kind, double tolerance) : kind_(kind), tolerance_(tolerance) {
     switch (kind) {
-    case Integrator::ExplicitEuler:
-    case Integrator::SymplecticEuler:
-        tableau_ = {{0}, {1}, {}, {{}}};
-        break;
-    case Integrator::RK4:
-        tableau_ = {{0, 0.5, 0.5, 1},
-                    {1.0 / 6, 1.0 / 3, 1.0 / 3, 1.0 / 6},
-                    {},
-                    {{}, {0.5}, {0, 0.5}, {0, 0, 1}}};
-        break;
-    case Integrator::RosenbrockW:
-        ros_ = rosenbrockTableau();
-        uq_.resize(Rosenbrock::stages);
-        uv_.resize(Rosenbrock::stages);
-        ul_.resize(Rosenbrock::stages);
-        break;
-    case Integrator::Verner65:
-        // Verner's "most efficient" 6(5) pair (2010), first same as last:
-        // the ninth stage is the end of the step, so a step costs eight
-        // evaluations. Its stability interval on the imaginary axis is
-        // 2.584 (Dormand-Prince's 0.9972), which is what a long ladder's
-        // fastest vibration asks of a step (docs/model.md section 6.1).
-        // The exact rationals, rounded once to double; e = b - b_embedded.
-        tableau_ = {{0, 0.06, 0.09593333333333333, 0.1439, 0.4973, 0.9725, 0.9995, 1, 1},
-                    {0.03438957868357036, 0, 0, 0.2582624555633503, 0.4209371189673537, 4.40539646966931,
-                     -176.48311902429865, 172.36413340141507, 0},
-                    {-0.008623404282200852, 0, 0, 0.019434029953152708, -0.028450072588037983, 2.109711061065291,
-                     -103.45854289996399, 101.39980461914911, -0.03333333333333333},
-                    {{},
-                     {0.06},
-                     {0.019239962962962962, 0.07669337037037037},
-                     {0.035975, 0, 0.107925},
-                     {1.3186834152331484, 0, -5.042058063628562, 4.220674648395414},
-                     {-41.872591664327516, 0, 159.4325621631375, -122.11921356501003, 5.531743066200054},
-                     {-54.430156935316504, 0, 207.06725136501848, -158.61081378459, 6.991816585950242,
-                      -0.018597231062203234},
-                     {-54.66374178728198, 0, 207.95280625538936, -159.2889574744995, 7.018743740796944,
-                      -0.018338785905045722, -0.0005119484997882099},
-                     {0.03438957868357036, 0, 0, 0.2582624555633503, 0.4209371189673537, 4.40539646966931,
-                      -176.48311902429865, 172.36413340141507}}};
-        break;
-    case Integrator::DormandPrince45:
-        tableau_ = {{0, 1.0 / 5, 3.0 / 10, 4.0 / 5, 8.0 / 9, 1, 1},
-                    {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84, 0},
-                    {71.0 / 57600, 0, -71.0 / 16695, 71.0 / 1920, -17253.0 / 339200, 22.0 / 525, -1.0 / 40},
-                    {{},
-                     {1.0 / 5},
-                     {3.0 / 40, 9.0 / 40},
-                     {44.0 / 45, -56.0 / 15, 32.0 / 9},
-                     {19372.0 / 6561, -25360.0 / 2187, 64448.0 / 6561, -212.0 / 729},
-                     {9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656},
-                     {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84}}};
-        break;
+        case Integrator::ExplicitEuler:
+        case Integrator::SymplecticEuler:
+            tableau_ = {{0}, {1}, {}, {{}}};
+            break;
+        case Integrator::RK4:
+            tableau_ = {{0, 0.5, 0.5, 1}, {1.0 / 6, 1.0 / 3, 1.0 / 3, 1.0 / 6}, {}, {{}, {0.5}, {0, 0.5}, {0, 0, 1}}};
+            break;
+        case Integrator::RosenbrockW:
+            ros_ = rosenbrockTableau();
+            uq_.resize(Rosenbrock::stages);
+            uv_.resize(Rosenbrock::stages);
+            ul_.resize(Rosenbrock::stages);
+            break;
+        case Integrator::Verner65:
+            // Verner's "most efficient" 6(5) pair (2010), first same as last:
+            // the ninth stage is the end of the step, so a step costs eight
+            // evaluations. Its stability interval on the imaginary axis is
+            // 2.584 (Dormand-Prince's 0.9972), which is what a long ladder's
+            // fastest vibration asks of a step (docs/model.md section 6.1).
+            // The exact rationals, rounded once to double; e = b - b_embedded.
+            tableau_ = {{0, 0.06, 0.09593333333333333, 0.1439, 0.4973, 0.9725, 0.9995, 1, 1},
+                        {0.03438957868357036, 0, 0, 0.2582624555633503, 0.4209371189673537, 4.40539646966931,
+                         -176.48311902429865, 172.36413340141507, 0},
+                        {-0.008623404282200852, 0, 0, 0.019434029953152708, -0.028450072588037983, 2.109711061065291,
+                         -103.45854289996399, 101.39980461914911, -0.03333333333333333},
+                        {{},
+                         {0.06},
+                         {0.019239962962962962, 0.07669337037037037},
+                         {0.035975, 0, 0.107925},
+                         {1.3186834152331484, 0, -5.042058063628562, 4.220674648395414},
+                         {-41.872591664327516, 0, 159.4325621631375, -122.11921356501003, 5.531743066200054},
+                         {-54.430156935316504, 0, 207.06725136501848, -158.61081378459, 6.991816585950242,
+                          -0.018597231062203234},
+                         {-54.66374178728198, 0, 207.95280625538936, -159.2889574744995, 7.018743740796944,
+                          -0.018338785905045722, -0.0005119484997882099},
+                         {0.03438957868357036, 0, 0, 0.2582624555633503, 0.4209371189673537, 4.40539646966931,
+                          -176.48311902429865, 172.36413340141507}}};
+            break;
+        case Integrator::DormandPrince45:
+            tableau_ = {{0, 1.0 / 5, 3.0 / 10, 4.0 / 5, 8.0 / 9, 1, 1},
+                        {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84, 0},
+                        {71.0 / 57600, 0, -71.0 / 16695, 71.0 / 1920, -17253.0 / 339200, 22.0 / 525, -1.0 / 40},
+                        {{},
+                         {1.0 / 5},
+                         {3.0 / 40, 9.0 / 40},
+                         {44.0 / 45, -56.0 / 15, 32.0 / 9},
+                         {19372.0 / 6561, -25360.0 / 2187, 64448.0 / 6561, -212.0 / 729},
+                         {9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656},
+                         {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84}}};
+            break;
     }
     const size_t s = tableau_.c.size();
     kv_.resize(s);
@@ -120,12 +117,17 @@ Stepper::Nystrom Stepper::nystromOf(const Tableau& t) {
 
 int Stepper::order() const {
     switch (kind_) {
-    case Integrator::ExplicitEuler:
-    case Integrator::SymplecticEuler: return 1;
-    case Integrator::RK4: return 4;
-    case Integrator::DormandPrince45: return 5;
-    case Integrator::Verner65: return 6;
-    case Integrator::RosenbrockW: return 3;
+        case Integrator::ExplicitEuler:
+        case Integrator::SymplecticEuler:
+            return 1;
+        case Integrator::RK4:
+            return 4;
+        case Integrator::DormandPrince45:
+            return 5;
+        case Integrator::Verner65:
+            return 6;
+        case Integrator::RosenbrockW:
+            return 3;
     }
     return 1;
 }

@@ -233,8 +233,8 @@ void World::release(PartId part) {
 void World::updateKinematics(double t, double within) {
     for (int b : kinematicBodies()) {
         const Body& body = bodies_[size_t(b)];
-        const PartId lead = *std::find_if(body.parts.begin(), body.parts.end(),
-                                          [&](PartId p) { return parts_[p].drive.has_value(); });
+        const PartId lead =
+            *std::find_if(body.parts.begin(), body.parts.end(), [&](PartId p) { return parts_[p].drive.has_value(); });
         const Part& part = parts_[lead];
         const DriveSample s = part.drive->at(t, within);
         const Pose pose = s.pose.compose(part.inBody.inverse());

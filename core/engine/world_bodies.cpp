@@ -108,8 +108,8 @@ void World::regroup(const std::vector<int>& touchedBodies) {
         gp.clear();
         gv.clear();
         for (PartId p : g) {
-            const auto it = std::lower_bound(was.begin(), was.end(), p,
-                                             [](const auto& x, PartId id) { return x.first < id; });
+            const auto it =
+                std::lower_bound(was.begin(), was.end(), p, [](const auto& x, PartId id) { return x.first < id; });
             gp.push_back(it->second.first);
             gv.push_back(it->second.second);
         }

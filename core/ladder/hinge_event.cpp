@@ -4,10 +4,14 @@ namespace jl {
 
 const char* toString(HingeMode m) {
     switch (m) {
-    case HingeMode::Free: return "free";
-    case HingeMode::OpenLocked: return "open-locked";
-    case HingeMode::Folded: return "folded";
-    case HingeMode::Cut: return "cut";
+        case HingeMode::Free:
+            return "free";
+        case HingeMode::OpenLocked:
+            return "open-locked";
+        case HingeMode::Folded:
+            return "folded";
+        case HingeMode::Cut:
+            return "cut";
     }
     return "?";
 }
@@ -15,15 +19,24 @@ const char* toString(HingeMode m) {
 // The names used in event files (jladder run --events).
 const char* toString(EventKind k) {
     switch (k) {
-    case EventKind::Lock: return "lock";
-    case EventKind::Unlock: return "unlock";
-    case EventKind::Fold: return "fold";
-    case EventKind::Unfold: return "unfold";
-    case EventKind::FlipFlop: return "flip";
-    case EventKind::Bounce: return "bounce";
-    case EventKind::Cut: return "cut";
-    case EventKind::Join: return "join";
-    case EventKind::Script: return "script";
+        case EventKind::Lock:
+            return "lock";
+        case EventKind::Unlock:
+            return "unlock";
+        case EventKind::Fold:
+            return "fold";
+        case EventKind::Unfold:
+            return "unfold";
+        case EventKind::FlipFlop:
+            return "flip";
+        case EventKind::Bounce:
+            return "bounce";
+        case EventKind::Cut:
+            return "cut";
+        case EventKind::Join:
+            return "join";
+        case EventKind::Script:
+            return "script";
     }
     return "?";
 }

@@ -43,7 +43,8 @@ Ladder::Ladder(World& w, const LadderSpec& spec) : spec_(spec), length_(spec.blo
         thickness_[size_t(i)] = t;
         // Upright at angle 0: the length runs along the block's local y.
         blocks_[size_t(i)] = w.addBox(massOf(b), Vec2(t, length_), b.width, Pose{});
-        for (int k = 0; k < 4; ++k) corners_[size_t(i)][size_t(k)] = w.addParticle(blocks_[size_t(i)], cornerLocal(i, k));
+        for (int k = 0; k < 4; ++k)
+            corners_[size_t(i)][size_t(k)] = w.addParticle(blocks_[size_t(i)], cornerLocal(i, k));
     }
     hinges_.resize(size_t(n - 1));
     stillPoints_.assign(size_t(n - 1), {-1, -1});
@@ -306,8 +307,8 @@ HingeContact Ladder::split(const World& w, int j, const Wrench& on) const {
         c.normal = -on.moment / cross(t * na, da);
     } else if (hinge(j).mode == HingeMode::Folded) {
         const double lever = length_ * cross(da, na);
-        c.farEnd = -on.moment / lever;                               // pin at k, N at k^1
-        c.nearEnd = (on.moment - length_ * cross(da, on.force)) / lever; // pin at k^1, N at k
+        c.farEnd = -on.moment / lever;                                    // pin at k, N at k^1
+        c.nearEnd = (on.moment - length_ * cross(da, on.force)) / lever;  // pin at k^1, N at k
     }
     return c;
 }
@@ -325,17 +326,18 @@ double Ladder::eventFunctions(const World& w, const Dynamics& d, std::vector<dou
         double* g = &out[2 * size_t(j - 1)];
         if (hinge(j).held) continue;  // let go after a trial (Simulation::settleHolds), not by a sign change
         switch (hinge(j).mode) {
-        case HingeMode::Free:
-        case HingeMode::Cut: continue;
-        case HingeMode::OpenLocked:
-            g[0] = contact(w, d, j).normal + forceTolerance_;
-            break;
-        case HingeMode::Folded: {
-            const HingeContact c = contact(w, d, j);
-            g[0] = c.nearEnd + forceTolerance_;
-            g[1] = c.farEnd + forceTolerance_;
-            break;
-        }
+            case HingeMode::Free:
+            case HingeMode::Cut:
+                continue;
+            case HingeMode::OpenLocked:
+                g[0] = contact(w, d, j).normal + forceTolerance_;
+                break;
+            case HingeMode::Folded: {
+                const HingeContact c = contact(w, d, j);
+                g[0] = c.nearEnd + forceTolerance_;
+                g[1] = c.farEnd + forceTolerance_;
+                break;
+            }
         }
         smallestForce = std::min({smallestForce, g[0], g[1]});
     }
@@ -479,14 +481,22 @@ void Ladder::rehinged(World& w, int j, int k) {
 std::string Ladder::words(EventKind kind, int j) const {
     const std::string a = std::to_string(j - 1), b = std::to_string(j);
     switch (kind) {
-    case EventKind::Lock: return "blocks " + a + " and " + b + " lock end to end";
-    case EventKind::Unlock: return "blocks " + a + " and " + b + " unlock";
-    case EventKind::Fold: return "blocks " + a + " and " + b + " fold face to face";
-    case EventKind::Unfold: return "block " + b + " unfolds from block " + a;
-    case EventKind::FlipFlop: return "block " + b + " flips over the far end of block " + a;
-    case EventKind::Bounce: return "blocks " + a + " and " + b + " bounce apart";
-    case EventKind::Cut: return "the ribbons of hinge " + std::to_string(j) + " are cut";
-    default: return {};
+        case EventKind::Lock:
+            return "blocks " + a + " and " + b + " lock end to end";
+        case EventKind::Unlock:
+            return "blocks " + a + " and " + b + " unlock";
+        case EventKind::Fold:
+            return "blocks " + a + " and " + b + " fold face to face";
+        case EventKind::Unfold:
+            return "block " + b + " unfolds from block " + a;
+        case EventKind::FlipFlop:
+            return "block " + b + " flips over the far end of block " + a;
+        case EventKind::Bounce:
+            return "blocks " + a + " and " + b + " bounce apart";
+        case EventKind::Cut:
+            return "the ribbons of hinge " + std::to_string(j) + " are cut";
+        default:
+            return {};
     }
 }
 

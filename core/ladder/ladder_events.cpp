@@ -70,8 +70,10 @@ std::vector<int> Ladder::expiredHolds(const World& w, const Dynamics& d, double 
         }
         const HingeContact c = contact(w, d, j);
         const bool pulls = h.mode == HingeMode::OpenLocked ? c.normal < 0 : std::min(c.nearEnd, c.farEnd) < 0;
-        if (!pulls) h.pullingSince = -1, h.renewals = 0;
-        else if (h.pullingSince < 0) h.pullingSince = t;
+        if (!pulls)
+            h.pullingSince = -1, h.renewals = 0;
+        else if (h.pullingSince < 0)
+            h.pullingSince = t;
         if (pulls && t - h.pullingSince >= zenoTime_ * double(1 << std::min(h.renewals, 3))) out.push_back(j);
     }
     return out;
@@ -132,8 +134,10 @@ bool Ladder::wouldChatter(const World& w, double t, int j, EventKind kind, const
     thread_local Trial scratch;
     World& trial = scratch.world;
     trial = w;
-    if (scratch.ladder) *scratch.ladder = *this;
-    else scratch.ladder.emplace(*this);
+    if (scratch.ladder)
+        *scratch.ladder = *this;
+    else
+        scratch.ladder.emplace(*this);
     Ladder& after = *scratch.ladder;
     Dynamics& d = scratch.dynamics;
     d.solver().reset();
@@ -167,13 +171,16 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
             // The pair would be one rigid body driven by two hands whose
             // motions need not agree, and its contact force is undetermined.
             if (error_.empty())
-                error_ = "blocks " + std::to_string(j - 1) + " and " + std::to_string(j) + " are both held and meet at hinge " +
-                         std::to_string(j) + " (t = " + std::to_string(t) +
+                error_ = "blocks " + std::to_string(j - 1) + " and " + std::to_string(j) +
+                         " are both held and meet at hinge " + std::to_string(j) + " (t = " + std::to_string(t) +
                          " s): a lock between two hands is not modelled; let go of one of them first";
             return events;
         }
         approach[i] = std::abs(foldRate(w, j));
-        if (folding) fold(w, j); else lock(w, j);
+        if (folding)
+            fold(w, j);
+        else
+            lock(w, j);
         noteClose(j, t);
         events.push_back({t, folding ? EventKind::Fold : EventKind::Lock, j, hinge(j).corner, {}});
     }
@@ -204,7 +211,10 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
                 continue;
             for (bool folded : {false, true})
                 if (!driven && touchingLimit(w, j, folded, false)) {
-                    if (folded) fold(w, j); else lock(w, j);
+                    if (folded)
+                        fold(w, j);
+                    else
+                        lock(w, j);
                     noteClose(j, t);
                     events.push_back({t, folded ? EventKind::Fold : EventKind::Lock, j, hinge(j).corner, {}});
                     driven = true;

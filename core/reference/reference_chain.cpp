@@ -55,8 +55,8 @@ long long ReferenceChain::advanceTo(double tEnd, double tolerance) {
                                        {9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656},
                                        {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84}};
     static constexpr std::array<double, 7> b{35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84, 0};
-    static constexpr std::array<double, 7> e{71.0 / 57600, 0, -71.0 / 16695, 71.0 / 1920, -17253.0 / 339200,
-                                             22.0 / 525, -1.0 / 40};
+    static constexpr std::array<double, 7> e{71.0 / 57600,      0,          -71.0 / 16695, 71.0 / 1920,
+                                             -17253.0 / 339200, 22.0 / 525, -1.0 / 40};
     const int n = spec_.links;
     std::array<Eigen::VectorXd, 7> kt, kw;
     Eigen::VectorXd th(n), om(n), al(n);

@@ -85,22 +85,29 @@ void wordRow(std::ostringstream& out, std::string_view key, std::span<const Word
 std::string fieldTable(std::string_view section) {
     std::ostringstream out;
     header(out);
-    if (section == "ladder.block") numberRows(out, kBlockNumbers);
-    else if (section == "ladder.ribbons") numberRows(out, kRibbonNumbers);
-    else if (section == "ladder.hinges") numberRows(out, kHingeNumbers);
-    else if (section == "damping") numberRows(out, kDampingNumbers);
-    else if (section == "view") numberRows(out, kViewNumbers);
+    if (section == "ladder.block")
+        numberRows(out, kBlockNumbers);
+    else if (section == "ladder.ribbons")
+        numberRows(out, kRibbonNumbers);
+    else if (section == "ladder.hinges")
+        numberRows(out, kHingeNumbers);
+    else if (section == "damping")
+        numberRows(out, kDampingNumbers);
+    else if (section == "view")
+        numberRows(out, kViewNumbers);
     else if (section == "solver") {
         const SolverSpec d;
-        wordRow<Integrator>(out, "integrator", kIntegrators, d.integrator, "how the motion is integrated (docs/model.md section 6)");
+        wordRow<Integrator>(out, "integrator", kIntegrators, d.integrator,
+                            "how the motion is integrated (docs/model.md section 6)");
         wordRow<EventPolicy>(out, "events", kEventPolicies, d.events, "event policy (docs/model.md section 9)");
         wordRow<RigidPairs>(out, "rigid_pairs", kRigidPairs, d.rigidPairs,
                             "a locked or folded pair is one body (`merge`, fewer unknowns) or two bodies held by a pin "
                             "and a weld (`weld`, for comparison)");
-        wordRow<StillTail>(out, "still_tail", kStillTails, d.stillTail,
-                           "the blocks of a ladder at rest that the motion has not reached hang as a few rigid "
-                           "bodies until it comes near them (`joined`, docs/model.md section 3.7: the same motion for "
-                           "much less work), or each block is its own body from the start (`separate`, the full model)");
+        wordRow<StillTail>(
+            out, "still_tail", kStillTails, d.stillTail,
+            "the blocks of a ladder at rest that the motion has not reached hang as a few rigid "
+            "bodies until it comes near them (`joined`, docs/model.md section 3.7: the same motion for "
+            "much less work), or each block is its own body from the start (`separate`, the full model)");
         numberRows(out, kSolverNumbers);
     }
     return out.str();

@@ -25,7 +25,8 @@ SceneLoad failed(Problems& problems) { return {std::nullopt, problems.take()}; }
 
 std::string tooLarge(const LoadLimits& limits) {
     const std::size_t mib = limits.maxFileBytes >> 20;
-    return "the file is larger than " + (mib ? std::to_string(mib) + " MiB" : std::to_string(limits.maxFileBytes) + " bytes") +
+    return "the file is larger than " +
+           (mib ? std::to_string(mib) + " MiB" : std::to_string(limits.maxFileBytes) + " bytes") +
            "; refusing to read it";
 }
 

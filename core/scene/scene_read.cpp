@@ -107,8 +107,8 @@ void readLadder(const Located& at, const LoadLimits& limits, Problems& problems,
     if (f.has("blocks")) {
         const auto n = readInteger(problems, f.value("blocks"), range::kFewestBlocks, LLONG_MAX);
         if (n && *n > limits.maxBlocks)
-            f.errorAt("blocks", std::to_string(*n) + " blocks is more than the limit of " +
-                                    std::to_string(limits.maxBlocks));
+            f.errorAt("blocks",
+                      std::to_string(*n) + " blocks is more than the limit of " + std::to_string(limits.maxBlocks));
         countKnown = n && *n <= limits.maxBlocks;
         if (countKnown) ladder.blocks = static_cast<int>(*n);
     }
@@ -149,7 +149,8 @@ void readDamping(const Fields& parent, Scene& scene) {
 }
 
 void readSolver(const Fields& parent, SolverSpec& solver) {
-    Fields f(parent.problems(), parent.value("solver"), keysOf(kSolverNumbers, {"integrator", "events", "rigid_pairs", "still_tail"}));
+    Fields f(parent.problems(), parent.value("solver"),
+             keysOf(kSolverNumbers, {"integrator", "events", "rigid_pairs", "still_tail"}));
     f.choice<Integrator>("integrator", solver.integrator, kIntegrators);
     f.choice<EventPolicy>("events", solver.events, kEventPolicies);
     f.choice<RigidPairs>("rigid_pairs", solver.rigidPairs, kRigidPairs);

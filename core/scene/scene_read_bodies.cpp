@@ -102,8 +102,8 @@ void readName(Fields& f, std::string& name, Names& names) {
 void readBodies(const Located& at, Problems& problems, std::vector<BodySpec>& bodies, Names& names) {
     forEachItem(problems, at, [&](const Located& item) {
         Fields f(problems, item,
-                 {"name", "length", "thickness", "width", "density", "mass", "inertia", "position", "angle",
-                  "velocity", "angular_velocity", "held", "color"});
+                 {"name", "length", "thickness", "width", "density", "mass", "inertia", "position", "angle", "velocity",
+                  "angular_velocity", "held", "color"});
         if (!f.isMap()) return;
         BodySpec body;
         readName(f, body.name, names);

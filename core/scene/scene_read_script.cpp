@@ -32,12 +32,17 @@ constexpr std::array<std::pair<std::string_view, Kind>, 7> kActions{{{"turn", Ki
 std::vector<std::string_view> actionKeys(Kind kind) {
     switch (kind) {
         case Kind::Turn:
-        case Kind::Move: return {"block", "by", "duration"};
+        case Kind::Move:
+            return {"block", "by", "duration"};
         case Kind::Hold:
-        case Kind::Release: return {"block"};
-        case Kind::Push: return {"block", "impulse", "point"};
-        case Kind::Cut: return {"hinge"};
-        case Kind::Join: return {"block", "corner", "other", "other_corner"};
+        case Kind::Release:
+            return {"block"};
+        case Kind::Push:
+            return {"block", "impulse", "point"};
+        case Kind::Cut:
+            return {"hinge"};
+        case Kind::Join:
+            return {"block", "corner", "other", "other_corner"};
     }
     return {};
 }
@@ -60,8 +65,10 @@ void readActionBody(Fields& f, ScriptAction& action, int blocks) {
             break;
         case Kind::Cut:
             if (!f.require("hinge")) break;
-            if (blocks < 2) f.errorAt("hinge", "refers to a hinge but the scene has no ladder of 2 or more blocks");
-            else f.integer("hinge", action.hinge, 1, blocks - 1);
+            if (blocks < 2)
+                f.errorAt("hinge", "refers to a hinge but the scene has no ladder of 2 or more blocks");
+            else
+                f.integer("hinge", action.hinge, 1, blocks - 1);
             break;
         case Kind::Join:
             if (f.require("other")) readBlockIndex(f, "other", action.otherBlock, blocks);
@@ -69,7 +76,8 @@ void readActionBody(Fields& f, ScriptAction& action, int blocks) {
             f.integer("other_corner", action.otherCorner, 0, 3);
             break;
         case Kind::Hold:
-        case Kind::Release: break;
+        case Kind::Release:
+            break;
     }
 }
 

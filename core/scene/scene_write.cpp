@@ -269,20 +269,27 @@ void writeAction(Writer& w, const ScriptAction& a) {
     w.beginMap(true);
     if (a.kind != Kind::Cut) w.integer("block", a.block);
     switch (a.kind) {
-        case Kind::Turn: w.angle("by", a.angle); break;
-        case Kind::Move: w.point("by", a.offset); break;
+        case Kind::Turn:
+            w.angle("by", a.angle);
+            break;
+        case Kind::Move:
+            w.point("by", a.offset);
+            break;
         case Kind::Push:
             w.point("impulse", a.impulse);
             w.pointIf("point", a.point, d.point);
             break;
-        case Kind::Cut: w.integer("hinge", a.hinge); break;
+        case Kind::Cut:
+            w.integer("hinge", a.hinge);
+            break;
         case Kind::Join:
             w.integer("corner", a.corner);
             w.integer("other", a.otherBlock);
             w.integer("other_corner", a.otherCorner);
             break;
         case Kind::Hold:
-        case Kind::Release: break;
+        case Kind::Release:
+            break;
     }
     if (a.kind == Kind::Turn || a.kind == Kind::Move) w.numberIf("duration", a.duration, d.duration);
     w.endMap();

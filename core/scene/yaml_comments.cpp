@@ -3,7 +3,7 @@
 namespace jl {
 
 bool hasComments(std::string_view text) {
-    char quote = 0;      // the quote a quoted scalar opened, or 0
+    char quote = 0;  // the quote a quoted scalar opened, or 0
     char previous = '\n';
     for (const char c : text) {
         if (quote) {

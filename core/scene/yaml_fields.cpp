@@ -41,8 +41,7 @@ bool isNonFinite(std::string text) {
 }
 
 // The number in a plain scalar, with the reason when there is none.
-std::optional<double> scalarNumber(Problems& problems, const Located& at, const std::string& expected,
-                                   bool angle) {
+std::optional<double> scalarNumber(Problems& problems, const Located& at, const std::string& expected, bool angle) {
     if (!at.node.IsScalar() || isQuoted(at.node)) {
         fail(problems, at, expected);
         return std::nullopt;
@@ -71,7 +70,8 @@ std::optional<double> checked(Problems& problems, const Located& at, std::option
 }  // namespace
 
 void fail(Problems& problems, const Located& at, const std::string& expected) {
-    report(problems, at.mark, (at.path.empty() ? "the scene" : at.path) + ": expected " + expected + ", got " + describe(at.node));
+    report(problems, at.mark,
+           (at.path.empty() ? "the scene" : at.path) + ": expected " + expected + ", got " + describe(at.node));
 }
 
 std::optional<double> readNumber(Problems& problems, const Located& at, Bound bound) {
@@ -199,8 +199,7 @@ std::optional<std::string_view> meantKey(std::string_view word, const std::vecto
 
 }  // namespace
 
-Fields::Fields(Problems& problems, const Located& map, const std::vector<std::string_view>& known,
-               const KeyHelp& help)
+Fields::Fields(Problems& problems, const Located& map, const std::vector<std::string_view>& known, const KeyHelp& help)
     : problems_(problems), mark_(map.mark), path_(map.path), isMap_(map.node.IsMap()) {
     if (!isMap_) {
         fail(problems, map, "a mapping of keys (key: value)");
@@ -216,8 +215,10 @@ Fields::Fields(Problems& problems, const Located& map, const std::vector<std::st
         const std::string& name = key.Scalar();
         if (std::find(words.begin(), words.end(), name) == words.end()) {
             std::string message = "unknown key '" + name + "'" + (path_.empty() ? "" : " in " + path_);
-            if (const auto guess = meantKey(name, words, help)) message += "; did you mean '" + std::string(*guess) + "'?";
-            else if (!help.keys.empty()) message += "; " + std::string(help.keys);
+            if (const auto guess = meantKey(name, words, help))
+                message += "; did you mean '" + std::string(*guess) + "'?";
+            else if (!help.keys.empty())
+                message += "; " + std::string(help.keys);
             report(problems, key.Mark(), std::move(message));
             unknownKeys_ = true;
             continue;
@@ -301,11 +302,12 @@ void Fields::text(std::string_view key, std::string& out, std::size_t mostCharac
     const auto v = readText(problems_, at);
     if (!v) return;
     // Every byte but a UTF-8 continuation byte (10xxxxxx) starts a character.
-    const auto characters = std::size_t(std::count_if(v->begin(), v->end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
+    const auto characters = std::size_t(
+        std::count_if(v->begin(), v->end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
     if (characters > mostCharacters) {
-        report(problems_, at.mark,
-                      at.path + ": at most " + std::to_string(mostCharacters) + " characters, got " +
-                          std::to_string(characters));
+        report(
+            problems_, at.mark,
+            at.path + ": at most " + std::to_string(mostCharacters) + " characters, got " + std::to_string(characters));
         return;
     }
     out = *v;

@@ -47,7 +47,7 @@ void fail(Problems&, const Located&, const std::string& expected);  // "path: ex
 // and what the keys of the mapping are, when no suggestion fits.
 struct KeyHelp {
     std::vector<std::pair<std::string_view, std::string_view>> meanings;  // word -> key
-    std::string_view keys;  // "an entry is 'at' and one action: ..."
+    std::string_view keys;                                                // "an entry is 'at' and one action: ..."
 };
 
 // One YAML mapping being read. Unknown keys are reported on construction,

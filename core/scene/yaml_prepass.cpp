@@ -28,10 +28,14 @@ std::size_t utf8Length(std::string_view text, std::size_t i) {
     if (b0 < 0x80) return 1;
     std::size_t n = 0;
     std::uint32_t cp = 0;
-    if ((b0 & 0xE0) == 0xC0) n = 2, cp = b0 & 0x1F;
-    else if ((b0 & 0xF0) == 0xE0) n = 3, cp = b0 & 0x0F;
-    else if ((b0 & 0xF8) == 0xF0) n = 4, cp = b0 & 0x07;
-    else return 0;
+    if ((b0 & 0xE0) == 0xC0)
+        n = 2, cp = b0 & 0x1F;
+    else if ((b0 & 0xF0) == 0xE0)
+        n = 3, cp = b0 & 0x0F;
+    else if ((b0 & 0xF8) == 0xF0)
+        n = 4, cp = b0 & 0x07;
+    else
+        return 0;
     if (i + n > text.size()) return 0;
     for (std::size_t k = 1; k < n; ++k) {
         if ((byte(i + k) & 0xC0) != 0x80) return 0;
@@ -64,8 +68,10 @@ std::optional<TextFault> firstTextFault(std::string_view text) {
 std::pair<int, int> position(std::string_view text, std::size_t offset) {
     int line = 1, column = 1;
     for (std::size_t i = 0; i < offset;) {
-        if (text[i] == '\n') ++line, column = 1;
-        else ++column;
+        if (text[i] == '\n')
+            ++line, column = 1;
+        else
+            ++column;
         i += std::max<std::size_t>(1, utf8Length(text, i));
     }
     return {line, column};
@@ -78,11 +84,12 @@ bool checkText(std::string_view text, const LoadLimits& limits, Problems& proble
         const std::size_t end = std::min(text.find('\n', start), text.size());
         if (end - start > limits.maxLineBytes) {
             const auto [line, column] = position(text, start);
-            problems.add(line, column,
-                         "this line is " + std::to_string((end - start) >> 10) + " KiB long, more than the " +
-                             std::to_string(limits.maxLineBytes >> 10) +
-                             " KiB a scene file's line may have; a scene's longest value, its description, is at most " +
-                             std::to_string(kMostDescriptionCharacters) + " characters");
+            problems.add(
+                line, column,
+                "this line is " + std::to_string((end - start) >> 10) + " KiB long, more than the " +
+                    std::to_string(limits.maxLineBytes >> 10) +
+                    " KiB a scene file's line may have; a scene's longest value, its description, is at most " +
+                    std::to_string(kMostDescriptionCharacters) + " characters");
             return false;
         }
         start = end + 1;
@@ -153,7 +160,8 @@ public:
         if (value.size() > maxScalar_)
             refuse(mark, "this value is " + std::to_string(value.size() >> 10) + " KiB long, more than the " +
                              std::to_string(maxScalar_ >> 10) + " KiB a scene file's value may have");
-        else checkEscapes(mark, value);
+        else
+            checkEscapes(mark, value);
         node(mark, value);
     }
     void OnSequenceStart(const YAML::Mark& mark, const std::string& tag, YAML::anchor_t,
@@ -162,7 +170,8 @@ public:
         node(mark, std::nullopt);
         open(mark, false);
     }
-    void OnMapStart(const YAML::Mark& mark, const std::string& tag, YAML::anchor_t, YAML::EmitterStyle::value) override {
+    void OnMapStart(const YAML::Mark& mark, const std::string& tag, YAML::anchor_t,
+                    YAML::EmitterStyle::value) override {
         checkTag(mark, tag);
         node(mark, std::nullopt);
         open(mark, true);
@@ -171,7 +180,8 @@ public:
     void OnMapEnd() override { close(); }
 
     void refuse(const YAML::Mark& mark, std::string message) {
-        if (!refused_ || problems_.size() < 50) problems_.add(oneBased(mark.line), oneBased(mark.column), std::move(message));
+        if (!refused_ || problems_.size() < 50)
+            problems_.add(oneBased(mark.line), oneBased(mark.column), std::move(message));
         refused_ = true;
     }
 
@@ -227,9 +237,10 @@ private:
     void checkEscapes(const YAML::Mark& mark, const std::string& value) {
         const auto fault = firstTextFault(value);
         if (!fault) return;
-        refuse(mark, fault->notUtf8 ? std::string("an escape here gives text that is not UTF-8")
-                                    : "control character " + std::to_string(static_cast<unsigned char>(value[fault->offset])) +
-                                          " (written as an escape) is not allowed in a scene file");
+        refuse(mark, fault->notUtf8
+                         ? std::string("an escape here gives text that is not UTF-8")
+                         : "control character " + std::to_string(static_cast<unsigned char>(value[fault->offset])) +
+                               " (written as an escape) is not allowed in a scene file");
     }
 
     std::size_t maxNodes_, maxScalar_;
@@ -252,15 +263,20 @@ std::size_t commentInBrackets(std::string_view text) {
         const char c = text[i];
         const char before = i > 0 ? text[i - 1] : '\n';
         if (quote) {
-            if (quote == '"' && c == '\\') ++i;
-            else if (c == quote) quote = 0;
+            if (quote == '"' && c == '\\')
+                ++i;
+            else if (c == quote)
+                quote = 0;
             continue;
         }
-        const bool valueStart = before == ' ' || before == '\t' || before == '\n' || before == '[' ||
-                                before == '{' || before == ',' || before == ':';
-        if ((c == '"' || c == '\'') && valueStart) quote = c;
-        else if (c == '[' || c == '{') ++depth;
-        else if ((c == ']' || c == '}') && depth > 0) --depth;
+        const bool valueStart = before == ' ' || before == '\t' || before == '\n' || before == '[' || before == '{' ||
+                                before == ',' || before == ':';
+        if ((c == '"' || c == '\'') && valueStart)
+            quote = c;
+        else if (c == '[' || c == '{')
+            ++depth;
+        else if ((c == ']' || c == '}') && depth > 0)
+            --depth;
         else if (c == '#' && (before == ' ' || before == '\t' || before == '\n')) {
             if (depth > 0) return i;
             i = std::min(text.find('\n', i), text.size()) - 1;  // the comment runs to the end of the line
@@ -280,7 +296,8 @@ bool checkStructure(std::string_view text, const LoadLimits& limits, Problems& p
         while (parser.HandleNextDocument(check)) {
             if (++documents > 1) {
                 const YAML::Mark& mark = check.documentStart();
-                problems.add(oneBased(mark.line), oneBased(mark.column), "the file holds more than one YAML document ('---'); a scene is one document");
+                problems.add(oneBased(mark.line), oneBased(mark.column),
+                             "the file holds more than one YAML document ('---'); a scene is one document");
                 return false;
             }
         }

@@ -16,7 +16,8 @@ void writeEventsCsv(std::ostream& out, const std::vector<Event>& events) {
     const auto precision = out.precision(17);
     out << "t,hinge,event,corner,text\n";
     for (const Event& e : events)
-        out << e.time << ',' << e.hinge << ',' << toString(e.kind) << ',' << e.corner << ',' << csvField(e.text) << '\n';
+        out << e.time << ',' << e.hinge << ',' << toString(e.kind) << ',' << e.corner << ',' << csvField(e.text)
+            << '\n';
     out.precision(precision);
 }
 

@@ -15,7 +15,8 @@ void account(Recording& r, const Frame& f) {
 
 }  // namespace
 
-Recording record(Simulation& sim, double until, const FrameGrid& grid, RecordTarget* target, const std::function<int()>& interruption) {
+Recording record(Simulation& sim, double until, const FrameGrid& grid, RecordTarget* target,
+                 const std::function<int()>& interruption) {
     Recording r;
     // Numbers only: no ribbons to draw in these frames.
     const bool ribbons = sim.ribbonsInFrames();

@@ -1,10 +1,9 @@
 #include "jl/sim/simulation.h"
 
-#include "snapshot.h"
-
 #include "jl/engine/energy.h"
 #include "jl/engine/motion.h"
 #include "jl/engine/projection.h"
+#include "snapshot.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,8 +18,8 @@ namespace jl {
 
 namespace {
 
-constexpr double kDragTimeConstant = 0.05;  // s, the mouse spring's response
-constexpr double kDragMaxAcceleration = 20; // in g: the spring's force cap per kg
+constexpr double kDragTimeConstant = 0.05;   // s, the mouse spring's response
+constexpr double kDragMaxAcceleration = 20;  // in g: the spring's force cap per kg
 
 Vec2 vec(const Point2& p) { return {p[0], p[1]}; }
 
@@ -50,8 +49,7 @@ double particleSpread(const World& w, ParticleId id) {
 
 }  // namespace
 
-Simulation::Simulation(const Scene& scene)
-    : scene_(scene), stepper_(scene.solver.integrator, scene.solver.tolerance) {}
+Simulation::Simulation(const Scene& scene) : scene_(scene), stepper_(scene.solver.integrator, scene.solver.tolerance) {}
 
 Simulation::Built Simulation::build(const Scene& scene) {
     Built b;
@@ -113,11 +111,14 @@ std::optional<std::string> Simulation::buildWorld() {
         const double apart = (world_.particlePosition(*a) - world_.particlePosition(*b)).norm();
         if (!(apart <= kAssembled)) {
             char text[160];
-            std::snprintf(text, sizeof text, "pin between '%s' and '%s': its two points are %.6g m apart at the start; "
-                          "place them where they meet", pin.a.on.c_str(), pin.b.on.c_str(), apart);
+            std::snprintf(text, sizeof text,
+                          "pin between '%s' and '%s': its two points are %.6g m apart at the start; "
+                          "place them where they meet",
+                          pin.a.on.c_str(), pin.b.on.c_str(), apart);
             return std::string(text);
         }
-        if (auto e = world_.combine(*a, *b)) return "pin between '" + pin.a.on + "' and '" + pin.b.on + "': " + e->message;
+        if (auto e = world_.combine(*a, *b))
+            return "pin between '" + pin.a.on + "' and '" + pin.b.on + "': " + e->message;
     }
     for (const SpringSpec& s : scene_.springs) {
         const auto a = particleAt(s.a), b = particleAt(s.b);
@@ -126,7 +127,8 @@ std::optional<std::string> Simulation::buildWorld() {
         world_.addSpring({*a, *b, s.stiffness, rest, s.damping});
     }
     for (size_t i = 0; i < scene_.bodies.size(); ++i)
-        if (scene_.bodies[i].held) world_.hold(named[scene_.bodies[i].name], Drive(world_.partPose(named[scene_.bodies[i].name])));
+        if (scene_.bodies[i].held)
+            world_.hold(named[scene_.bodies[i].name], Drive(world_.partPose(named[scene_.bodies[i].name])));
     for (PartId p : blocks_) world_.setDamping(p, scene_.linearDamping, scene_.angularDamping);
 
     std::stable_sort(scene_.script.begin(), scene_.script.end(),
@@ -228,9 +230,9 @@ double Simulation::nextScheduledTime() const {
 // The hand takes hold of a block where it is. A moving block stops dead:
 // an impact on everything joined to it (a held block has infinite mass),
 // taken up by the pins' impulses and booked like the ladder's impacts: the
-// energy of the velocity jump is dissipated, the rest is the hand's work. A held block is outside the books (its energy is the hand's), so
-// its own kinetic and potential energy leave them as the hand's work too.
-// The force tests follow (applyDueInputs runs them after any action).
+// energy of the velocity jump is dissipated, the rest is the hand's work. A held block is outside the books (its energy
+// is the hand's), so its own kinetic and potential energy leave them as the hand's work too. The force tests follow
+// (applyDueInputs runs them after any action).
 void Simulation::grab(PartId part) {
     const double before = energy(world_).total();
     const std::vector<Twist> velocities = world_.partVelocities();
@@ -253,68 +255,69 @@ void Simulation::applyScriptAction(const ScriptAction& a) {
     const PartId part = blockOk ? blockPart(a.block) : 0;
     Event e{t_, EventKind::Script, -1, -1, {}};
     switch (a.kind) {
-    case K::Turn:
-    case K::Move: {
-        if (!world_.isHeld(part)) grab(part);
-        const double turn = a.kind == K::Turn ? a.angle : 0.0;
-        const Vec2 offset = a.kind == K::Move ? vec(a.offset) : Vec2::Zero();
-        world_.drive(part)->add({a.at, a.duration, offset, turn});
-        e.text = "the hand " + std::string(a.kind == K::Turn ? "turns" : "moves") + " block " + std::to_string(a.block);
-        break;
-    }
-    case K::Hold:
-        grab(part);
-        e.text = "the hand holds block " + std::to_string(a.block);
-        break;
-    case K::Release: {
-        // The block comes back into the books with its energy, which the
-        // hand held until now: the hand's work.
-        const double before = energy(world_).total();
-        world_.release(part);
-        impactHeldWork_ += energy(world_).total() - before;
-        e.text = "the hand lets go of block " + std::to_string(a.block);
-        break;
-    }
-    case K::Push: {
-        // The impulse's work is P . (v- + v+)/2 at the point it acts on; the
-        // pins carry the rest of the change of kinetic energy into held
-        // blocks (their impulsive work). A held block takes the push itself.
-        if (world_.isHeld(part)) break;
-        const double before = energy(world_).kinetic;
-        const Vec2 local = vec(a.point), impulse = vec(a.impulse);
-        const Vec2 v0 = world_.pointVelocity(part, local);
-        std::vector<Event> released;
-        if (ladder_) {
-            released = ladder_->push(world_, dynamics_, t_, a.block, local, impulse);
-        } else {
-            const int b = world_.part(part).body;
-            const Vec2 x = world_.pointPosition(part, local);
-            world_.v.segment<2>(3 * b) += world_.body(b).invMass * impulse;
-            world_.v[3 * b + 2] += world_.body(b).invInertia * cross(x - world_.q.segment<2>(3 * b), impulse);
-            projectVelocities(world_, dynamics_.solver());
+        case K::Turn:
+        case K::Move: {
+            if (!world_.isHeld(part)) grab(part);
+            const double turn = a.kind == K::Turn ? a.angle : 0.0;
+            const Vec2 offset = a.kind == K::Move ? vec(a.offset) : Vec2::Zero();
+            world_.drive(part)->add({a.at, a.duration, offset, turn});
+            e.text =
+                "the hand " + std::string(a.kind == K::Turn ? "turns" : "moves") + " block " + std::to_string(a.block);
+            break;
         }
-        const double work = 0.5 * impulse.dot(v0 + world_.pointVelocity(part, local));
-        ledger_.user += work;
-        impactHeldWork_ += energy(world_).kinetic - before - work;
-        record({t_, EventKind::Script, -1, -1, "block " + std::to_string(a.block) + " is pushed"});
-        for (Event& r : released) record(r);
-        break;
-    }
-    case K::Cut:
-        // A refused action is said in the log, so a script's author sees why.
-        if (!ladder_) break;
-        if (auto refused = ladder_->cut(world_, a.hinge))
-            e.text = "the cut of hinge " + std::to_string(a.hinge) + " is refused: " + *refused;
-        else
-            e = {t_, EventKind::Cut, a.hinge, -1, "the ribbons of hinge " + std::to_string(a.hinge) + " are cut"};
-        break;
-    case K::Join:
-        if (!ladder_ || a.otherBlock < 0 || a.otherBlock >= blockCount()) break;
-        if (auto refused = join(a))
-            e.text = "the join of corner " + std::to_string(a.corner) + " of block " + std::to_string(a.block) +
-                     " to corner " + std::to_string(a.otherCorner) + " of block " + std::to_string(a.otherBlock) +
-                     " is refused: " + *refused;
-        break;
+        case K::Hold:
+            grab(part);
+            e.text = "the hand holds block " + std::to_string(a.block);
+            break;
+        case K::Release: {
+            // The block comes back into the books with its energy, which the
+            // hand held until now: the hand's work.
+            const double before = energy(world_).total();
+            world_.release(part);
+            impactHeldWork_ += energy(world_).total() - before;
+            e.text = "the hand lets go of block " + std::to_string(a.block);
+            break;
+        }
+        case K::Push: {
+            // The impulse's work is P . (v- + v+)/2 at the point it acts on; the
+            // pins carry the rest of the change of kinetic energy into held
+            // blocks (their impulsive work). A held block takes the push itself.
+            if (world_.isHeld(part)) break;
+            const double before = energy(world_).kinetic;
+            const Vec2 local = vec(a.point), impulse = vec(a.impulse);
+            const Vec2 v0 = world_.pointVelocity(part, local);
+            std::vector<Event> released;
+            if (ladder_) {
+                released = ladder_->push(world_, dynamics_, t_, a.block, local, impulse);
+            } else {
+                const int b = world_.part(part).body;
+                const Vec2 x = world_.pointPosition(part, local);
+                world_.v.segment<2>(3 * b) += world_.body(b).invMass * impulse;
+                world_.v[3 * b + 2] += world_.body(b).invInertia * cross(x - world_.q.segment<2>(3 * b), impulse);
+                projectVelocities(world_, dynamics_.solver());
+            }
+            const double work = 0.5 * impulse.dot(v0 + world_.pointVelocity(part, local));
+            ledger_.user += work;
+            impactHeldWork_ += energy(world_).kinetic - before - work;
+            record({t_, EventKind::Script, -1, -1, "block " + std::to_string(a.block) + " is pushed"});
+            for (Event& r : released) record(r);
+            break;
+        }
+        case K::Cut:
+            // A refused action is said in the log, so a script's author sees why.
+            if (!ladder_) break;
+            if (auto refused = ladder_->cut(world_, a.hinge))
+                e.text = "the cut of hinge " + std::to_string(a.hinge) + " is refused: " + *refused;
+            else
+                e = {t_, EventKind::Cut, a.hinge, -1, "the ribbons of hinge " + std::to_string(a.hinge) + " are cut"};
+            break;
+        case K::Join:
+            if (!ladder_ || a.otherBlock < 0 || a.otherBlock >= blockCount()) break;
+            if (auto refused = join(a))
+                e.text = "the join of corner " + std::to_string(a.corner) + " of block " + std::to_string(a.block) +
+                         " to corner " + std::to_string(a.otherCorner) + " of block " + std::to_string(a.otherBlock) +
+                         " is refused: " + *refused;
+            break;
     }
     if (!e.text.empty()) record(e);
 }
@@ -343,7 +346,8 @@ std::optional<std::string> Simulation::join(const ScriptAction& a) {
     // plain pin the ladder knows nothing of.
     const std::optional<int> hinge = ladder_->cutHingeJoinedBy(a.block, a.corner, a.otherBlock, a.otherCorner);
     const ParticleId p = hinge ? ladder_->hinge(*hinge).own[size_t(a.corner)] : ladder_->particle(a.block, a.corner);
-    const ParticleId q = hinge ? ladder_->hinge(*hinge).own[size_t(4 + a.corner)] : ladder_->particle(a.otherBlock, a.otherCorner);
+    const ParticleId q =
+        hinge ? ladder_->hinge(*hinge).own[size_t(4 + a.corner)] : ladder_->particle(a.otherBlock, a.otherCorner);
     const World saved = world_;
     const Energy e0 = energy(world_);
     const double k0 = heldFrameKinetic(world_);
@@ -391,8 +395,9 @@ void Simulation::applyDragSample(const DragRecord& d, const DragRecord::Sample& 
     }
     const double m = world_.part(part).mass;
     const double omega = 1.0 / kDragTimeConstant;
-    UserDrag g{part, vec(d.point), vec(s.target), m * omega * omega, 2 * m * omega,
-               kDragMaxAcceleration * m * std::max(world_.gravity.norm(), 9.81)};
+    UserDrag g{part,          vec(d.point),
+               vec(s.target), m * omega * omega,
+               2 * m * omega, kDragMaxAcceleration * m * std::max(world_.gravity.norm(), 9.81)};
     for (UserDrag& live : world_.drags())
         if (live.part == part && live.local == g.local) {
             live = g;
@@ -441,8 +446,10 @@ void Simulation::moveDrag(const Vec2& target) {
     if (liveDrag_ < 0) return;
     DragRecord& d = scene_.drags[size_t(liveDrag_)];
     // Several moves between two steps: the last one wins, as in a replay.
-    if (d.samples.back().t == t_) d.samples.back().target = {target.x(), target.y()};
-    else d.samples.push_back({t_, {target.x(), target.y()}});
+    if (d.samples.back().t == t_)
+        d.samples.back().target = {target.x(), target.y()};
+    else
+        d.samples.push_back({t_, {target.x(), target.y()}});
     nextDragSample_[size_t(liveDrag_)] = d.samples.size();
     applyDragSample(d, d.samples.back());
 }

@@ -45,7 +45,8 @@ std::uint64_t Simulation::stateHash() const {
     for (PartId p : blocks_) {
         const Pose pose = world_.partPose(p);
         const Twist vel = world_.partVelocity(p);
-        const double x[6] = {pose.position.x(), pose.position.y(), pose.angle, vel.linear.x(), vel.linear.y(), vel.angular};
+        const double x[6] = {pose.position.x(), pose.position.y(), pose.angle,
+                             vel.linear.x(),    vel.linear.y(),    vel.angular};
         mix(x, sizeof x);
     }
     if (ladder_)

@@ -47,8 +47,8 @@ bool Simulation::booksDiverged() const {
     // What "large" means: the energy that has flowed, none of it measured
     // from the arbitrary zero of the potential (a 10,000-block ladder has
     // -5.8e5 J of it, which would hide any blow-up).
-    const double scale = energyFloor_ + initialKinetic_ + std::abs(e.potential - initialPotential_) +
-                         std::abs(held) + std::abs(ledger_.user) + impactLoss_ + ledger_.damping + 1e-9;
+    const double scale = energyFloor_ + initialKinetic_ + std::abs(e.potential - initialPotential_) + std::abs(held) +
+                         std::abs(ledger_.user) + impactLoss_ + ledger_.damping + 1e-9;
     return !(std::abs(booksImbalance(e.total()) - imbalanceBase_) <= kDivergence * scale);
 }
 
@@ -57,9 +57,7 @@ double Simulation::booksImbalance(double total) const {
     return total - (initialEnergy_ + ledger_.held + impactHeldWork_ + ledger_.user - impactLoss_ - ledger_.damping);
 }
 
-void Simulation::fail(const std::string& why) {
-    failure_ = "at t = " + std::to_string(t_) + " s: " + why;
-}
+void Simulation::fail(const std::string& why) { failure_ = "at t = " + std::to_string(t_) + " s: " + why; }
 
 void Simulation::restoreStepStart() {
     world_.q = stepStartQ_;
@@ -289,8 +287,7 @@ bool Simulation::retryWithSmallerStep() {
     constexpr int kMostHalvings = 10;
     // The adaptive integrator chooses its own steps (by its tolerance): a
     // shorter first try would change nothing.
-    if (scene_.solver.step > 0 || isAdaptive(scene_.solver.integrator) ||
-        stats_.stepHalvings >= kMostHalvings)
+    if (scene_.solver.step > 0 || isAdaptive(scene_.solver.integrator) || stats_.stepHalvings >= kMostHalvings)
         return false;
     restoreStepStart();
     world_.updateKinematics(t_);
@@ -358,12 +355,14 @@ bool Simulation::takeStep(double limit) {
     keptEnd_.forget();
     const Powers* atStart = keptStart_.recall(world_, dynamics_, t_);
     if (!atStart) keptStart_.forget();
-    MotionStep m = advanceAndProject(world_, dynamics_, stepper_, t_, h, ledger_, solver.projectionTolerance, false, atStart);
+    MotionStep m =
+        advanceAndProject(world_, dynamics_, stepper_, t_, h, ledger_, solver.projectionTolerance, false, atStart);
     if (!m.ok()) {
         if (retryWithSmallerStep()) return true;
-        fail(m.step.finite ? "the projection onto the pins did not converge (gap " + gapText(m.projection.residual) +
-                                 " after " + std::to_string(m.projection.iterations) + " iterations): " + blowUpAdvice(chosen)
-                           : "the step produced a non-finite state: " + blowUpAdvice(chosen));
+        fail(m.step.finite
+                 ? "the projection onto the pins did not converge (gap " + gapText(m.projection.residual) + " after " +
+                       std::to_string(m.projection.iterations) + " iterations): " + blowUpAdvice(chosen)
+                 : "the step produced a non-finite state: " + blowUpAdvice(chosen));
         return false;
     }
     double taken = m.step.taken;
@@ -399,13 +398,15 @@ bool Simulation::takeStep(double limit) {
                 stepper_.setNextStep(next0 > 0 ? next0 : chosen);
             }
             emitGridFrames(taken);
-            std::vector<Event> happened = ladder_->resolve(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
+            std::vector<Event> happened =
+                ladder_->resolve(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
             if (happened.empty() && taken < m.step.taken) {
                 // The located instant asked for nothing after all (a function
                 // within rounding of its threshold): take the whole step, so
                 // time can never stall on it.
                 restoreStepStart();
-                m = advanceAndProject(world_, dynamics_, stepper_, t_, m.step.taken, ledger_, solver.projectionTolerance, true);
+                m = advanceAndProject(world_, dynamics_, stepper_, t_, m.step.taken, ledger_,
+                                      solver.projectionTolerance, true);
                 taken = m.step.taken;
                 ++stats_.spuriousEvents;
                 emitGridFrames(taken);

@@ -32,10 +32,52 @@ std::vector<std::string> seeds() {
 
 // The pieces most likely to confuse a YAML reader or a validator.
 const std::vector<std::string> kPieces = {
-    ":",  "-",  "[",     "]",     "{",           "}",      ",",   "#",   "&a ", "*a",  "!!str ", "'", "\"", "\n",
-    "  ", "\t", "---\n", "? ",    "|",           ">",      "\\",  "%",   "@",   "\xc3", "\xff",  "\0", "~",  "null",
-    "1e-300", "1e300", "!!str ", "\r", "[[[[[[[[[[[[[[[[", "#c8a26b", "\\x01",
-    "1e999", "-0", ".nan", ".inf", "99999999999999999999", "1000000000", "-1", "0", "180deg", "block:9", "\"#zz\"",
+    ":",
+    "-",
+    "[",
+    "]",
+    "{",
+    "}",
+    ",",
+    "#",
+    "&a ",
+    "*a",
+    "!!str ",
+    "'",
+    "\"",
+    "\n",
+    "  ",
+    "\t",
+    "---\n",
+    "? ",
+    "|",
+    ">",
+    "\\",
+    "%",
+    "@",
+    "\xc3",
+    "\xff",
+    "\0",
+    "~",
+    "null",
+    "1e-300",
+    "1e300",
+    "!!str ",
+    "\r",
+    "[[[[[[[[[[[[[[[[",
+    "#c8a26b",
+    "\\x01",
+    "1e999",
+    "-0",
+    ".nan",
+    ".inf",
+    "99999999999999999999",
+    "1000000000",
+    "-1",
+    "0",
+    "180deg",
+    "block:9",
+    "\"#zz\"",
 };
 
 std::string mutate(std::string text, std::mt19937_64& rng) {
@@ -47,13 +89,18 @@ std::string mutate(std::string text, std::mt19937_64& rng) {
             case 0:  // flip a byte
                 if (!text.empty()) text[pick(text.size())] ^= static_cast<char>(1 << pick(8));
                 break;
-            case 1: text.erase(at, pick(16)); break;
-            case 2: text.insert(at, kPieces[pick(kPieces.size())]); break;
+            case 1:
+                text.erase(at, pick(16));
+                break;
+            case 2:
+                text.insert(at, kPieces[pick(kPieces.size())]);
+                break;
             case 3: {  // duplicate a line
                 const std::size_t begin = text.rfind('\n', at == 0 ? 0 : at - 1);
                 const std::size_t start = begin == std::string::npos ? 0 : begin + 1;
                 const std::size_t end = text.find('\n', start);
-                const std::string line = text.substr(start, end == std::string::npos ? std::string::npos : end - start + 1);
+                const std::string line =
+                    text.substr(start, end == std::string::npos ? std::string::npos : end - start + 1);
                 text.insert(start, line);
                 break;
             }
@@ -62,7 +109,9 @@ std::string mutate(std::string text, std::mt19937_64& rng) {
                 if (digit != std::string::npos) text.replace(digit, 1, kPieces[kPieces.size() - 9 + pick(6)]);
                 break;
             }
-            default: text.resize(at); break;  // truncate
+            default:
+                text.resize(at);
+                break;  // truncate
         }
     }
     return text;
@@ -75,7 +124,8 @@ std::string mutate(std::string text, std::mt19937_64& rng) {
 long scenesRun = 0;
 
 bool runs(const jl::Scene& scene, long iteration) {
-    const std::size_t parts = (scene.ladder ? std::size_t(scene.ladder->blocks) : 0) + scene.bodies.size() + scene.particles.size();
+    const std::size_t parts =
+        (scene.ladder ? std::size_t(scene.ladder->blocks) : 0) + scene.bodies.size() + scene.particles.size();
     if (parts > 64) return true;
     jl::Simulation::Built built = jl::Simulation::build(scene);
     if (!built.simulation) return true;  // refused with errors: a reason
@@ -89,7 +139,8 @@ bool runs(const jl::Scene& scene, long iteration) {
             std::fprintf(stderr, "iteration %ld: a step failed without a reason\n", iteration);
             return false;
         }
-        if (sim.time() > before) ++moved;
+        if (sim.time() > before)
+            ++moved;
         else if (++stood > 100) {
             std::fprintf(stderr, "iteration %ld: time stands at %g s\n", iteration, before);
             return false;

@@ -105,8 +105,8 @@ struct Fixture {
     bool goTo(int index, int timeoutMs = 20000) {
         const double dt = sim->status()->interval;
         sim->seek(index * dt + dt / 4);
-        return jl::test::waitForStatus(sim, [index](const SimStatus& s) { return s.frameIndex == index && !s.playing; },
-                                       timeoutMs);
+        return jl::test::waitForStatus(
+            sim, [index](const SimStatus& s) { return s.frameIndex == index && !s.playing; }, timeoutMs);
     }
 };
 

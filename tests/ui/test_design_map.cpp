@@ -70,7 +70,8 @@ private slots:
         const std::vector<double> ys = jl::axisValues(map.yAxis());
         QCOMPARE(int(ys.size()), 5);
         const double expected[] = {0.0009, 0.0011, 0.0013, 0.0015, 0.0017};
-        for (size_t i = 0; i < ys.size(); ++i) QVERIFY2(std::abs(ys[i] - expected[i]) < 1e-12, qPrintable(QString::number(ys[i])));
+        for (size_t i = 0; i < ys.size(); ++i)
+            QVERIFY2(std::abs(ys[i] - expected[i]) < 1e-12, qPrintable(QString::number(ys[i])));
         QCOMPARE(map.grid()->current(), std::make_pair(2, 2));
         map.hide();
 
@@ -272,8 +273,9 @@ private slots:
         const jl::RippleReach first = jl::firstRippleReach(design, nullptr, 10.0);
         QVERIFY(!first.whole);
         QCOMPARE(first.until, 10.0);
-        const QString expected = QString("In the first 10 s (a whole run of this design is %1 s), the first ripple "
-                                         "reaches hinge %2 of 999")
+        const QString expected = QString(
+                                     "In the first 10 s (a whole run of this design is %1 s), the first ripple "
+                                     "reaches hinge %2 of 999")
                                      .arg(whole, 0, 'f', 0)
                                      .arg(first.reached);
         QVERIFY2(estimate->text().startsWith(expected), qPrintable(estimate->text()));

@@ -97,9 +97,11 @@ private slots:
         std::vector<int> flips;
         while (sim->time() < 1.0 && sim->stepOnce())
             for (const jl::Event& e : sim->takeEvents())
-                if (e.kind == jl::EventKind::FlipFlop && (flips.empty() || flips.back() < e.hinge)) flips.push_back(e.hinge);
+                if (e.kind == jl::EventKind::FlipFlop && (flips.empty() || flips.back() < e.hinge))
+                    flips.push_back(e.hinge);
         QVERIFY(sim->failure().empty());
-        QVERIFY2(flips.size() >= 3 && flips[0] == 1 && flips[1] == 2 && flips[2] == 3, qPrintable(QString::number(flips.size())));
+        QVERIFY2(flips.size() >= 3 && flips[0] == 1 && flips[1] == 2 && flips[2] == 3,
+                 qPrintable(QString::number(flips.size())));
     }
 
     void theRecoveryCopyHoldsTheUnsavedSceneAndGoesAwayOnSave() {

@@ -58,7 +58,8 @@ private slots:
         QCOMPARE(engineHashAt(*s->recorded, 60), s->headHash);
         QVERIFY(engineHashAt(scene, 60) != s->headHash);
         // The drag is part of the document now (saved with it, undoable).
-        QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus&) { return f.window.document()->scene().drags == s->recorded->drags; }));
+        QVERIFY(jl::test::waitForStatus(
+            f.sim, [&](const SimStatus&) { return f.window.document()->scene().drags == s->recorded->drags; }));
         QVERIFY(f.window.document()->isModified());
     }
 
@@ -75,9 +76,14 @@ private slots:
         QVERIFY(on);
         const QPoint at = *on;
         QTest::mousePress(view, Qt::LeftButton, {}, at);
-        const bool pressed = jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.dragging && s.frameCount == 13 && s.frameIndex == 12; });
+        const bool pressed = jl::test::waitForStatus(
+            f.sim, [](const SimStatus& s) { return s.dragging && s.frameCount == 13 && s.frameIndex == 12; });
         const auto p = f.sim->status();
-        QVERIFY2(pressed, qPrintable(QString("dragging %1, frame %2 of %3, %4").arg(p->dragging).arg(p->frameIndex).arg(p->frameCount).arg(QString::fromStdString(p->failure))));
+        QVERIFY2(pressed, qPrintable(QString("dragging %1, frame %2 of %3, %4")
+                                         .arg(p->dragging)
+                                         .arg(p->frameIndex)
+                                         .arg(p->frameCount)
+                                         .arg(QString::fromStdString(p->failure))));
         QCOMPARE(f.sim->status()->recorded->drags.size(), size_t(0));  // recorded when it ends
         QVERIFY(f.goTo(20));
         QTest::mouseMove(view, at + QPoint(60, -30));
@@ -135,7 +141,8 @@ private slots:
         const auto grab = view->grabAt(*plane);
         QVERIFY(grab && grab->block == 3);
         QTest::mousePress(view, Qt::LeftButton, {}, at);
-        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.dragging && s.frameCount == 13 && s.frameIndex == 12; }));
+        QVERIFY(jl::test::waitForStatus(
+            f.sim, [](const SimStatus& s) { return s.dragging && s.frameCount == 13 && s.frameIndex == 12; }));
         QVERIFY(f.goTo(20));
         QTest::mouseRelease(view, Qt::LeftButton, {}, at + QPoint(40, 0));
         QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return !s.dragging; }));

@@ -32,7 +32,6 @@ bool woodColoured(QColor c, QColor wood) {
     return std::abs(h - wood.hsvHueF() * 360) < 5 && s > 0.2f && c.valueF() > 0.3f;
 }
 
-
 // The blocks' centres show their wood seen edge-on (yaw 0): from the default
 // three-quarter view the centre of a block is on a shaded face or a ribbon.
 void turnEdgeOn(MainWindow& w) { w.ladderView()->orbit(-w.ladderView()->viewCamera().yaw(), 0); }
@@ -69,7 +68,8 @@ private slots:
             const jl::Vec2 c = status->frame->poses[size_t(i)].position;
             const QPointF p = w.ladderView()->pixelOf(c) * scale;
             const QColor got = image.pixelColor(p.toPoint());
-            QVERIFY2(woodColoured(got, wood), qPrintable(QString("block %1 at %2,%3 is %4").arg(i).arg(p.x()).arg(p.y()).arg(got.name())));
+            QVERIFY2(woodColoured(got, wood),
+                     qPrintable(QString("block %1 at %2,%3 is %4").arg(i).arg(p.x()).arg(p.y()).arg(got.name())));
             // 15 cm beside the ladder there is no wood, so the test can fail.
             const QPointF beside = w.ladderView()->pixelOf(c + jl::Vec2(0.15, 0)) * scale;
             QVERIFY2(!woodColoured(image.pixelColor(beside.toPoint()), wood), "wood colour where no block is");
@@ -129,13 +129,15 @@ private slots:
         QApplication::processEvents();
         QCOMPARE(play->mapTo(&w, QPoint()).x(), before);
         const jl::Scene nine = w.document()->scene();
-        QVERIFY(jl::test::waitForStatus(w.controller(), [](const SimStatus& s) { return s.frame && s.frame->poses.size() == 9; }));
+        QVERIFY(jl::test::waitForStatus(w.controller(),
+                                        [](const SimStatus& s) { return s.frame && s.frame->poses.size() == 9; }));
 
         w.document()->undoStack()->undo();
         QVERIFY(w.document()->scene() == original);
         QVERIFY(!w.document()->isModified());
         QCOMPARE(blocks->value(), 6);
-        QVERIFY(jl::test::waitForStatus(w.controller(), [](const SimStatus& s) { return s.frame && s.frame->poses.size() == 6; }));
+        QVERIFY(jl::test::waitForStatus(w.controller(),
+                                        [](const SimStatus& s) { return s.frame && s.frame->poses.size() == 6; }));
         w.document()->undoStack()->redo();
         QVERIFY(w.document()->scene() == nine);
 
@@ -177,7 +179,8 @@ private slots:
         controls->trigger();
         auto* box = w.findChild<QMessageBox*>("controlsHelp");
         QVERIFY(box && box->isVisible() && !box->isModal());
-        for (const char* words : {"right-drag", "Left-drag off the blocks", "Wheel", "Frame the ladder", "Presentation mode", "Play", "Undo"})
+        for (const char* words : {"right-drag", "Left-drag off the blocks", "Wheel", "Frame the ladder",
+                                  "Presentation mode", "Play", "Undo"})
             QVERIFY2(box->text().contains(words), words);
     }
 
@@ -203,14 +206,17 @@ private slots:
 
         // Drawn: block 2 in its own colour, block 3 still in the ladder's.
         QVERIFY(jl::test::waitForStatus(w.controller(), [](const SimStatus& s) {
-            return s.recorded && s.recorded->ladder->overrides.size() == 1 && s.recorded->ladder->overrides[0].thickness && s.frame;
+            return s.recorded && s.recorded->ladder->overrides.size() == 1 &&
+                   s.recorded->ladder->overrides[0].thickness && s.frame;
         }));
         turnEdgeOn(w);
         QTest::qWait(300);
         const QImage image = jl::test::captureView(w.ladderView());
         const double scale = double(image.width()) / w.ladderView()->width();
         const auto frame = w.controller()->status()->frame;
-        auto colourAt = [&](int block) { return image.pixelColor((w.ladderView()->pixelOf(frame->poses[size_t(block)].position) * scale).toPoint()); };
+        auto colourAt = [&](int block) {
+            return image.pixelColor((w.ladderView()->pixelOf(frame->poses[size_t(block)].position) * scale).toPoint());
+        };
         const jl::Color oc = *o[0].color;
         QVERIFY(woodColoured(colourAt(2), QColor(oc.r, oc.g, oc.b)));
         QVERIFY(!woodColoured(colourAt(2), QColor(200, 162, 107)));
@@ -283,8 +289,12 @@ private slots:
         QTest::qWait(500);
         const QRect g = w.frameGeometry();
         QVERIFY2(screen.contains(g), qPrintable(QString("the window %1x%2 at %3,%4 is not within the screen's %5x%6")
-                                                    .arg(g.width()).arg(g.height()).arg(g.x()).arg(g.y())
-                                                    .arg(screen.width()).arg(screen.height())));
+                                                    .arg(g.width())
+                                                    .arg(g.height())
+                                                    .arg(g.x())
+                                                    .arg(g.y())
+                                                    .arg(screen.width())
+                                                    .arg(screen.height())));
         // On a taller screen too the window comes back as it was, and the
         // large type's minimum sizes do not outlast presentation mode.
         QCOMPARE(w.geometry(), before);
@@ -307,8 +317,12 @@ private slots:
         QTest::qWait(300);
         const QRect g = w.frameGeometry();
         QVERIFY2(screen.contains(g), qPrintable(QString("the window %1x%2 at %3,%4 is not within the screen's %5x%6")
-                                                    .arg(g.width()).arg(g.height()).arg(g.x()).arg(g.y())
-                                                    .arg(screen.width()).arg(screen.height())));
+                                                    .arg(g.width())
+                                                    .arg(g.height())
+                                                    .arg(g.x())
+                                                    .arg(g.y())
+                                                    .arg(screen.width())
+                                                    .arg(screen.height())));
     }
 };
 

@@ -99,7 +99,8 @@ private slots:
         thickness->setValue(6.0);  // mm
         const jl::Scene edited = f.window.document()->scene();
         QCOMPARE(edited.ladder->block.thickness, 0.006);
-        QVERIFY(jl::test::waitForStatus(f.sim, [before](const SimStatus& s) { return s.loadSerial > before && s.frameIndex == 30; }));
+        QVERIFY(jl::test::waitForStatus(
+            f.sim, [before](const SimStatus& s) { return s.loadSerial > before && s.frameIndex == 30; }));
         QVERIFY(samePoses(*f.sim->status()->frame, engineFrameAt(edited, 30)));
         QVERIFY(!samePoses(*f.sim->status()->frame, engineFrameAt(jl::test::swingingLadder(), 30)));
     }
@@ -116,7 +117,8 @@ private slots:
         QVERIFY(f.goTo(60));
         QTRY_VERIFY(step->text().endsWith("ms (auto)"));
         const auto before = f.editThickness(4.0);
-        QVERIFY(jl::test::waitForStatus(f.sim, [before](const SimStatus& s) { return s.loadSerial > before && s.seekingTo > 0; }));
+        QVERIFY(jl::test::waitForStatus(
+            f.sim, [before](const SimStatus& s) { return s.loadSerial > before && s.seekingTo > 0; }));
         QTRY_VERIFY2(rate->text().startsWith("running to t = 1.000 s ("), qPrintable(rate->text()));
         QVERIFY(jl::test::waitForStatus(f.sim, [before](const SimStatus& s) {
             return s.loadSerial > before && s.frameIndex == 60 && s.seekingTo < 0;
@@ -155,7 +157,8 @@ private slots:
         QVERIFY(f.goTo(18, 120000));  // a few seconds alone; much longer beside other tests
         const auto before = f.editThickness(4.0);
         const QRegularExpression left(R"(^running to t = 0\.300 s \(\d+ %, about \d+ (s|min) left\)$)");
-        QVERIFY(jl::test::waitForStatus(f.sim, [before](const SimStatus& s) { return s.loadSerial > before && s.seekingTo > 0; }));
+        QVERIFY(jl::test::waitForStatus(
+            f.sim, [before](const SimStatus& s) { return s.loadSerial > before && s.seekingTo > 0; }));
         QTRY_VERIFY(rate->text().startsWith("running to t = 0.300 s (") && !rate->text().contains("left"));
         QTRY_VERIFY2_WITH_TIMEOUT(left.match(rate->text()).hasMatch(), qPrintable(rate->text()), 60000);
         const QRegularExpressionMatch said = left.match(rate->text());
@@ -163,9 +166,10 @@ private slots:
         const double predicted = amount.toDouble() * (said.captured(1) == "min" ? 60 : 1);
         QElapsedTimer clock;
         clock.start();
-        QVERIFY(jl::test::waitForStatus(f.sim, [before](const SimStatus& s) {
-            return s.loadSerial > before && s.frameIndex == 18 && s.seekingTo < 0;
-        }, 120000));
+        QVERIFY(jl::test::waitForStatus(
+            f.sim,
+            [before](const SimStatus& s) { return s.loadSerial > before && s.frameIndex == 18 && s.seekingTo < 0; },
+            120000));
         // An estimate, from the run's own pace: right to within a few seconds here.
         const double took = clock.elapsed() / 1000.0;
         qInfo("said \"%s\"; it took %.1f s more", qPrintable(said.captured(0)), took);
@@ -191,7 +195,8 @@ private slots:
         QCOMPARE(f.sim->status()->frameCount, 1);  // and it stays paused there
         f.sim->stepForward();
         f.sim->stepForward();
-        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.frameIndex == 2; }, 60000));
+        QVERIFY(jl::test::waitForStatus(
+            f.sim, [](const SimStatus& s) { return s.frameIndex == 2; }, 60000));
         const auto s = f.sim->status();
         QCOMPARE(s->frameCount, 3);
         QCOMPARE(engineHashAt(scene, 2), s->headHash);
@@ -221,7 +226,10 @@ private slots:
         };
         const bool reached = goTo(300);
         const auto s = sim.status();
-        QVERIFY2(reached, qPrintable(QString("frame %1 of %2, %3").arg(s->frameIndex).arg(s->frameCount).arg(QString::fromStdString(s->failure))));
+        QVERIFY2(reached, qPrintable(QString("frame %1 of %2, %3")
+                                         .arg(s->frameIndex)
+                                         .arg(s->frameCount)
+                                         .arg(QString::fromStdString(s->failure))));
         QCOMPARE(s->frame->time, grid.at(300));
         QVERIFY(samePoses(*s->frame, engineFrameAt(scene, 300)));
         QVERIFY(s->events && s->events->size() >= 2);  // the hand's turn, and its end
@@ -293,7 +301,8 @@ private slots:
         const int before = int(std::floor(lock->time / dt));
 
         f.sim->showInstant(lock->time);
-        QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus& s) { return s.frame && s.frame->time == lock->time; }));
+        QVERIFY(
+            jl::test::waitForStatus(f.sim, [&](const SimStatus& s) { return s.frame && s.frame->time == lock->time; }));
         const auto s = f.sim->status();
         QCOMPARE(s->frameIndex, before);
         QVERIFY(!s->playing);
@@ -317,13 +326,16 @@ private slots:
 
         // Step back: the frame before the instant; forward twice: the frames after it.
         f.sim->stepBack();
-        QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus& st) { return st.frame->time == jl::FrameGrid{0, dt}.at(before); }));
+        QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus& st) {
+            return st.frame->time == jl::FrameGrid{0, dt}.at(before);
+        }));
         QVERIFY(samePoses(*f.sim->status()->frame, frameBefore));
         QTRY_VERIFY(note->text().isEmpty());
         f.sim->showInstant(lock->time);
         QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus& st) { return st.frame->time == lock->time; }));
         f.sim->stepForward();
-        QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus& st) { return st.frameIndex == before + 1 && st.frame->time != lock->time; }));
+        QVERIFY(jl::test::waitForStatus(
+            f.sim, [&](const SimStatus& st) { return st.frameIndex == before + 1 && st.frame->time != lock->time; }));
         QVERIFY(samePoses(*f.sim->status()->frame, engineFrameAt(scene, before + 1)));
         // Chosen while playing: it pauses there (a still, not a frame to play on from at once).
         f.sim->play();
@@ -345,7 +357,8 @@ private slots:
         f.sim->showInstant(instant);
         QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus& s) { return s.seekingTo == instant; }));
         QTRY_VERIFY2(rate->text().startsWith("running to t = 0.660 s ("), qPrintable(rate->text()));
-        QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus& s) { return s.frame->time == instant && s.seekingTo < 0; }));
+        QVERIFY(jl::test::waitForStatus(
+            f.sim, [&](const SimStatus& s) { return s.frame->time == instant && s.seekingTo < 0; }));
         QTRY_COMPARE(rate->text(), QString("paused between frames 39 and 40"));
     }
 
@@ -386,7 +399,8 @@ private slots:
         qInfo("failed after the frame at %.3f s: %s", s->frame->time, s->failure.c_str());
         QVERIFY(s->frame->time > 0 && s->frame->time < 1.0);
         auto* warning = f.window.findChild<QLabel*>("warning");
-        QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus&) { return warning->text().contains(QString::fromStdString(s->failure)); }));
+        QVERIFY(jl::test::waitForStatus(
+            f.sim, [&](const SimStatus&) { return warning->text().contains(QString::fromStdString(s->failure)); }));
         // Shown whole: the status bar cuts it off (the advice at the end), so
         // a message that does not block the window says all of it.
         QMessageBox* box = nullptr;
@@ -444,9 +458,10 @@ private slots:
         probe.stop();
         f.sim->pause();
         const auto s = f.sim->status();
-        qInfo("longest stall %lld ms over %d ticks (%.0f ms waiting for a processor not counted); simulated %.3f s at "
-              "%.2fx real time, %0.f steps/s",
-              worst, ticks, queued, s->frame->time - startTime, s->realTimeFactor, s->stepsPerSecond);
+        qInfo(
+            "longest stall %lld ms over %d ticks (%.0f ms waiting for a processor not counted); simulated %.3f s at "
+            "%.2fx real time, %0.f steps/s",
+            worst, ticks, queued, s->frame->time - startTime, s->realTimeFactor, s->stepsPerSecond);
         for (size_t i = 0; i + 1 < gaps.size(); i += 2) qInfo("gap of %lld ms ending at %lld ms", gaps[i + 1], gaps[i]);
         QVERIFY2(s->serial > startSerial + 10, "the view was not fed new frames");
         QVERIFY(s->frame->time > startTime);

@@ -223,7 +223,7 @@ private slots:
     // stopped at 50 m cells, and a 10,000-block ladder, 600 m, was a grey
     // band of lines), and the scale bar says kilometres where it should.
     void theGridStaysReadableOnAnyLengthOfLadder() {
-        QCOMPARE(gridCell(1000.0, 80), 0.1);   // 1 px per mm: 10 cm cells
+        QCOMPARE(gridCell(1000.0, 80), 0.1);  // 1 px per mm: 10 cm cells
         QCOMPARE(gridCell(1.0, 80), 100.0);
         QCOMPARE(gridCell(0.05, 80), 2000.0);  // 6 km in 300 px
         QCOMPARE(lengthText(0.05), QString("5 cm"));
@@ -278,7 +278,9 @@ private slots:
                     found = dark(image.pixelColor(int(std::lround(x)) + dx, int(y)));
                 missing += !found;
             }
-            QVERIFY2(missing == 0, qPrintable(QString("%1 blocks: no thread at %2 of %3 heights").arg(blocks).arg(missing).arg(samples)));
+            QVERIFY2(
+                missing == 0,
+                qPrintable(QString("%1 blocks: no thread at %2 of %3 heights").arg(blocks).arg(missing).arg(samples)));
         }
     }
 
@@ -294,7 +296,9 @@ private slots:
             for (int y = image.height() - 60; y < image.height(); ++y)
                 for (int x = 0; x < image.width(); ++x) {
                     const QColor c = image.pixelColor(x, y);
-                    if (std::abs(c.red() - want.red()) + std::abs(c.green() - want.green()) + std::abs(c.blue() - want.blue()) < 30)
+                    if (std::abs(c.red() - want.red()) + std::abs(c.green() - want.green()) +
+                            std::abs(c.blue() - want.blue()) <
+                        30)
                         range = {std::min(range.first, x), std::max(range.second, x)};
                 }
             return range;
@@ -302,7 +306,8 @@ private slots:
         const auto free = columnsOf(hingeColor(jl::HingeMode::Free));
         const auto folded = columnsOf(hingeColor(jl::HingeMode::Folded));
         QVERIFY2(free.second >= 0 && free.first >= 2, qPrintable(QString("free dot from x = %1").arg(free.first)));
-        QVERIFY2(folded.second >= 0 && folded.second < image.width() - 2, qPrintable(QString("folded dot to x = %1").arg(folded.second)));
+        QVERIFY2(folded.second >= 0 && folded.second < image.width() - 2,
+                 qPrintable(QString("folded dot to x = %1").arg(folded.second)));
         QVERIFY(free.second < folded.first);
     }
 };

@@ -2,6 +2,7 @@
 // Teaching and analysis: the plots draw the engine's numbers and the energy
 // books balance, clicks seek, exports write what they promise, lessons list
 // the examples (the side view has tests/ui/test_side_view.cpp).
+#include "example_runs.h"
 #include "jl/sim/simulation.h"
 #include "ui/events_panel.h"
 #include "ui/exporter.h"
@@ -9,7 +10,6 @@
 #include "ui/pacing.h"
 #include "ui/run_plots.h"
 #include "ui/time_chart.h"
-#include "example_runs.h"
 #include "ui_test_support.h"
 
 #include <QApplication>
@@ -53,7 +53,8 @@ private slots:
             }
         }
         QCOMPARE(plots.energyScale(), 1e3);  // drawn in mJ: a 6-block toy holds a fraction of a joule
-        QCOMPARE(plots.energyChart()->valueAxis()->titleText(), QString("energy (mJ)"));  // a lone J, turned on its side, reads as a hook
+        QCOMPARE(plots.energyChart()->valueAxis()->titleText(),
+                 QString("energy (mJ)"));  // a lone J, turned on its side, reads as a hook
         // The hand turns the top block: it does work and the impacts take some.
         QVERIFY(run.frames.back().energy.heldWork > 1e-3);
         QVERIFY(run.frames.back().energy.impactLoss > 1e-4);
@@ -125,10 +126,12 @@ private slots:
                 for (int x = 0; x < drawn.width(); ++x) {
                     const QColor a = shown.pixelColor(x, y), b = drawn.pixelColor(x, y);
                     differing +=
-                        std::abs(a.red() - b.red()) + std::abs(a.green() - b.green()) + std::abs(a.blue() - b.blue()) > 60;
+                        std::abs(a.red() - b.red()) + std::abs(a.green() - b.green()) + std::abs(a.blue() - b.blue()) >
+                        60;
                 }
             QVERIFY2(differing == 0,
-                     qPrintable(QString("%1 pixels on screen at t = %2 s differ from a fresh drawing").arg(differing).arg(t)));
+                     qPrintable(
+                         QString("%1 pixels on screen at t = %2 s differ from a fresh drawing").arg(differing).arg(t)));
             ++compared;
         }
         QCOMPARE(compared, 30);
@@ -190,7 +193,8 @@ private slots:
         int knocks = 0;
         for (size_t i = 0; i + 1 < run.events.size(); ++i) {
             const jl::Event &a = run.events[i], &b = run.events[i + 1];
-            if (a.kind == jl::EventKind::Lock && b.kind == jl::EventKind::Unlock && a.hinge == b.hinge && a.time == b.time)
+            if (a.kind == jl::EventKind::Lock && b.kind == jl::EventKind::Unlock && a.hinge == b.hinge &&
+                a.time == b.time)
                 ++knocks;
         }
         QVERIFY(knocks > 0);  // the classic cascade has knocks down the ladder

@@ -125,7 +125,8 @@ private slots:
             }
             // Frame i is the state at the end of the step that reaches i * interval.
             for (int i = 0; i < traces.count(); ++i)
-                if (const double t = traces.time()[size_t(i)]; t < i * s->interval - 1e-9 || t >= (i + 1) * s->interval) {
+                if (const double t = traces.time()[size_t(i)];
+                    t < i * s->interval - 1e-9 || t >= (i + 1) * s->interval) {
                     qWarning("%s: sample %d at %.6f s", when, i, traces.time()[size_t(i)]);
                     return false;
                 }
@@ -145,7 +146,8 @@ private slots:
 
         const int head = f.sim->status()->frameCount;
         f.teaching.pacing()->runToNextEvent();
-        QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus& s) { return s.frameCount > head + 1 && !s.playing; }));
+        QVERIFY(
+            jl::test::waitForStatus(f.sim, [&](const SimStatus& s) { return s.frameCount > head + 1 && !s.playing; }));
         QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus&) { return !f.teaching.pacing()->seekingEvent(); }));
         QVERIFY(dense("next event"));
     }
@@ -154,7 +156,7 @@ private slots:
     // chart's legend (eight in the energy chart, five in the fold angles),
     // and every number of the status bar in full in its place.
     void everyNameAndNumberShowsWholeAtTheDefaultSize() {
-        QSettings().clear();  // a first start: no arrangement saved by an earlier window
+        QSettings().clear();                         // a first start: no arrangement saved by an earlier window
         MainWindow window(jl::test::quietWindow());  // at its first size, 1440 x 900
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
@@ -179,15 +181,17 @@ private slots:
         }
         // The status bar's numbers, in the middle of the run, each whole in its place.
         window.controller()->seek(2.0);
-        QVERIFY(jl::test::waitForStatus(window.controller(), [](const SimStatus& st) { return st.frame->time >= 2.0; }));
+        QVERIFY(
+            jl::test::waitForStatus(window.controller(), [](const SimStatus& st) { return st.frame->time >= 2.0; }));
         QTest::qWait(100);
         int labels = 0;
         for (QLabel* label : window.statusBar()->findChildren<QLabel*>()) {
             if (!label->isVisible() || label->text().isEmpty()) continue;
             ++labels;
             const int needed = label->fontMetrics().horizontalAdvance(label->text());
-            QVERIFY2(needed <= label->contentsRect().width(),
-                     qPrintable(label->text() + QString(": %1 px in %2").arg(needed).arg(label->contentsRect().width())));
+            QVERIFY2(
+                needed <= label->contentsRect().width(),
+                qPrintable(label->text() + QString(": %1 px in %2").arg(needed).arg(label->contentsRect().width())));
         }
         QVERIFY(labels >= 3);
     }
@@ -263,8 +267,11 @@ private slots:
         QVERIFY(labels.size() >= 3);
         for (size_t i = 0; i < labels.size(); ++i) {
             QVERIFY2(QRectF(timeline->rect()).contains(labels[i].box),
-                     qPrintable(labels[i].text + QString(" at %1..%2 of %3 x %4").arg(labels[i].box.left()).arg(labels[i].box.right())
-                                    .arg(timeline->width()).arg(timeline->height())));
+                     qPrintable(labels[i].text + QString(" at %1..%2 of %3 x %4")
+                                                     .arg(labels[i].box.left())
+                                                     .arg(labels[i].box.right())
+                                                     .arg(timeline->width())
+                                                     .arg(timeline->height())));
             if (i > 0) QVERIFY(labels[i].box.left() >= labels[i - 1].box.right());
         }
         QTest::qWait(200);
@@ -315,7 +322,8 @@ private slots:
             if (!timeline->eventNear(x)) quiet = x;
         QVERIFY(quiet > 0);
         QTest::mouseClick(timeline, Qt::LeftButton, {}, QPoint(int(quiet), y));
-        QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus& s) { return s.frame->time != chosen->time && grid.on(s.frame->time); }));
+        QVERIFY(jl::test::waitForStatus(
+            f.sim, [&](const SimStatus& s) { return s.frame->time != chosen->time && grid.on(s.frame->time); }));
     }
 
     // Not a check: with JL_DOCS_DIR set, a picture of the window with the teaching docks.

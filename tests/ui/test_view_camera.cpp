@@ -169,9 +169,11 @@ private slots:
             return p.x() > 0 && p.x() < view->width() && p.y() > 0 && p.y() < view->height();
         };
         for (size_t i = 98; i <= 105; ++i) QVERIFY2(inView(i), qPrintable(QString("block %1").arg(i)));
-        for (const size_t i : {size_t(0), size_t(90), size_t(112), size_t(199)}) QVERIFY2(!inView(i), qPrintable(QString("block %1").arg(i)));
+        for (const size_t i : {size_t(0), size_t(90), size_t(112), size_t(199)})
+            QVERIFY2(!inView(i), qPrintable(QString("block %1").arg(i)));
         // Those eight blocks fill a fair part of the view's height.
-        const double span = std::abs(view->pixelOf(moved.poses[105].position).y() - view->pixelOf(moved.poses[98].position).y());
+        const double span =
+            std::abs(view->pixelOf(moved.poses[105].position).y() - view->pixelOf(moved.poses[98].position).y());
         QVERIFY2(span > view->height() * 0.4, qPrintable(QString::number(span)));
 
         // Moving at both ends (the top swinging, the bottom knocking): the
@@ -217,14 +219,15 @@ private slots:
         const QPointF at = view->pixelOf(top);
         const QVector3D point(float(top.x()), float(top.y()), 0);
         const float before = (view->viewCamera().eye() - point).length();
-        QWheelEvent wheel(at, view->mapToGlobal(at), {}, QPoint(0, 120 * 5), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase,
-                          false);
+        QWheelEvent wheel(at, view->mapToGlobal(at), {}, QPoint(0, 120 * 5), Qt::NoButton, Qt::NoModifier,
+                          Qt::NoScrollPhase, false);
         QCoreApplication::sendEvent(view, &wheel);
         const float after = (view->viewCamera().eye() - point).length();
         QVERIFY2(std::abs(after / before - std::pow(0.88f, 5.0f)) < 1e-4f, qPrintable(QString::number(after / before)));
         const QPointF still = view->pixelOf(top);
-        QVERIFY2((still - at).manhattanLength() < 0.5, qPrintable(QString("moved from (%1, %2) to (%3, %4)")
-                                                                       .arg(at.x()).arg(at.y()).arg(still.x()).arg(still.y())));
+        QVERIFY2((still - at).manhattanLength() < 0.5,
+                 qPrintable(
+                     QString("moved from (%1, %2) to (%3, %4)").arg(at.x()).arg(at.y()).arg(still.x()).arg(still.y())));
         const auto p = view->planePoint(at);
         QVERIFY(p && (*p - top).norm() < 1e-4);
     }
@@ -261,9 +264,10 @@ private slots:
         // Turned, moved off and zoomed right in: F brings the whole ladder back, seen from there.
         w.ladderView()->orbit(70, 25);
         // (the wheel zooms toward the point under the pointer: a block's centre)
-        const QPointF middle = w.ladderView()->pixelOf(w.controller()->status()->frame->poses[size_t(blocks / 2)].position);
-        QWheelEvent wheel(middle, w.ladderView()->mapToGlobal(middle), {}, QPoint(0, 120 * 12), Qt::NoButton, Qt::NoModifier,
-                          Qt::NoScrollPhase, false);
+        const QPointF middle =
+            w.ladderView()->pixelOf(w.controller()->status()->frame->poses[size_t(blocks / 2)].position);
+        QWheelEvent wheel(middle, w.ladderView()->mapToGlobal(middle), {}, QPoint(0, 120 * 12), Qt::NoButton,
+                          Qt::NoModifier, Qt::NoScrollPhase, false);
         QCoreApplication::sendEvent(w.ladderView(), &wheel);
         QVERIFY(!framingProblem(w).isEmpty());
         const float yaw = w.ladderView()->viewCamera().yaw();

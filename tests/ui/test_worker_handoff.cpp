@@ -28,16 +28,35 @@ private slots:
         int reads = 0;
         for (int i = 0; clock.elapsed() < 3000; ++i) {
             switch (i % 97) {  // a mix of everything the UI can ask for
-            case 10: controller.pause(); break;
-            case 20: controller.stepForward(); break;
-            case 30: controller.stepBack(); break;
-            case 40: controller.play(); break;
-            case 50: controller.seek(0.3); break;
-            case 60: controller.beginDrag(jl::Vec2(0.0, -0.1)); break;
-            case 61: controller.moveDrag(jl::Vec2(0.05, -0.12)); break;
-            case 70: controller.endDrag(); break;
-            case 80: controller.setSpeed(0.5 + (i % 7)); break;
-            default: break;
+                case 10:
+                    controller.pause();
+                    break;
+                case 20:
+                    controller.stepForward();
+                    break;
+                case 30:
+                    controller.stepBack();
+                    break;
+                case 40:
+                    controller.play();
+                    break;
+                case 50:
+                    controller.seek(0.3);
+                    break;
+                case 60:
+                    controller.beginDrag(jl::Vec2(0.0, -0.1));
+                    break;
+                case 61:
+                    controller.moveDrag(jl::Vec2(0.05, -0.12));
+                    break;
+                case 70:
+                    controller.endDrag();
+                    break;
+                case 80:
+                    controller.setSpeed(0.5 + (i % 7));
+                    break;
+                default:
+                    break;
             }
             QElapsedTimer read;
             read.start();

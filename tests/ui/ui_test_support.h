@@ -55,7 +55,8 @@ inline std::uint64_t loadsSoFar(jl::ui::SimController* c) { return c->status()->
 
 // The simulation has built a scene posted after `before` loads and shows its first frame.
 inline bool loadedAfter(jl::ui::SimController* c, std::uint64_t before) {
-    return waitForStatus(c, [before](const jl::ui::SimStatus& s) { return s.loadSerial > before && s.frame && s.failure.empty(); });
+    return waitForStatus(
+        c, [before](const jl::ui::SimStatus& s) { return s.loadSerial > before && s.frame && s.failure.empty(); });
 }
 
 // A capture may come back with a frame drawn just before the latest changes

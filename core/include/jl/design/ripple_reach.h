@@ -15,16 +15,16 @@
 namespace jl {
 
 struct RippleReach {
-    int hinges = 0;                    // N - 1
-    int reached = 0;                   // hinges 1..reached flipped in order
-    std::vector<double> flipTimes;     // s, first flip of hinges 1..reached
-    double meanTimeBetweenFlips = 0;   // s; 0 with fewer than two flips
-    int flipsElsewhere = 0;            // hinges below the ripple that flipped meanwhile
-    int events = 0;                    // every hinge event of the run
-    int quickRow = 0;                  // chatter: the most quick cycles of one hinge in a row
-    double until = 0;                  // s, how long the run was
-    bool whole = true;                 // false: stopped before rippleRunTime (a first look)
-    std::string failure;               // the engine's, if the run stopped
+    int hinges = 0;                   // N - 1
+    int reached = 0;                  // hinges 1..reached flipped in order
+    std::vector<double> flipTimes;    // s, first flip of hinges 1..reached
+    double meanTimeBetweenFlips = 0;  // s; 0 with fewer than two flips
+    int flipsElsewhere = 0;           // hinges below the ripple that flipped meanwhile
+    int events = 0;                   // every hinge event of the run
+    int quickRow = 0;                 // chatter: the most quick cycles of one hinge in a row
+    double until = 0;                 // s, how long the run was
+    bool whole = true;                // false: stopped before rippleRunTime (a first look)
+    std::string failure;              // the engine's, if the run stopped
     bool cancelled = false;
 };
 

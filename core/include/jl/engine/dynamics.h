@@ -51,8 +51,8 @@ public:
 private:
     PinSolver solver_;
     Eigen::VectorXd force_, lambda_;
-    std::vector<size_t> heldPins_;         // pins with exactly one held side
-    std::uint64_t heldPinsRevision_ = 0;   // the World::revision they were listed for
+    std::vector<size_t> heldPins_;        // pins with exactly one held side
+    std::uint64_t heldPinsRevision_ = 0;  // the World::revision they were listed for
     // force_ holds the weights of the world with this revision and gravity
     // (0: it may hold other forces).
     std::uint64_t weightsRevision_ = 0;

@@ -14,7 +14,7 @@ struct MotionStep {
 
 // On failure (NaN, or a projection that does not converge) the world is left
 // exactly as it was before the step. `atStart`: as for Stepper::advance.
-MotionStep advanceAndProject(World& w, Dynamics& d, Stepper& s, double t, double h, Ledger& ledger,
-                             double tolerance, bool exact = false, const Powers* atStart = nullptr);
+MotionStep advanceAndProject(World& w, Dynamics& d, Stepper& s, double t, double h, Ledger& ledger, double tolerance,
+                             bool exact = false, const Powers* atStart = nullptr);
 
 }  // namespace jl

@@ -95,8 +95,8 @@ public:
 private:
     struct PinRow {
         int bodyA, bodyB;
-        bool dynA, dynB;   // has finite mass
-        Vec2 rA, rB;       // world arms
+        bool dynA, dynB;  // has finite mass
+        Vec2 rA, rB;      // world arms
     };
     struct WeldRow {
         int bodyA, bodyB;
@@ -144,8 +144,8 @@ private:
     Eigen::VectorXd rhs_, jv_;   // accelerations() off the chains' sweeps
     std::vector<char> visited_;
     std::vector<int> sequence_;
-    std::vector<int> pathStart_;   // index into sequence_, plus a final end marker
-    std::vector<Link> links_;      // links_[i] joins sequence_[i] and sequence_[i+1]
+    std::vector<int> pathStart_;  // index into sequence_, plus a final end marker
+    std::vector<Link> links_;     // links_[i] joins sequence_[i] and sequence_[i+1]
     // S_i^{-1} and L_i = B_{i-1}^T S_{i-1}^{-1} per pin in path order (L_i from
     // the second pin of a path on); back substitution uses L_{i+1}^T = S_i^{-1} B_i.
     std::vector<Eigen::Matrix2d> invPivot_, lower_;

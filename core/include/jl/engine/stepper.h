@@ -24,9 +24,9 @@ struct Ledger {
 };
 
 struct StepOutcome {
-    double taken = 0;      // s, the step actually made (adaptive: <= asked)
-    int rejected = 0;      // adaptive trials thrown away
-    bool finite = true;    // false: a NaN or inf appeared; the world was restored
+    double taken = 0;    // s, the step actually made (adaptive: <= asked)
+    int rejected = 0;    // adaptive trials thrown away
+    bool finite = true;  // false: a NaN or inf appeared; the world was restored
     // Dormand-Prince or Verner asked to project (Stepper::advance's
     // projectionTolerance): their last stage is the end of the step
     // projected onto the pins, so the world holds the projected end, w.a
@@ -67,8 +67,8 @@ public:
 
 private:
     struct Tableau {
-        std::vector<double> c, b, e;           // e = b - b_embedded (adaptive only)
-        std::vector<std::vector<double>> a;    // lower triangle
+        std::vector<double> c, b, e;         // e = b - b_embedded (adaptive only)
+        std::vector<std::vector<double>> a;  // lower triangle
     };
     // Derived from a tableau for its Nystrom form (Stepper::attempt):
     // sum_j a_ij, (a a)_ik; (b a)_k and sum b; (e a)_k and sum e; the same
@@ -104,9 +104,9 @@ private:
     double next_ = 0;
     Tableau tableau_;
     Nystrom nystrom_;
-    std::vector<Eigen::VectorXd> kv_;        // stage accelerations
-    std::vector<Eigen::Vector3d> kl_;        // stage ledger rates
-    Powers endPowers_;                       // of the last stage, when it is the projected end
+    std::vector<Eigen::VectorXd> kv_;  // stage accelerations
+    std::vector<Eigen::Vector3d> kl_;  // stage ledger rates
+    Powers endPowers_;                 // of the last stage, when it is the projected end
     ProjectionResult endProjection_;
     Eigen::VectorXd q0_, v0_;
     // Rosenbrock: the tableau, stage increments and the step's matrix.
@@ -114,10 +114,10 @@ private:
     std::vector<Eigen::VectorXd> uq_, uv_;
     std::vector<Eigen::Vector3d> ul_;
     Eigen::VectorXd rq_, mask_, keep_, kept_, rest_, mu_, jmu_;
-    std::uint64_t maskRevision_ = 0;  // the World::revision mask_ was made for
+    std::uint64_t maskRevision_ = 0;             // the World::revision mask_ was made for
     std::vector<double> stiffness_;              // d(moment)/d(angle) per body, N m/rad
     std::vector<Eigen::Vector2d> stiffInverse_;  // (1/m', 1/I') per body
-    ScratchPinSolver stiff_;  // assembled at the start of every step
+    ScratchPinSolver stiff_;                     // assembled at the start of every step
 };
 
 }  // namespace jl

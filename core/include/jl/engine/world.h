@@ -25,16 +25,16 @@ using ParticleId = int;
 // Parts are never deleted, so a PartId stays valid for the world's lifetime.
 // Each part belongs to exactly one body, the unit the solver moves.
 struct Part {
-    double mass = 0;         // kg
-    double inertia = 0;      // kg m^2 about the part's centre (0 for a point)
-    Vec2 halfSize = Vec2::Zero(); // m, half length and half thickness (drawing)
-    double width = 0;        // m, out of the plane (drawing)
-    bool isPoint = false;    // a free particle: no orientation of its own
-    double linearDamping = 0;   // N s/m, air drag at the centre
-    double angularDamping = 0;  // N m s
-    int body = -1;           // current body
-    Pose inBody;             // this part's centre and angle in its body's frame
-    std::optional<Drive> drive; // held: the part follows this path
+    double mass = 0;               // kg
+    double inertia = 0;            // kg m^2 about the part's centre (0 for a point)
+    Vec2 halfSize = Vec2::Zero();  // m, half length and half thickness (drawing)
+    double width = 0;              // m, out of the plane (drawing)
+    bool isPoint = false;          // a free particle: no orientation of its own
+    double linearDamping = 0;      // N s/m, air drag at the centre
+    double angularDamping = 0;     // N m s
+    int body = -1;                 // current body
+    Pose inBody;                   // this part's centre and angle in its body's frame
+    std::optional<Drive> drive;    // held: the part follows this path
 };
 
 // A solver unit: one or more parts moving as one rigid body. The body's frame
@@ -57,16 +57,16 @@ struct Attachment {
 // A particle of the paper: a point on one part, or shared by several parts
 // (a hinge), or absorbed into another particle by combine.
 struct Particle {
-    std::vector<Attachment> at;      // where it is; all attachments coincide
-    ParticleId mergedInto = -1;      // >= 0 while absorbed by combine
-    std::vector<ParticleId> absorbed; // stack of combined particles, for separate
+    std::vector<Attachment> at;        // where it is; all attachments coincide
+    ParticleId mergedInto = -1;        // >= 0 while absorbed by combine
+    std::vector<ParticleId> absorbed;  // stack of combined particles, for separate
 };
 
 // A pin: the same point on two bodies (derived from shared particles).
 struct Pin {
     int bodyA = 0, bodyB = 0;
-    PartId partA = 0, partB = 0;  // the parts the shared point is on
-    Vec2 localA = Vec2::Zero(), localB = Vec2::Zero(); // in the body frames
+    PartId partA = 0, partB = 0;                        // the parts the shared point is on
+    Vec2 localA = Vec2::Zero(), localB = Vec2::Zero();  // in the body frames
     ParticleId particle = -1;
 };
 
@@ -126,8 +126,8 @@ public:
     // ---- building ----
     // A box of in-plane size `size` (extent along its local x and y) and
     // out-of-plane `width`; inertia from the box unless given.
-    PartId addBox(double mass, const Vec2& size, double width, const Pose& pose,
-                  const Twist& velocity = {}, std::optional<double> inertia = {});
+    PartId addBox(double mass, const Vec2& size, double width, const Pose& pose, const Twist& velocity = {},
+                  std::optional<double> inertia = {});
     PartId addPoint(double mass, const Vec2& position, const Vec2& velocity = Vec2::Zero());
     ParticleId addParticle(PartId part, const Vec2& local);  // a point on a part
     ParticleId anchor(const Vec2& worldPoint);               // a point on the ground
@@ -215,7 +215,7 @@ public:
     const std::vector<unsigned char>& kinematicFlags() const;
     const Eigen::VectorXd& weights() const;
     const Eigen::VectorXd& coordinateParts() const;
-    const std::vector<Weld>& welds() const; // empty unless weld mode; with pins()
+    const std::vector<Weld>& welds() const;  // empty unless weld mode; with pins()
     // Constraint rows: 2 per pin, then 1 per weld.
     int constraintRows() const { return int(2 * pins().size() + welds().size()); }
 
@@ -244,7 +244,7 @@ public:
     Vec2 pointVelocity(PartId p, const Vec2& local) const;
     Vec2 particlePosition(ParticleId p) const;
     Vec2 particleVelocity(ParticleId p) const;
-    void setPartState(PartId p, const Pose& pose, const Twist& velocity); // moves its body
+    void setPartState(PartId p, const Pose& pose, const Twist& velocity);  // moves its body
     // Gives every dynamic body the momentum of its parts at these velocities
     // (one per part; the ground's ignored): a plastic merge of each body.
     void setPartVelocities(const std::vector<Twist>& velocities);
@@ -325,7 +325,6 @@ private:
     long long structureVersion_ = 0;
     std::uint64_t revision_ = freshRevision();
     bool weldRigidPairs_ = false;
-
 };
 
 }  // namespace jl

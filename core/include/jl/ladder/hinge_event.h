@@ -18,17 +18,17 @@ const char* toString(EventKind k);  // "lock", "unlock", "fold", "unfold", "flip
 
 // Something that happened, at its located time.
 struct Event {
-    double time = 0;       // s
+    double time = 0;  // s
     EventKind kind = EventKind::Lock;
-    int hinge = -1;        // ladder hinge j (between blocks j-1 and j), or -1
-    int corner = -1;       // the hinge corner after the event
-    std::string text;      // in words, for the event log
+    int hinge = -1;    // ladder hinge j (between blocks j-1 and j), or -1
+    int corner = -1;   // the hinge corner after the event
+    std::string text;  // in words, for the event log
 };
 
 struct HingeFrame {
     HingeMode mode = HingeMode::Free;
-    int corner = 0;         // k, the same number on both blocks
-    double foldAngle = 0;   // rad, phi of docs/model.md section 7
+    int corner = 0;                // k, the same number on both blocks
+    double foldAngle = 0;          // rad, phi of docs/model.md section 7
     Vec2 position = Vec2::Zero();  // m, the hinge point in the plane
 };
 

@@ -26,9 +26,9 @@ struct Hinge {
     // whole Zeno time and letting it go would not close it again at once.
     double releasedAt = -1e300;  // s, the last release
     bool held = false;
-    double releaseGap = 0;       // rad, <= 0: how far past the limit it left the pair read (projection noise)
-    double pullingSince = -1;    // s, when the held contact's force turned to pull (-1: it pushes)
-    int renewals = 0;            // trials in a row that kept it held: each doubles the wait for the next (8x at most)
+    double releaseGap = 0;     // rad, <= 0: how far past the limit it left the pair read (projection noise)
+    double pullingSince = -1;  // s, when the held contact's force turned to pull (-1: it pushes)
+    int renewals = 0;          // trials in a row that kept it held: each doubles the wait for the next (8x at most)
     // The hinge's own particles at each corner k of the upper (side 0) and
     // lower (side 1) block: a block's corner can be a hinge point of both
     // its hinges at once (after a flip both sit at one end), so no two
@@ -39,9 +39,9 @@ struct Hinge {
 // Contact forces of a locked or folded hinge (docs/model.md section 8.3), N,
 // positive = pushing block j away from block j-1.
 struct HingeContact {
-    double normal = 0;  // OPEN-LOCKED: N at corner k^2
-    double nearEnd = 0; // FOLDED: N_near at corner k (with the pin at k^1)
-    double farEnd = 0;  // FOLDED: N_far at corner k^1 (with the pin at k)
+    double normal = 0;   // OPEN-LOCKED: N at corner k^2
+    double nearEnd = 0;  // FOLDED: N_near at corner k (with the pin at k^1)
+    double farEnd = 0;   // FOLDED: N_far at corner k^1 (with the pin at k)
 };
 
 class Ladder {
@@ -202,8 +202,8 @@ private:
     bool bothHeld(const World& w, int j) const;  // the blocks of hinge j, each in a held body
     HingeContact split(const World& w, int j, const Wrench& on) const;
     void snap(World& w, int j, double target);
-    void join(World& w, int j, int k);     // combine the hinge's points at corner k
-    void part(World& w, int j, int k);     // separate them
+    void join(World& w, int j, int k);              // combine the hinge's points at corner k
+    void part(World& w, int j, int k);              // separate them
     void partStill(World& w, int first, int last);  // the still points of hinges first .. last
     void lock(World& w, int j);
     void fold(World& w, int j);

@@ -34,11 +34,11 @@ enum class StillTail { Joined, Separate };
 
 // Size and material of a block; every block of a ladder shares `length`.
 struct BlockSpec {
-    double length = 0.06;     // m, along the ladder
-    double thickness = 0.012; // m, in the plane, across the ladder
-    double width = 0.045;     // m, out of the plane (mass and drawing only)
-    double density = 600.0;   // kg/m^3, used when mass is not given
-    std::optional<double> mass; // kg, overrides density
+    double length = 0.06;        // m, along the ladder
+    double thickness = 0.012;    // m, in the plane, across the ladder
+    double width = 0.045;        // m, out of the plane (mass and drawing only)
+    double density = 600.0;      // kg/m^3, used when mass is not given
+    std::optional<double> mass;  // kg, overrides density
     Color color{};
     bool operator==(const BlockSpec&) const = default;
 };
@@ -53,9 +53,9 @@ struct BlockOverride {
 
 // Ribbons are drawn, never simulated.
 struct RibbonSpec {
-    double width = 0.008;      // m
-    double thickness = 0.0005; // m
-    double inset = 0.006;      // m, from the block's side edge to the ribbon
+    double width = 0.008;       // m
+    double thickness = 0.0005;  // m
+    double inset = 0.006;       // m, from the block's side edge to the ribbon
     Color color{40, 60, 140};
     bool visible = true;
     bool operator==(const RibbonSpec&) const = default;
@@ -71,10 +71,10 @@ struct HingeOptions {
 // Pose and velocity of one block (centre, angle counter-clockwise).
 struct BlockState {
     int block = 0;
-    Point2 position{0, 0};  // m
-    double angle = 0;       // rad
-    Point2 velocity{0, 0};  // m/s
-    double angularVelocity = 0; // rad/s
+    Point2 position{0, 0};       // m
+    double angle = 0;            // rad
+    Point2 velocity{0, 0};       // m/s
+    double angularVelocity = 0;  // rad/s
     bool operator==(const BlockState&) const = default;
 };
 
@@ -102,10 +102,10 @@ struct LadderSpec {
 // General scenes: rigid boxes, free particles, pins and springs.
 struct BodySpec {
     std::string name;
-    double length = 0.06, thickness = 0.012, width = 0.045; // m, a box
+    double length = 0.06, thickness = 0.012, width = 0.045;  // m, a box
     double density = 600.0;
-    std::optional<double> mass;    // kg
-    std::optional<double> inertia; // kg m^2 about the centre, else from the box
+    std::optional<double> mass;     // kg
+    std::optional<double> inertia;  // kg m^2 about the centre, else from the box
     Point2 position{0, 0};
     double angle = 0;
     Point2 velocity{0, 0};
@@ -138,9 +138,9 @@ struct PinSpec {
 
 struct SpringSpec {
     PointRef a, b;
-    double stiffness = 100.0;           // N/m
-    std::optional<double> restLength;   // m, else the initial distance
-    double damping = 0.0;               // N s/m
+    double stiffness = 100.0;          // N/m
+    std::optional<double> restLength;  // m, else the initial distance
+    double damping = 0.0;              // N s/m
     bool operator==(const SpringSpec&) const = default;
 };
 
@@ -173,7 +173,7 @@ struct DragRecord {
         bool operator==(const Sample&) const = default;
     };
     std::vector<Sample> samples;
-    double end = 0;      // s, the release
+    double end = 0;  // s, the release
     bool operator==(const DragRecord&) const = default;
 };
 
@@ -182,8 +182,8 @@ struct SolverSpec {
     // s, fixed-step integrators' step and the adaptive one's first try; 0:
     // chosen by the engine (at most 1 ms, within the stability limit).
     double step = 0;
-    double tolerance = 1e-8;            // adaptive integrator's local error tolerance
-    double projectionTolerance = 1e-10; // m, constraint residual after projection
+    double tolerance = 1e-8;             // adaptive integrator's local error tolerance
+    double projectionTolerance = 1e-10;  // m, constraint residual after projection
     EventPolicy events = EventPolicy::Located;
     double eventTolerance = 1e-9;       // s, located events
     double frameInterval = 1.0 / 60.0;  // s, output frames
@@ -193,8 +193,8 @@ struct SolverSpec {
 };
 
 struct ViewSpec {
-    Point2 target{0, -0.15};   // m, where the camera looks (in the ladder plane)
-    double distance = 0.8;     // m
+    Point2 target{0, -0.15};  // m, where the camera looks (in the ladder plane)
+    double distance = 0.8;    // m
     // degrees. Three-quarter by default, so the faces, the ribbons and the
     // zig-zag all show; yaw 0 looks at the ladder edge-on.
     double yaw = 35, pitch = 10;
@@ -209,10 +209,10 @@ struct Scene {
     std::vector<ParticleSpec> particles;
     std::vector<PinSpec> pins;
     std::vector<SpringSpec> springs;
-    Point2 gravity{0, -9.81};      // m/s^2
-    double linearDamping = 0.0;    // N s/m per block
-    double angularDamping = 0.0;   // N m s per block
-    double duration = 5.0;         // s, suggested run length (the timeline)
+    Point2 gravity{0, -9.81};     // m/s^2
+    double linearDamping = 0.0;   // N s/m per block
+    double angularDamping = 0.0;  // N m s per block
+    double duration = 5.0;        // s, suggested run length (the timeline)
     SolverSpec solver{};
     std::vector<ScriptAction> script;
     std::vector<DragRecord> drags;

@@ -69,7 +69,8 @@ inline constexpr NumberField<SolverSpec> kSolverNumbers[] = {
      "fixed step; the first try of the adaptive one. Left out, the engine chooses it: at most 1 ms, and short "
      "enough to stay stable on long ladders (docs/model.md section 6.3)"},
     {"tolerance", &SolverSpec::tolerance, "", range::tolerance,
-     "local error tolerance of the adaptive `dormand_prince45`, `verner65` and `rosenbrock_w` (below 1e-14 the rounding of the state alone exceeds it)"},
+     "local error tolerance of the adaptive `dormand_prince45`, `verner65` and `rosenbrock_w` (below 1e-14 the "
+     "rounding of the state alone exceeds it)"},
     {"projection_tolerance", &SolverSpec::projectionTolerance, "m", range::projectionTolerance,
      "constraint residual after projection"},
     {"event_tolerance", &SolverSpec::eventTolerance, "s", range::eventTolerance, "time accuracy of located events"},
@@ -141,7 +142,7 @@ inline std::string_view integratorWord(Integrator i) { return wordOf<Integrator>
 // page holds each between `<!-- fields: SECTION -->` and
 // `<!-- end fields -->`; a test checks that it is current.
 inline constexpr std::string_view kDocumentedSections[] = {"ladder.block", "ladder.ribbons", "ladder.hinges",
-                                                           "damping", "solver", "view"};
+                                                           "damping",      "solver",         "view"};
 std::string fieldTable(std::string_view section);
 // `page` with every generated table replaced by the current one.
 std::string withCurrentFieldTables(const std::string& page);

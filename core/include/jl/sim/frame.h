@@ -12,9 +12,9 @@
 namespace jl {
 
 struct EnergyFrame {
-    double kinetic = 0, potential = 0;          // J
-    double heldWork = 0, userWork = 0;          // J, done on the ladder since t = 0
-    double impactLoss = 0, dampingLoss = 0;     // J, dissipated since t = 0 (>= 0)
+    double kinetic = 0, potential = 0;       // J
+    double heldWork = 0, userWork = 0;       // J, done on the ladder since t = 0
+    double impactLoss = 0, dampingLoss = 0;  // J, dissipated since t = 0 (>= 0)
     double total() const { return kinetic + potential; }
     // E(0) + W_held + W_user - D_impacts - D_damping: equals total() when the books balance.
     double initial = 0;
@@ -34,10 +34,10 @@ struct SolverFrame {
     bool adaptiveStep = false;
     double smallestStep = 0, largestStep = 0;  // s
     int stepHalvings = 0;
-    double residual = 0;           // m, largest pin gap after the last step
-    int bodies = 0, pins = 0;      // unknowns in use (locked pairs are one body)
-    int stillFrom = -1;            // the first block of the still tail (docs/model.md section 3.7); -1: none
-    double wallSeconds = 0;        // spent simulating so far
+    double residual = 0;       // m, largest pin gap after the last step
+    int bodies = 0, pins = 0;  // unknowns in use (locked pairs are one body)
+    int stillFrom = -1;        // the first block of the still tail (docs/model.md section 3.7); -1: none
+    double wallSeconds = 0;    // spent simulating so far
 };
 
 // Evenly spaced instants: origin + k every for every whole k (s).
@@ -50,17 +50,17 @@ struct FrameGrid {
 };
 
 struct Frame {
-    double time = 0;                  // s
-    std::vector<Pose> poses;          // every block (ladder), then every box and particle (general scene), in scene order
-    std::vector<bool> held;           // per block
-    std::vector<HingeFrame> hinges;   // ladder: hinges[j-1] is hinge j
+    double time = 0;          // s
+    std::vector<Pose> poses;  // every block (ladder), then every box and particle (general scene), in scene order
+    std::vector<bool> held;   // per block
+    std::vector<HingeFrame> hinges;  // ladder: hinges[j-1] is hinge j
     std::vector<RibbonFrame> ribbons;
     EnergyFrame energy;
     SolverFrame solver;
-    std::vector<Event> events;        // since the previous frame
-    bool dragging = false;            // the mouse spring, for drawing
+    std::vector<Event> events;  // since the previous frame
+    bool dragging = false;      // the mouse spring, for drawing
     Vec2 dragFrom = Vec2::Zero(), dragTo = Vec2::Zero();
-    std::string failure;              // non-empty: the run stopped; this is the last good state
+    std::string failure;  // non-empty: the run stopped; this is the last good state
 };
 
 }  // namespace jl

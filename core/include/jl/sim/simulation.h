@@ -170,7 +170,7 @@ private:
     double t_ = 0;
     double initialEnergy_ = 0;
     double initialKinetic_ = 0, initialPotential_ = 0;  // after the inputs at t = 0
-    double energyFloor_ = 0;  // J, the least energy scale of the blow-up check
+    double energyFloor_ = 0;                            // J, the least energy scale of the blow-up check
     double impactLoss_ = 0, impactHeldWork_ = 0;
     size_t nextAction_ = 0;
     std::vector<size_t> nextDragSample_;
@@ -179,9 +179,9 @@ private:
     std::string failure_;
     SolverFrame stats_;
     double lastResidual_ = 0;
-    double stepScale_ = 1;  // automatic step: halved after each step that blew up
+    double stepScale_ = 1;      // automatic step: halved after each step that blew up
     double imbalanceBase_ = 0;  // J, the books' imbalance at the last halving (the check watches growth past it)
-    bool trial_ = false;  // inside tryLettingGo: holds are not settled
+    bool trial_ = false;        // inside tryLettingGo: holds are not settled
     // The state a trial started from, copied into the same storage each time:
     // a fresh copy of the world allocated every body's list of parts anew
     // (a tenth of a run that chatters).
@@ -190,12 +190,12 @@ private:
     Eigen::VectorXd stepStartQ_, stepStartV_;  // the state the step started from
     Ledger stepStartLedger_;
     std::vector<double> eventValues_;
-    Powers lastPowers_;  // of smallestEventFunction's evaluation
+    Powers lastPowers_;         // of smallestEventFunction's evaluation
     std::vector<int> crossed_;  // locateEvent: the event functions past their event at the step's end
     StepInterpolant interpolant_;
     FrameGrid grid_;
-    double gridDoneUpTo_ = 0;         // s, grid frames are emitted after this time
-    std::vector<Frame> gridFrames_;   // emitted, not yet taken
+    double gridDoneUpTo_ = 0;        // s, grid frames are emitted after this time
+    std::vector<Frame> gridFrames_;  // emitted, not yet taken
 };
 
 }  // namespace jl
