@@ -17,6 +17,7 @@
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QSvgGenerator>
+#include <QThread>
 #include <QThreadPool>
 #include <QTimer>
 #include <QUndoCommand>
@@ -100,6 +101,18 @@ const AxisShown& axisShown(jl::DesignParameter p) {
     for (const AxisShown& a : axesShown())
         if (a.parameter == p) return a;
     return axesShown().front();
+}
+
+QThreadPool* designPool() {
+    // Qt's own painting (image scaling and conversion in the raster engine)
+    // splits its work over the global pool and waits for it: a map that
+    // filled that pool with minute-long runs froze every repaint behind them.
+    static QThreadPool* pool = [] {
+        auto* p = new QThreadPool;  // lives as long as the program; its runs stop by their flag
+        p->setMaxThreadCount(QThread::idealThreadCount());
+        return p;
+    }();
+    return pool;
 }
 
 DesignMap::DesignMap(Document* doc, QWidget* parent) : QDialog(parent), doc_(doc) {
@@ -323,9 +336,9 @@ void DesignMap::compute() {
     stop_ = std::make_shared<std::atomic<bool>>(false);
     running_ = true;
     // One engine per run; the runs share nothing but the flag that stops them.
-    watcher_.setFuture(
-        QtConcurrent::mapped(QThreadPool::globalInstance(), std::move(designs),
-                             [stop = stop_](const jl::Scene& d) { return jl::firstRippleReach(d, stop.get()); }));
+    watcher_.setFuture(QtConcurrent::mapped(designPool(), std::move(designs), [stop = stop_](const jl::Scene& d) {
+        return jl::firstRippleReach(d, stop.get());
+    }));
     updateStatus();
 }
 
@@ -362,9 +375,7 @@ void DesignMap::updateStatus() {
     computeButton_->setEnabled(!running_ && shown < cells);
     QString s = tr("%1 of %2 designs simulated").arg(shown).arg(cells);
     if (running_)
-        s += tr(", %1 running on %2 threads")
-                 .arg(int(pending_.size()) - done_)
-                 .arg(QThreadPool::globalInstance()->maxThreadCount());
+        s += tr(", %1 running on %2 threads").arg(int(pending_.size()) - done_).arg(designPool()->maxThreadCount());
     else if (shown < cells)
         s += tr(": Compute simulates the rest");
     status_->setText(s + tr(". Each cell is the ladder being edited (framed when on the map) with two values changed, "

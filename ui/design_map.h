@@ -20,6 +20,7 @@ class QDoubleSpinBox;
 class QLabel;
 class QProgressBar;
 class QPushButton;
+class QThreadPool;
 class QTimer;
 
 namespace jl::ui {
@@ -39,6 +40,10 @@ struct AxisShown {
 };
 const std::vector<AxisShown>& axesShown();
 const AxisShown& axisShown(jl::DesignParameter p);
+
+// The threads that run the design map's cells, apart from Qt's global pool
+// (which the painting of every widget relies on) and from the live estimate's.
+QThreadPool* designPool();
 
 class DesignMap : public QDialog {
     Q_OBJECT
