@@ -9,7 +9,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 source tools/setup.sh
-jl_install
+jl_install "${JL_TEST_PACKAGES[@]}"
 jl_build build
 
 xvfb() { xvfb-run -a -s "-screen 0 1600x1000x24" "$@"; }

@@ -6,18 +6,23 @@ set -euo pipefail
 JL_PACKAGES=(build-essential cmake ninja-build qt6-base-dev qt6-3d-dev
   libqt6opengl6-dev qt6-charts-dev qt6-svg-dev libeigen3-dev libyaml-cpp-dev
   libgl1-mesa-dev xvfb xauth)
+# What only ./test.sh needs: a window manager and xwininfo for the window's
+# fit on the screen, clang-format for the house style.
+JL_TEST_PACKAGES=(openbox x11-utils clang-format)
 
+# jl_missing_packages [more packages...]: those of JL_PACKAGES and the more not installed.
 jl_missing_packages() {
   local missing=()
-  for p in "${JL_PACKAGES[@]}"; do
+  for p in "${JL_PACKAGES[@]}" "$@"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
   done
   echo "${missing[@]:-}"
 }
 
+# jl_install [more packages...]
 jl_install() {
   local missing
-  missing=$(jl_missing_packages)
+  missing=$(jl_missing_packages "$@")
   [ -z "$missing" ] && return 0
   if [ "$(id -u)" -eq 0 ]; then
     echo "Installing: $missing"

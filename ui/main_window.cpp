@@ -22,6 +22,7 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QMoveEvent>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
@@ -579,6 +580,19 @@ void MainWindow::showEvent(QShowEvent* e) {
     if (!arrangeOnShow_) return;
     arrangeOnShow_ = false;
     QTimer::singleShot(0, this, &MainWindow::arrangeDocks);
+}
+
+// A window manager frames the window only after it is shown, so the fit made
+// before (readSettings) counted no title bar, and the status bar ended below
+// the screen's edge. The frame's arrival moves the window: fit it again then,
+// once for each new frame, so that a window the user moved or sized later is
+// left alone.
+void MainWindow::moveEvent(QMoveEvent* e) {
+    QMainWindow::moveEvent(e);
+    const QSize frame = frameGeometry().size() - size();
+    if (frame == framedBy_) return;
+    framedBy_ = frame;
+    QTimer::singleShot(0, this, [this] { fitToScreen(this); });
 }
 
 void MainWindow::arrangeDocks() {

@@ -59,6 +59,7 @@ public:
 protected:
     void closeEvent(QCloseEvent* e) override;
     void showEvent(QShowEvent* e) override;
+    void moveEvent(QMoveEvent* e) override;
     void dragEnterEvent(QDragEnterEvent* e) override;
     void dropEvent(QDropEvent* e) override;
 
@@ -74,6 +75,7 @@ private:
     void showControls();
     void readSettings();
     void arrangeDocks();
+    QSize framedBy_;              // what the window manager's frame adds, when the window was last fitted to its screen
     bool arrangeOnShow_ = false;  // no saved arrangement: the first show makes the default one
     void writeSettings() const;
 
