@@ -456,6 +456,13 @@ void MainWindow::loadIntoSimulation() {
 void MainWindow::onSceneChanged(SceneChange change) {
     const jl::Scene& scene = doc_->scene();
     if (change == SceneChange::Text) return;  // words: the panels that show them follow the document
+    if (change == SceneChange::Duration) {
+        // Only where the lesson ends: the motion is the same, nothing runs again.
+        timeline_->setDuration(scene.duration);
+        simulationPanel_->refresh();
+        sim_->setDuration(scene.duration);
+        return;
+    }
     if (change == SceneChange::Drags) {
         // Drags the running simulation recorded itself need no rebuild.
         const auto s = sim_->shown();

@@ -4,9 +4,9 @@
 
 namespace jl::ui {
 
-enum class SceneChange { Whole, Ladder, Solver, Script, Drags, Text };
+enum class SceneChange { Whole, Ladder, Solver, Script, Drags, Text, Duration };
 
 // Commands with the same id and the same field key merge (a spin-box drag is one undo step).
-enum class UndoId { LadderValue = 1, SolverValue, ScriptTable, RecordDrag, Description };
+enum class UndoId { LadderValue = 1, SolverValue, ScriptTable, RecordDrag, Description, Duration };
 
 }  // namespace jl::ui

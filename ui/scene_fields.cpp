@@ -74,6 +74,19 @@ NumberField automaticStepField() {
     return f;
 }
 
+// The scene's length: where the lesson stops playing and the timeline ends
+// (Play at the end goes on). The range's open end at 0 is the form's 1 ms.
+NumberField durationField() {
+    NumberField f;
+    f.key = "duration", f.label = tr("Duration"), f.unit = "s";
+    f.tip = tr("How long the scene plays before it pauses; the timeline spans it. Play at the end goes on.");
+    f.min = 0.001, f.max = jl::range::duration.hi, f.scale = 1, f.decimals = 3;
+    f.change = SceneChange::Duration;
+    f.get = [](const jl::Scene& s) { return s.duration; };
+    f.set = [](jl::Scene& s, double v) { s.duration = v; };
+    return f;
+}
+
 }  // namespace
 
 void setBlockCount(jl::LadderSpec& ladder, int n) {
@@ -128,6 +141,7 @@ std::vector<NumberField> ladderNumberFields() {
 std::vector<NumberField> solverNumberFields() {
     using S = jl::SolverSpec;
     return {
+        durationField(),
         automaticStepField(),
         solverNumber("tolerance", tr("Error tolerance"), "",
                      tr("Local error allowed per step by the adaptive integrator."), within(jl::range::tolerance, 1), 1,
@@ -159,7 +173,13 @@ void changeNumber(Document* doc, const NumberField& f, double si) {
     jl::Scene copy = doc->scene();
     f.set(copy, si);
     const QString text = QCoreApplication::translate("SceneFields", "Change %1").arg(f.label.toLower());
-    if (f.change == SceneChange::Solver)
+    if (f.change == SceneChange::Duration)
+        changeScene(doc,
+                    SceneField<double>{UndoId::Duration, f.key, SceneChange::Duration,
+                                       [](const jl::Scene& s) { return s.duration; },
+                                       [](jl::Scene& s, const double& v) { s.duration = v; }},
+                    copy.duration, text);
+    else if (f.change == SceneChange::Solver)
         changeScene(doc, solverField(f.key), copy.solver, text);
     else if (copy.ladder)
         changeScene(doc, ladderField(f.key), *copy.ladder, text);

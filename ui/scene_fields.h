@@ -30,7 +30,7 @@ struct NumberField {
 };
 
 std::vector<NumberField> ladderNumberFields();
-std::vector<NumberField> solverNumberFields();
+std::vector<NumberField> solverNumberFields();  // the Simulation panel's: the scene's duration, then the solver's
 
 // The whole sub-spec is what an edit stores, so side effects (dropping
 // overrides past a new block count) undo exactly.

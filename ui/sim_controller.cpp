@@ -52,6 +52,7 @@ void SimController::restart() { worker_->post(cmd::Restart{}); }
 void SimController::seek(double time) { worker_->post(cmd::Seek{time}); }
 void SimController::showInstant(double time) { worker_->post(cmd::ShowInstant{time}); }
 void SimController::setSpeed(double factor) { worker_->post(cmd::Speed{factor}); }
+void SimController::setDuration(double seconds) { worker_->post(cmd::Duration{seconds}); }
 void SimController::setMemoryBudget(std::size_t bytes) { worker_->post(cmd::Budget{bytes}); }
 void SimController::beginDrag(const jl::Vec2& point, int block, const jl::Vec2& local, double shownTime) {
     worker_->post(cmd::DragBegin{point, block, local, shownTime});

@@ -33,7 +33,8 @@ public:
     void seek(double time);  // s; beyond the head it simulates up to there
     // The state at exactly `time` (an event's instant), between two frames.
     void showInstant(double time);
-    void setSpeed(double factor);  // 0.01 .. 4
+    void setSpeed(double factor);      // 0.01 .. 4
+    void setDuration(double seconds);  // the scene's length, where playing stops
     void setMemoryBudget(std::size_t bytes);
     // The mouse spring: `point` and `target` lie in the ladder's plane (m).
     // A push on `block` at `local` (its own frame), as the view found it in

@@ -101,8 +101,9 @@ void SimWorker::apply(const SimCommand& c) {
             using T = std::decay_t<decltype(v)>;
             // Frames asked for one by one: a new way to go cancels those not yet made.
             if constexpr (!std::is_same_v<T, cmd::StepForward> && !std::is_same_v<T, cmd::Speed> &&
-                          !std::is_same_v<T, cmd::Budget> && !std::is_same_v<T, cmd::DragMove> &&
-                          !std::is_same_v<T, cmd::DragEnd> && !std::is_same_v<T, cmd::DragBegin>)
+                          !std::is_same_v<T, cmd::Budget> && !std::is_same_v<T, cmd::Duration> &&
+                          !std::is_same_v<T, cmd::DragMove> && !std::is_same_v<T, cmd::DragEnd> &&
+                          !std::is_same_v<T, cmd::DragBegin>)
                 framesWanted_ = 0;
             if constexpr (std::is_same_v<T, cmd::Load> || std::is_same_v<T, cmd::Seek> ||
                           std::is_same_v<T, cmd::ShowInstant> || std::is_same_v<T, cmd::DragBegin>) {
@@ -132,6 +133,9 @@ void SimWorker::apply(const SimCommand& c) {
             } else if constexpr (std::is_same_v<T, cmd::Speed>) {
                 speed_ = std::clamp(v.factor, 0.01, 4.0);
                 rebasePace();
+            } else if constexpr (std::is_same_v<T, cmd::Duration>) {
+                duration_ = v.seconds;
+                if (cursor_ * history_.interval() < duration_ - 1e-9) stoppedAtEnd_ = false;
             } else if constexpr (std::is_same_v<T, cmd::Budget>) {
                 budget_ = v.bytes;
                 history_.setBudget(v.bytes);
@@ -292,7 +296,9 @@ void SimWorker::apply(const cmd::DragBegin& c) {
 
 void SimWorker::play() {
     if (!sim_ || !failure_.empty()) return;
-    if (cursor_ * history_.interval() < duration_ - 1e-9) stoppedAtEnd_ = false;  // it will stop there again
+    // Before the scene's end, playing stops there again; at or past it (the
+    // lesson ended, or an edit re-ran the scene up to its end) Play goes on.
+    stoppedAtEnd_ = !(cursor_ * history_.interval() < duration_ - 1e-9);
     playing_ = true;
     rebasePace();
 }

@@ -41,6 +41,10 @@ struct Speed {
 struct Budget {
     std::size_t bytes;
 };
+// The scene's length changed: where playing stops, nothing to simulate again.
+struct Duration {
+    double seconds;
+};
 // A push at `point`: on `block` (-1: the block there, picked in the worker's
 // state) at `local` in its frame, in the frame of time `shownTime` that the
 // window showed at the press (negative: the frame the worker is at).
@@ -57,9 +61,9 @@ struct DragEnd {};
 struct Quit {};
 }  // namespace cmd
 
-using SimCommand =
-    std::variant<cmd::Load, cmd::Play, cmd::Pause, cmd::StepForward, cmd::StepBack, cmd::Restart, cmd::Seek,
-                 cmd::ShowInstant, cmd::Speed, cmd::Budget, cmd::DragBegin, cmd::DragMove, cmd::DragEnd, cmd::Quit>;
+using SimCommand = std::variant<cmd::Load, cmd::Play, cmd::Pause, cmd::StepForward, cmd::StepBack, cmd::Restart,
+                                cmd::Seek, cmd::ShowInstant, cmd::Speed, cmd::Budget, cmd::Duration, cmd::DragBegin,
+                                cmd::DragMove, cmd::DragEnd, cmd::Quit>;
 
 class SimWorker {
 public:

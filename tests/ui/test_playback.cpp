@@ -10,6 +10,8 @@
 #include <QMessageBox>
 #include <QRegularExpression>
 #include <QTimer>
+#include <QToolBar>
+#include <QUndoStack>
 #include <QtTest>
 
 #include <cmath>
@@ -376,6 +378,49 @@ private slots:
         QVERIFY2(std::abs(end->frame->time - 0.5) <= end->interval, qPrintable(QString::number(end->frame->time)));
         f.sim->play();
         QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.frame && s.frame->time > 0.6; }));
+    }
+
+    // At the scene's end, an edit runs the scene again up to there; one click
+    // on Play then goes on (it took two: the first stopped at the end again).
+    // The duration has a field of its own, and changing it runs nothing again.
+    void anEditAtTheEndThenOneClickOnPlayGoesOn() {
+        jl::Scene scene = jl::test::swingingLadder();
+        scene.duration = 0.5;
+        Fixture f(scene);
+        f.window.setSpeed(4.0);
+        f.sim->play();
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.frame && s.frame->time > 0.1; }));
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return !s.playing; }));
+        const auto before = f.editThickness(14);
+        QVERIFY(jl::test::loadedAfter(f.sim, before));
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) {
+            return s.frame && std::abs(s.frame->time - 0.5) <= s.interval && s.seekingTo < 0;
+        }));
+        auto* bar = f.window.findChild<QToolBar*>("mainToolBar");
+        QVERIFY(bar);
+        QAction* play = nullptr;
+        for (QAction* a : bar->actions())
+            if (a->text() == "&Play") play = a;
+        QVERIFY(play);
+        QTest::mouseClick(bar->widgetForAction(play), Qt::LeftButton);
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.frame && s.frame->time > 0.6; }));
+
+        // The duration, typed into its field: one undo step, the lesson now ends at 1.2 s.
+        auto* field = f.window.findChild<QDoubleSpinBox*>("duration");
+        QVERIFY(field);
+        const auto loads = jl::test::loadsSoFar(f.sim);
+        field->selectAll();
+        QTest::keyClicks(field, "1.2");
+        QTest::keyClick(field, Qt::Key_Return);
+        QCOMPARE(f.window.document()->scene().duration, 1.2);
+        QCOMPARE(f.window.document()->undoStack()->undoText(), QString("Change duration"));
+        QTest::qWait(200);
+        QCOMPARE(jl::test::loadsSoFar(f.sim), loads);  // nothing ran again
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return !s.playing; }));
+        const auto end = f.sim->status();
+        QVERIFY2(std::abs(end->frame->time - 1.2) <= end->interval, qPrintable(QString::number(end->frame->time)));
+        f.window.document()->undoStack()->undo();
+        QCOMPARE(f.window.document()->scene().duration, 0.5);
     }
 
     void aFailedSolvePausesAndSaysWhyWithTheLastGoodFrame() {
