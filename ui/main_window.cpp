@@ -381,7 +381,7 @@ void MainWindow::createTeaching() {
     menuBar()->insertMenu(helpMenu_->menuAction(), teaching_->lessonsMenu());
     menuBar()->insertMenu(helpMenu_->menuAction(), teaching_->teachMenu());
     // In presentation mode the views stay; the editing panels go.
-    presentation_ = new PresentationMode(this, {side, teaching_->plotsDock(), teaching_->lessonDock()});
+    presentation_ = new PresentationMode(this, {side, teaching_->plotsDock(), teaching_->lessonDock()}, playAct_);
     connect(teaching_->presentationAction(), &QAction::triggered, presentation_, &PresentationMode::toggle);
     connect(presentation_, &PresentationMode::activeChanged, teaching_->presentationAction(), &QAction::setChecked);
     connect(presentation_, &PresentationMode::activeChanged, teaching_, &TeachingDocks::setLarge);

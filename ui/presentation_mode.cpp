@@ -3,7 +3,9 @@
 #include "ui/screen_fit.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QDockWidget>
+#include <QKeyEvent>
 #include <QMainWindow>
 #include <QMenuBar>
 #include <QStatusBar>
@@ -12,8 +14,8 @@
 
 namespace jl::ui {
 
-PresentationMode::PresentationMode(QMainWindow* window, QList<QDockWidget*> keepDocks)
-    : QObject(window), window_(window), keepDocks_(std::move(keepDocks)) {
+PresentationMode::PresentationMode(QMainWindow* window, QList<QDockWidget*> keepDocks, QAction* play)
+    : QObject(window), window_(window), keepDocks_(std::move(keepDocks)), play_(play) {
     escape_ = new QAction(tr("Leave presentation mode"), this);
     escape_->setShortcut(Qt::Key_Escape);
     // The 3-D view is a window of its own inside ours: with the keyboard
@@ -53,10 +55,28 @@ void PresentationMode::enter() {
         if (!a->shortcuts().isEmpty() && !window_->actions().contains(a)) lifted_ << a;
     window_->addActions(lifted_);
     window_->addAction(escape_);
+    // In front of a class Space plays and pauses, even when the keyboard was
+    // left in a text field (which would take the space as a character).
+    qApp->installEventFilter(this);
+    if (QWidget* f = QApplication::focusWidget(); f && window_->isAncestorOf(f)) f->clearFocus();
     window_->showFullScreen();
 }
 
+bool PresentationMode::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() != QEvent::ShortcutOverride && event->type() != QEvent::KeyPress)
+        return QObject::eventFilter(watched, event);
+    const auto* key = static_cast<QKeyEvent*>(event);
+    if (key->key() != Qt::Key_Space || key->modifiers() != Qt::NoModifier) return false;
+    // Taken before any widget or shortcut sees it: the key press plays, once.
+    if (event->type() == QEvent::ShortcutOverride)
+        event->accept();
+    else if (!key->isAutoRepeat())
+        play_->trigger();
+    return true;
+}
+
 void PresentationMode::leave() {
+    qApp->removeEventFilter(this);
     window_->removeAction(escape_);
     for (QAction* a : lifted_) window_->removeAction(a);
     lifted_.clear();

@@ -17,8 +17,9 @@ namespace jl::ui {
 class PresentationMode : public QObject {
     Q_OBJECT
 public:
-    // `keepDocks`: the docks that stay in view (the rest hide).
-    PresentationMode(QMainWindow* window, QList<QDockWidget*> keepDocks);
+    // `keepDocks`: the docks that stay in view (the rest hide); `play`: what
+    // Space does while presenting, wherever the keyboard is.
+    PresentationMode(QMainWindow* window, QList<QDockWidget*> keepDocks, QAction* play);
 
     bool active() const { return active_; }
     void setActive(bool on);
@@ -29,6 +30,9 @@ public:
 signals:
     // Views and plots connect here to draw large (SideView scale, RunPlots::setLarge).
     void activeChanged(bool on);
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
     void enter();
@@ -43,6 +47,7 @@ private:
     QList<QPointer<QWidget>> hidden_;
     QList<QAction*> lifted_;
     QAction* escape_;  // Esc leaves, whatever has the focus
+    QAction* play_;    // Space plays or pauses, whatever has the focus
 };
 
 }  // namespace jl::ui

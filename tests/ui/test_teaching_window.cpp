@@ -293,6 +293,39 @@ private slots:
         QCOMPARE(f.teaching.sideView()->options().scale, 1.0);
     }
 
+    // In front of a class Space plays and pauses wherever the keyboard is:
+    // typed into a field, then F5, then Space plays (it used to land in the
+    // Plots dock's Hinges field, erasing it); a click into that field while
+    // presenting does not take Space either.
+    void spaceAlwaysPlaysWhilePresenting() {
+        Fixture f;
+        f.window.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&f.window));
+        auto* thickness = f.window.findChild<QDoubleSpinBox*>("thickness");
+        auto* hinges = f.window.findChild<QLineEdit*>("plotHinges");
+        QVERIFY(thickness && hinges);
+        const QString hingesBefore = hinges->text();
+        thickness->setFocus();
+        QTest::keyClick(thickness, Qt::Key_End);
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_F5);
+        QVERIFY(f.window.presentation()->active());
+        QWidget* focus = QApplication::focusWidget() ? QApplication::focusWidget() : &f.window;
+        QTest::keyClick(focus, Qt::Key_Space);
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.playing; }));
+        QCOMPARE(hinges->text(), hingesBefore);
+        QTest::mouseClick(hinges, Qt::LeftButton);
+        QTest::keyClick(QApplication::focusWidget() ? QApplication::focusWidget() : hinges, Qt::Key_Space);
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return !s.playing; }));
+        QCOMPARE(hinges->text(), hingesBefore);
+        QTest::keyClick(hinges, Qt::Key_Escape);
+        QVERIFY(!f.window.presentation()->active());
+        // Out of presentation mode a field takes its space again.
+        hinges->setFocus();
+        QTest::keyClick(hinges, Qt::Key_End);
+        QTest::keyClick(hinges, Qt::Key_Space);
+        QCOMPARE(hinges->text(), hingesBefore + " ");
+    }
+
     // A press on an event's mark in the timeline shows that event's instant
     // (the mark is the way a class finds "the moment block 3 locks"); a press
     // away from every mark shows the frame there, as before.
