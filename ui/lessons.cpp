@@ -1,6 +1,7 @@
 #include "ui/lessons.h"
 
 #include "jl/scene/scene_io.h"
+#include "ui/presentation_mode.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -94,7 +95,7 @@ void LessonPanel::showScene(const jl::Scene& scene) {
 
 void LessonPanel::setLarge(bool large) {
     QFont f = text_->font();
-    f.setPointSizeF(large ? 18 : QFont().pointSizeF());
+    f.setPointSizeF(large ? 18 * presentationSize(this) : QFont().pointSizeF());
     text_->setFont(f);
 }
 

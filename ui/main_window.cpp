@@ -397,7 +397,13 @@ void MainWindow::createTeaching() {
         }
         plotsHeightBefore_ = plots->height();
         QTimer::singleShot(0, this, [this, plots] {
-            if (presentation_->active()) resizeDocks({plots}, {std::max(plots->height(), height() / 3)}, Qt::Vertical);
+            if (!presentation_->active()) return;
+            resizeDocks({plots}, {std::max(plots->height(), height() / 3)}, Qt::Vertical);
+            // The 3-D view is what the class watches: the columns beside it
+            // get less than the desk layout gave (the lesson's words more
+            // than the side view's thread), and the view half the width.
+            resizeDocks({teaching_->lessonDock(), teaching_->sideViewDock()}, {width() * 3 / 10, width() / 5},
+                        Qt::Horizontal);
         });
     });
 }

@@ -8,9 +8,12 @@
 #include <QKeyEvent>
 #include <QMainWindow>
 #include <QMenuBar>
+#include <QScreen>
 #include <QStatusBar>
 #include <QTimer>
 #include <QToolBar>
+
+#include <algorithm>
 
 namespace jl::ui {
 
@@ -25,6 +28,12 @@ PresentationMode::PresentationMode(QMainWindow* window, QList<QDockWidget*> keep
     connect(escape_, &QAction::triggered, this, [this] { setActive(false); });
 }
 
+double presentationSize(const QWidget* w) {
+    const QScreen* screen = w ? w->screen() : nullptr;
+    const double height = screen ? screen->geometry().height() : 900;
+    return std::clamp(height / 900.0, 0.8, 1.0);
+}
+
 void PresentationMode::setActive(bool on) {
     if (on == active_) return;
     active_ = on;
@@ -36,7 +45,7 @@ void PresentationMode::enter() {
     windowState_ = window_->windowState();
     font_ = window_->font();
     QFont big = font_;
-    big.setPointSizeF(font_.pointSizeF() * kFontScale);
+    big.setPointSizeF(font_.pointSizeF() * kFontScale * presentationSize(window_));
     window_->setFont(big);
     hidden_.clear();
     QList<QWidget*> chrome{window_->menuBar(), window_->statusBar()};

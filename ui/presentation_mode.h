@@ -14,6 +14,11 @@ class QWidget;
 
 namespace jl::ui {
 
+// How large presentation mode draws on `w`'s screen, relative to a screen
+// 900 pixels high (0.8 on a 720-pixel projector, 1.2 on a 1080-pixel one):
+// large type that fits a small projector would be lost on a large one.
+double presentationSize(const QWidget* w);
+
 class PresentationMode : public QObject {
     Q_OBJECT
 public:
@@ -24,7 +29,8 @@ public:
     bool active() const { return active_; }
     void setActive(bool on);
     void toggle() { setActive(!active_); }
-    // Fonts in presentation mode are this many times the normal size.
+    // Fonts in presentation mode are this many times the normal size on a
+    // screen 900 pixels high (times presentationSize elsewhere).
     static constexpr double kFontScale = 1.6;
 
 signals:

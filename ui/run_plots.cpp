@@ -273,9 +273,10 @@ void RunPlots::refresh() {
     // The books in words: how far E strays from E0 + W - D over the whole run.
     double books = 0;
     for (double v : traces_.energy(EnergyTrace::Balance)) books = std::max(books, std::abs(v));
-    charts_[0]->chart()->setTitle(traces_.count() == 0
-                                      ? tr("Energy and its books")
-                                      : tr("Energy and its books (they balance to %1 J)").arg(books, 0, 'g', 2));
+    // In large type a third of a projector's width holds the short form.
+    charts_[0]->chart()->setTitle(traces_.count() == 0 ? tr("Energy and its books")
+                                  : large_             ? tr("Energy (books: %1 J)").arg(books, 0, 'g', 2)
+                                           : tr("Energy and its books (they balance to %1 J)").arg(books, 0, 'g', 2));
     charts_[0]->valueAxis()->setTitleText(energyScale_ == 1     ? tr("energy (J)")
                                           : energyScale_ == 1e3 ? tr("energy (mJ)")
                                                                 : tr("energy (µJ)"));
@@ -329,6 +330,8 @@ void RunPlots::resizeEvent(QResizeEvent* e) {
 }
 
 void RunPlots::setLarge(bool large) {
+    large_ = large;
+    dirty_ = true;
     alignPasses_ = 0;
     for (TimeChart* c : charts_) c->setLarge(large);
 }

@@ -90,6 +90,8 @@ private:
     QTimer refreshTimer_;
     bool dirty_ = false;
     std::shared_ptr<const std::vector<jl::Event>> events_;  // marked on the charts at the next refresh
+    QWidget* fieldsRow_;                                    // hinges, blocks, export: hidden in large type
+    bool large_ = false;
     double duration_ = 5;
     double energyScale_ = 1e3;
     std::uint64_t loadSerial_ = ~std::uint64_t(0);

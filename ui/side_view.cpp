@@ -442,7 +442,13 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
         p.drawLine(a, b);
         p.drawLine(a, a - QPointF(0, 4 * ui));
         p.drawLine(b, b - QPointF(0, 4 * ui));
-        p.drawText(QPointF(b.x() + 4 * ui, a.y()), lengthText(cell));
+        // Its length right of it, or above its left end where the view is too narrow for that.
+        const QString label = lengthText(cell);
+        const QPointF at = b.x() + 4 * ui + m.horizontalAdvance(label) <= target.right() - pad
+                               ? QPointF(b.x() + 4 * ui, a.y())
+                               : QPointF(a.x(), a.y() - 6 * ui);
+        p.drawText(at, label);
+        scaleLabel_ = QRectF(at.x(), at.y() - m.ascent(), m.horizontalAdvance(label), m.height());
     }
     // The legend: one row at the bottom right, clear of the ladder (the
     // drawing keeps out of the top and bottom bands).

@@ -54,6 +54,8 @@ public:
     // zoomed (wheel) or panned (drag) by hand it stays put until a double
     // click or resetFraming.
     QRectF framing() const { return framing_; }
+    // Where the scale bar's length was last written (empty before a paint).
+    QRectF scaleLabelRect() const { return scaleLabel_; }
     void setFraming(const QRectF& plane);
     void resetFraming();
     bool following() const { return following_; }
@@ -91,6 +93,7 @@ private:
     double ribbonThickness_ = 0.0005;
     std::shared_ptr<const jl::Frame> frame_ = std::make_shared<const jl::Frame>();
     QRectF framing_;
+    mutable QRectF scaleLabel_;
     bool following_ = true;  // the framing grows with the ladder (until zoomed or panned by hand)
     QPointF dragFrom_;
     SideViewOptions options_;

@@ -4,6 +4,7 @@
 #include "ui/exporter.h"
 #include "ui/lessons.h"
 #include "ui/pacing.h"
+#include "ui/presentation_mode.h"
 #include "ui/run_plots.h"
 #include "ui/sequence_dialog.h"
 #include "ui/side_view.h"
@@ -107,7 +108,7 @@ void TeachingDocks::setLook() {
     o.blockNumbers = blockNumbers_->isChecked();
     o.cornerNumbers = cornerNumbers_->isChecked();
     o.orientation = arrows_->isChecked();
-    o.scale = large_ ? 2.0 : 1.0;
+    o.scale = large_ ? 2.0 * presentationSize(sideView_) : 1.0;
     sideView_->setOptions(o);
 }
 

@@ -1,6 +1,7 @@
 #include "ui/time_chart.h"
 
 #include "ui/event_colors.h"
+#include "ui/presentation_mode.h"
 
 #include <QChart>
 #include <QFontMetricsF>
@@ -158,7 +159,7 @@ void TimeChart::setExtraMargins(double left, double right) {
 void TimeChart::setLarge(bool large) {
     if (large == large_) return;
     large_ = large;
-    const double k = large ? 1.5 : 1.0;
+    const double k = large ? 1.5 * presentationSize(this) : 1.0;
     auto scaled = [k](QFont f) {
         f.setPointSizeF(f.pointSizeF() * k);
         return f;

@@ -256,7 +256,7 @@ private slots:
         QVERIFY(ladderDock->isHidden() || !ladderDock->isVisible());
         QVERIFY(sideDock->isVisible());
         QVERIFY(f.window.font().pointSizeF() > before.pointSizeF() * 1.5);
-        QCOMPARE(f.teaching.sideView()->options().scale, 2.0);
+        QCOMPARE(f.teaching.sideView()->options().scale, 2.0 * presentationSize(f.teaching.sideView()));
         // The plots get room for their large type: no tick label cut to "...".
         QTRY_VERIFY(f.window.findChild<QDockWidget*>("plotsDock")->height() >= f.window.height() / 3 - 2);
         // The timeline's labels, in large type, stay whole inside it and apart.
