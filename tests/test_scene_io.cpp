@@ -46,7 +46,7 @@ Scene ladderScene() {
     l.blocks = 9;
     l.block = {0.061, 0.1 + 0.2, 0.047, 612.5, 0.0123456789012345678, Color{1, 2, 3}};
     l.overrides = {{3, 0.004, std::nullopt, 800.0, std::nullopt, Color{255, 0, 128}}, {7, {}, 0.05, {}, 0.2, {}}};
-    l.ribbons = {0.009, 0.0004, 0.005, Color{10, 20, 30}, false};
+    l.ribbons = {0.009, 0.014, 0.0004, 0.005, Color{10, 20, 30}, Color{200, 30, 30}, false};
     l.hinges = {1e-6, 0.25, 3e-4};
     l.held = {0, 4};
     l.initial.kind = InitialState::Kind::Poses;

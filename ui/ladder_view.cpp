@@ -52,6 +52,7 @@ LadderView::LadderView() : Qt3DExtras::Qt3DWindow(nullptr, Qt3DRender::API::Open
     room_ = new Room(root_);
     blocks_ = new BlockInstances(root_);
     ribbons_ = new StripEntity(root_, false);
+    centralRibbons_ = new StripEntity(root_, false);
     dragLine_ = new StripEntity(root_, true);
     dragLine_->setColor(QColor(225, 40, 40));
     setRootEntity(root_);
@@ -79,11 +80,10 @@ void LadderView::setScene(const jl::Scene& scene, bool resetCamera) {
     if (scene.ladder) {
         blockWidth_ = scene.ladder->block.width;
         blockLength_ = scene.ladder->block.length;
-        ribbonWidth_ = scene.ladder->ribbons.width;
-        ribbonInset_ = scene.ladder->ribbons.inset;
-        ribbonsVisible_ = scene.ladder->ribbons.visible;
-        const jl::Color c = scene.ladder->ribbons.color;
+        ribbonSpec_ = scene.ladder->ribbons;
+        const jl::Color c = ribbonSpec_.color, m = ribbonSpec_.centralColor;
         ribbons_->setColor(QColor(c.r, c.g, c.b));
+        centralRibbons_->setColor(QColor(m.r, m.g, m.b));
     }
     view_ = scene.view;
     if (resetCamera) {
@@ -129,9 +129,11 @@ void LadderView::showFrame(const jl::Frame& frame) {
     blocks_->showFrame(frame, frame.dragging ? grabbed_ : -1);
     // Ribbons are a few pixels wide at best when the whole of a long ladder is
     // in view, yet they cost more to draw than all the blocks: show them close up.
-    const bool ribbonsShow = ribbonsVisible_ && camera_.distance() < kRibbonDistanceInBlocks * blockLength_;
+    const bool ribbonsShow = ribbonSpec_.visible && camera_.distance() < kRibbonDistanceInBlocks * blockLength_;
     if (ribbonsShow || ribbonsShown_)
-        buildRibbons(*ribbons_, ribbonsShow ? frame : jl::Frame{}, blockWidth_, ribbonWidth_, ribbonInset_);
+        for (const bool central : {false, true})
+            buildRibbons(central ? *centralRibbons_ : *ribbons_, ribbonsShow ? frame : jl::Frame{}, blockWidth_,
+                         ribbonSpec_, central);
     ribbonsShown_ = ribbonsShow;
     // The spring is drawn in front of the blocks, on the face toward the viewer.
     buildDragLine(*dragLine_, frame, float(blockWidth_ / 2 + 0.002),

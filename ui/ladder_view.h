@@ -103,7 +103,8 @@ private:
 
     Qt3DCore::QEntity* root_;
     BlockInstances* blocks_;
-    StripEntity* ribbons_;
+    StripEntity* ribbons_;         // the outer pairs
+    StripEntity* centralRibbons_;  // the middle ribbons (a colour of their own)
     StripEntity* dragLine_;
     Room* room_;
     Qt3DRender::QRenderCapture* capture_;
@@ -118,9 +119,9 @@ private:
     // of size: only a frame says where the blocks are.
     bool frameOnNextFrame_ = false;
     double extent_ = 0.36;
-    double blockWidth_ = 0.045, ribbonWidth_ = 0.008, ribbonInset_ = 0.006;
+    double blockWidth_ = 0.045;
+    jl::RibbonSpec ribbonSpec_;
     double blockLength_ = 0.06;
-    bool ribbonsVisible_ = true;
     bool ribbonsShown_ = false;
     bool walk_ = false;
     bool follow_ = false;

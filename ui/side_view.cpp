@@ -155,6 +155,8 @@ void SideView::setScene(const jl::Scene& scene) {
         ribbonColor_ =
             QColor(scene.ladder->ribbons.color.r, scene.ladder->ribbons.color.g, scene.ladder->ribbons.color.b);
         ribbonThickness_ = scene.ladder->ribbons.thickness;
+        const jl::Color m = scene.ladder->ribbons.centralColor;
+        centralRibbonColor_ = QColor(m.r, m.g, m.b);
     }
     frame_ = std::make_shared<const jl::Frame>();
     resetFraming();
@@ -322,16 +324,21 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
         p.drawEllipse(map(frame_->poses[size_t(i)].position), 4.5 * ui, 4.5 * ui);
     }
     if (options_.ribbons && !thread) {
+        // Which face carries which ribbons: the outer pair as a solid line,
+        // the middle ribbon dashed, each in its colour.
         const double w = std::max(1.6 * ui, ribbonThickness_ * map.scale);
-        p.setPen(QPen(ribbonColor_, w, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
         p.setBrush(Qt::NoBrush);
-        QVector<QLineF> segments;  // one call for all: a ladder has two ribbons per hinge
-        for (const jl::RibbonFrame& r : frame_->ribbons) {
-            if (!r.visible) continue;
-            for (size_t k = 1; k < r.points.size(); ++k)
-                segments.append(QLineF(map(r.points[k - 1]), map(r.points[k])));
+        for (const bool central : {false, true}) {
+            QPen pen(central ? centralRibbonColor_ : ribbonColor_, w, central ? Qt::DashLine : Qt::SolidLine,
+                     Qt::FlatCap, Qt::RoundJoin);
+            p.setPen(pen);
+            for (const jl::RibbonFrame& r : frame_->ribbons) {
+                if (!r.visible || r.central != central) continue;
+                QPolygonF path;
+                for (const jl::Vec2& q : r.points) path << map(q);
+                p.drawPolyline(path);
+            }
         }
-        p.drawLines(segments);
     }
 
     // Labels only where a block is big enough on screen to carry them.

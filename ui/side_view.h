@@ -90,6 +90,7 @@ private:
     std::vector<std::array<jl::Vec2, 4>> cornerLocal_;  // ladder blocks, from jl::blockCorners
     int ladderBlocks_ = 0, firstParticle_ = 0;
     QColor ribbonColor_{40, 60, 140};
+    QColor centralRibbonColor_;
     double ribbonThickness_ = 0.0005;
     std::shared_ptr<const jl::Frame> frame_ = std::make_shared<const jl::Frame>();
     QRectF framing_;

@@ -50,22 +50,28 @@ void StripEntity::commit() {
     renderer_->setVertexCount(int(vertices));
 }
 
-// A real ladder has two outer ribbons and one wide middle one per hinge; the
-// frame gives each ribbon's path in the plane, drawn here at the outer
-// positions (|z| = half width - inset - half ribbon width).
-void buildRibbons(StripEntity& strips, const jl::Frame& frame, double blockWidth, double ribbonWidth, double inset) {
+// The toy's three ribbons per hinge (docs/model.md section 8.8): the frame
+// gives each one's path in the plane; the outer pair is drawn at
+// |z| = half width - inset - half ribbon width, the middle one at z = 0.
+void buildRibbons(StripEntity& strips, const jl::Frame& frame, double blockWidth, const jl::RibbonSpec& spec,
+                  bool central) {
     strips.clear();
-    const float half = float(ribbonWidth / 2);
-    const float zc = float(std::max(blockWidth / 2 - inset - ribbonWidth / 2, ribbonWidth / 2));
+    const double width = central ? spec.centralWidth : spec.width;
+    const float half = float(width / 2);
+    std::vector<float> lanes{0.0f};
+    if (!central) {
+        const float zc = float(std::max(blockWidth / 2 - spec.inset - width / 2, width / 2));
+        lanes = {-zc, zc};
+    }
     for (const jl::RibbonFrame& r : frame.ribbons) {
-        if (!r.visible) continue;
+        if (!r.visible || r.central != central) continue;
         for (size_t i = 1; i < r.points.size(); ++i) {
             const jl::Vec2 p = r.points[i - 1], q = r.points[i];
             const jl::Vec2 d = q - p;
             if (d.squaredNorm() == 0) continue;
             const jl::Vec2 nn = jl::perp(d).normalized();
             const QVector3D n(float(nn.x()), float(nn.y()), 0);
-            for (float z : {-zc, zc}) {
+            for (float z : lanes) {
                 strips.addQuad({float(p.x()), float(p.y()), z - half}, {float(q.x()), float(q.y()), z - half},
                                {float(q.x()), float(q.y()), z + half}, {float(p.x()), float(p.y()), z + half}, n);
             }

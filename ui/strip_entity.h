@@ -2,6 +2,7 @@
 // block faces, and the line of the mouse spring.
 #pragma once
 
+#include "jl/scene/scene.h"
 #include "jl/sim/frame.h"
 
 #include <QColor>
@@ -41,8 +42,10 @@ private:
     Qt3DRender::QParameter* color_;
 };
 
-// Ribbons as strips across the ladder's faces (z is the blocks' width direction).
-void buildRibbons(StripEntity& strips, const jl::Frame& frame, double blockWidth, double ribbonWidth, double inset);
+// The outer pairs (or the middle ribbons) as strips over the ladder's faces
+// (z is the blocks' width direction).
+void buildRibbons(StripEntity& strips, const jl::Frame& frame, double blockWidth, const jl::RibbonSpec& spec,
+                  bool central);
 // The mouse spring from the grabbed point to the hand, as a bar facing the viewer.
 void buildDragLine(StripEntity& strip, const jl::Frame& frame, float z, float width);
 

@@ -353,34 +353,4 @@ std::vector<HingeFrame> Ladder::hingeFrames(const World& w) const {
     return out;
 }
 
-// Two ribbons per hinge, one at each end where the hinge can sit (corner k
-// and k^1); the one at the current hinge corner shows. Each runs along the
-// hinge-side face of the upper block to the hinge and back along the lower
-// block's face, just outside the faces.
-std::vector<RibbonFrame> Ladder::ribbons(const World& w) const {
-    std::vector<RibbonFrame> out;
-    out.reserve(2 * hinges_.size());
-    const double lift = spec_.ribbons.thickness / 2;
-    for (int j = 1; j < blockCount(); ++j) {
-        const Hinge& h = hinge(j);
-        for (int k : {h.corner, h.corner ^ 1}) {
-            RibbonFrame r;
-            r.visible = spec_.ribbons.visible && h.mode != HingeMode::Cut && k == h.corner;
-            for (int i : {j - 1, j}) {
-                const Vec2 out_a = (cornerWorld(w, i, k) - cornerWorld(w, i, k ^ 2)).normalized() * lift;
-                const Vec2 far = cornerWorld(w, i, k ^ 1) + out_a, near = cornerWorld(w, i, k) + out_a;
-                if (i == j - 1) {
-                    r.points.push_back(far);
-                    r.points.push_back(near);
-                } else {
-                    r.points.push_back(near);
-                    r.points.push_back(far);
-                }
-            }
-            out.push_back(std::move(r));
-        }
-    }
-    return out;
-}
-
 }  // namespace jl

@@ -72,9 +72,10 @@ void readOverrides(const Fields& parent, LadderSpec& ladder) {
 }
 
 void readRibbons(const Fields& parent, RibbonSpec& ribbons) {
-    Fields f(parent.problems(), parent.value("ribbons"), keysOf(kRibbonNumbers, {"color", "visible"}));
+    Fields f(parent.problems(), parent.value("ribbons"), keysOf(kRibbonNumbers, {"color", "central_color", "visible"}));
     readNumbers(f, kRibbonNumbers, ribbons);
     f.color("color", ribbons.color);
+    f.color("central_color", ribbons.centralColor);
     f.flag("visible", ribbons.visible);
 }
 

@@ -118,6 +118,7 @@ void writeRibbonsAndHinges(Writer& w, const RibbonSpec& ribbons, const HingeOpti
         w.beginMap(true);
         writeNumbers(w, kRibbonNumbers, ribbons);
         w.colorIf("color", ribbons.color, r.color);
+        w.colorIf("central_color", ribbons.centralColor, r.centralColor);
         if (ribbons.visible != r.visible) w.flag("visible", ribbons.visible);
         w.endMap();
     }

@@ -32,9 +32,11 @@ struct HingeFrame {
     Vec2 position = Vec2::Zero();  // m, the hinge point in the plane
 };
 
-// A ribbon drawn over the block faces: a polyline in the ladder's plane.
+// A ribbon drawn over the block faces: a polyline in the ladder's plane,
+// drawn across the width at the outer pair's two places or at the middle.
 struct RibbonFrame {
     std::vector<Vec2> points;
+    bool central = false;  // the middle ribbon; else the outer pair
     bool visible = true;
 };
 

@@ -53,10 +53,12 @@ struct BlockOverride {
 
 // Ribbons are drawn, never simulated.
 struct RibbonSpec {
-    double width = 0.008;       // m
-    double thickness = 0.0005;  // m
-    double inset = 0.006;       // m, from the block's side edge to the ribbon
-    Color color{40, 60, 140};
+    double width = 0.008;         // m, each of the outer pair
+    double centralWidth = 0.012;  // m, the middle ribbon
+    double thickness = 0.0005;    // m
+    double inset = 0.006;         // m, from the block's side edge to an outer ribbon
+    Color color{40, 60, 140};     // the outer pair
+    Color centralColor{40, 60, 140};
     bool visible = true;
     bool operator==(const RibbonSpec&) const = default;
 };

@@ -46,9 +46,10 @@ inline constexpr NumberField<BlockSpec> kBlockNumbers[] = {
 inline constexpr std::string_view kBlockMassUnit = "kg";
 
 inline constexpr NumberField<RibbonSpec> kRibbonNumbers[] = {
-    {"width", &RibbonSpec::width, "m", range::ribbonSize, "drawn only"},
+    {"width", &RibbonSpec::width, "m", range::ribbonSize, "each of the outer pair (ribbons are drawn only)"},
+    {"central_width", &RibbonSpec::centralWidth, "m", range::ribbonSize, "the middle ribbon"},
     {"thickness", &RibbonSpec::thickness, "m", range::ribbonSize, ""},
-    {"inset", &RibbonSpec::inset, "m", range::inset, "from the block's side edge"},
+    {"inset", &RibbonSpec::inset, "m", range::inset, "from the block's side edge to an outer ribbon"},
 };
 
 inline constexpr NumberField<HingeOptions> kHingeNumbers[] = {
