@@ -145,7 +145,7 @@ private:
     template <class Self>
     static auto stateOf(Self& s) {
         return std::tie(s.world_, s.ladder_, s.stepper_, s.ledger_, s.t_, s.impactLoss_, s.impactHeldWork_,
-                        s.nextAction_, s.nextDragSample_, s.stats_);
+                        s.nextAction_, s.nextDragSample_, s.stats_, s.stepScale_, s.imbalanceBase_);
     }
     void fail(const std::string& why);
 
