@@ -70,20 +70,27 @@ inline std::vector<int> firstFlipOrder(const std::vector<Event>& events) {
 
 // Chatter: a hinge released (unlock, flip, unfold) and closed again (lock,
 // fold) within `window` seconds is one quick cycle; `longest` is the most
-// quick cycles of one hinge in a row (a slower cycle ends a row).
+// quick cycles of one hinge in a row. A row ends with a slower cycle, or
+// when the hinge stays closed longer than `window` before its next release:
+// a contact knocked open by impacts some milliseconds apart, each closing it
+// again at once, is not chattering.
 struct Chatter {
     int cycles = 0;
     int longest = 0;
 };
 inline Chatter chatter(const std::vector<Event>& events, double window = 1e-3) {
     Chatter c;
-    std::map<int, double> releasedAt;
+    std::map<int, double> releasedAt, closedAt;
     std::map<int, int> row;
     for (const Event& e : events) {
         if (e.kind == EventKind::Unlock || e.kind == EventKind::FlipFlop || e.kind == EventKind::Unfold ||
-            e.kind == EventKind::Bounce)
+            e.kind == EventKind::Bounce) {
+            const auto closed = closedAt.find(e.hinge);
+            if (closed != closedAt.end() && e.time - closed->second > window) row[e.hinge] = 0;
             releasedAt[e.hinge] = e.time;
+        }
         if (e.kind != EventKind::Lock && e.kind != EventKind::Fold) continue;
+        closedAt[e.hinge] = e.time;
         const auto r = releasedAt.find(e.hinge);
         if (r != releasedAt.end() && e.time - r->second <= window) {
             ++c.cycles;

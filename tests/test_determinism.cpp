@@ -49,6 +49,26 @@ private slots:
         QCOMPARE(sim->stateHash(), straight);
     }
 
+    // The halved automatic step is part of the state: falling-chain.yaml
+    // halves its step near 2.6 s, and a fresh simulation restored to a
+    // snapshot taken after that carries on with the halved step, bit for bit
+    // (the timeline rebuilds dropped frames that way).
+    void restoreIntoAFreshSimulationKeepsAHalvedStep() {
+        auto sim = simulateFile("examples/falling-chain.yaml");
+        QVERIFY(sim);
+        QVERIFY(sim->advanceTo(3.0));
+        QVERIFY(sim->frame().solver.stepHalvings >= 1);
+        const auto snap = sim->snapshot();
+        QVERIFY(sim->advanceTo(3.5));
+        const std::uint64_t straight = sim->stateHash();
+        auto fresh = simulateFile("examples/falling-chain.yaml");
+        QVERIFY(fresh);
+        fresh->restore(*snap);
+        QVERIFY(fresh->advanceTo(3.5));
+        QCOMPARE(fresh->stateHash(), straight);
+        QCOMPARE(fresh->frame().solver.stepHalvings, sim->frame().solver.stepHalvings);
+    }
+
     // A step's first stage taken from the previous step's end evaluation
     // (KeptEvaluation) is the same evaluation: the motion and the books come
     // out bit for bit as when every stage is evaluated, one evaluation a

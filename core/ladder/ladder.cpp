@@ -324,7 +324,6 @@ double Ladder::eventFunctions(const World& w, const Dynamics& d, std::vector<dou
     double smallestForce = std::numeric_limits<double>::infinity();
     for (int j = 1; j < liveEnd(); ++j) {
         double* g = &out[2 * size_t(j - 1)];
-        if (hinge(j).held) continue;  // let go after a trial (Simulation::settleHolds), not by a sign change
         switch (hinge(j).mode) {
             case HingeMode::Free:
             case HingeMode::Cut:
@@ -456,6 +455,7 @@ std::optional<std::string> Ladder::cut(World& w, int j) {
     if (h.mode == HingeMode::Folded) unfold(w, j);
     part(w, j, h.corner);
     h.mode = HingeMode::Cut;
+    h.held = false;
     // The damper stands for friction in the ribbons' hinge: cut, it is gone.
     if (!dampers_.empty()) w.setRotaryDamping(dampers_[size_t(j - 1)], 0);
     return std::nullopt;

@@ -37,69 +37,47 @@ bool Ladder::bothHeld(const World& w, int j) const {
     return w.body(w.part(block(j - 1)).body).kinematic && w.body(w.part(block(j)).body).kinematic;
 }
 
-void Ladder::release(World& w, int j, EventKind kind, double t) {
+// `launchedBy` as Hinge::launchedBy says: by default a release by the
+// contact's own force (or a push), which starts no rebound.
+void Ladder::release(World& w, int j, EventKind kind, double t, double launchedBy) {
     if (kind == EventKind::Unlock) unlock(w, j);
     if (kind == EventKind::FlipFlop) flipFlop(w, j);
     if (kind == EventKind::Unfold) unfold(w, j);
     Hinge& h = hinges_[size_t(j - 1)];
     h.releasedAt = t;
+    h.launchedBy = launchedBy;
     h.held = false;
-    h.pullingSince = -1;
-    h.renewals = 0;
     // The parted bodies were projected onto their pins: phi may read a hair
     // past the limit it leaves. That is its zero until it moves clear.
     const double phi = foldAngle(w, j);
     h.releaseGap = std::min(0.0, h.foldAngle < kPi / 2 ? phi : kPi - phi);
 }
 
-// A contact closed at t within the Zeno time of its release: it closed
-// again at once, and is held (docs/model.md section 8.6, "No chattering").
-void Ladder::noteClose(int j, double t) {
+// A contact closed at t. If an impact opened it, the open interval was a
+// rebound; one within the Zeno time and shorter than the rebound that
+// launched it belongs to a shrinking sequence, and the contact is held at
+// its accumulation point (docs/model.md section 8.6, "No chattering").
+bool Ladder::noteClose(int j, double t) {
     Hinge& h = hinges_[size_t(j - 1)];
-    if (t - h.releasedAt <= zenoTime_) h.held = true;
-}
-
-std::vector<int> Ladder::expiredHolds(const World& w, const Dynamics& d, double t) {
-    std::vector<int> out;
-    for (int j = 1; j < liveEnd(); ++j) {
-        Hinge& h = hinges_[size_t(j - 1)];
-        if (!h.held) continue;
-        if (h.mode != HingeMode::OpenLocked && h.mode != HingeMode::Folded) {
-            h.held = false;
-            continue;
-        }
-        const HingeContact c = contact(w, d, j);
-        const bool pulls = h.mode == HingeMode::OpenLocked ? c.normal < 0 : std::min(c.nearEnd, c.farEnd) < 0;
-        if (!pulls)
-            h.pullingSince = -1, h.renewals = 0;
-        else if (h.pullingSince < 0)
-            h.pullingSince = t;
-        if (pulls && t - h.pullingSince >= zenoTime_ * double(1 << std::min(h.renewals, 3))) out.push_back(j);
-    }
-    return out;
-}
-
-void Ladder::letGo(int j) {
-    hinges_[size_t(j - 1)].held = false;
-    hinges_[size_t(j - 1)].pullingSince = -1;
-}
-
-void Ladder::renewHold(int j, double t) {
-    hinges_[size_t(j - 1)].pullingSince = t;
-    ++hinges_[size_t(j - 1)].renewals;
+    const double open = t - h.releasedAt;
+    h.lastRebound = h.launchedBy >= 0 ? open : 0;
+    h.held = h.launchedBy > 0 && open <= zenoTime_ && open < h.launchedBy;
+    return h.held;
 }
 
 // The most negative contact force (or impulse) among locked and folded
 // hinges, and what releasing it means: unlock, flip-flop or unfold.
+// `spareHeld`: held contacts are left closed (an impact that ends a rebound
+// of their own Zeno sequence).
 std::optional<std::pair<int, EventKind>> Ladder::pullingContact(const World& w, const Dynamics& d, const Impact* impact,
-                                                                const std::vector<int>& keep) const {
+                                                                const std::vector<int>& keep, bool spareHeld) const {
     std::optional<std::pair<int, EventKind>> worst;
     const double tolerance = impact ? impulseTolerance_ : forceTolerance_;
     double most = -tolerance;
     for (int j = 1; j < liveEnd(); ++j) {
         const HingeMode mode = hinge(j).mode;
         if (mode != HingeMode::OpenLocked && mode != HingeMode::Folded) continue;
-        if (hinge(j).held || std::find(keep.begin(), keep.end(), j) != keep.end()) continue;
+        if ((spareHeld && hinge(j).held) || std::find(keep.begin(), keep.end(), j) != keep.end()) continue;
         const HingeContact c = split(w, j, internalWrench(w, d, j, impact));
         if (mode == HingeMode::OpenLocked && c.normal < most) {
             most = c.normal;
@@ -164,6 +142,18 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
     const std::vector<Twist> before = w.partVelocities();
     const double keBefore = energy(w).kinetic;
     std::vector<double> approach(hits.size());
+    // The shortest rebound this impact ends (0: none), which launches the
+    // rebounds of the contacts it releases; and whether it ends one of a
+    // shrinking sequence: then it is that sequence's accumulation point,
+    // and the contacts held there stay closed through it. Any other impact
+    // tests them as it tests every contact.
+    double rebound = 0;
+    bool accumulating = false;
+    const auto closed = [&](int j) {
+        accumulating = noteClose(j, t) || accumulating;
+        const double r = hinge(j).lastRebound;
+        if (r > 0 && (rebound == 0 || r < rebound)) rebound = r;
+    };
     for (size_t i = 0; i < hits.size(); ++i) {
         const int j = hits[i];
         const bool folding = hinge(j).foldAngle > kPi / 2;
@@ -181,7 +171,7 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
             fold(w, j);
         else
             lock(w, j);
-        noteClose(j, t);
+        closed(j);
         events.push_back({t, folding ? EventKind::Fold : EventKind::Lock, j, hinge(j).corner, {}});
     }
     Eigen::VectorXd impulses;
@@ -195,12 +185,12 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
         w.setPartVelocities(before);
         projectVelocities(w, d.solver(), &impulses);
         updateAngles(w);
-        if (auto pull = pullingContact(w, d, &im, kept)) {
+        if (auto pull = pullingContact(w, d, &im, kept, accumulating)) {
             if (wouldChatter(w, t, pull->first, pull->second, before)) {
                 kept.push_back(pull->first);
                 continue;
             }
-            release(w, pull->first, pull->second, t);
+            release(w, pull->first, pull->second, t, rebound);
             released.push_back(pull->first);
             events.push_back({t, pull->second, pull->first, hinge(pull->first).corner, {}});
             continue;
@@ -215,7 +205,7 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
                         fold(w, j);
                     else
                         lock(w, j);
-                    noteClose(j, t);
+                    closed(j);
                     events.push_back({t, folded ? EventKind::Fold : EventKind::Lock, j, hinge(j).corner, {}});
                     driven = true;
                 }
@@ -236,7 +226,7 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
             if ((mode != HingeMode::OpenLocked && mode != HingeMode::Folded) || hinge(j).held ||
                 e * approach[i] <= spec_.hinges.minReboundSpeed)
                 continue;
-            release(w, j, mode == HingeMode::OpenLocked ? EventKind::Unlock : EventKind::Unfold, t);
+            release(w, j, mode == HingeMode::OpenLocked ? EventKind::Unlock : EventKind::Unfold, t, rebound);
             events.push_back({t, EventKind::Bounce, j, hinge(j).corner, {}});
             bounced = true;
         }

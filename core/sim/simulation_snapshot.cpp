@@ -1,6 +1,5 @@
 // Simulation: the whole state of a run, copied out and put back (the
-// timeline's keyframes, a trial of letting a held contact go), and a hash
-// of it that determinism checks compare.
+// timeline's keyframes), and a hash of it that determinism checks compare.
 #include "snapshot.h"
 
 #include <algorithm>
@@ -11,16 +10,6 @@ Simulation::~Simulation() = default;
 
 std::shared_ptr<const Snapshot> Simulation::snapshot() const {
     return std::make_shared<const Snapshot>(std::make_from_tuple<Snapshot>(stateOf(*this)));
-}
-
-// Into the same storage each time: a fresh copy of the world allocated every
-// body's list of parts and every particle's attachments anew.
-const Snapshot& Simulation::keepTrialStart() {
-    if (!trialStart_)
-        trialStart_ = std::make_unique<Snapshot>(*snapshot());
-    else
-        Snapshot::stateOf(*trialStart_) = stateOf(*this);
-    return *trialStart_;
 }
 
 // Restores the state; recorded drags stay, so carrying on replays them.

@@ -211,51 +211,6 @@ bool Simulation::locateEvent(double& taken, double fEnd, double forcesAtEnd) {
     return true;
 }
 
-// After a step (the dynamics evaluated at its end, time t_): a held contact
-// that has pulled for long enough is let go, unless a trial shows that it
-// would close again within a Zeno time (the pull is the chatter of a contact
-// at its Zeno limit, not a parting). A trial that lets it go is kept as the
-// run's own continuation (the same code would compute the same steps again),
-// so only the renewals cost extra; `limit` as for takeStep.
-void Simulation::settleHolds(double limit) {
-    for (int j : ladder_->expiredHolds(world_, dynamics_, t_)) {
-        const Trial trial = tryLettingGo(j, limit);
-        if (trial == Trial::Kept) return;  // the state has moved on: the other holds wait for the next step
-        if (trial == Trial::ClosedAgain) ladder_->renewHold(j, t_);
-    }
-}
-
-// Lets held hinge j go at t_ and runs on for a Zeno time (or to `limit`).
-// If j closed again, or the run did not get a whole Zeno time, everything is
-// put back; otherwise the run carries on from where the trial got to.
-Simulation::Trial Simulation::tryLettingGo(int j, double limit) {
-    const Snapshot& before = keepTrialStart();
-    std::vector<Event> pending = std::exchange(pending_, {});
-    const size_t gridFrames = gridFrames_.size();
-    const double gridDoneUpTo = gridDoneUpTo_;
-    const int drag = liveDrag_;
-    trial_ = true;
-    ladder_->letGo(j);
-    bool closed = false;
-    for (Event& e : ladder_->resolve(world_, dynamics_, t_, &impactLoss_, &impactHeldWork_)) record(e);
-    const double until = t_ + ladder_->zenoTime();
-    while (!closed && t_ < until && t_ < limit && failure_.empty() && takeStep(limit))
-        for (const Event& e : pending_)
-            closed = closed || (e.hinge == j && (e.kind == EventKind::Lock || e.kind == EventKind::Fold));
-    trial_ = false;
-    if (!closed && t_ >= until && failure_.empty()) {
-        pending.insert(pending.end(), pending_.begin(), pending_.end());
-        pending_ = std::move(pending);
-        return Trial::Kept;
-    }
-    restore(before);
-    pending_ = std::move(pending);
-    gridFrames_.resize(gridFrames);  // the trial's frames go with it
-    gridDoneUpTo_ = gridDoneUpTo;
-    liveDrag_ = drag;
-    return closed ? Trial::ClosedAgain : Trial::Undecided;
-}
-
 // The scene's step, or the engine's: 1 ms at most, and within the stability
 // limit of the fastest vibration the pin forces of the last evaluation allow.
 void Simulation::noteStep(double h) {
@@ -444,7 +399,6 @@ bool Simulation::takeStep(double limit) {
     stats_.lastStep = taken;
     lastResidual_ = m.projection.residual;
     applyDueInputs();
-    if (ladder_ && !trial_) settleHolds(limit);
     return true;
 }
 

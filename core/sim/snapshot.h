@@ -18,11 +18,15 @@ struct Snapshot {
     size_t nextAction = 0;
     std::vector<size_t> nextDragSample;
     SolverFrame stats;
+    // The automatic step's scale (halved after each step that blew up) and
+    // the books' imbalance at the last halving: without them a restored run
+    // would take the un-halved step again.
+    double stepScale = 1, imbalanceBase = 0;
     // The fields, in the order of Simulation::stateOf.
     template <class Self>
     static auto stateOf(Self& s) {
         return std::tie(s.world, s.ladder, s.stepper, s.ledger, s.t, s.impactLoss, s.impactHeldWork, s.nextAction,
-                        s.nextDragSample, s.stats);
+                        s.nextDragSample, s.stats, s.stepScale, s.imbalanceBase);
     }
 };
 

@@ -20,15 +20,20 @@ struct Hinge {
     HingeMode mode = HingeMode::Free;
     int corner = 0;        // k: the same corner number on both blocks
     double foldAngle = 0;  // phi, tracked continuously
-    // The accumulation point of a Zeno sequence (docs/model.md, "No
-    // chattering"): a contact that closed again within the Zeno time of its
-    // last release is held closed until its contact force has pulled for a
-    // whole Zeno time and letting it go would not close it again at once.
+    // The accumulation point of a Zeno sequence (docs/model.md section 8.6,
+    // "No chattering"). A release by an impact (a bounce, or a release in
+    // an impact's active set) starts a rebound. A rebound that ends within
+    // the Zeno time and is shorter than the rebound whose end started it
+    // belongs to a shrinking sequence: the contact is held, and impacts of
+    // that sequence leave it closed. Its force, pushes and any other impact
+    // test it as they test every contact.
     double releasedAt = -1e300;  // s, the last release
+    // s, what released it: the rebound whose end did (> 0); an impact that
+    // ended no rebound (0); its own force or a push, no rebound (-1).
+    double launchedBy = -1;
+    double lastRebound = 0;  // s, the rebound its last close ended (0: that close ended none)
     bool held = false;
-    double releaseGap = 0;     // rad, <= 0: how far past the limit it left the pair read (projection noise)
-    double pullingSince = -1;  // s, when the held contact's force turned to pull (-1: it pushes)
-    int renewals = 0;          // trials in a row that kept it held: each doubles the wait for the next (8x at most)
+    double releaseGap = 0;  // rad, <= 0: how far past the limit it left the pair read (projection noise)
     // The hinge's own particles at each corner k of the upper (side 0) and
     // lower (side 1) block: a block's corner can be a hinge point of both
     // its hinges at once (after a flip both sit at one end), so no two
@@ -134,15 +139,8 @@ public:
     // A restructuring the world refused (a bug, reported rather than ignored).
     const std::string& error() const { return error_; }
     void updateAngles(const World& w);  // track phi continuously after a step
-    // After a step (the dynamics evaluated at its end, time t): the held
-    // contacts whose force has pulled for a whole Zeno time. The caller
-    // either lets each go (then resolve() at t releases it) or renews its
-    // hold, if letting go would only make it close again at once.
-    std::vector<int> expiredHolds(const World& w, const Dynamics& d, double t);
-    void letGo(int j);
-    void renewHold(int j, double t);
-    // s: open intervals shorter than this are the chatter of a contact that
-    // has reached its Zeno limit (a small fraction of the ladder's own time
+    // s: a rebound shorter than this, and shorter than the one before it,
+    // is part of a Zeno sequence (a small fraction of the ladder's own time
     // scale sqrt(L/g), about 1 ms for 60 mm blocks).
     double zenoTime() const { return zenoTime_; }
 
@@ -194,10 +192,11 @@ private:
     std::vector<Event> impact(World& w, Dynamics& d, double t, const std::vector<int>& hits, double* loss,
                               double* heldWork, std::vector<int>* releasedNow);
     std::optional<std::pair<int, EventKind>> pullingContact(const World& w, const Dynamics& d, const Impact* impact,
-                                                            const std::vector<int>& keep = {}) const;
+                                                            const std::vector<int>& keep = {},
+                                                            bool spareHeld = false) const;
     bool wouldChatter(const World& w, double t, int j, EventKind kind, const std::vector<Twist>& before) const;
-    void release(World& w, int j, EventKind kind, double t);
-    void noteClose(int j, double t);
+    void release(World& w, int j, EventKind kind, double t, double launchedBy = -1);
+    bool noteClose(int j, double t);
     void capped(double t, const std::string& what);
     bool bothHeld(const World& w, int j) const;  // the blocks of hinge j, each in a held body
     HingeContact split(const World& w, int j, const Wrench& on) const;

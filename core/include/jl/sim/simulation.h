@@ -141,15 +141,11 @@ private:
     void noteStep(double h);
     bool retryWithSmallerStep();
     std::string blowUpAdvice(double h) const;
-    void settleHolds(double limit);
-    enum class Trial { ClosedAgain, Kept, Undecided };
-    Trial tryLettingGo(int j, double limit);
-    const Snapshot& keepTrialStart();  // snapshot() into trialStart_, its storage reused
     // What a Snapshot holds, in its order (simulation_snapshot.cpp).
     template <class Self>
     static auto stateOf(Self& s) {
         return std::tie(s.world_, s.ladder_, s.stepper_, s.ledger_, s.t_, s.impactLoss_, s.impactHeldWork_,
-                        s.nextAction_, s.nextDragSample_, s.stats_);
+                        s.nextAction_, s.nextDragSample_, s.stats_, s.stepScale_, s.imbalanceBase_);
     }
     void fail(const std::string& why);
 
@@ -181,11 +177,6 @@ private:
     double lastResidual_ = 0;
     double stepScale_ = 1;      // automatic step: halved after each step that blew up
     double imbalanceBase_ = 0;  // J, the books' imbalance at the last halving (the check watches growth past it)
-    bool trial_ = false;        // inside tryLettingGo: holds are not settled
-    // The state a trial started from, copied into the same storage each time:
-    // a fresh copy of the world allocated every body's list of parts anew
-    // (a tenth of a run that chatters).
-    std::unique_ptr<Snapshot> trialStart_;
     // Kept from step to step so that stepping allocates nothing.
     Eigen::VectorXd stepStartQ_, stepStartV_;  // the state the step started from
     Ledger stepStartLedger_;
