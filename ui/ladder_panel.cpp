@@ -22,6 +22,13 @@ namespace {
 QColor toQColor(const jl::Color& c) { return QColor(c.r, c.g, c.b); }
 jl::Color toColor(const QColor& c) { return {std::uint8_t(c.red()), std::uint8_t(c.green()), std::uint8_t(c.blue())}; }
 
+// The colour a colour button edits.
+jl::Color& colorOf(jl::LadderSpec& l, const QString& key) {
+    if (key == "blockColor") return l.block.color;
+    if (key == "ribbonColor") return l.ribbons.color;
+    return l.ribbons.centralColor;
+}
+
 void paintSwatch(QPushButton* b, const jl::Color& c) {
     QPixmap pm(28, 14);
     pm.fill(toQColor(c));
@@ -44,12 +51,15 @@ LadderPanel::LadderPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_
 
     blockColor_ = colorButton("blockColor", tr("Colour of every block (a block override may change one)."));
     form->insertRow(6, new QLabel(tr("Block colour")), blockColor_);
-    ribbonColor_ = colorButton("ribbonColor", tr("Colour of the ribbons."));
-    form->insertRow(8, new QLabel(tr("Ribbon colour")), ribbonColor_);
+    // Under the ribbons' numbers (outer width, middle width, thickness, inset).
+    ribbonColor_ = colorButton("ribbonColor", tr("Colour of the two outer ribbons."));
+    form->insertRow(11, new QLabel(tr("Outer ribbon colour")), ribbonColor_);
+    centralRibbonColor_ = colorButton("centralRibbonColor", tr("Colour of the middle ribbon."));
+    form->insertRow(12, new QLabel(tr("Middle ribbon colour")), centralRibbonColor_);
     ribbonsVisible_ = new QCheckBox(tr("Show ribbons"), this);
     ribbonsVisible_->setObjectName("ribbonsVisible");
     ribbonsVisible_->setToolTip(tr("Ribbons are drawn only; hiding them shows the hinges."));
-    form->insertRow(9, QString(), ribbonsVisible_);
+    form->insertRow(13, QString(), ribbonsVisible_);
     connect(ribbonsVisible_, &QCheckBox::toggled, this, [this](bool on) {
         editLadder("ribbonsVisible", on ? tr("Show ribbons") : tr("Hide ribbons"),
                    [on](jl::LadderSpec& l) { l.ribbons.visible = on; });
@@ -102,12 +112,14 @@ QPushButton* LadderPanel::colorButton(const QString& key, const QString& tip) {
     b->setToolTip(tip);
     connect(b, &QPushButton::clicked, this, [this, key] {
         if (!doc_->scene().ladder) return;
-        const jl::LadderSpec& l = *doc_->scene().ladder;
-        const bool block = key == "blockColor";
-        const QColor c = QColorDialog::getColor(toQColor(block ? l.block.color : l.ribbons.color), this);
+        jl::LadderSpec l = *doc_->scene().ladder;
+        jl::Color& color = colorOf(l, key);
+        const QColor c = QColorDialog::getColor(toQColor(color), this);
         if (!c.isValid()) return;
-        editLadder(key, block ? tr("Change block colour") : tr("Change ribbon colour"),
-                   [block, c](jl::LadderSpec& l) { (block ? l.block.color : l.ribbons.color) = toColor(c); });
+        const QString text = key == "blockColor"    ? tr("Change block colour")
+                             : key == "ribbonColor" ? tr("Change outer ribbon colour")
+                                                    : tr("Change middle ribbon colour");
+        editLadder(key, text, [key, c](jl::LadderSpec& spec) { colorOf(spec, key) = toColor(c); });
     });
     return b;
 }
@@ -128,6 +140,7 @@ void LadderPanel::refresh() {
     const jl::LadderSpec& l = *doc_->scene().ladder;
     paintSwatch(blockColor_, l.block.color);
     paintSwatch(ribbonColor_, l.ribbons.color);
+    paintSwatch(centralRibbonColor_, l.ribbons.centralColor);
     const QSignalBlocker b1(ribbonsVisible_), b2(held_);
     ribbonsVisible_->setChecked(l.ribbons.visible);
     held_->setText(heldText(l.held));

@@ -34,6 +34,7 @@ private:
     ValueForm* form_;
     QPushButton* blockColor_;
     QPushButton* ribbonColor_;
+    QPushButton* centralRibbonColor_;
     QCheckBox* ribbonsVisible_;
     QLineEdit* held_;
     BlockOverrides* overrides_;

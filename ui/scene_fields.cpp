@@ -123,9 +123,23 @@ std::vector<NumberField> ladderNumberFields() {
             [](L& l, double v) { l.block.density = v; }),
         blockMassField(),
         ladderNumber(
-            "ribbonWidth", tr("Ribbon width"), "mm", tr("Width of the ribbons across the block faces (drawing only)."),
+            "ribbonWidth", tr("Outer ribbon width"), "mm",
+            tr("Width of each of the two outer ribbons across the block faces (drawing only)."),
             within(jl::range::ribbonSize, 1000), 1000, 1, [](const L& l) { return l.ribbons.width; },
             [](L& l, double v) { l.ribbons.width = v; }),
+        ladderNumber(
+            "ribbonCentralWidth", tr("Middle ribbon width"), "mm",
+            tr("Width of the middle ribbon, on the faces that do not carry the outer pair (drawing only)."),
+            within(jl::range::ribbonSize, 1000), 1000, 1, [](const L& l) { return l.ribbons.centralWidth; },
+            [](L& l, double v) { l.ribbons.centralWidth = v; }),
+        ladderNumber(
+            "ribbonThickness", tr("Ribbon thickness"), "mm",
+            tr("How far the ribbons stand off the faces (drawing only)."), within(jl::range::ribbonSize, 1000), 1000, 2,
+            [](const L& l) { return l.ribbons.thickness; }, [](L& l, double v) { l.ribbons.thickness = v; }),
+        ladderNumber(
+            "ribbonInset", tr("Ribbon inset"), "mm", tr("From a block's edge to an outer ribbon (drawing only)."),
+            within(jl::range::inset, 1000), 1000, 1, [](const L& l) { return l.ribbons.inset; },
+            [](L& l, double v) { l.ribbons.inset = v; }),
         ladderNumber(
             "damping", tr("Hinge damping"), "N·m·s",
             tr("Viscous torque in free hinges; above about 1e-5 it stops long ripples."),

@@ -58,7 +58,7 @@ struct RibbonSpec {
     double thickness = 0.0005;    // m
     double inset = 0.006;         // m, from the block's side edge to an outer ribbon
     Color color{40, 60, 140};     // the outer pair
-    Color centralColor{40, 60, 140};
+    Color centralColor{160, 40, 60};
     bool visible = true;
     bool operator==(const RibbonSpec&) const = default;
 };
