@@ -1,6 +1,6 @@
 #include "app/jladder/options.h"
 
-#include "jl/base/output_file.h"
+#include "jl/base/output_name.h"
 #include "jl/scene/scalar_text.h"
 #include "jl/scene/scene_fields.h"
 #include "jl/scene/scene_ranges.h"
@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
+#include <cstring>
 
 namespace jl::cli {
 
@@ -105,10 +105,14 @@ std::string jsonString(const std::string& s) {
 }
 
 bool sameFile(const std::string& a, const std::string& b) {
-    std::error_code ec;
-    const bool aExists = std::filesystem::exists(a, ec), bExists = std::filesystem::exists(b, ec);
-    if (aExists && bExists) return std::filesystem::equivalent(a, b, ec) && !ec;
-    return !aExists && !bExists && resolvedPath(a) == resolvedPath(b);
+    return sameOutput(resolveOutputName(a), resolveOutputName(b));
+}
+
+std::string unresolvedOutput(const std::string& option, const std::string& path) {
+    const OutputName name = resolveOutputName(path);
+    if (!name.error) return {};
+    return option + " " + path + ": cannot tell which file this names (" + std::strerror(name.error) +
+           "), so it is not written";
 }
 
 }  // namespace jl::cli

@@ -169,6 +169,9 @@ int reach(const std::vector<std::string>& args) {
     }
     // An output may not be the base scene, nor both outputs one file.
     const auto csvPath = o.get("--csv"), svgPath = o.get("--svg"), scenePath = o.get("--scene");
+    for (const auto& [option, path] :
+         {std::pair{"--csv", csvPath}, std::pair{"--svg", svgPath}, std::pair{"--out", o.get("--out")}})
+        if (o.error.empty() && path) o.error = unresolvedOutput(option, *path);
     for (const auto& [option, path] : {std::pair{"--csv", csvPath}, std::pair{"--svg", svgPath}})
         if (o.error.empty() && path && scenePath && sameFile(*path, *scenePath))
             o.error = std::string(option) + " " + *path + " is the scene file " + *scenePath +

@@ -36,7 +36,8 @@ const char* kRunHelp =
     "Files are written as the run goes, through a temporary beside each, and replace\n"
     "the old ones only when the run completes; a run that fails or is interrupted\n"
     "(Ctrl-C) leaves them as they were and what it computed in FILE.partial. No\n"
-    "output may be the scene file or another output.\n"
+    "output may be the scene file or another output, and a name that cannot be\n"
+    "resolved (a loop or chain of more than 40 symbolic links) is refused.\n"
     "exit status: 0 on success, 1 if the scene is invalid, the run failed or an output\n"
     "could not be written, 2 on bad arguments; killed by the signal if interrupted\n";
 

@@ -22,6 +22,8 @@ void RunOutputs::add(Table table, const std::string& option, const std::string& 
 }
 
 std::string RunOutputs::clash(const std::string& input) const {
+    for (const Output& o : outputs_)
+        if (std::string why = unresolvedOutput(o.option, o.path); !why.empty()) return why;
     for (std::size_t i = 0; i < outputs_.size(); ++i) {
         const Output& o = outputs_[i];
         if (sameFile(o.path, input))

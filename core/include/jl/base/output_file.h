@@ -60,9 +60,6 @@ private:
 // Empty when it worked; else what failed ("cannot write the file: ...").
 std::string writeWholeFile(const std::string& path, std::string_view text);
 
-// The file `path` stands for, every symbolic link followed, even one that
-// points to a file not made yet (what a rename would replace).
-std::string resolvedPath(const std::string& path);
 // True when OutputFile::open writes `path` directly rather than through a
 // temporary: a device, a pipe, or one of the process's open descriptors.
 bool writtenDirectly(const std::string& path);
