@@ -22,7 +22,8 @@ int exportFrames(const std::vector<std::string>& args) {
             "drags, losses, balance) every DT (default the scene's frame interval) and events.\n"
             "Files are written as the run goes and replace the old ones only when it\n"
             "completes; a run that fails or is interrupted leaves them as they were and\n"
-            "what it computed in FILE.partial. No output may be the scene or another output.\n",
+            "what it computed in FILE.partial (or, when that exists, in the temporary).\n"
+            "No output may be the scene or another output.\n",
             stdout);
         return 0;
     }

@@ -122,10 +122,12 @@ bool RunOutputs::finish(bool complete, const char* command) {
         const std::string partial = o.path + ".partial";
         std::error_code ec;
         const bool existed = std::filesystem::exists(o.path, ec);
-        if (o.file.keepAs(partial)) {
-            std::fprintf(stderr, "%s: the run did not complete: %s is %s; what the run wrote of it is in %s\n", command,
-                         o.path.c_str(), existed ? "left as it was" : "not made", partial.c_str());
-        } else {
+        const bool closed = o.file.keepAs(partial);
+        std::fprintf(
+            stderr, "%s: the run did not complete: %s is %s; what the run wrote of it is in %s%s\n", command,
+            o.path.c_str(), existed ? "left as it was" : "not made", o.file.kept().c_str(),
+            o.file.kept() == partial ? "" : (" (" + partial + " is there already, and is left as it is)").c_str());
+        if (!closed) {
             if (error_.empty()) error_ = o.path + ": " + o.file.error();
             ok = false;
         }

@@ -5,6 +5,7 @@
 #include "jl/base/output_name.h"
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
@@ -48,6 +49,17 @@ void syncDirectory(const std::string& dir) {
     ::close(fd);
 }
 
+// Renames `from` to `to` unless `to` exists: a result kept aside must not
+// take the place of a file the run did not make (the scene, another output).
+bool renameNew(const std::string& from, const std::string& to) {
+    if (::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE) == 0) return true;
+    if (errno != EINVAL && errno != ENOSYS) return false;
+    // A file system without RENAME_NOREPLACE: a link is never made over a file either.
+    if (::link(from.c_str(), to.c_str()) != 0) return false;
+    ::unlink(from.c_str());
+    return true;
+}
+
 }  // namespace
 
 bool writtenDirectly(const std::string& path) {
@@ -65,6 +77,7 @@ OutputFile& OutputFile::operator=(OutputFile&& other) noexcept {
     path_ = std::move(other.path_);
     target_ = std::move(other.target_);
     temporary_ = std::exchange(other.temporary_, {});
+    kept_ = std::move(other.kept_);
     buffer_ = std::move(other.buffer_);
     error_ = std::move(other.error_);
     fd_ = std::exchange(other.fd_, -1);
@@ -84,6 +97,7 @@ bool OutputFile::open(const std::string& path) {
     path_ = target_ = path;
     error_.clear();
     buffer_.clear();
+    kept_.clear();
     direct_ = false;
     if (path.empty()) {  // a temporary would be made in the current directory, and no rename could place it
         error_ = "no file name given";
@@ -161,10 +175,10 @@ bool OutputFile::keepAs(const std::string& other) {
     flush();  // a failed write still leaves what came before it
     const bool closed = close();
     if (direct_ || temporary_.empty()) return closed;
-    // Whatever happens, the temporary is not removed: it holds the result.
-    const std::string temporary = std::exchange(temporary_, {});
-    if (::rename(temporary.c_str(), other.c_str()) != 0)
-        return fail("cannot rename " + temporary + " to " + other, errno);
+    // Whatever happens, the temporary is not removed: it holds the result,
+    // under `other` when that names no file yet, else under its own name.
+    kept_ = std::exchange(temporary_, {});
+    if (renameNew(kept_, other)) kept_ = other;
     return closed;
 }
 

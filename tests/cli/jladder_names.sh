@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Every name an output is given is resolved as the writer will resolve it:
 # a name that cannot be resolved (a link chain beyond the kernel's 40 links,
-# a link loop) is refused before anything is written.
+# a link loop) is refused before anything is written, and what a run that
+# stopped early computed never lands on a file the run did not create.
 # Usage: jladder_names.sh JLADDER SOURCE_DIR WORK_DIR
 set -u
 jladder=$1
@@ -80,6 +81,22 @@ ln -s loop2 loop1 && ln -s loop1 loop2
 expect 2 "$jladder" run scene.yaml --until 0.2 --frames loop1
 expect_message "Too many levels of symbolic links"
 [ -L loop1 ] || fail "the link loop1 was replaced by a file"
+
+# A run that fails keeps what it computed in FILE.partial only when no
+# such file exists: here FILE.partial is the scene itself.
+cp pristine.yaml frames.partial
+expect 1 "$jladder" run frames.partial --until 2 --integrator explicit_euler --step 0.01 --frames frames
+same frames.partial pristine.yaml
+kept=$(ls frames.partial-* 2>/dev/null | head -1)
+[ -n "$kept" ] && [ "$(head -1 "$kept")" = "t,block,x,y,theta" ] || fail "the failed run's frames are not kept"
+expect_message "$kept"
+
+# ... or another output, left as it was by the same failed run.
+rm -f frames.partial-*
+echo old >a && echo '["old events"]' >a.partial && cp a.partial a-before.partial
+expect 1 "$jladder" run scene.yaml --until 2 --integrator explicit_euler --step 0.01 --frames a --events a.partial
+same a.partial a-before.partial
+[ "$(cat a)" = old ] || fail "a failed run replaced a"
 
 if [ $failures -gt 0 ]; then
     echo "$failures failures" >&2

@@ -32,8 +32,12 @@ public:
     // Flushes, syncs, closes, and renames the temporary over the file.
     bool commit();
     // Closes and renames the temporary to `other` instead, leaving the file
-    // as it was: where an unfinished result goes. A direct file is only closed.
+    // as it was: where an unfinished result goes. When `other` exists (the
+    // scene, another output, an older result), it is left as it is and the
+    // result stays in the temporary; kept() says where it is. A direct file
+    // is only closed.
     bool keepAs(const std::string& other);
+    const std::string& kept() const { return kept_; }
 
     bool direct() const { return direct_; }
     bool failed() const { return !error_.empty(); }
@@ -50,6 +54,7 @@ private:
     std::string path_;       // as given
     std::string target_;     // what the rename replaces: path_ with links resolved
     std::string temporary_;  // empty when direct or when renamed
+    std::string kept_;       // where keepAs left the result
     std::string buffer_;
     std::string error_;
     int fd_ = -1;
