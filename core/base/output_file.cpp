@@ -79,6 +79,7 @@ OutputFile& OutputFile::operator=(OutputFile&& other) noexcept {
     temporary_ = std::exchange(other.temporary_, {});
     kept_ = std::move(other.kept_);
     buffer_ = std::move(other.buffer_);
+    written_ = other.written_;
     error_ = std::move(other.error_);
     fd_ = std::exchange(other.fd_, -1);
     direct_ = other.direct_;
@@ -98,6 +99,7 @@ bool OutputFile::open(const std::string& path) {
     error_.clear();
     buffer_.clear();
     kept_.clear();
+    written_ = 0;
     direct_ = false;
     if (path.empty()) {  // a temporary would be made in the current directory, and no rename could place it
         error_ = "no file name given";
@@ -142,6 +144,16 @@ bool OutputFile::flush() {
     if (failed()) return false;
     if (fd_ < 0) return fail("cannot write the file", EBADF);
     const bool written = writeAll(fd_, buffer_);
+    if (written) {
+        written_ += buffer_.size();
+    } else if (!direct_) {
+        // What was flushed before is whole (rows, events): a piece the disk
+        // took only part of is taken back, so a kept result does not end torn.
+        // Should the truncation fail too, the error said is still the write's.
+        const int error = errno;
+        [[maybe_unused]] const int truncated = ::ftruncate(fd_, static_cast<off_t>(written_));
+        errno = error;
+    }
     buffer_.clear();
     return written || fail("cannot write the file", errno);
 }

@@ -98,6 +98,20 @@ expect 1 "$jladder" run scene.yaml --until 2 --integrator explicit_euler --step 
 same a.partial a-before.partial
 [ "$(cat a)" = old ] || fail "a failed run replaced a"
 
+# A full file system (here the file-size limit) ends the kept frames on a
+# whole row, not a torn one.
+rm -f f.csv*
+(
+    cp pristine.yaml scene.yaml
+    trap '' XFSZ
+    ulimit -f 64
+    "$jladder" run scene.yaml --until 2.5 --frames f.csv --every 0.0001 >out.txt 2>err.txt
+)
+[ -e f.csv.partial ] || fail "no f.csv.partial after a write past the size limit ($(head -c 300 err.txt))"
+awk -F, 'NF != 5 { print "line " NR ": " $0; bad = 1 } END { exit bad }' f.csv.partial >torn.txt ||
+    fail "f.csv.partial has a torn row: $(head -1 torn.txt)"
+[ -z "$(tail -c 1 f.csv.partial)" ] || fail "f.csv.partial ends in a torn row: $(tail -1 f.csv.partial)"
+
 if [ $failures -gt 0 ]; then
     echo "$failures failures" >&2
     exit 1

@@ -4,6 +4,7 @@
 // checked; the first failure is kept and said by error().
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 
@@ -27,7 +28,8 @@ public:
     // Buffered; false once anything has failed.
     bool write(std::string_view text);
     // Hands what is buffered to the system, so that a process killed later
-    // leaves it in the temporary.
+    // leaves it in the temporary. What is buffered is one piece: when the
+    // system takes only part of it (a full disk), the part is taken back.
     bool flush();
     // Flushes, syncs, closes, and renames the temporary over the file.
     bool commit();
@@ -56,6 +58,7 @@ private:
     std::string temporary_;  // empty when direct or when renamed
     std::string kept_;       // where keepAs left the result
     std::string buffer_;
+    std::size_t written_ = 0;  // bytes in the file, every flushed piece whole
     std::string error_;
     int fd_ = -1;
     bool direct_ = false;
