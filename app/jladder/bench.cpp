@@ -38,8 +38,7 @@ const char* kHelp =
 int bench(const std::vector<std::string>& args) {
     Options o = parse(args, {"--out", "--report", "--only", "--examples"}, {"--quick", "--help"});
     if (o.has("--help")) {
-        std::fputs(kHelp, stdout);
-        return 0;
+        return printHelp(kHelp);
     }
     const std::string only = o.get("--only").value_or("");
     if (o.error.empty() && !only.empty() && only != "stability" && only != "models" && only != "events" &&

@@ -6,6 +6,7 @@
 #include "jl/scene/scene_ranges.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -78,6 +79,12 @@ bool applySolverOptions(Options& o, SolverSpec& solver) {
     if (auto h = o.number("--step", range::step)) solver.step = *h;
     if (auto tol = o.number("--tolerance", range::tolerance)) solver.tolerance = *tol;
     return o.error.empty();
+}
+
+int printHelp(const std::string& text) {
+    if (std::fputs(text.c_str(), stdout) >= 0 && std::fflush(stdout) == 0) return 0;
+    std::fprintf(stderr, "jladder: cannot write the help: %s\n", std::strerror(errno));
+    return 1;
 }
 
 std::string jsonNumber(double x) {

@@ -41,6 +41,10 @@ bool sameFile(const std::string& a, const std::string& b);
 // which file it names (a chain of more than 40 links, a loop), or "".
 std::string unresolvedOutput(const std::string& option, const std::string& path);
 
+// Help on stdout: 0, or 1 and a message when it could not be written (a
+// full disk, a closed pipe); help that went nowhere is not a success.
+int printHelp(const std::string& text);
+
 std::string jsonString(const std::string& s);
 // A number as JSON reads it back exactly; null when it is not finite (JSON
 // has no NaN or infinity, and a bare "nan" breaks every parser).

@@ -152,8 +152,7 @@ int reach(const std::vector<std::string>& args) {
     for (const DesignParameterWord& w : kDesignParameters) valued.push_back("--" + std::string(w.word));
     Options o = parse(args, valued, {"--help"});
     if (o.has("--help")) {
-        std::fputs(kHelp, stdout);
-        return 0;
+        return printHelp(kHelp);
     }
     std::vector<DesignAxis> axes;
     for (const DesignParameterWord& w : kDesignParameters)

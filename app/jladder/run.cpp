@@ -49,8 +49,7 @@ int run(const std::vector<std::string>& args) {
         args, {"--until", "--events", "--frames", "--every", "--integrator", "--step", "--tolerance", "--event-policy"},
         {"--help"});
     if (o.has("--help")) {
-        std::fputs(kRunHelp, stdout);
-        return 0;
+        return printHelp(kRunHelp);
     }
     const auto until = o.number("--until", range::duration);
     if (o.error.empty() && o.positional.size() != 1) o.error = "give exactly one scene file";
