@@ -1,6 +1,7 @@
 // jladder bench: the command of the benchmark (bench/run.h): its options,
 // and the JSON line it ends with.
 #include "app/jladder/commands.h"
+#include "app/jladder/json_text.h"
 #include "app/jladder/options.h"
 #include "bench/run.h"
 
@@ -57,8 +58,8 @@ int bench(const std::vector<std::string>& args) {
             .value_or(!only.empty() ? (request.out / (only + ".md")).string() : std::string("docs/performance.md"));
     request.examples = o.get("--examples").value_or("examples");
     const bool ok = bench::runBench(request);
-    std::printf("{\"out\":%s,\"report\":%s,\"ok\":%s}\n", jsonString(request.out.string()).c_str(),
-                jsonString(request.report.string()).c_str(), ok ? "true" : "false");
+    const Json line{{"out", request.out.string()}, {"report", request.report.string()}, {"ok", ok}};
+    std::printf("%s\n", jsonText(line).c_str());
     return ok ? 0 : 1;
 }
 

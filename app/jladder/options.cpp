@@ -87,30 +87,6 @@ int printHelp(const std::string& text) {
     return 1;
 }
 
-std::string jsonNumber(double x) {
-    if (!std::isfinite(x)) return "null";
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.17g", x);
-    return buffer;
-}
-
-std::string jsonString(const std::string& s) {
-    std::string out = "\"";
-    for (char c : s) {
-        if (c == '"' || c == '\\') {
-            out += '\\';
-            out += c;
-        } else if (static_cast<unsigned char>(c) < 0x20) {
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "\\u%04x", c);
-            out += buf;
-        } else {
-            out += c;
-        }
-    }
-    return out + "\"";
-}
-
 bool sameFile(const std::string& a, const std::string& b) {
     return sameOutput(resolveOutputName(a), resolveOutputName(b));
 }

@@ -45,9 +45,4 @@ std::string unresolvedOutput(const std::string& option, const std::string& path)
 // full disk, a closed pipe); help that went nowhere is not a success.
 int printHelp(const std::string& text);
 
-std::string jsonString(const std::string& s);
-// A number as JSON reads it back exactly; null when it is not finite (JSON
-// has no NaN or infinity, and a bare "nan" breaks every parser).
-std::string jsonNumber(double x);
-
 }  // namespace jl::cli

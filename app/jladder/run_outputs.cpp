@@ -1,5 +1,6 @@
 #include "app/jladder/run_outputs.h"
 
+#include "app/jladder/json_text.h"
 #include "app/jladder/options.h"
 #include "jl/sim/frame_csv.h"
 
@@ -10,9 +11,8 @@ namespace jl::cli {
 
 namespace {
 
-std::string eventJson(const Event& e) {
-    return "{\"t\":" + jsonNumber(e.time) + ",\"hinge\":" + std::to_string(e.hinge) + ",\"event\":\"" +
-           toString(e.kind) + "\",\"corner\":" + std::to_string(e.corner) + ",\"text\":" + jsonString(e.text) + "}";
+Json eventJson(const Event& e) {
+    return Json{{"t", e.time}, {"hinge", e.hinge}, {"event", toString(e.kind)}, {"corner", e.corner}, {"text", e.text}};
 }
 
 }  // namespace
@@ -93,7 +93,7 @@ bool RunOutputs::event(const Event& e) {
     bool ok = true;
     for (Output& o : outputs_) {
         if (o.table != Table::Events) continue;
-        ok = put(o, (o.first ? "\n " : ",\n ") + eventJson(e)) && ok;
+        ok = put(o, (o.first ? "\n " : ",\n ") + jsonText(eventJson(e))) && ok;
         o.first = false;
     }
     return ok;
