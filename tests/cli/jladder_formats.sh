@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # What jladder writes is read by a strict reader (check_formats.py): JSON in
-# UTF-8 without bare NaN, CSV with every row as wide as its header, whatever
-# the names it was given.
+# UTF-8 without bare NaN, CSV by RFC 4180 with every row as wide as its
+# header and no bare nan, whatever the names it was given.
 # Usage: jladder_formats.sh JLADDER SOURCE_DIR WORK_DIR
 set -u
 jladder=$1
@@ -40,6 +40,17 @@ strict json summary.json events.json
 strict numbers frames.csv
 expect 0 "$jladder" export scene.yaml --until 0.3 --energy energy.csv --csv poses.csv
 strict numbers energy.csv poses.csv
+
+# The design map's table.
+expect 0 "$jladder" reach --blocks 4:6:2 --jobs 1 --csv map.csv
+strict csv map.csv
+
+# The benchmark's tables: methods hold commas, and some quantities are not
+# measured in a quick run.
+expect 0 "$jladder" bench --quick --only models --out bench --report bench/models.md
+expect 0 "$jladder" bench --quick --only stability --out bench --report bench/stability.md
+strict csv bench/models.csv bench/stability.csv
+grep -q '"rk4, merged, chain solver"' bench/models.csv || fail "models.csv lost the method 'rk4, merged, chain solver'"
 
 # bench's last line names its directory and report.
 expect 0 "$jladder" bench --quick --only models --out $'\xff-bench' --report $'\xff-bench/models.md'
