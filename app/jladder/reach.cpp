@@ -5,6 +5,7 @@
 #include "app/jladder/commands.h"
 #include "app/jladder/options.h"
 #include "jl/base/output_file.h"
+#include "jl/base/xml_text.h"
 #include "jl/design/ripple_map.h"
 #include "jl/scene/scene_io.h"
 
@@ -179,6 +180,11 @@ int reach(const std::vector<std::string>& args) {
         !(writtenDirectly(*csvPath) && writtenDirectly(*svgPath)))
         o.error =
             "--csv and --svg name the same file (" + *csvPath + "); one would overwrite the other, give each its own";
+    // A title XML cannot hold (a control character, bytes not UTF-8) is
+    // refused before the map is computed, not written as a broken SVG.
+    if (auto title = o.get("--title"); title && o.error.empty())
+        if (const std::string why = xmlTextProblem(*title); !why.empty())
+            o.error = "--title cannot be written in the SVG: " + why;
     if (!o.error.empty()) {
         std::fprintf(stderr, "jladder reach: %s\n", o.error.c_str());
         return 2;

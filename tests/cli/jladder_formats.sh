@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # What jladder writes is read by a strict reader (check_formats.py): JSON in
 # UTF-8 without bare NaN, CSV by RFC 4180 with every row as wide as its
-# header and no bare nan, whatever the names it was given.
+# header and no bare nan, SVG that is well-formed XML, whatever the names
+# and titles it was given; and a title XML cannot hold is refused.
 # Usage: jladder_formats.sh JLADDER SOURCE_DIR WORK_DIR
 set -u
 jladder=$1
@@ -41,9 +42,16 @@ strict numbers frames.csv
 expect 0 "$jladder" export scene.yaml --until 0.3 --energy energy.csv --csv poses.csv
 strict numbers energy.csv poses.csv
 
-# The design map's table.
-expect 0 "$jladder" reach --blocks 4:6:2 --jobs 1 --csv map.csv
+# The design map: a title with what XML escapes is written escaped; one
+# with what XML cannot hold is refused before any cell is computed.
+expect 0 "$jladder" reach --blocks 4:6:2 --jobs 1 --csv map.csv --svg map.svg --title 'a < b & "c" ]]> café'
 strict csv map.csv
+strict xml map.svg
+for title in $'a\x01b\x1bc' $'caf\xe9' $'a\xef\xbf\xbfb'; do
+    expect 2 "$jladder" reach --blocks 4:6:2 --jobs 1 --csv bad.csv --svg bad.svg --title "$title"
+    grep -q -- "--title" err.txt || fail "the refused title is not named: $(head -c 300 err.txt)"
+    [ -e bad.svg ] && fail "an SVG was written with the title $(printf %q "$title")" && rm -f bad.svg
+done
 
 # The benchmark's tables: methods hold commas, and some quantities are not
 # measured in a quick run.
