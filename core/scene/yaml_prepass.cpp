@@ -150,11 +150,32 @@ std::string writtenTag(const std::string& tag) {
     return tag.starts_with(core) ? "!!" + tag.substr(core.size()) : tag;
 }
 
+// Whether the quoted value whose opening quote is at `offset` is closed
+// before the file ends. The YAML reader ends such a value at the end of the
+// file without a word when a line break comes last, and the rest of the
+// file vanishes into it. True when `offset` holds no quote (nothing to tell).
+bool quoteClosed(std::string_view text, std::size_t offset) {
+    if (offset >= text.size() || (text[offset] != '\'' && text[offset] != '"')) return true;
+    const char quote = text[offset];
+    for (std::size_t i = offset + 1; i < text.size(); ++i) {
+        if (quote == '"' && text[i] == '\\') {
+            ++i;  // an escape: the next character is not the end
+        } else if (text[i] == quote) {
+            if (quote == '\'' && i + 1 < text.size() && text[i + 1] == '\'') {
+                ++i;  // '' is a quote inside single quotes
+                continue;
+            }
+            return true;
+        }
+    }
+    return false;
+}
+
 // Walks parse events keeping, per open mapping, the keys seen so far.
 class StructureCheck : public YAML::EventHandler {
 public:
-    StructureCheck(const LoadLimits& limits, Problems& problems)
-        : maxNodes_(limits.maxNodes), maxScalar_(limits.maxScalarBytes), problems_(problems) {}
+    StructureCheck(std::string_view text, const LoadLimits& limits, Problems& problems)
+        : text_(text), maxNodes_(limits.maxNodes), maxScalar_(limits.maxScalarBytes), problems_(problems) {}
 
     bool refused() const { return refused_; }
 
@@ -171,6 +192,11 @@ public:
     }
     void OnScalar(const YAML::Mark& mark, const std::string& tag, YAML::anchor_t, const std::string& value) override {
         checkTag(mark, tag);
+        if (tag == "!" && mark.pos >= 0 && !quoteClosed(text_, static_cast<std::size_t>(mark.pos))) {
+            refuse(mark, std::string("this quoted value is never closed: the file ends before its closing ") +
+                             text_[static_cast<std::size_t>(mark.pos)]);
+            throw Abandoned{};
+        }
         if (value.size() > maxScalar_)
             refuse(mark, "this value is " + std::to_string(value.size() >> 10) + " KiB long, more than the " +
                              std::to_string(maxScalar_ >> 10) + " KiB a scene file's value may have");
@@ -256,6 +282,7 @@ private:
                                           " (written as an escape) is not allowed in a scene file");
     }
 
+    std::string_view text_;
     std::size_t maxNodes_, maxScalar_;
     std::size_t count_ = 0;
     YAML::Mark documentStart_;
@@ -302,7 +329,7 @@ std::size_t commentInBrackets(std::string_view text) {
 
 bool checkStructure(std::string_view text, const LoadLimits& limits, Problems& problems) {
     std::istringstream stream{std::string(text)};
-    StructureCheck check(limits, problems);
+    StructureCheck check(text, limits, problems);
     try {
         YAML::Parser parser(stream);
         int documents = 0;
