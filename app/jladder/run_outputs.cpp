@@ -123,10 +123,13 @@ bool RunOutputs::finish(bool complete, const char* command) {
         std::error_code ec;
         const bool existed = std::filesystem::exists(o.path, ec);
         const bool closed = o.file.keepAs(partial);
-        std::fprintf(
-            stderr, "%s: the run did not complete: %s is %s; what the run wrote of it is in %s%s\n", command,
-            o.path.c_str(), existed ? "left as it was" : "not made", o.file.kept().c_str(),
-            o.file.kept() == partial ? "" : (" (" + partial + " is there already, and is left as it is)").c_str());
+        std::string aside;  // why the result is not in FILE.partial
+        if (o.file.kept() != partial)
+            aside = std::filesystem::symlink_status(partial, ec).type() != std::filesystem::file_type::not_found
+                        ? " (" + partial + " is there already, and is left as it is)"
+                        : " (" + partial + " could not be made)";
+        std::fprintf(stderr, "%s: the run did not complete: %s is %s; what the run wrote of it is in %s%s\n", command,
+                     o.path.c_str(), existed ? "left as it was" : "not made", o.file.kept().c_str(), aside.c_str());
         if (!closed) {
             if (error_.empty()) error_ = o.path + ": " + o.file.error();
             ok = false;
