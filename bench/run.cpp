@@ -9,6 +9,7 @@
 #include "bench/report.h"
 #include "bench/save_text.h"
 #include "bench/stability.h"
+#include "jl/base/csv_writer.h"
 
 #include <cmath>
 #include <cstdio>
@@ -24,9 +25,9 @@ bool writeCsv(const std::vector<BenchRow>& rows, const std::filesystem::path& pa
     std::ostringstream f;
     f << "study,method,blocks,parameter,cost_cpu_s_per_sim_s,error,finished,note\n";
     f.precision(6);
+    CsvWriter csv(f);
     for (const BenchRow& r : rows)
-        f << r.study << ',' << r.method << ',' << r.blocks << ',' << r.parameter << ',' << r.cost << ',' << r.error
-          << ',' << (r.finished ? 1 : 0) << ",\"" << r.note << "\"\n";
+        csv.row(r.study, r.method, r.blocks, r.parameter, r.cost, r.error, r.finished, r.note);
     return saveText(path, f.str());
 }
 
@@ -38,14 +39,13 @@ bool writeEventCostCsv(const std::vector<EventCostRow>& rows, const std::filesys
          "cpu_per_event_turning_baseline_s,eventful_steps,eventful_steps_cpu_s,cpu_per_event_in_eventful_steps_s,"
          "failure\n";
     f.precision(6);
+    CsvWriter csv(f);
     for (const EventCostRow& r : rows)
-        f << r.blocks << ',' << r.from << ',' << r.to << ',' << r.steps << ',' << r.meanStep << ',' << r.events << ','
-          << r.instants << ",\"" << r.kinds << "\"," << r.runCpu << ',' << r.runRepetitions << ','
-          << (r.repeatable ? 1 : 0) << ',' << r.plainStep << ',' << r.plainSteps << ',' << r.plainRepetitions << ','
-          << r.plainEvents << ',' << r.plainStepCpu << ',' << r.runCpu - double(r.steps) * r.plainStepCpu << ','
-          << r.perEvent << ',' << r.perInstant << ',' << r.eventShare << ',' << r.perEvent / r.plainStepCpu << ','
-          << r.controlSteps << ',' << r.controlEvents << ',' << r.controlStepCpu << ',' << r.perEventControl << ','
-          << r.eventfulSteps << ',' << r.eventfulCpu << ',' << r.perEventInStep << ",\"" << r.failure << "\"\n";
+        csv.row(r.blocks, r.from, r.to, r.steps, r.meanStep, r.events, r.instants, r.kinds, r.runCpu, r.runRepetitions,
+                r.repeatable, r.plainStep, r.plainSteps, r.plainRepetitions, r.plainEvents, r.plainStepCpu,
+                r.runCpu - double(r.steps) * r.plainStepCpu, r.perEvent, r.perInstant, r.eventShare,
+                r.perEvent / r.plainStepCpu, r.controlSteps, r.controlEvents, r.controlStepCpu, r.perEventControl,
+                r.eventfulSteps, r.eventfulCpu, r.perEventInStep, r.failure);
     return saveText(path, f.str());
 }
 
@@ -54,12 +54,11 @@ bool writeExamplesCsv(const ExamplesStudy& s, const std::filesystem::path& path)
     f << "scene,blocks,asked_s,simulated_s,cpu_s,cpu_s_per_sim_s,faster_than_real_time,steps,integrator,adaptive,"
          "tolerance,automatic_step,smallest_step_s,largest_step_s,step_halvings,hinge_events,failure\n";
     f.precision(6);
+    CsvWriter csv(f);
     for (const ExampleRow& r : s.rows)
-        f << '"' << r.scene << "\"," << r.blocks << ',' << r.asked << ',' << r.simulated << ',' << r.cpu << ','
-          << r.perSimulated() << ',' << (r.simulated > 0 && r.perSimulated() <= 1 ? 1 : 0) << ',' << r.steps << ",\""
-          << r.integrator << "\"," << (r.adaptive ? 1 : 0) << ',' << r.tolerance << ',' << (r.automaticStep ? 1 : 0)
-          << ',' << r.smallestStep << ',' << r.largestStep << ',' << r.stepHalvings << ',' << r.hingeEvents << ",\""
-          << r.failure << "\"\n";
+        csv.row(r.scene, r.blocks, r.asked, r.simulated, r.cpu, r.perSimulated(),
+                r.simulated > 0 && r.perSimulated() <= 1, r.steps, r.integrator, r.adaptive, r.tolerance,
+                r.automaticStep, r.smallestStep, r.largestStep, r.stepHalvings, r.hingeEvents, r.failure);
     return saveText(path, f.str());
 }
 
@@ -71,14 +70,13 @@ bool writeStabilityCsv(const StabilityStudy& s, const std::filesystem::path& pat
          "hanging_cost,turned_cost,hand_tension_factor,peak_tension_factor,peak_tension_time,rk4_dt_limit_at_peak,"
          "dopri_steps,dopri_rejected,dopri_mean_step,dopri_cost\n";
     f.precision(8);
+    CsvWriter csv(f);
     for (const StabilityRow& r : s.rows)
-        f << r.blocks << ',' << r.omegaMax << ',' << std::sqrt(r.referenceOmega2) << ',' << r.handUpper << ','
-          << r.handAiry << ',' << r.engine.iterations << ',' << r.engine.residual << ',' << r.rk4Limit << ','
-          << r.symplecticLimit << ',' << r.dopriLimit << ',' << r.horizon << ',' << r.seededPass << ',' << r.seededFail
-          << ',' << r.hangingPass << ',' << r.hangingFail << ',' << r.turnedPass << ',' << r.turnedFail << ','
-          << r.hangingCost << ',' << r.turnedCost << ',' << r.handTension << ',' << r.peakTension << ',' << r.peakTime
-          << ',' << r.turnedPeakLimit << ',' << r.dopriSteps << ',' << r.dopriRejected << ',' << r.dopriMeanStep << ','
-          << r.dopriCost << '\n';
+        csv.row(r.blocks, r.omegaMax, std::sqrt(r.referenceOmega2), r.handUpper, r.handAiry, r.engine.iterations,
+                r.engine.residual, r.rk4Limit, r.symplecticLimit, r.dopriLimit, r.horizon, r.seededPass, r.seededFail,
+                r.hangingPass, r.hangingFail, r.turnedPass, r.turnedFail, r.hangingCost, r.turnedCost, r.handTension,
+                r.peakTension, r.peakTime, r.turnedPeakLimit, r.dopriSteps, r.dopriRejected, r.dopriMeanStep,
+                r.dopriCost);
     return saveText(path, f.str());
 }
 

@@ -2,6 +2,7 @@
 // Design questions over many runs: the axes and the scene of one design, the
 // first ripple's reach on designs whose answer is known, and a map that is
 // the same whatever the number of threads.
+#include "jl/base/xml_text.h"
 #include "jl/design/design_axis.h"
 #include "jl/design/ripple_map.h"
 #include "jl/design/ripple_reach.h"
@@ -121,7 +122,7 @@ private slots:
         QVERIFY(m.cancelled);
         QCOMPARE(int(m.cells.size()), 6);
         for (const RippleReach& r : m.cells) QVERIFY(r.cancelled);
-        QVERIFY(rippleMapCsv(m).find("\"cancelled\"") != std::string::npos);
+        QVERIFY(rippleMapCsv(m).find(",cancelled\n") != std::string::npos);
     }
 
     void aMapIsTheSameOnAnyNumberOfThreads() {
@@ -141,6 +142,27 @@ private slots:
         QCOMPARE(one.at(2, 0).reached, alone.reached);
         QCOMPARE(one.at(2, 0).flipTimes, alone.flipTimes);
         QVERIFY(rippleMapCsv(one).starts_with("blocks,thickness,hinges,reached,"));
+    }
+
+    // XML 1.0 holds no C0 control but tab and line ends, no U+FFFE/U+FFFF and
+    // nothing that is not UTF-8, escaped or not: the SVG gets U+FFFD there.
+    void theMapsSvgHoldsOnlyWhatXmlCan() {
+        QCOMPARE(xmlEscaped("a\x01<b>&'\"\xff\xef\xbf\xbe caf\xc3\xa9\t"),
+                 std::string("a\xef\xbf\xbd&lt;b&gt;&amp;&apos;&quot;\xef\xbf\xbd\xef\xbf\xbd caf\xc3\xa9\t"));
+        QVERIFY(xmlTextProblem("a < b & caf\xc3\xa9").empty());
+        for (const char* bad : {"a\x01"
+                                "b",
+                                "caf\xe9",
+                                "a\xef\xbf\xbf"
+                                "b",
+                                "\xc0\xaf", "\xed\xa0\x80"})
+            QVERIFY2(!xmlTextProblem(bad).empty(), bad);
+        const RippleMap m = computeRippleMap(turnedLadder(6, 0.012), {DesignParameter::Blocks, 4, 4, 1},
+                                             {DesignParameter::Thickness, 0.012, 0.012, 1}, 1);
+        const std::string svg = rippleMapSvg(m,
+                                             "a\x01"
+                                             "b\x1b");
+        QVERIFY(svg.find('\x01') == std::string::npos && svg.find('\x1b') == std::string::npos);
     }
 };
 

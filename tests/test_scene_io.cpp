@@ -230,6 +230,15 @@ private slots:
         QCOMPARE(readBytes(path), std::string("new\n"));
         QCOMPARE(readBytes(path.string() + ".partial"), std::string("partial\n"));
         QCOMPARE(std::distance(fs::directory_iterator(root), fs::directory_iterator{}), 2L);
+        {
+            OutputFile out;  // kept aside again: the older result stays, the new one keeps its temporary
+            QVERIFY(out.open(path.string()) && out.write("again\n"));
+            QVERIFY(out.keepAs(path.string() + ".partial"));
+            QVERIFY(out.kept() != path.string() + ".partial");
+            QCOMPARE(readBytes(out.kept()), std::string("again\n"));
+        }
+        QCOMPARE(readBytes(path.string() + ".partial"), std::string("partial\n"));
+        QCOMPARE(std::distance(fs::directory_iterator(root), fs::directory_iterator{}), 3L);
     }
 
     void outputFileChecksEveryWrite() {

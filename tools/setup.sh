@@ -5,6 +5,7 @@ set -euo pipefail
 
 JL_PACKAGES=(build-essential cmake ninja-build qt6-base-dev qt6-3d-dev
   libqt6opengl6-dev qt6-charts-dev qt6-svg-dev libeigen3-dev libyaml-cpp-dev
+  nlohmann-json3-dev
   libgl1-mesa-dev xvfb xauth)
 # What only ./test.sh needs: a window manager and xwininfo for the window's
 # fit on the screen, clang-format for the house style.

@@ -1,5 +1,6 @@
 #include "ui/design_map.h"
 
+#include "jl/base/csv_writer.h"
 #include "ui/design_map_cache.h"
 #include "ui/design_map_grid.h"
 
@@ -397,19 +398,18 @@ void DesignMap::openCell(int column, int row) {
 bool DesignMap::exportCsv(const QString& path) const {
     std::ofstream out(path.toStdString());
     const AxisShown &sx = axisShown(xAxis().parameter), &sy = axisShown(yAxis().parameter);
-    out << axisTitle(sx).toStdString() << ',' << axisTitle(sy).toStdString()
-        << ",hinges,reached,mean time between flips (s),failure\n";
+    CsvWriter csv(out);
+    csv.row(axisTitle(sx).toStdString(), axisTitle(sy).toStdString(), "hinges", "reached",
+            "mean time between flips (s)", "failure");
     for (int r = 0; r < grid_->rows(); ++r)
         for (int c = 0; c < grid_->columns(); ++c) {
             const auto cell = grid_->cell(c, r);
-            out << shownValue(sx, xs_[size_t(c)]).toStdString() << ',' << shownValue(sy, ys_[size_t(r)]).toStdString()
-                << ',';
+            const std::string x = shownValue(sx, xs_[size_t(c)]).toStdString(),
+                              y = shownValue(sy, ys_[size_t(r)]).toStdString();
             if (cell)
-                out << cell->hinges << ',' << cell->reached << ',' << cell->meanTimeBetweenFlips << ",\""
-                    << cell->failure << '"';
+                csv.row(x, y, cell->hinges, cell->reached, cell->meanTimeBetweenFlips, cell->failure);
             else
-                out << ",,,";
-            out << '\n';
+                csv.row(x, y, "", "", "", "");
         }
     return bool(out);
 }

@@ -1,6 +1,7 @@
 // jladder bench: the command of the benchmark (bench/run.h): its options,
 // and the JSON line it ends with.
 #include "app/jladder/commands.h"
+#include "app/jladder/json_text.h"
 #include "app/jladder/options.h"
 #include "bench/run.h"
 
@@ -38,8 +39,7 @@ const char* kHelp =
 int bench(const std::vector<std::string>& args) {
     Options o = parse(args, {"--out", "--report", "--only", "--examples"}, {"--quick", "--help"});
     if (o.has("--help")) {
-        std::fputs(kHelp, stdout);
-        return 0;
+        return printHelp(kHelp);
     }
     const std::string only = o.get("--only").value_or("");
     if (o.error.empty() && !only.empty() && only != "stability" && only != "models" && only != "events" &&
@@ -58,8 +58,8 @@ int bench(const std::vector<std::string>& args) {
             .value_or(!only.empty() ? (request.out / (only + ".md")).string() : std::string("docs/performance.md"));
     request.examples = o.get("--examples").value_or("examples");
     const bool ok = bench::runBench(request);
-    std::printf("{\"out\":%s,\"report\":%s,\"ok\":%s}\n", jsonString(request.out.string()).c_str(),
-                jsonString(request.report.string()).c_str(), ok ? "true" : "false");
+    const Json line{{"out", request.out.string()}, {"report", request.report.string()}, {"ok", ok}};
+    std::printf("%s\n", jsonText(line).c_str());
     return ok ? 0 : 1;
 }
 

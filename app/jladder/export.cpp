@@ -14,7 +14,7 @@ namespace jl::cli {
 int exportFrames(const std::vector<std::string>& args) {
     Options o = parse(args, {"--until", "--every", "--csv", "--energy", "--events"}, {"--help"});
     if (o.has("--help")) {
-        std::fputs(
+        return printHelp(
             "usage: jladder export SCENE [--until T] [--every DT] [--csv POSES.csv] [--energy ENERGY.csv]\n"
             "                      [--events EVENTS.json]\n"
             "Runs SCENE headless (to T, default the scene's duration) and writes block poses\n"
@@ -22,9 +22,8 @@ int exportFrames(const std::vector<std::string>& args) {
             "drags, losses, balance) every DT (default the scene's frame interval) and events.\n"
             "Files are written as the run goes and replace the old ones only when it\n"
             "completes; a run that fails or is interrupted leaves them as they were and\n"
-            "what it computed in FILE.partial. No output may be the scene or another output.\n",
-            stdout);
-        return 0;
+            "what it computed in FILE.partial (or, when that exists, in the temporary).\n"
+            "No output may be the scene or another output.\n");
     }
     if (o.error.empty() && o.positional.size() != 1) o.error = "give exactly one scene file";
     RunOutputs outputs;

@@ -1,5 +1,6 @@
 // jladder: the command-line tool. Headless: validate, run, bench, export.
 #include "app/jladder/commands.h"
+#include "app/jladder/options.h"
 
 #include <cstdio>
 #include <cstring>
@@ -8,33 +9,29 @@
 
 namespace {
 
-void usage(std::FILE* out) {
-    std::fputs(
-        "usage: jladder <command> [options]\n"
-        "\n"
-        "commands:\n"
-        "  validate SCENE...   check scene files; messages as file:line:column: text\n"
-        "  run SCENE --until T simulate headless; JSON summary on stdout\n"
-        "  bench [--quick]     measure speed against error; write tables and plots\n"
-        "  export SCENE        write frames and events as CSV/JSON\n"
-        "  reach               how far the first ripple travels, by ladder length\n"
-        "\n"
-        "'jladder <command> --help' describes each command's options.\n",
-        out);
-}
+const char* kUsage =
+    "usage: jladder <command> [options]\n"
+    "\n"
+    "commands:\n"
+    "  validate SCENE...   check scene files; messages as file:line:column: text\n"
+    "  run SCENE --until T simulate headless; JSON summary on stdout\n"
+    "  bench [--quick]     measure speed against error; write tables and plots\n"
+    "  export SCENE        write frames and events as CSV/JSON\n"
+    "  reach               how far the first ripple travels, by ladder length\n"
+    "\n"
+    "'jladder <command> --help' describes each command's options.\n";
 
 }  // namespace
 
 int main(int argc, char** argv) {
     if (argc < 2) {
-        usage(stderr);
+        std::fputs(kUsage, stderr);
         return 2;
     }
     const std::string command = argv[1];
     const std::vector<std::string> args(argv + 2, argv + argc);
     if (command == "--help" || command == "-h" || command == "help") {
-        usage(stdout);
-        return 0;
+        return jl::cli::printHelp(kUsage);
     }
     if (command == "validate") return jl::cli::validate(args);
     if (command == "run") return jl::cli::run(args);
@@ -42,6 +39,6 @@ int main(int argc, char** argv) {
     if (command == "export") return jl::cli::exportFrames(args);
     if (command == "reach") return jl::cli::reach(args);
     std::fprintf(stderr, "jladder: unknown command '%s'\n", command.c_str());
-    usage(stderr);
+    std::fputs(kUsage, stderr);
     return 2;
 }

@@ -1,14 +1,15 @@
 #include "app/jladder/options.h"
 
-#include "jl/base/output_file.h"
+#include "jl/base/output_name.h"
 #include "jl/scene/scalar_text.h"
 #include "jl/scene/scene_fields.h"
 #include "jl/scene/scene_ranges.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
+#include <cstring>
 
 namespace jl::cli {
 
@@ -80,35 +81,21 @@ bool applySolverOptions(Options& o, SolverSpec& solver) {
     return o.error.empty();
 }
 
-std::string jsonNumber(double x) {
-    if (!std::isfinite(x)) return "null";
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.17g", x);
-    return buffer;
-}
-
-std::string jsonString(const std::string& s) {
-    std::string out = "\"";
-    for (char c : s) {
-        if (c == '"' || c == '\\') {
-            out += '\\';
-            out += c;
-        } else if (static_cast<unsigned char>(c) < 0x20) {
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "\\u%04x", c);
-            out += buf;
-        } else {
-            out += c;
-        }
-    }
-    return out + "\"";
+int printHelp(const std::string& text) {
+    if (std::fputs(text.c_str(), stdout) >= 0 && std::fflush(stdout) == 0) return 0;
+    std::fprintf(stderr, "jladder: cannot write the help: %s\n", std::strerror(errno));
+    return 1;
 }
 
 bool sameFile(const std::string& a, const std::string& b) {
-    std::error_code ec;
-    const bool aExists = std::filesystem::exists(a, ec), bExists = std::filesystem::exists(b, ec);
-    if (aExists && bExists) return std::filesystem::equivalent(a, b, ec) && !ec;
-    return !aExists && !bExists && resolvedPath(a) == resolvedPath(b);
+    return sameOutput(resolveOutputName(a), resolveOutputName(b));
+}
+
+std::string unresolvedOutput(const std::string& option, const std::string& path) {
+    const OutputName name = resolveOutputName(path);
+    if (!name.error) return {};
+    return option + " " + path + ": cannot tell which file this names (" + std::strerror(name.error) +
+           "), so it is not written";
 }
 
 }  // namespace jl::cli

@@ -34,12 +34,15 @@ Options parse(const std::vector<std::string>& args, const std::vector<std::strin
 bool applySolverOptions(Options& o, SolverSpec& solver);
 
 // Two names for one file: the same file (through links and hard links), or,
-// for files not made yet, the same name once links are followed.
+// for files not made yet, the same name once links are followed; resolved
+// as the writer resolves them (jl/base/output_name.h).
 bool sameFile(const std::string& a, const std::string& b);
+// Why the output `path` given to `option` is refused because no one can say
+// which file it names (a chain of more than 40 links, a loop), or "".
+std::string unresolvedOutput(const std::string& option, const std::string& path);
 
-std::string jsonString(const std::string& s);
-// A number as JSON reads it back exactly; null when it is not finite (JSON
-// has no NaN or infinity, and a bare "nan" breaks every parser).
-std::string jsonNumber(double x);
+// Help on stdout: 0, or 1 and a message when it could not be written (a
+// full disk, a closed pipe); help that went nowhere is not a success.
+int printHelp(const std::string& text);
 
 }  // namespace jl::cli

@@ -5,6 +5,7 @@
 #include "app/jladder/commands.h"
 #include "app/jladder/options.h"
 #include "jl/base/output_file.h"
+#include "jl/base/xml_text.h"
 #include "jl/design/ripple_map.h"
 #include "jl/scene/scene_io.h"
 
@@ -152,8 +153,7 @@ int reach(const std::vector<std::string>& args) {
     for (const DesignParameterWord& w : kDesignParameters) valued.push_back("--" + std::string(w.word));
     Options o = parse(args, valued, {"--help"});
     if (o.has("--help")) {
-        std::fputs(kHelp, stdout);
-        return 0;
+        return printHelp(kHelp);
     }
     std::vector<DesignAxis> axes;
     for (const DesignParameterWord& w : kDesignParameters)
@@ -169,6 +169,9 @@ int reach(const std::vector<std::string>& args) {
     }
     // An output may not be the base scene, nor both outputs one file.
     const auto csvPath = o.get("--csv"), svgPath = o.get("--svg"), scenePath = o.get("--scene");
+    for (const auto& [option, path] :
+         {std::pair{"--csv", csvPath}, std::pair{"--svg", svgPath}, std::pair{"--out", o.get("--out")}})
+        if (o.error.empty() && path) o.error = unresolvedOutput(option, *path);
     for (const auto& [option, path] : {std::pair{"--csv", csvPath}, std::pair{"--svg", svgPath}})
         if (o.error.empty() && path && scenePath && sameFile(*path, *scenePath))
             o.error = std::string(option) + " " + *path + " is the scene file " + *scenePath +
@@ -177,6 +180,11 @@ int reach(const std::vector<std::string>& args) {
         !(writtenDirectly(*csvPath) && writtenDirectly(*svgPath)))
         o.error =
             "--csv and --svg name the same file (" + *csvPath + "); one would overwrite the other, give each its own";
+    // A title XML cannot hold (a control character, bytes not UTF-8) is
+    // refused before the map is computed, not written as a broken SVG.
+    if (auto title = o.get("--title"); title && o.error.empty())
+        if (const std::string why = xmlTextProblem(*title); !why.empty())
+            o.error = "--title cannot be written in the SVG: " + why;
     if (!o.error.empty()) {
         std::fprintf(stderr, "jladder reach: %s\n", o.error.c_str());
         return 2;

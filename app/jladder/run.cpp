@@ -35,8 +35,10 @@ const char* kRunHelp =
     "\n"
     "Files are written as the run goes, through a temporary beside each, and replace\n"
     "the old ones only when the run completes; a run that fails or is interrupted\n"
-    "(Ctrl-C) leaves them as they were and what it computed in FILE.partial. No\n"
-    "output may be the scene file or another output.\n"
+    "(Ctrl-C) leaves them as they were and what it computed in FILE.partial, or,\n"
+    "when a file of that name exists, in the temporary FILE.partial-XXXXXX. No\n"
+    "output may be the scene file or another output, and a name that cannot be\n"
+    "resolved (a loop or chain of more than 40 symbolic links) is refused.\n"
     "exit status: 0 on success, 1 if the scene is invalid, the run failed or an output\n"
     "could not be written, 2 on bad arguments; killed by the signal if interrupted\n";
 
@@ -47,8 +49,7 @@ int run(const std::vector<std::string>& args) {
         args, {"--until", "--events", "--frames", "--every", "--integrator", "--step", "--tolerance", "--event-policy"},
         {"--help"});
     if (o.has("--help")) {
-        std::fputs(kRunHelp, stdout);
-        return 0;
+        return printHelp(kRunHelp);
     }
     const auto until = o.number("--until", range::duration);
     if (o.error.empty() && o.positional.size() != 1) o.error = "give exactly one scene file";

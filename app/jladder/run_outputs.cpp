@@ -1,5 +1,6 @@
 #include "app/jladder/run_outputs.h"
 
+#include "app/jladder/json_text.h"
 #include "app/jladder/options.h"
 #include "jl/sim/frame_csv.h"
 
@@ -10,9 +11,8 @@ namespace jl::cli {
 
 namespace {
 
-std::string eventJson(const Event& e) {
-    return "{\"t\":" + jsonNumber(e.time) + ",\"hinge\":" + std::to_string(e.hinge) + ",\"event\":\"" +
-           toString(e.kind) + "\",\"corner\":" + std::to_string(e.corner) + ",\"text\":" + jsonString(e.text) + "}";
+Json eventJson(const Event& e) {
+    return Json{{"t", e.time}, {"hinge", e.hinge}, {"event", toString(e.kind)}, {"corner", e.corner}, {"text", e.text}};
 }
 
 }  // namespace
@@ -22,6 +22,8 @@ void RunOutputs::add(Table table, const std::string& option, const std::string& 
 }
 
 std::string RunOutputs::clash(const std::string& input) const {
+    for (const Output& o : outputs_)
+        if (std::string why = unresolvedOutput(o.option, o.path); !why.empty()) return why;
     for (std::size_t i = 0; i < outputs_.size(); ++i) {
         const Output& o = outputs_[i];
         if (sameFile(o.path, input))
@@ -91,7 +93,7 @@ bool RunOutputs::event(const Event& e) {
     bool ok = true;
     for (Output& o : outputs_) {
         if (o.table != Table::Events) continue;
-        ok = put(o, (o.first ? "\n " : ",\n ") + eventJson(e)) && ok;
+        ok = put(o, (o.first ? "\n " : ",\n ") + jsonText(eventJson(e))) && ok;
         o.first = false;
     }
     return ok;
@@ -120,10 +122,15 @@ bool RunOutputs::finish(bool complete, const char* command) {
         const std::string partial = o.path + ".partial";
         std::error_code ec;
         const bool existed = std::filesystem::exists(o.path, ec);
-        if (o.file.keepAs(partial)) {
-            std::fprintf(stderr, "%s: the run did not complete: %s is %s; what the run wrote of it is in %s\n", command,
-                         o.path.c_str(), existed ? "left as it was" : "not made", partial.c_str());
-        } else {
+        const bool closed = o.file.keepAs(partial);
+        std::string aside;  // why the result is not in FILE.partial
+        if (o.file.kept() != partial)
+            aside = std::filesystem::symlink_status(partial, ec).type() != std::filesystem::file_type::not_found
+                        ? " (" + partial + " is there already, and is left as it is)"
+                        : " (" + partial + " could not be made)";
+        std::fprintf(stderr, "%s: the run did not complete: %s is %s; what the run wrote of it is in %s%s\n", command,
+                     o.path.c_str(), existed ? "left as it was" : "not made", o.file.kept().c_str(), aside.c_str());
+        if (!closed) {
             if (error_.empty()) error_ = o.path + ": " + o.file.error();
             ok = false;
         }

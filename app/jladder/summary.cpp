@@ -1,9 +1,8 @@
 #include "app/jladder/summary.h"
 
-#include "app/jladder/options.h"
+#include "app/jladder/json_text.h"
 
 #include <csignal>
-#include <sstream>
 
 namespace jl::cli {
 
@@ -12,45 +11,45 @@ namespace {
 // What step the run took: the adaptive integrator's error control's (the
 // range of the steps it chose), the scene's, or the engine's choice (its
 // range, and how often a step that blew up made it halve the rest).
-std::string stepJson(const SolverFrame& f) {
-    std::ostringstream s;
-    if (f.adaptiveStep) {
-        s << "{\"chosen_by\":\"error control\",\"smallest\":" << jsonNumber(f.smallestStep)
-          << ",\"largest\":" << jsonNumber(f.largestStep) << "}";
-        return s.str();
-    }
-    if (!f.automaticStep) {
-        s << "{\"chosen_by\":\"scene\"}";
-        return s.str();
-    }
-    s << "{\"chosen_by\":\"engine\",\"smallest\":" << jsonNumber(f.smallestStep)
-      << ",\"largest\":" << jsonNumber(f.largestStep) << ",\"halvings\":" << f.stepHalvings << "}";
-    return s.str();
+Json stepJson(const SolverFrame& f) {
+    if (f.adaptiveStep)
+        return Json{{"chosen_by", "error control"}, {"smallest", f.smallestStep}, {"largest", f.largestStep}};
+    if (!f.automaticStep) return Json{{"chosen_by", "scene"}};
+    return Json{{"chosen_by", "engine"},
+                {"smallest", f.smallestStep},
+                {"largest", f.largestStep},
+                {"halvings", f.stepHalvings}};
 }
 
 // Why the run ended before `until`, in words, or null.
-std::string failureJson(const Recording& r) {
-    if (!r.failure.empty()) return jsonString(r.failure);
+Json failureJson(const Recording& r) {
+    if (!r.failure.empty()) return r.failure;
     if (r.interrupted)
-        return jsonString(std::string("interrupted by ") + (r.interrupted == SIGINT ? "SIGINT" : "SIGTERM") +
-                          " at t = " + std::to_string(r.time) + " s");
-    if (r.targetFailed) return jsonString("an output could not be written at t = " + std::to_string(r.time) + " s");
-    return "null";
+        return std::string("interrupted by ") + (r.interrupted == SIGINT ? "SIGINT" : "SIGTERM") +
+               " at t = " + std::to_string(r.time) + " s";
+    if (r.targetFailed) return "an output could not be written at t = " + std::to_string(r.time) + " s";
+    return nullptr;
 }
 
 }  // namespace
 
 std::string summaryJson(const Recording& r, const std::string& scenePath) {
-    std::ostringstream s;
-    s << "{\"scene\":" << jsonString(scenePath) << ",\"time\":" << jsonNumber(r.time) << ",\"steps\":" << r.steps
-      << ",\"evaluations\":" << r.evaluations << ",\"step\":" << stepJson(r.solver) << ",\"events\":" << r.events
-      << ",\"energy_start\":" << jsonNumber(r.energyStart) << ",\"energy_end\":" << jsonNumber(r.energyEnd)
-      << ",\"worst_energy_balance\":" << jsonNumber(r.worstBalance) << ",\"max_residual\":"
-      << jsonNumber(r.worstResidual)
-      // The first block of the still tail at the end (docs/model.md section 3.7): null if none hangs still.
-      << ",\"still_from\":" << (r.solver.stillFrom >= 0 ? std::to_string(r.solver.stillFrom) : std::string("null"))
-      << ",\"wall_seconds\":" << jsonNumber(r.wallSeconds) << ",\"failure\":" << failureJson(r) << "}";
-    return s.str();
+    Json s;
+    s["scene"] = scenePath;
+    s["time"] = r.time;
+    s["steps"] = r.steps;
+    s["evaluations"] = r.evaluations;
+    s["step"] = stepJson(r.solver);
+    s["events"] = r.events;
+    s["energy_start"] = r.energyStart;
+    s["energy_end"] = r.energyEnd;
+    s["worst_energy_balance"] = r.worstBalance;
+    s["max_residual"] = r.worstResidual;
+    // The first block of the still tail at the end (docs/model.md section 3.7): null if none hangs still.
+    s["still_from"] = r.solver.stillFrom >= 0 ? Json(r.solver.stillFrom) : Json(nullptr);
+    s["wall_seconds"] = r.wallSeconds;
+    s["failure"] = failureJson(r);
+    return jsonText(s);
 }
 
 }  // namespace jl::cli

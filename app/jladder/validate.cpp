@@ -1,5 +1,6 @@
 // jladder validate: check scene files and list every problem as file:line:column: message.
 #include "app/jladder/commands.h"
+#include "app/jladder/options.h"
 #include "jl/scene/scene_io.h"
 #include "jl/sim/simulation.h"
 
@@ -11,16 +12,13 @@ namespace jl::cli {
 
 namespace {
 
-void usage(std::FILE* out) {
-    std::fputs(
-        "usage: jladder validate SCENE...\n"
-        "\n"
-        "Checks each scene file against the format (docs/scene-format.md) and builds\n"
-        "its world, without running it. Every problem is printed on stderr as\n"
-        "file:line:column: message (or file: message, for what the engine finds).\n"
-        "Exit status: 0 if every file is valid, 1 if any is not, 2 on a usage error.\n",
-        out);
-}
+const char* kUsage =
+    "usage: jladder validate SCENE...\n"
+    "\n"
+    "Checks each scene file against the format (docs/scene-format.md) and builds\n"
+    "its world, without running it. Every problem is printed on stderr as\n"
+    "file:line:column: message (or file: message, for what the engine finds).\n"
+    "Exit status: 0 if every file is valid, 1 if any is not, 2 on a usage error.\n";
 
 }  // namespace
 
@@ -28,18 +26,17 @@ int validate(const std::vector<std::string>& args) {
     std::vector<std::string> files;
     for (const std::string& arg : args) {
         if (arg == "--help" || arg == "-h") {
-            usage(stdout);
-            return 0;
+            return printHelp(kUsage);
         }
         if (arg.starts_with("-")) {
             std::fprintf(stderr, "jladder validate: unknown option '%s'\n", arg.c_str());
-            usage(stderr);
+            std::fputs(kUsage, stderr);
             return 2;
         }
         files.push_back(arg);
     }
     if (files.empty()) {
-        usage(stderr);
+        std::fputs(kUsage, stderr);
         return 2;
     }
     int invalid = 0;

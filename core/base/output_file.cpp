@@ -2,8 +2,10 @@
 // system, so the temporary lives in the directory of the file it replaces.
 #include "jl/base/output_file.h"
 
+#include "jl/base/output_name.h"
+
 #include <cerrno>
-#include <charconv>
+#include <cstdio>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
@@ -19,22 +21,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr std::size_t kBufferBytes = 1u << 20;
-
-// The descriptor a name stands for when it is one of the process's own open
-// files: opening /dev/stdout anew would start at offset 0 of a redirected
-// file and write over what the shell's descriptor writes.
-std::optional<int> openDescriptor(std::string_view path) {
-    if (path == "/dev/stdout") return 1;
-    if (path == "/dev/stderr") return 2;
-    for (std::string_view prefix : {"/dev/fd/", "/proc/self/fd/"}) {
-        if (!path.starts_with(prefix)) continue;
-        const std::string_view digits = path.substr(prefix.size());
-        int fd = -1;
-        const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), fd);
-        if (error == std::errc{} && end == digits.data() + digits.size() && fd >= 0) return fd;
-    }
-    return std::nullopt;
-}
 
 bool writeAll(int fd, std::string_view text) {
     while (!text.empty()) {
@@ -63,24 +49,24 @@ void syncDirectory(const std::string& dir) {
     ::close(fd);
 }
 
-}  // namespace
-
-std::string resolvedPath(const std::string& path) {
-    std::error_code ec;
-    fs::path p = fs::absolute(path, ec);
-    if (ec) p = path;
-    for (int links = 0; links < 40 && fs::is_symlink(p, ec); ++links) {
-        const fs::path to = fs::read_symlink(p, ec);
-        if (ec) break;
-        p = to.is_absolute() ? to : p.parent_path() / to;
-    }
-    const fs::path resolved = fs::weakly_canonical(p, ec);
-    return ec ? p.string() : resolved.string();
+// Renames `from` to `to` unless `to` exists: a result kept aside must not
+// take the place of a file the run did not make (the scene, another output).
+bool renameNew(const std::string& from, const std::string& to) {
+    if (::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE) == 0) return true;
+    if (errno != EINVAL && errno != ENOSYS) return false;
+    // A file system without RENAME_NOREPLACE: a link is never made over a file either.
+    if (::link(from.c_str(), to.c_str()) != 0) return false;
+    ::unlink(from.c_str());
+    return true;
 }
 
+}  // namespace
+
 bool writtenDirectly(const std::string& path) {
+    const OutputName name = resolveOutputName(path);
     struct stat st {};
-    return openDescriptor(path) || (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode));
+    return !name.error &&
+           (name.descriptor || (::stat(name.path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode)));
 }
 
 OutputFile::OutputFile(OutputFile&& other) noexcept { *this = std::move(other); }
@@ -91,7 +77,9 @@ OutputFile& OutputFile::operator=(OutputFile&& other) noexcept {
     path_ = std::move(other.path_);
     target_ = std::move(other.target_);
     temporary_ = std::exchange(other.temporary_, {});
+    kept_ = std::move(other.kept_);
     buffer_ = std::move(other.buffer_);
+    written_ = other.written_;
     error_ = std::move(other.error_);
     fd_ = std::exchange(other.fd_, -1);
     direct_ = other.direct_;
@@ -110,27 +98,31 @@ bool OutputFile::open(const std::string& path) {
     path_ = target_ = path;
     error_.clear();
     buffer_.clear();
+    kept_.clear();
+    written_ = 0;
     direct_ = false;
     if (path.empty()) {  // a temporary would be made in the current directory, and no rename could place it
         error_ = "no file name given";
         return false;
     }
-    if (const auto fd = openDescriptor(path)) {
+    const OutputName name = resolveOutputName(path);
+    if (name.error) return fail("cannot tell which file this name stands for", name.error);
+    if (name.descriptor) {
         direct_ = true;
-        fd_ = ::fcntl(*fd, F_DUPFD_CLOEXEC, 3);
+        fd_ = ::fcntl(*name.descriptor, F_DUPFD_CLOEXEC, 3);
         return fd_ >= 0 || fail("cannot write to it", errno);
     }
+    // Replacing a symbolic link would turn it into a file: replace what it
+    // points to, the very file the clash checks compared (jl/base/output_name.h).
+    target_ = name.path;
     struct stat st {};
-    const bool exists = ::stat(path.c_str(), &st) == 0;
+    const bool exists = ::stat(target_.c_str(), &st) == 0;
     if (exists && S_ISDIR(st.st_mode)) return fail("cannot write the file", EISDIR);
     if (exists && !S_ISREG(st.st_mode)) {
         direct_ = true;
-        fd_ = ::open(path.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
+        fd_ = ::open(target_.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
         return fd_ >= 0 || fail("cannot open it", errno);
     }
-    // Replacing a symbolic link would turn it into a file: replace what it points to.
-    struct stat link {};
-    if (::lstat(path.c_str(), &link) == 0 && S_ISLNK(link.st_mode)) target_ = resolvedPath(path);
     const std::string dir = directoryOf(target_);
     std::string temporary = (fs::path(dir) / (fs::path(target_).filename().string() + ".partial-XXXXXX")).string();
     fd_ = ::mkostemp(temporary.data(), O_CLOEXEC);
@@ -152,6 +144,16 @@ bool OutputFile::flush() {
     if (failed()) return false;
     if (fd_ < 0) return fail("cannot write the file", EBADF);
     const bool written = writeAll(fd_, buffer_);
+    if (written) {
+        written_ += buffer_.size();
+    } else if (!direct_) {
+        // What was flushed before is whole (rows, events): a piece the disk
+        // took only part of is taken back, so a kept result does not end torn.
+        // Should the truncation fail too, the error said is still the write's.
+        const int error = errno;
+        [[maybe_unused]] const int truncated = ::ftruncate(fd_, static_cast<off_t>(written_));
+        errno = error;
+    }
     buffer_.clear();
     return written || fail("cannot write the file", errno);
 }
@@ -185,10 +187,10 @@ bool OutputFile::keepAs(const std::string& other) {
     flush();  // a failed write still leaves what came before it
     const bool closed = close();
     if (direct_ || temporary_.empty()) return closed;
-    // Whatever happens, the temporary is not removed: it holds the result.
-    const std::string temporary = std::exchange(temporary_, {});
-    if (::rename(temporary.c_str(), other.c_str()) != 0)
-        return fail("cannot rename " + temporary + " to " + other, errno);
+    // Whatever happens, the temporary is not removed: it holds the result,
+    // under `other` when that names no file yet, else under its own name.
+    kept_ = std::exchange(temporary_, {});
+    if (renameNew(kept_, other)) kept_ = other;
     return closed;
 }
 

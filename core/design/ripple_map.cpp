@@ -1,5 +1,6 @@
 #include "jl/design/ripple_map.h"
 
+#include "jl/base/csv_writer.h"
 #include "jl/base/xml_text.h"
 
 #include <algorithm>
@@ -71,12 +72,6 @@ bool isLength(DesignParameter p) {
 // Values as a reader of the map wants them: lengths in mm.
 std::string shown(DesignParameter p, double v) { return value(p, isLength(p) ? 1000 * v : v); }
 
-std::string csvText(const std::string& s) {
-    std::string out = "\"";
-    for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return out + "\"";
-}
-
 std::string axisTitle(const DesignAxis& a) {
     const DesignParameterWord& w = describe(a.parameter);
     const std::string unit = isLength(a.parameter) ? "mm" : std::string(w.unit);
@@ -100,12 +95,13 @@ std::string rippleMapCsv(const RippleMap& m) {
     std::ostringstream out;
     out << describe(m.x.parameter).word << ',' << describe(m.y.parameter).word
         << ",hinges,reached,mean_time_between_flips_s,flips_elsewhere,events,quick_row,failure\n";
+    CsvWriter csv(out);
     for (size_t j = 0; j < m.ys.size(); ++j)
         for (size_t i = 0; i < m.xs.size(); ++i) {
             const RippleReach& r = m.at(i, j);
-            out << value(m.x.parameter, m.xs[i]) << ',' << value(m.y.parameter, m.ys[j]) << ',' << r.hinges << ','
-                << r.reached << ',' << fixed(r.meanTimeBetweenFlips, 6) << ',' << r.flipsElsewhere << ',' << r.events
-                << ',' << r.quickRow << ',' << csvText(r.cancelled ? "cancelled" : r.failure) << '\n';
+            csv.row(value(m.x.parameter, m.xs[i]), value(m.y.parameter, m.ys[j]), r.hinges, r.reached,
+                    std::isfinite(r.meanTimeBetweenFlips) ? fixed(r.meanTimeBetweenFlips, 6) : std::string(),
+                    r.flipsElsewhere, r.events, r.quickRow, r.cancelled ? "cancelled" : r.failure);
         }
     return out.str();
 }

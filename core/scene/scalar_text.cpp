@@ -18,10 +18,13 @@ std::string formatNumber(double value) {
 
 std::optional<double> parseNumber(std::string_view text, bool* outOfRange) {
     if (outOfRange) *outOfRange = false;
-    if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+    // One sign: from_chars takes no '+', so it is dropped here, and a '-'
+    // after it ("+-9.81") is a second sign, not a negative number.
+    const bool plus = !text.empty() && text.front() == '+';
+    if (plus) text.remove_prefix(1);
     // from_chars would accept "inf" and "nan"; a scene file must not.
-    if (text.empty() ||
-        !(std::isdigit(static_cast<unsigned char>(text.front())) || text.front() == '.' || text.front() == '-'))
+    if (text.empty() || !(std::isdigit(static_cast<unsigned char>(text.front())) || text.front() == '.' ||
+                          (text.front() == '-' && !plus)))
         return std::nullopt;
     double value = 0;
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);

@@ -47,18 +47,31 @@ std::size_t utf8Length(std::string_view text, std::size_t i) {
 }
 
 // Where `text` first holds what a scene file may not: a byte that is not
-// UTF-8, or a control character other than tab, CR and LF.
+// UTF-8, or a control character other than tab, CR and LF. The C1 controls
+// (U+0080 to U+009F) are controls as much as the C0 ones: no text a scene
+// holds needs them, and they show as nothing or as garbage.
 struct TextFault {
     std::size_t offset;
-    bool notUtf8;  // else a control character
+    bool notUtf8;            // else a control character
+    std::uint32_t code = 0;  // the control character
 };
+
+// "1" for U+0001 (as the messages always said), "U+0085" for a C1 control.
+std::string controlName(std::uint32_t code) {
+    if (code < 0x80) return std::to_string(code);
+    char name[16];
+    std::snprintf(name, sizeof name, "U+%04X", static_cast<unsigned>(code));
+    return name;
+}
 
 std::optional<TextFault> firstTextFault(std::string_view text) {
     for (std::size_t i = 0; i < text.size();) {
         const std::size_t n = utf8Length(text, i);
         if (n == 0) return TextFault{i, true};
         const unsigned char c = static_cast<unsigned char>(text[i]);
-        if (n == 1 && ((c < 0x20 && c != '\t' && c != '\n' && c != '\r') || c == 0x7F)) return TextFault{i, false};
+        if (n == 1 && ((c < 0x20 && c != '\t' && c != '\n' && c != '\r') || c == 0x7F)) return TextFault{i, false, c};
+        const unsigned char next = n == 2 ? static_cast<unsigned char>(text[i + 1]) : 0;
+        if (n == 2 && c == 0xC2 && next < 0xA0) return TextFault{i, false, 0x80u + (next - 0x80u)};
         i += n;
     }
     return std::nullopt;
@@ -99,10 +112,11 @@ bool checkText(std::string_view text, const LoadLimits& limits, Problems& proble
         const unsigned char c = static_cast<unsigned char>(text[fault->offset]);
         char hex[8];
         std::snprintf(hex, sizeof hex, "0x%02x", c);
-        problems.add(line, column,
-                     fault->notUtf8 ? std::string("the file is not UTF-8 text (byte ") + hex +
-                                          " is not valid UTF-8); save it as UTF-8"
-                                    : "control character " + std::to_string(c) + " is not allowed in a YAML file");
+        problems.add(
+            line, column,
+            fault->notUtf8
+                ? std::string("the file is not UTF-8 text (byte ") + hex + " is not valid UTF-8); save it as UTF-8"
+                : "control character " + controlName(fault->code) + " is not allowed in a YAML file");
         return false;
     }
     // The YAML reader takes only LF and CRLF as line breaks: a file with old
@@ -136,11 +150,32 @@ std::string writtenTag(const std::string& tag) {
     return tag.starts_with(core) ? "!!" + tag.substr(core.size()) : tag;
 }
 
+// Whether the quoted value whose opening quote is at `offset` is closed
+// before the file ends. The YAML reader ends such a value at the end of the
+// file without a word when a line break comes last, and the rest of the
+// file vanishes into it. True when `offset` holds no quote (nothing to tell).
+bool quoteClosed(std::string_view text, std::size_t offset) {
+    if (offset >= text.size() || (text[offset] != '\'' && text[offset] != '"')) return true;
+    const char quote = text[offset];
+    for (std::size_t i = offset + 1; i < text.size(); ++i) {
+        if (quote == '"' && text[i] == '\\') {
+            ++i;  // an escape: the next character is not the end
+        } else if (text[i] == quote) {
+            if (quote == '\'' && i + 1 < text.size() && text[i + 1] == '\'') {
+                ++i;  // '' is a quote inside single quotes
+                continue;
+            }
+            return true;
+        }
+    }
+    return false;
+}
+
 // Walks parse events keeping, per open mapping, the keys seen so far.
 class StructureCheck : public YAML::EventHandler {
 public:
-    StructureCheck(const LoadLimits& limits, Problems& problems)
-        : maxNodes_(limits.maxNodes), maxScalar_(limits.maxScalarBytes), problems_(problems) {}
+    StructureCheck(std::string_view text, const LoadLimits& limits, Problems& problems)
+        : text_(text), maxNodes_(limits.maxNodes), maxScalar_(limits.maxScalarBytes), problems_(problems) {}
 
     bool refused() const { return refused_; }
 
@@ -157,6 +192,11 @@ public:
     }
     void OnScalar(const YAML::Mark& mark, const std::string& tag, YAML::anchor_t, const std::string& value) override {
         checkTag(mark, tag);
+        if (tag == "!" && mark.pos >= 0 && !quoteClosed(text_, static_cast<std::size_t>(mark.pos))) {
+            refuse(mark, std::string("this quoted value is never closed: the file ends before its closing ") +
+                             text_[static_cast<std::size_t>(mark.pos)]);
+            throw Abandoned{};
+        }
         if (value.size() > maxScalar_)
             refuse(mark, "this value is " + std::to_string(value.size() >> 10) + " KiB long, more than the " +
                              std::to_string(maxScalar_ >> 10) + " KiB a scene file's value may have");
@@ -237,12 +277,12 @@ private:
     void checkEscapes(const YAML::Mark& mark, const std::string& value) {
         const auto fault = firstTextFault(value);
         if (!fault) return;
-        refuse(mark, fault->notUtf8
-                         ? std::string("an escape here gives text that is not UTF-8")
-                         : "control character " + std::to_string(static_cast<unsigned char>(value[fault->offset])) +
-                               " (written as an escape) is not allowed in a scene file");
+        refuse(mark, fault->notUtf8 ? std::string("an escape here gives text that is not UTF-8")
+                                    : "control character " + controlName(fault->code) +
+                                          " (written as an escape) is not allowed in a scene file");
     }
 
+    std::string_view text_;
     std::size_t maxNodes_, maxScalar_;
     std::size_t count_ = 0;
     YAML::Mark documentStart_;
@@ -289,7 +329,7 @@ std::size_t commentInBrackets(std::string_view text) {
 
 bool checkStructure(std::string_view text, const LoadLimits& limits, Problems& problems) {
     std::istringstream stream{std::string(text)};
-    StructureCheck check(limits, problems);
+    StructureCheck check(text, limits, problems);
     try {
         YAML::Parser parser(stream);
         int documents = 0;

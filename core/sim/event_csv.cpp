@@ -1,23 +1,14 @@
 #include "jl/sim/event_csv.h"
 
-namespace jl {
+#include "jl/base/csv_writer.h"
 
-std::string csvField(const std::string& text) {
-    if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
-    std::string out = "\"";
-    for (char c : text) {
-        if (c == '"') out += '"';  // a quote inside is doubled
-        out += c;
-    }
-    return out + '"';
-}
+namespace jl {
 
 void writeEventsCsv(std::ostream& out, const std::vector<Event>& events) {
     const auto precision = out.precision(17);
     out << "t,hinge,event,corner,text\n";
-    for (const Event& e : events)
-        out << e.time << ',' << e.hinge << ',' << toString(e.kind) << ',' << e.corner << ',' << csvField(e.text)
-            << '\n';
+    CsvWriter csv(out);
+    for (const Event& e : events) csv.row(e.time, e.hinge, toString(e.kind), e.corner, e.text);
     out.precision(precision);
 }
 

@@ -1,14 +1,16 @@
 #include "jl/sim/frame_csv.h"
 
+#include "jl/base/csv_writer.h"
+
 namespace jl {
 
 void writePosesCsvHeader(std::ostream& out) { out << "t,block,x,y,theta\n"; }
 
 void writePosesCsvRows(std::ostream& out, const Frame& f) {
     const auto precision = out.precision(17);
+    CsvWriter csv(out);
     for (size_t i = 0; i < f.poses.size(); ++i)
-        out << f.time << ',' << i << ',' << f.poses[i].position.x() << ',' << f.poses[i].position.y() << ','
-            << f.poses[i].angle << '\n';
+        csv.row(f.time, i, f.poses[i].position.x(), f.poses[i].position.y(), f.poses[i].angle);
     out.precision(precision);
 }
 
@@ -19,8 +21,8 @@ void writeEnergyCsvHeader(std::ostream& out) {
 void writeEnergyCsvRow(std::ostream& out, const Frame& f) {
     const auto precision = out.precision(17);
     const EnergyFrame& e = f.energy;
-    out << f.time << ',' << e.kinetic << ',' << e.potential << ',' << e.total() << ',' << e.heldWork << ','
-        << e.userWork << ',' << e.impactLoss << ',' << e.dampingLoss << ',' << e.balance() << '\n';
+    CsvWriter(out).row(f.time, e.kinetic, e.potential, e.total(), e.heldWork, e.userWork, e.impactLoss, e.dampingLoss,
+                       e.balance());
     out.precision(precision);
 }
 

@@ -66,6 +66,12 @@ expect_message "No space left"
 "$jladder" run scene.yaml --until 0.5 >/dev/full 2>err.txt
 [ $? = 1 ] || fail "a summary written to /dev/full is a success"
 expect_message "cannot write the summary"
+for command in run export reach validate bench; do
+    "$jladder" "$command" --help >/dev/full 2>err.txt
+    status=$?
+    [ $status = 1 ] || fail "'$command --help' written to /dev/full exits $status"
+    expect_message "cannot write the help"
+done
 
 # All outputs or none: when one cannot be written, the others stay as they
 # were (here the events, through a link, would have replaced another scene).

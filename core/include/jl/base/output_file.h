@@ -4,6 +4,7 @@
 // checked; the first failure is kept and said by error().
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 
@@ -27,13 +28,18 @@ public:
     // Buffered; false once anything has failed.
     bool write(std::string_view text);
     // Hands what is buffered to the system, so that a process killed later
-    // leaves it in the temporary.
+    // leaves it in the temporary. What is buffered is one piece: when the
+    // system takes only part of it (a full disk), the part is taken back.
     bool flush();
     // Flushes, syncs, closes, and renames the temporary over the file.
     bool commit();
     // Closes and renames the temporary to `other` instead, leaving the file
-    // as it was: where an unfinished result goes. A direct file is only closed.
+    // as it was: where an unfinished result goes. When `other` exists (the
+    // scene, another output, an older result), it is left as it is and the
+    // result stays in the temporary; kept() says where it is. A direct file
+    // is only closed.
     bool keepAs(const std::string& other);
+    const std::string& kept() const { return kept_; }
 
     bool direct() const { return direct_; }
     bool failed() const { return !error_.empty(); }
@@ -50,7 +56,9 @@ private:
     std::string path_;       // as given
     std::string target_;     // what the rename replaces: path_ with links resolved
     std::string temporary_;  // empty when direct or when renamed
+    std::string kept_;       // where keepAs left the result
     std::string buffer_;
+    std::size_t written_ = 0;  // bytes in the file, every flushed piece whole
     std::string error_;
     int fd_ = -1;
     bool direct_ = false;
@@ -60,9 +68,6 @@ private:
 // Empty when it worked; else what failed ("cannot write the file: ...").
 std::string writeWholeFile(const std::string& path, std::string_view text);
 
-// The file `path` stands for, every symbolic link followed, even one that
-// points to a file not made yet (what a rename would replace).
-std::string resolvedPath(const std::string& path);
 // True when OutputFile::open writes `path` directly rather than through a
 // temporary: a device, a pipe, or one of the process's open descriptors.
 bool writtenDirectly(const std::string& path);
