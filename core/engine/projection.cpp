@@ -115,9 +115,9 @@ double largestContactGap(const World& w) {
 // move that keeps the pins (linearised: q += sum s_i u_i with K s = -gap,
 // the same Schur complement as the dynamics'), and the pins closed again,
 // until both are within the tolerance (docs/model.md section 17.2).
-ProjectionResult projectPositions(World& w, PinSolver& solver, double tolerance, int maxIterations) {
+ProjectionResult projectPositions(World& w, PinSolver& solver, double tolerance, int maxIterations, bool contacts) {
     ProjectionResult r = closePins(w, solver, tolerance, maxIterations);
-    if (w.contacts().empty() || !r.converged) return r;
+    if (!contacts || w.contacts().empty() || !r.converged) return r;
     thread_local ContactResponse response;
     for (int round = 0; round < maxIterations; ++round) {
         if (largestContactGap(w) <= tolerance) break;
@@ -173,9 +173,9 @@ void projectVelocities(World& w, PinSolver& solver, Eigen::VectorXd* impulses, C
     }
 }
 
-ProjectionResult makeConsistent(World& w, PinSolver& solver, double tolerance) {
+ProjectionResult makeConsistent(World& w, PinSolver& solver, double tolerance, bool contacts) {
     solver.reset();
-    ProjectionResult r = projectPositions(w, solver, tolerance);
+    ProjectionResult r = projectPositions(w, solver, tolerance, 25, contacts);
     projectVelocities(w, solver);
     return r;
 }

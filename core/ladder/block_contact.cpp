@@ -7,6 +7,8 @@
 #include "jl/engine/projection.h"
 #include "jl/ladder/ladder.h"
 
+#include <Eigen/Cholesky>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -64,10 +66,10 @@ void BlockContacts::refresh(const World& w, const Ladder& ladder) {
     broad_.find(w, ladder, pairs_);
     pairCount_ = int(pairs_.size());
     const double length = ladder.length();
-    // A corner parted at some instant is back to the plain zero once clear.
-    std::erase_if(parted_, [&](const Parted& p) {
-        return cornerAgainst(w, ladder, p.block, p.corner, p.other).gap > kClear * length;
-    });
+    // A corner parted at some instant is back to the plain zero once clear
+    // (the record stays, for the Zeno time, until the next parting).
+    for (Parted& p : parted_)
+        if (cornerAgainst(w, ladder, p.block, p.corner, p.other).gap > kClear * length) p.gap = 0;
     for (const auto& [i, j] : pairs_)
         for (const auto& [a, b] : {std::pair{i, j}, std::pair{j, i}})
             for (int k = 0; k < 4; ++k) {
@@ -75,8 +77,21 @@ void BlockContacts::refresh(const World& w, const Ladder& ladder) {
                     return t.block == a && t.corner == k && t.other == b;
                 });
                 if (!resting && !atHingeOf(w, ladder, ladder.cornerWorld(w, a, k), b))
-                    watched_.push_back({a, k, b, gapZero(a, k, b) - kRounding * length});
+                    watched_.push_back({a, k, b, gapZero(a, k, b)});
             }
+}
+
+void BlockContacts::markLocated(const std::vector<int>& functions) {
+    for (int k : functions)
+        if (k < int(watched_.size())) {
+            const Watch& c = watched_[size_t(k)];
+            located_.push_back({c.block, c.corner, c.other});
+        }
+}
+
+double BlockContacts::watchFunction(const World& w, const Ladder& ladder, const Watch& c) const {
+    const double gap = cornerAgainst(w, ladder, c.block, c.corner, c.other).gap - c.zero;
+    return gap + (locating_ ? kRounding * ladder.length() : std::max(kRounding * ladder.length(), allowance_));
 }
 
 double BlockContacts::slideRoom(const World& w, size_t i) const {
@@ -89,11 +104,13 @@ double BlockContacts::eventFunctions(const World& w, const Dynamics& d, const La
     double smallestForce = std::numeric_limits<double>::infinity();
     if (!enabled_) return smallestForce;
     for (const Watch& c : watched_) {
-        out.push_back(cornerAgainst(w, ladder, c.block, c.corner, c.other).gap - c.zero);
+        out.push_back(watchFunction(w, ladder, c));
     }
     const Eigen::VectorXd& push = d.contactForces();
     for (size_t i = 0; i < touches_.size(); ++i) {
-        const double f = (Eigen::Index(i) < push.size() ? push[Eigen::Index(i)] : 0.0) + ladder.forceTolerance();
+        const double f = touches_[i].held
+                             ? 1.0
+                             : (Eigen::Index(i) < push.size() ? push[Eigen::Index(i)] : 0.0) + ladder.forceTolerance();
         out.push_back(f);
         smallestForce = std::min(smallestForce, f);
     }
@@ -104,7 +121,7 @@ double BlockContacts::eventFunctions(const World& w, const Dynamics& d, const La
 double BlockContacts::positionFunction(const World& w, const Ladder& ladder, int k) const {
     if (k < int(watched_.size())) {
         const Watch& c = watched_[size_t(k)];
-        return cornerAgainst(w, ladder, c.block, c.corner, c.other).gap - c.zero;
+        return watchFunction(w, ladder, c);
     }
     const size_t i = size_t(k) - watched_.size() - touches_.size();
     return slideRoom(w, i) + kTouchBand * ladder.length();
@@ -149,19 +166,19 @@ bool BlockContacts::atHingeOf(const World& w, const Ladder& ladder, const Vec2& 
     return false;
 }
 
-// Whether the pins already hold the contact's two points together along its
-// normal: a push there moves nothing (the Delassus entry G u, with the pins
+// Whether the pins, and the contacts resting already, hold the contact's
+// two points together along its normal: a push there moves nothing (the Delassus entry G u, with the pins
 // active, is a vanishing fraction of what it is for the two bodies alone).
 // A corner can coincide with a hinge of a third block (two hinges at one
 // end of a block after a flip, T apart: a neighbour's corner lies on the
 // other hinge) and touch a face there without the pins letting it press:
 // the push would be the pins' indeterminate share, not a contact.
-bool BlockContacts::heldByPins(const World& w, const Contact& c, const ContactRow& row) {
+bool BlockContacts::heldAlready(const World& w, const Contact& c, const ContactRow& row) {
     thread_local ContactResponse one;
     thread_local World alone;
     thread_local PinSolver solver;
     alone = w;
-    alone.contacts().assign(1, c);
+    alone.contacts().push_back(c);
     solver.reset();
     one.build(alone, solver, solver.prepare(alone));
     double free = 0;
@@ -169,7 +186,16 @@ bool BlockContacts::heldByPins(const World& w, const Contact& c, const ContactRo
         const Vec2 arm = b == row.bodyA ? row.armA : row.armB;
         free += w.invMassDiag[3 * b] + w.invMassDiag[3 * b + 2] * cross(arm, row.normal) * cross(arm, row.normal);
     }
-    return !(one.matrix(0, 0) > 1e-6 * free);
+    // What a push at the new contact moves with the others held as well:
+    // the Schur complement of the contacts already resting.
+    const Eigen::Index n = one.matrix.rows() - 1;
+    double own = one.matrix(n, n);
+    if (n > 0) {
+        const Eigen::MatrixXd held = one.matrix.topLeftCorner(n, n);
+        const Eigen::VectorXd across = one.matrix.topRightCorner(n, 1);
+        own -= across.dot(held.ldlt().solve(across));
+    }
+    return !(own > 1e-6 * free);
 }
 
 // Corner `corner` of `block` against the face of `other` it is nearest to
@@ -188,12 +214,11 @@ Contact BlockContacts::contactAt(const World& w, const Ladder& ladder, int block
 }
 
 void BlockContacts::part(World& w, size_t i, double t) {
-    (void)t;
     const Touch& c = touches_[i];
     const double gap = contactGap(w, w.contacts()[i]);
     std::erase_if(parted_,
                   [&](const Parted& p) { return p.block == c.block && p.corner == c.corner && p.other == c.other; });
-    parted_.push_back({c.block, c.corner, c.other, gap});
+    parted_.push_back({c.block, c.corner, c.other, gap, t});
     partedNow_.push_back({c.block, c.corner, c.other});
     w.contacts().erase(w.contacts().begin() + std::ptrdiff_t(i));
     touches_.erase(touches_.begin() + std::ptrdiff_t(i));
@@ -220,7 +245,7 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
     for (size_t i = 0; i < touches_.size(); ++i) {
         const ContactRow row = contactRow(w, w.contacts()[i]);
         const bool off = slideRoom(w, i) < -band;
-        if (off || rowTimes(row, w.v) > parting) {
+        if (off || (!touches_[i].held && rowTimes(row, w.v) > parting)) {
             const Touch c = touches_[i];
             part(w, i, t);
             events.push_back({t, EventKind::Part, -1, -1, words(off ? "slides off" : "leaves", c)});
@@ -231,7 +256,7 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
     Eigen::Index worst = -1;
     double most = -ladder.forceTolerance();
     for (Eigen::Index i = 0; i < push.size() && i < Eigen::Index(touches_.size()); ++i)
-        if (push[i] < most) most = push[i], worst = i;
+        if (!touches_[size_t(i)].held && push[i] < most) most = push[i], worst = i;
     if (worst >= 0) {
         const Touch c = touches_[size_t(worst)];
         part(w, size_t(worst), t);
@@ -252,7 +277,10 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
         // or anywhere past it at the end of a step): a corner merely near a
         // face, at any instant, is not touching it.
         const double gap = cornerAgainst(w, ladder, c.block, c.corner, c.other).gap - c.zero;
-        if (gap >= 0) continue;
+        if (gap >= -kRounding * length) continue;
+        // Past by less than the pins' tolerance: only where an event of its
+        // own was located (its function there is negative), not at another's.
+        if (gap >= -allowance_ && std::find(located_.begin(), located_.end(), id) == located_.end()) continue;
         // The same point as a contact made already (a corner against a
         // corner: each touches the other's face): one contact there.
         const Vec2 p = ladder.cornerWorld(w, c.block, c.corner);
@@ -268,9 +296,13 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
         const double rate = rowTimes(row, w.v);
         const bool into = rate < -still || (gap < -band) ||
                           (rate <= still && rowTimes(row, w.a) + rowBias(w, row) < -ladder.forceTolerance());
-        if (!into || heldByPins(w, candidate, row)) continue;
+        if (!into || heldAlready(w, candidate, row)) continue;
         w.contacts().push_back(candidate);
-        touches_.push_back({c.block, c.corner, c.other, cornerAgainst(w, ladder, c.block, c.corner, c.other).face, t});
+        Touch made{c.block, c.corner, c.other, cornerAgainst(w, ladder, c.block, c.corner, c.other).face, t};
+        for (const Parted& p : parted_)
+            made.held = made.held || (p.block == c.block && p.corner == c.corner && p.other == c.other &&
+                                      t - p.at <= ladder.zenoTime());
+        touches_.push_back(made);
         approach.push_back(-rate);
         events.push_back({t, EventKind::Touch, -1, -1, words("touches", touches_.back())});
     }
@@ -315,6 +347,28 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
     return events;
 }
 
+std::vector<Event> BlockContacts::letGoExpired(World& w, const Dynamics& d, const Ladder& ladder, double t) {
+    std::vector<Event> events;
+    const Eigen::VectorXd& push = d.contactForces();
+    for (size_t i = 0; i < touches_.size() && Eigen::Index(i) < push.size(); ++i) {
+        Touch& c = touches_[i];
+        if (!c.held) continue;
+        if (push[Eigen::Index(i)] >= -ladder.forceTolerance()) {
+            c.pullingSince = -1;
+            continue;
+        }
+        if (c.pullingSince < 0) c.pullingSince = t;
+        if (t - c.pullingSince < ladder.zenoTime()) continue;
+        const Touch gone = c;
+        part(w, i, t);
+        events.push_back({t, EventKind::Part, -1, -1,
+                          "corner " + std::to_string(gone.corner) + " of block " + std::to_string(gone.block) +
+                              " lets go of block " + std::to_string(gone.other) + " (held for a Zeno time)"});
+        return events;  // one at a time: the rest are tested again after the instant is settled
+    }
+    return events;
+}
+
 // An instant settled with the contacts between blocks too: the hinges
 // first (their own active set, with every resting contact in each of their
 // impacts), then the block contacts, and the hinges again after each change
@@ -325,7 +379,10 @@ std::vector<Event> Ladder::settle(World& w, Dynamics& d, double t, double* impac
     blockContacts_.newInstant();
     for (int guard = 0; guard < 8 * blockCount() + 8; ++guard) {
         std::vector<Event> more = blockContacts_.resolveOnce(w, d, *this, t, impactLoss, heldWork);
-        if (more.empty()) return events;
+        if (more.empty()) {
+            blockContacts_.forgetLocated();
+            return events;
+        }
         events.insert(events.end(), more.begin(), more.end());
         more = resolve(w, d, t, impactLoss, heldWork);
         events.insert(events.end(), more.begin(), more.end());

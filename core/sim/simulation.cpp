@@ -73,6 +73,7 @@ std::optional<std::string> Simulation::buildWorld() {
         ladder_.emplace(world_, *scene_.ladder);
         ladder_->blockContacts().setEnabled(scene_.solver.blockContact == BlockContact::On);
         ladder_->setGapTolerance(scene_.solver.projectionTolerance);
+        ladder_->blockContacts().setAllowance(scene_.solver.projectionTolerance);
         for (int i = 0; i < ladder_->blockCount(); ++i) {
             blocks_.push_back(ladder_->block(i));
             named["block:" + std::to_string(i)] = ladder_->block(i);

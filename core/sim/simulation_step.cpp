@@ -202,6 +202,7 @@ bool Simulation::locateEvent(double& taken, double fEnd, double forcesAtEnd) {
     const double hingeForcesAtEnd = hingeForces_;
     const Powers p1 = world_.pathsOnOnePiece(t_ + taken / 2, t_ + taken) ? lastPowers_ : stepEndAsTaken(taken);
     locating_ = true;
+    ladder_->blockContacts().setLocating(true);
     crossed_ = contactsCrossed;
     const Ledger ledgerAtEnd = ledger_;
     interpolant_.setEnd(world_.q, world_.v, world_.a);
@@ -267,8 +268,12 @@ bool Simulation::locateEvent(double& taken, double fEnd, double forcesAtEnd) {
             for (int k : contactsCrossed) atHi = std::min(atHi, eventValues_[size_t(k)]);
         }
         if (atHi < 0) b = narrowAmong(contactsCrossed, !contactForces, EventBracket{0, contactsStart, b.hi, atHi});
+        std::vector<int> located;
+        for (int k : contactsCrossed) located.push_back(k - hingeFunctions_);
+        ladder_->blockContacts().markLocated(located);
     }
     locating_ = false;
+    ladder_->blockContacts().setLocating(false);
     interpolant_.at(b.hi, world_.q, world_.v);
     world_.updateKinematics(t_ + b.hi);
     if (!world_.q.allFinite() || !world_.v.allFinite()) {
@@ -517,6 +522,16 @@ bool Simulation::takeStep(double limit) {
     stats_.lastStep = taken;
     lastResidual_ = m.projection.residual;
     applyDueInputs();
+    if (ladder_) {
+        // A block contact held at its Zeno limit that has pulled for a
+        // Zeno time parts at the step's end (docs/model.md section 17.6).
+        std::vector<Event> parted = ladder_->blockContacts().letGoExpired(world_, dynamics_, *ladder_, t_);
+        if (!parted.empty()) {
+            for (Event& e : parted) record(e);
+            for (Event& e : ladder_->settle(world_, dynamics_, t_, &impactLoss_, &impactHeldWork_)) record(e);
+            keptEnd_.keep(world_, dynamics_, t_, ladder_->settledPowers());
+        }
+    }
     if (ladder_ && !trial_) settleHolds(limit);
     return true;
 }

@@ -23,7 +23,11 @@ double pinResidual(const World& w);
 double pinVelocityResidual(const World& w, PinSolver& solver);
 
 // Moves dynamic bodies the least (in the mass metric) so every pin closes.
-ProjectionResult projectPositions(World& w, PinSolver& solver, double tolerance, int maxIterations = 25);
+// The world's resting contacts are closed too, unless `contacts` is false:
+// a change of structure closes its pins to rounding, and leaves the
+// contacts (closed by every step's projection) as they are.
+ProjectionResult projectPositions(World& w, PinSolver& solver, double tolerance, int maxIterations = 25,
+                                  bool contacts = true);
 
 // The plastic impulse: v+ = v- + W J^T P with J v+ = 0. Held bodies have
 // infinite mass. If `impulses` is given it receives P (2 per pin, on body A, then one
@@ -39,6 +43,6 @@ void projectVelocities(World& w, PinSolver& solver, Eigen::VectorXd* impulses = 
 
 // Both, after a change of structure (combine, separate, hold), with the
 // caller's solver: reset first, so nothing but its capacity carries over.
-ProjectionResult makeConsistent(World& w, PinSolver& solver, double tolerance);
+ProjectionResult makeConsistent(World& w, PinSolver& solver, double tolerance, bool contacts = true);
 
 }  // namespace jl

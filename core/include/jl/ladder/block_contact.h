@@ -47,6 +47,9 @@ public:
     // watched against the other block, and the contacts that rest. The
     // event functions of the next location are these, at any state.
     void refresh(const World& w, const Ladder& ladder);
+    // After a step (the dynamics evaluated at its end, time t): the held
+    // contacts that have pulled for a Zeno time part. What happened.
+    std::vector<Event> letGoExpired(World& w, const Dynamics& d, const Ladder& ladder, double t);
     // Appends the functions (>= 0 while nothing happens): each watched
     // corner's gap, and each resting contact's push and how far its corner
     // is from sliding off the face. Returns the smallest push (+inf if none).
@@ -67,12 +70,31 @@ public:
                                    double* heldWork);
     // A new instant: the contacts parted in the last one may touch again.
     void newInstant() { partedNow_.clear(); }
+    // While an event is located, the corners' functions cross where the
+    // gap does (the rounding of a pose aside); at a step's end a corner
+    // must be past the face by more than the pins' own tolerance (`gap`,
+    // m) to count: where the ladder folds flat, a block's corner lies on
+    // the face of the block beyond the next with gap zero to the
+    // projection's noise (the heavy-middle example, 2.4e-12 m), and that
+    // is no contact.
+    void setLocating(bool on) { locating_ = on; }
+    void setAllowance(double gap) { allowance_ = gap; }
+    // The functions (indices into those eventFunctions appended) whose
+    // crossing was located: those corners touch however little they are
+    // past the face. Forgotten once the instant is settled.
+    void markLocated(const std::vector<int>& functions);
+    void forgetLocated() { located_.clear(); }
 
     // Which blocks each of World::contacts() joins: the corner's block and
     // corner, the face's block and face.
     struct Touch {
         int block = 0, corner = 0, other = 0, face = 0;
         double since = 0;  // s, when it closed
+        // Closed again within the Zeno time of its parting: held closed
+        // (docs/model.md section 8.6 rule 2) until it has pulled for a
+        // Zeno time; its push raises no event meanwhile.
+        bool held = false;
+        double pullingSince = -1;  // s; -1: it pushes
         bool operator==(const Touch&) const = default;
     };
     const std::vector<Touch>& touches() const { return touches_; }
@@ -84,13 +106,16 @@ public:
 private:
     struct Watch {
         int block = 0, corner = 0, other = 0;
-        double zero = 0;  // m, <= 0: where the function is zero (a contact just parted reads a hair inside)
+        double zero = 0;  // m, <= 0: where the gap counts as zero (a contact just parted reads a hair inside)
     };
+    // The watched corners' functions: the gap past its zero, less the
+    // allowance (below).
+    double watchFunction(const World& w, const Ladder& ladder, const Watch& c) const;
     bool isSlide(int k) const {
         return k >= int(watched_.size()) + int(touches_.size()) && k < int(watched_.size()) + 2 * int(touches_.size());
     }
     double slideRoom(const World& w, size_t i) const;
-    static bool heldByPins(const World& w, const Contact& c, const ContactRow& row);
+    static bool heldAlready(const World& w, const Contact& c, const ContactRow& row);
     static Contact contactAt(const World& w, const Ladder& ladder, int block, int corner, int other);
     static bool atHingeOf(const World& w, const Ladder& ladder, const Vec2& p, int b);
     static bool onPin(const World& w, const Ladder& ladder, const Vec2& p, int a, int b);
@@ -98,16 +123,20 @@ private:
     void part(World& w, size_t i, double t);
 
     bool enabled_ = true;
+    bool locating_ = false;
+    double allowance_ = 1e-10;  // m
     std::vector<Watch> watched_;
     std::vector<Touch> touches_;  // parallel to World::contacts()
     // Parted at some instant, and the gap they parted at (the projection's
     // noise): their zero, until they are clear by kClear.
     struct Parted {
         int block = 0, corner = 0, other = 0;
-        double gap = 0;
+        double gap = 0;  // m; 0 once clear
+        double at = 0;   // s, when it parted
     };
     std::vector<Parted> parted_;
-    std::vector<std::array<int, 3>> partedNow_;  // in this instant: they stay apart in it
+    std::vector<std::array<int, 3>> partedNow_;
+    std::vector<std::array<int, 3>> located_;  // in this instant: they stay apart in it
     std::vector<std::pair<int, int>> pairs_;
     int pairCount_ = 0;
     BlockPairs broad_;
