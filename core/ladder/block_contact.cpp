@@ -276,11 +276,16 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
         // Its function has crossed zero (where a located event leaves it,
         // or anywhere past it at the end of a step): a corner merely near a
         // face, at any instant, is not touching it.
+        // A corner within the band that closes faster than v_min lands at
+        // the same instant (a block landing flat lands on both ends at
+        // once, whichever crossing rounding puts first).
         const double gap = cornerAgainst(w, ladder, c.block, c.corner, c.other).gap - c.zero;
-        if (gap >= -kRounding * length) continue;
-        // Past by less than the pins' tolerance: only where an event of its
-        // own was located (its function there is negative), not at another's.
-        if (gap >= -allowance_ && std::find(located_.begin(), located_.end(), id) == located_.end()) continue;
+        if (gap > band) continue;
+        const bool located = std::find(located_.begin(), located_.end(), id) != located_.end();
+        if (gap >= -allowance_ && !located) {
+            const Contact candidate = contactAt(w, ladder, c.block, c.corner, c.other);
+            if (!(rowTimes(contactRow(w, candidate), w.v) < -parting)) continue;
+        }
         // The same point as a contact made already (a corner against a
         // corner: each touches the other's face): one contact there.
         const Vec2 p = ladder.cornerWorld(w, c.block, c.corner);
