@@ -286,14 +286,12 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
             const Contact candidate = contactAt(w, ladder, c.block, c.corner, c.other);
             if (!(rowTimes(contactRow(w, candidate), w.v) < -parting)) continue;
         }
-        // The same point as a contact made already (a corner against a
-        // corner: each touches the other's face): one contact there.
+        // At a corner against a corner each touches the other's face: the
+        // two are one contact when their normals agree (heldAlready below
+        // finds the second redundant), two when they do not (the corners
+        // meet at an angle, and each keeps the other out of one face).
         const Vec2 p = ladder.cornerWorld(w, c.block, c.corner);
-        bool same = false;
-        for (const Touch& o : touches_)
-            same = same || (o.other == c.block && o.block == c.other &&
-                            (ladder.cornerWorld(w, o.block, o.corner) - p).norm() <= 10 * band);
-        if (same || onPin(w, ladder, p, c.block, c.other)) continue;
+        if (onPin(w, ladder, p, c.block, c.other)) continue;
         // Tried without touching the world: a corner that does not close
         // leaves every cache of the engine as it was.
         const Contact candidate = contactAt(w, ladder, c.block, c.corner, c.other);
