@@ -22,6 +22,10 @@ Powers Dynamics::evaluate(World& w, double t, double within) {
         weightsGravity_ = cw.gravity;
     }
     solver_.accelerations(w, force_, lambda_);
+    if (!w.contacts().empty())
+        addContacts(w, powers);
+    else
+        contactForces_.resize(0);
 
     const std::vector<Pin>& pins = w.pins();
     const std::vector<unsigned char>& kinematic = w.kinematicFlags();
@@ -75,6 +79,36 @@ Powers Dynamics::evaluate(World& w, double t, double within) {
         }
     }
     return powers;
+}
+
+// The resting contacts on top of the pins (docs/model.md section 17.2): with
+// a the pins' accelerations and u_i the pins' response to a unit push at
+// contact i, the pushes s solve K s = -(G a + bias), each contact's gap
+// then accelerating at zero; the pins' forces take their part, s_i x_i.
+// Every contact is kept while it rests, even if it would pull: its force
+// crossing zero is an event (section 17.4).
+void Dynamics::addContacts(World& w, Powers& powers) {
+    contactResponse_.build(w, solver_, false);
+    const size_t k = w.contacts().size();
+    Eigen::VectorXd rhs(Eigen::Index(k), 1);
+    for (size_t i = 0; i < k; ++i) {
+        const ContactRow& r = contactResponse_.rows[i];
+        rhs[Eigen::Index(i)] = -(rowTimes(r, w.a) + rowBias(w, r));
+    }
+    contactForces_ = contactResponse_.solve(rhs, std::vector<char>(k, 1));
+    const std::vector<unsigned char>& kinematic = w.kinematicFlags();
+    for (size_t i = 0; i < k; ++i) {
+        const double s = contactForces_[Eigen::Index(i)];
+        w.a += s * contactResponse_.response[i];
+        if (contactResponse_.pinForces[i].size() == lambda_.size()) lambda_ += s * contactResponse_.pinForces[i];
+        // A held face (or corner) pushes the free side at a point that
+        // moves with the hand: the hand's power, as for its pins.
+        const ContactRow& r = contactResponse_.rows[i];
+        if (kinematic[size_t(r.bodyB)] && !kinematic[size_t(r.bodyA)])
+            powers.held += s * r.normal.dot(w.v.segment<2>(3 * r.bodyB) + w.v[3 * r.bodyB + 2] * perp(r.armB));
+        if (kinematic[size_t(r.bodyA)] && !kinematic[size_t(r.bodyB)])
+            powers.held -= s * r.normal.dot(w.v.segment<2>(3 * r.bodyA) + w.v[3 * r.bodyA + 2] * perp(r.armA));
+    }
 }
 
 }  // namespace jl

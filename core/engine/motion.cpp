@@ -16,7 +16,7 @@ MotionStep advanceAndProject(World& w, Dynamics& d, Stepper& s, double t, double
     if (m.projection.converged) {
         // A projected end was checked by the stepper, after its projection.
         if (projected) return m;
-        projectVelocities(w, d.solver());
+        projectVelocities(w, d.solver(), nullptr, ContactRule::Hold);
         if (w.q.allFinite() && w.v.allFinite()) return m;
         m.step.finite = false;
         m.step.endEvaluated = false;

@@ -59,7 +59,9 @@ double pinVelocityResidual(const World& w, PinSolver& solver) {
     return largestGap(w, jv);
 }
 
-ProjectionResult projectPositions(World& w, PinSolver& solver, double tolerance, int maxIterations) {
+namespace {
+
+ProjectionResult closePins(World& w, PinSolver& solver, double tolerance, int maxIterations) {
     ProjectionResult r;
     PinSolver::Scratch& s = solver.scratch;
     Eigen::VectorXd &gap = s.gap, &x = s.x, &dq = s.dq, &q0 = s.q0;
@@ -101,7 +103,41 @@ ProjectionResult projectPositions(World& w, PinSolver& solver, double tolerance,
     return r;
 }
 
-void projectVelocities(World& w, PinSolver& solver, Eigen::VectorXd* impulses) {
+double largestContactGap(const World& w) {
+    double m = 0;
+    for (const Contact& c : w.contacts()) m = std::max(m, std::abs(contactGap(w, c)));
+    return m;
+}
+
+}  // namespace
+
+// The pins first; then each resting contact's gap is closed by the least
+// move that keeps the pins (linearised: q += sum s_i u_i with K s = -gap,
+// the same Schur complement as the dynamics'), and the pins closed again,
+// until both are within the tolerance (docs/model.md section 17.2).
+ProjectionResult projectPositions(World& w, PinSolver& solver, double tolerance, int maxIterations, bool contacts) {
+    ProjectionResult r = closePins(w, solver, tolerance, maxIterations);
+    if (!contacts || w.contacts().empty() || !r.converged) return r;
+    thread_local ContactResponse response;
+    for (int round = 0; round < maxIterations; ++round) {
+        if (largestContactGap(w) <= tolerance) break;
+        response.build(w, solver, solver.prepare(w));
+        const size_t k = w.contacts().size();
+        Eigen::VectorXd rhs(Eigen::Index(k), 1);
+        for (size_t i = 0; i < k; ++i) rhs[Eigen::Index(i)] = -contactGap(w, w.contacts()[i]);
+        const Eigen::VectorXd s = response.solve(rhs, std::vector<char>(k, 1));
+        for (size_t i = 0; i < k; ++i) w.q += s[Eigen::Index(i)] * response.response[i];
+        const int used = r.iterations;
+        r = closePins(w, solver, tolerance, maxIterations);
+        r.iterations += used;
+        if (!r.converged) return r;
+        if (round + 1 == maxIterations) r.converged = largestContactGap(w) <= tolerance;
+    }
+    r.residual = std::max(r.residual, largestContactGap(w));
+    return r;
+}
+
+void projectVelocities(World& w, PinSolver& solver, Eigen::VectorXd* impulses, ContactRule rule) {
     PinSolver::Scratch& s = solver.scratch;
     Eigen::VectorXd &jv = s.jv, &x = s.x, &dv = s.dq;
     const bool stale = solver.prepare(w);
@@ -111,12 +147,35 @@ void projectVelocities(World& w, PinSolver& solver, Eigen::VectorXd* impulses) {
     dv.setZero(w.v.size());
     solver.addJTranspose(x, dv);
     w.v.array() += dv.array() * w.invMassDiag.array();
-    if (impulses) *impulses = x;
+    if (w.contacts().empty()) {
+        if (impulses) *impulses = x;
+        return;
+    }
+    // The resting contacts, unilaterally: each pushes (s_i >= 0) only as
+    // much as keeps its gap from closing, G (v + sum s_j u_j) >= 0, and a
+    // contact that would have to pull is left to part (docs/model.md
+    // section 17.3). The impulses follow the pins' in `impulses`.
+    thread_local ContactResponse response;
+    response.build(w, solver, false);
+    const size_t k = w.contacts().size();
+    Eigen::VectorXd rhs(Eigen::Index(k), 1);
+    for (size_t i = 0; i < k; ++i) rhs[Eigen::Index(i)] = -rowTimes(response.rows[i], w.v);
+    const Eigen::VectorXd push =
+        rule == ContactRule::PushOnly ? response.solvePushing(rhs) : response.solve(rhs, std::vector<char>(k, 1));
+    for (size_t i = 0; i < k; ++i) {
+        w.v += push[Eigen::Index(i)] * response.response[i];
+        if (response.pinForces[i].size() == x.size()) x += push[Eigen::Index(i)] * response.pinForces[i];
+    }
+    if (impulses) {
+        impulses->resize(x.size() + push.size());
+        impulses->head(x.size()) = x;
+        impulses->tail(push.size()) = push;
+    }
 }
 
-ProjectionResult makeConsistent(World& w, PinSolver& solver, double tolerance) {
+ProjectionResult makeConsistent(World& w, PinSolver& solver, double tolerance, bool contacts) {
     solver.reset();
-    ProjectionResult r = projectPositions(w, solver, tolerance);
+    ProjectionResult r = projectPositions(w, solver, tolerance, 25, contacts);
     projectVelocities(w, solver);
     return r;
 }

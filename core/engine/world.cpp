@@ -159,13 +159,13 @@ std::optional<WorldError> World::combine(const std::vector<std::pair<ParticleId,
 // failed, said in words. The structure has changed by then: a caller that
 // gets this error stops (the simulation keeps its last good frame).
 std::optional<WorldError> World::closePins(const char* operation) {
-    return pinsLeftOpen(operation, makeConsistent(*this, restructure_.solver, restructureTolerance));
+    return pinsLeftOpen(operation, makeConsistent(*this, restructure_.solver, restructureTolerance, false));
 }
 
 std::optional<WorldError> World::closePinGaps(const char* operation) {
     touch();
     restructure_.solver.reset();
-    return pinsLeftOpen(operation, projectPositions(*this, restructure_.solver, restructureTolerance));
+    return pinsLeftOpen(operation, projectPositions(*this, restructure_.solver, restructureTolerance, 25, false));
 }
 
 std::optional<WorldError> World::pinsLeftOpen(const char* operation, const ProjectionResult& r) {
@@ -220,7 +220,7 @@ void World::hold(PartId part, const Drive& d) {
     touch();
     parts_[part].drive = d;
     regroup({parts_[part].body});
-    makeConsistent(*this, restructure_.solver, restructureTolerance);
+    makeConsistent(*this, restructure_.solver, restructureTolerance, false);
 }
 
 void World::release(PartId part) {

@@ -37,6 +37,10 @@ const char* toString(EventKind k) {
             return "join";
         case EventKind::Script:
             return "script";
+        case EventKind::Touch:
+            return "touch";
+        case EventKind::Part:
+            return "part";
     }
     return "?";
 }

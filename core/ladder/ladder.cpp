@@ -255,6 +255,19 @@ Ladder::Wrench Ladder::internalWrench(const World& w, const Dynamics& d, int j, 
             s.moment += cross(x - p, l);
         }
     }
+    // Contacts with blocks that are not neighbours push on the side too
+    // (their pushes follow the pins' impulses in an impact's).
+    const std::vector<Contact>& contacts = w.contacts();
+    const Eigen::Index firstPush = impact ? Eigen::Index(w.constraintRows()) : 0;
+    const Eigen::VectorXd& push = impact ? *impact->pinImpulses : d.contactForces();
+    for (size_t i = 0; i < contacts.size() && firstPush + Eigen::Index(i) < push.size(); ++i) {
+        const Vec2 x = w.pointPosition(contacts[i].cornerPart, contacts[i].corner);
+        const Vec2 f =
+            push[firstPush + Eigen::Index(i)] * rotate(w.partPose(contacts[i].facePart).angle, contacts[i].normal);
+        const double sides = double(inSide(contacts[i].cornerPart)) - double(inSide(contacts[i].facePart));
+        s.force -= sides * f;
+        s.moment -= sides * cross(x - p, f);
+    }
     // Rotary dampers from outside the body.
     for (int id : dampers_) {
         const RotaryDamper& dm = w.rotaryDampers()[size_t(id)];

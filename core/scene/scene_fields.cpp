@@ -108,6 +108,10 @@ std::string fieldTable(std::string_view section) {
             "the blocks of a ladder at rest that the motion has not reached hang as a few rigid "
             "bodies until it comes near them (`joined`, docs/model.md section 3.7: the same motion for "
             "much less work), or each block is its own body from the start (`separate`, the full model)");
+        wordRow<BlockContact>(out, "block_contact", kBlockContacts, d.blockContact,
+                              "a corner of a block meets the face of a block that is not its neighbour as a "
+                              "frictionless contact that only pushes (`on`, docs/model.md section 17), or blocks "
+                              "pass through one another (`off`, the paper's model)");
         numberRows(out, kSolverNumbers);
     }
     return out.str();

@@ -151,11 +151,12 @@ void readDamping(const Fields& parent, Scene& scene) {
 
 void readSolver(const Fields& parent, SolverSpec& solver) {
     Fields f(parent.problems(), parent.value("solver"),
-             keysOf(kSolverNumbers, {"integrator", "events", "rigid_pairs", "still_tail"}));
+             keysOf(kSolverNumbers, {"integrator", "events", "rigid_pairs", "still_tail", "block_contact"}));
     f.choice<Integrator>("integrator", solver.integrator, kIntegrators);
     f.choice<EventPolicy>("events", solver.events, kEventPolicies);
     f.choice<RigidPairs>("rigid_pairs", solver.rigidPairs, kRigidPairs);
     f.choice<StillTail>("still_tail", solver.stillTail, kStillTails);
+    f.choice<BlockContact>("block_contact", solver.blockContact, kBlockContacts);
     readNumbers(f, kSolverNumbers, solver);
 }
 

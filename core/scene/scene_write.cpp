@@ -256,6 +256,7 @@ void writeSolver(Writer& w, const SolverSpec& solver) {
     w.choiceIf<EventPolicy>("events", solver.events, d.events, kEventPolicies);
     w.choiceIf<RigidPairs>("rigid_pairs", solver.rigidPairs, d.rigidPairs, kRigidPairs);
     w.choiceIf<StillTail>("still_tail", solver.stillTail, d.stillTail, kStillTails);
+    w.choiceIf<BlockContact>("block_contact", solver.blockContact, d.blockContact, kBlockContacts);
     writeNumbers(w, kSolverNumbers, solver);
     w.endMap();
 }

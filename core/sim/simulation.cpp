@@ -71,7 +71,9 @@ std::optional<std::string> Simulation::buildWorld() {
     if (scene_.ladder) {
         if (auto e = Ladder::validate(*scene_.ladder)) return e;
         ladder_.emplace(world_, *scene_.ladder);
+        ladder_->blockContacts().setEnabled(scene_.solver.blockContact == BlockContact::On);
         ladder_->setGapTolerance(scene_.solver.projectionTolerance);
+        ladder_->blockContacts().setAllowance(scene_.solver.projectionTolerance);
         for (int i = 0; i < ladder_->blockCount(); ++i) {
             blocks_.push_back(ladder_->block(i));
             named["block:" + std::to_string(i)] = ladder_->block(i);
@@ -141,7 +143,7 @@ std::optional<std::string> Simulation::buildWorld() {
     // Force tests at t = 0 (docs/model.md section 8.7), then the books open.
     applyDueInputs();
     if (ladder_)
-        for (Event& e : ladder_->resolve(world_, dynamics_, 0, &impactLoss_, &impactHeldWork_)) record(e);
+        for (Event& e : ladder_->settle(world_, dynamics_, 0, &impactLoss_, &impactHeldWork_)) record(e);
     // E(0) is the energy before the inputs at t = 0: what they did (pushes,
     // joins, impacts) is on the books already.
     const Energy e0 = energy(world_);
@@ -377,7 +379,7 @@ std::optional<std::string> Simulation::join(const ScriptAction& a) {
     if (hinge) ladder_->rehinged(world_, *hinge, a.corner);
     dynamics_.evaluate(world_, t_);
     const double settling = energy(world_).potential;
-    for (Event& ev : ladder_->resolve(world_, dynamics_, t_, &impactLoss_, &impactHeldWork_)) record(ev);
+    for (Event& ev : ladder_->settle(world_, dynamics_, t_, &impactLoss_, &impactHeldWork_)) record(ev);
     ledger_.user += energy(world_).potential - settling;
     return std::nullopt;
 }
@@ -424,7 +426,7 @@ void Simulation::applyDueInputs() {
         // Held blocks' accelerations may jump here: test the contacts.
         dynamics_.evaluate(world_, t_);
         if (ladder_)
-            for (Event& e : ladder_->resolve(world_, dynamics_, t_, &impactLoss_, &impactHeldWork_)) record(e);
+            for (Event& e : ladder_->settle(world_, dynamics_, t_, &impactLoss_, &impactHeldWork_)) record(e);
     }
 }
 

@@ -138,10 +138,28 @@ double Simulation::smallestEventFunction(double t, double* forces) {
 }
 
 // The same in the state the world and the dynamics hold, evaluated already.
+//
+// The contacts between blocks add their functions after the hinges'; one
+// counts only once it has crossed (negative), or, while an event is
+// located, if it had crossed at the step's end: a corner near a face with
+// nothing happening leaves the bracket and its narrowing exactly as they
+// are without contact (docs/model.md section 17.4).
 double Simulation::eventFunctionsNow(double* forces) {
-    const double f = ladder_->eventFunctions(world_, dynamics_, eventValues_);
+    double f = ladder_->eventFunctions(world_, dynamics_, eventValues_);
+    hingeForces_ = f;
+    hingeFunctions_ = int(eventValues_.size());
+    double smallest = eventValues_.empty() ? 1.0 : *std::min_element(eventValues_.begin(), eventValues_.end());
+    const BlockContacts& contacts = ladder_->blockContacts();
+    contacts.eventFunctions(world_, dynamics_, *ladder_, eventValues_);
+    for (int k = hingeFunctions_; k < int(eventValues_.size()); ++k) {
+        const double value = eventValues_[size_t(k)];
+        const bool counts = locating_ ? std::find(crossed_.begin(), crossed_.end(), k) != crossed_.end() : value < 0;
+        if (!counts) continue;
+        smallest = std::min(smallest, value);
+        if (!contacts.positional(k - hingeFunctions_)) f = std::min(f, value);
+    }
     if (forces) *forces = f;
-    return eventValues_.empty() ? 1.0 : *std::min_element(eventValues_.begin(), eventValues_.end());
+    return smallest;
 }
 
 // The first instant inside the step just taken (length `taken`, event
@@ -163,42 +181,99 @@ double Simulation::eventFunctionsNow(double* forces) {
 // bracket the first crossing of the smallest function), so the others add
 // nothing, and the trial costs the same on a ladder of 10 or 10,000 blocks.
 bool Simulation::locateEvent(double& taken, double fEnd, double forcesAtEnd) {
+    (void)fEnd;
+    (void)forcesAtEnd;
     const double tolerance = scene_.solver.eventTolerance;
-    // The angle functions already past their event at the end (eventValues_
-    // holds the end's): a trial needs only these and their bodies' angles.
-    crossed_.clear();
+    // The functions already past their event at the end (eventValues_
+    // holds the end's): a trial needs only these and their bodies' poses.
+    // The hinges' first, exactly as without contact between blocks; then,
+    // if a corner of a block had crossed a face by the end, whether it did
+    // so before the hinges' instant (docs/model.md section 17.4).
+    std::vector<int> hingesCrossed, contactsCrossed;
+    double hingesEnd = 1.0, contactsEnd = 1.0;
     for (size_t k = 0; k < eventValues_.size(); ++k)
-        if (eventValues_[k] < 0) crossed_.push_back(int(k));
+        if (eventValues_[k] < 0) {
+            const bool hinge = int(k) < hingeFunctions_;
+            (hinge ? hingesCrossed : contactsCrossed).push_back(int(k));
+            (hinge ? hingesEnd : contactsEnd) = std::min(hinge ? hingesEnd : contactsEnd, eventValues_[k]);
+        }
+    // The hinges' own smallest function at the end is their smallest crossed
+    // one; their force functions' smallest is kept by eventFunctionsNow.
+    const double hingeForcesAtEnd = hingeForces_;
     const Powers p1 = world_.pathsOnOnePiece(t_ + taken / 2, t_ + taken) ? lastPowers_ : stepEndAsTaken(taken);
+    locating_ = true;
+    ladder_->blockContacts().setLocating(true);
+    crossed_ = contactsCrossed;
     const Ledger ledgerAtEnd = ledger_;
     interpolant_.setEnd(world_.q, world_.v, world_.a);
     restoreStepStart();
     // The start as the step found it (the last step's end), or evaluated.
-    double forcesAtStart = 0, fStart = 0;
     if (const Powers* kept = keptStart_.recall(world_, dynamics_, t_)) {
         lastPowers_ = *kept;
-        fStart = eventFunctionsNow(&forcesAtStart);
+        eventFunctionsNow(nullptr);
     } else {
-        fStart = smallestEventFunction(t_, &forcesAtStart);
+        smallestEventFunction(t_, nullptr);
+    }
+    const double hingesStart =
+        hingeFunctions_ > 0 ? *std::min_element(eventValues_.begin(), eventValues_.begin() + hingeFunctions_) : 1.0;
+    const double hingeForcesAtStart = hingeForces_;
+    double contactsStart = 1.0;
+    bool contactForces = false;
+    const BlockContacts& contacts = ladder_->blockContacts();
+    for (int k : contactsCrossed) {
+        contactsStart = std::min(contactsStart, eventValues_[size_t(k)]);
+        contactForces = contactForces || !contacts.positional(k - hingeFunctions_);
     }
     const Powers p0 = lastPowers_;
     interpolant_.setStart(taken, stepStartQ_, stepStartV_, world_.a);
-    const bool anglesOnly = forcesAtStart >= 0 && forcesAtEnd >= 0;
 
-    EventBracket b{0, fStart, taken, fEnd};
-    narrow(b, tolerance, [&](double h) {
-        if (!anglesOnly) {
-            interpolant_.at(h, world_.q, world_.v);
-            return smallestEventFunction(t_ + h);
+    // Narrows [lo, hi] to the first crossing of the functions `among`,
+    // on the interpolant: by positions alone when none of them is a force.
+    const auto narrowAmong = [&](const std::vector<int>& among, bool anglesOnly, EventBracket b) {
+        crossed_ = among;
+        narrow(b, tolerance, [&](double h) {
+            if (!anglesOnly) {
+                interpolant_.at(h, world_.q, world_.v);
+                return smallestEventFunction(t_ + h);
+            }
+            double f = 1.0;
+            for (int k : crossed_) {
+                if (k >= hingeFunctions_) {
+                    // A block's corner at another's face: the two bodies' poses.
+                    for (int body : contacts.bodies(world_, *ladder_, k - hingeFunctions_))
+                        for (int c = 0; c < 3; ++c) world_.q[3 * body + c] = interpolant_.coordinateAt(h, 3 * body + c);
+                    f = std::min(f, contacts.positionFunction(world_, *ladder_, k - hingeFunctions_));
+                    continue;
+                }
+                for (int body : ladder_->angleEventBodies(world_, k))
+                    world_.q[3 * body + 2] = interpolant_.coordinateAt(h, 3 * body + 2);
+                f = std::min(f, ladder_->angleEventFunction(world_, k));
+            }
+            return f;
+        });
+        return b;
+    };
+    EventBracket b{0, 0, taken, 0};
+    if (!hingesCrossed.empty())
+        b = narrowAmong(hingesCrossed, hingeForcesAtStart >= 0 && hingeForcesAtEnd >= 0,
+                        EventBracket{0, hingesStart, taken, hingesEnd});
+    if (!contactsCrossed.empty()) {
+        // The corners' functions where the hinges' event is (or the end).
+        double atHi = contactsEnd;
+        if (!hingesCrossed.empty()) {
+            interpolant_.at(b.hi, world_.q, world_.v);
+            crossed_ = contactsCrossed;
+            smallestEventFunction(t_ + b.hi, nullptr);
+            atHi = 1.0;
+            for (int k : contactsCrossed) atHi = std::min(atHi, eventValues_[size_t(k)]);
         }
-        double f = 1.0;
-        for (int k : crossed_) {
-            for (int body : ladder_->angleEventBodies(world_, k))
-                world_.q[3 * body + 2] = interpolant_.coordinateAt(h, 3 * body + 2);
-            f = std::min(f, ladder_->angleEventFunction(world_, k));
-        }
-        return f;
-    });
+        if (atHi < 0) b = narrowAmong(contactsCrossed, !contactForces, EventBracket{0, contactsStart, b.hi, atHi});
+        std::vector<int> located;
+        for (int k : contactsCrossed) located.push_back(k - hingeFunctions_);
+        ladder_->blockContacts().markLocated(located);
+    }
+    locating_ = false;
+    ladder_->blockContacts().setLocating(false);
     interpolant_.at(b.hi, world_.q, world_.v);
     world_.updateKinematics(t_ + b.hi);
     if (!world_.q.allFinite() || !world_.v.allFinite()) {
@@ -340,6 +415,9 @@ bool Simulation::takeStep(double limit) {
         // stage was the projected end (Dormand-Prince), unless a move of
         // the hand starts or stops there: its stage saw the other side.
         double fEnd = 0;
+        // The corners to watch at the step's end: the same list at its
+        // start, for the bracket.
+        ladder_->blockContacts().refresh(world_, *ladder_);
         if (m.step.endEvaluated && world_.pathsOnOnePiece(t_ + taken / 2, t_ + taken)) {
             lastPowers_ = m.step.endPowers;
             fEnd = eventFunctionsNow(&forces);
@@ -354,7 +432,7 @@ bool Simulation::takeStep(double limit) {
             }
             emitGridFrames(taken);
             std::vector<Event> happened =
-                ladder_->resolve(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
+                ladder_->settle(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
             if (happened.empty() && taken < m.step.taken) {
                 // The located instant asked for nothing after all (a function
                 // within rounding of its threshold): take the whole step, so
@@ -365,7 +443,7 @@ bool Simulation::takeStep(double limit) {
                 taken = m.step.taken;
                 ++stats_.spuriousEvents;
                 emitGridFrames(taken);
-                happened = ladder_->resolve(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
+                happened = ladder_->settle(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
             }
             for (Event& e : happened) record(e);
             if (!ladder_->error().empty()) {
@@ -399,6 +477,16 @@ bool Simulation::takeStep(double limit) {
     stats_.lastStep = taken;
     lastResidual_ = m.projection.residual;
     applyDueInputs();
+    if (ladder_) {
+        // A block contact held at its Zeno limit that has pulled for a
+        // Zeno time parts at the step's end (docs/model.md section 17.6).
+        std::vector<Event> parted = ladder_->blockContacts().letGoExpired(world_, dynamics_, *ladder_, t_);
+        if (!parted.empty()) {
+            for (Event& e : parted) record(e);
+            for (Event& e : ladder_->settle(world_, dynamics_, t_, &impactLoss_, &impactHeldWork_)) record(e);
+            keptEnd_.keep(world_, dynamics_, t_, ladder_->settledPowers());
+        }
+    }
     return true;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "jl/base/geometry.h"
+#include "jl/engine/contact.h"
 #include "jl/engine/pin_solver.h"
 
 #include <Eigen/Core>
@@ -32,25 +33,32 @@ public:
     // Pin forces of the last evaluation (2 per pin, force on body A), then
     // one multiplier per weld (World::Weld).
     const Eigen::VectorXd& pinForces() const { return lambda_; }
+    // The pushes of the world's resting contacts in the last evaluation (N,
+    // one per World::contacts(), on the corner's part along the face's
+    // normal), and each contact's row at that state.
+    const Eigen::VectorXd& contactForces() const { return contactForces_; }
     // Applied (non-constraint) forces of the last evaluation, 3 per body.
     const Eigen::VectorXd& appliedForces() const { return force_; }
     PinSolver& solver() { return solver_; }
     // What the last evaluation left (applied and pin forces), to put back
     // after evaluations that must leave no trace (frames read off a step).
     struct Last {
-        Eigen::VectorXd force, lambda;
+        Eigen::VectorXd force, lambda, contactForces;
     };
-    Last last() const { return {force_, lambda_}; }
+    Last last() const { return {force_, lambda_, contactForces_}; }
     void restoreLast(const Last& l) {
         force_ = l.force;
         lambda_ = l.lambda;
+        contactForces_ = l.contactForces;
         weightsRevision_ = 0;
     }
     long long evaluations() const { return evaluations_; }
 
 private:
+    void addContacts(World& w, Powers& powers);
     PinSolver solver_;
-    Eigen::VectorXd force_, lambda_;
+    Eigen::VectorXd force_, lambda_, contactForces_;
+    ContactResponse contactResponse_;
     std::vector<size_t> heldPins_;        // pins with exactly one held side
     std::uint64_t heldPinsRevision_ = 0;  // the World::revision they were listed for
     // force_ holds the weights of the world with this revision and gravity

@@ -23,15 +23,26 @@ double pinResidual(const World& w);
 double pinVelocityResidual(const World& w, PinSolver& solver);
 
 // Moves dynamic bodies the least (in the mass metric) so every pin closes.
-ProjectionResult projectPositions(World& w, PinSolver& solver, double tolerance, int maxIterations = 25);
+// The world's resting contacts are closed too, unless `contacts` is false:
+// a change of structure closes its pins to rounding, and leaves the
+// contacts (closed by every step's projection) as they are.
+ProjectionResult projectPositions(World& w, PinSolver& solver, double tolerance, int maxIterations = 25,
+                                  bool contacts = true);
 
 // The plastic impulse: v+ = v- + W J^T P with J v+ = 0. Held bodies have
 // infinite mass. If `impulses` is given it receives P (2 per pin, on body A, then one
 // per weld).
-void projectVelocities(World& w, PinSolver& solver, Eigen::VectorXd* impulses = nullptr);
+// The world's resting contacts (World::contacts) are held too: at an
+// impact `PushOnly`, each pushing only as much as keeps its gap from
+// closing (a contact that would have to pull is left to part); after a
+// step `Hold`, each kept at zero rate like a pin, since a resting contact
+// opens only where its force crosses zero (docs/model.md section 17.3).
+enum class ContactRule { PushOnly, Hold };
+void projectVelocities(World& w, PinSolver& solver, Eigen::VectorXd* impulses = nullptr,
+                       ContactRule contacts = ContactRule::PushOnly);
 
 // Both, after a change of structure (combine, separate, hold), with the
 // caller's solver: reset first, so nothing but its capacity carries over.
-ProjectionResult makeConsistent(World& w, PinSolver& solver, double tolerance);
+ProjectionResult makeConsistent(World& w, PinSolver& solver, double tolerance, bool contacts = true);
 
 }  // namespace jl

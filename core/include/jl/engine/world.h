@@ -3,6 +3,7 @@
 #pragma once
 
 #include "jl/base/geometry.h"
+#include "jl/engine/contact.h"
 #include "jl/engine/drive.h"
 #include "jl/engine/pin_solver.h"
 
@@ -235,6 +236,13 @@ public:
         return drags_;
     }
     const std::vector<UserDrag>& drags() const { return drags_; }
+    // The resting contacts between non-neighbouring blocks (docs/model.md
+    // section 17): unilateral rows solved on top of the pins.
+    std::vector<Contact>& contacts() {
+        touch();
+        return contacts_;
+    }
+    const std::vector<Contact>& contacts() const { return contacts_; }
 
     Pose bodyPose(int b) const { return {q.segment<2>(3 * b), q[3 * b + 2]}; }
     Twist bodyVelocity(int b) const { return {v.segment<2>(3 * b), v[3 * b + 2]}; }
@@ -320,6 +328,7 @@ private:
     std::vector<RotaryDamper> dampers_;
     std::vector<UserDrag> drags_;
     std::vector<AppliedLoad> loads_;
+    std::vector<Contact> contacts_;
     std::vector<int> freeBodies_;
     std::vector<PartId> dampedParts_;  // ascending
     long long structureVersion_ = 0;

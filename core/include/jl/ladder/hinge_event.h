@@ -11,7 +11,9 @@
 namespace jl {
 
 enum class HingeMode { Free, OpenLocked, Folded, Cut };
-enum class EventKind { Lock, Unlock, Fold, Unfold, FlipFlop, Bounce, Cut, Join, Script };
+// Touch and Part: a corner of a block meets, or leaves, a face of a block
+// that is not its neighbour (docs/model.md section 17); hinge -1.
+enum class EventKind { Lock, Unlock, Fold, Unfold, FlipFlop, Bounce, Cut, Join, Script, Touch, Part };
 
 const char* toString(HingeMode m);
 const char* toString(EventKind k);  // "lock", "unlock", "fold", "unfold", "flip", ...

@@ -5,6 +5,7 @@
 
 #include "jl/engine/dynamics.h"
 #include "jl/engine/world.h"
+#include "jl/ladder/block_contact.h"
 #include "jl/ladder/hinge_event.h"
 #include "jl/scene/scene.h"
 
@@ -107,6 +108,15 @@ public:
     // angleEventBodies gives, and nothing else.
     double angleEventFunction(const World& w, int k) const;
     std::array<int, 2> angleEventBodies(const World& w, int k) const;
+
+    // resolve, then the contacts between blocks that are not neighbours
+    // (docs/model.md section 17), and the hinges again after each change
+    // there, until neither has anything to do. What the simulation calls.
+    std::vector<Event> settle(World& w, Dynamics& d, double t, double* impactLoss, double* heldWork);
+    BlockContacts& blockContacts() { return blockContacts_; }
+    const BlockContacts& blockContacts() const { return blockContacts_; }
+    double length() const { return length_; }  // m, every block's
+    const HingeOptions& hingeOptions() const { return spec_.hinges; }
 
     // Applies whatever events the state calls for (limits crossed, contacts
     // pulling), impacts included, until none remains. Returns what happened.
@@ -227,6 +237,7 @@ private:
     };
     std::vector<std::array<FoldLinear, 4>> foldLinear_;
     std::string error_;
+    BlockContacts blockContacts_;
     Powers settled_;  // of resolve's last evaluation
     // The still tail: its first block, the resting fold angle of the hinge
     // above it, and the second shared point of each still hinge (on the

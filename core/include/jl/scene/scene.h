@@ -31,6 +31,7 @@ enum class RigidPairs { Merge, Weld };
 // (docs/model.md section 3.7): joined into a few still bodies until it nears
 // them, or each its own body from the start (the full model, to compare).
 enum class StillTail { Joined, Separate };
+enum class BlockContact { On, Off };
 
 // Size and material of a block; every block of a ladder shares `length`.
 struct BlockSpec {
@@ -191,6 +192,7 @@ struct SolverSpec {
     double frameInterval = 1.0 / 60.0;  // s, output frames
     RigidPairs rigidPairs = RigidPairs::Merge;
     StillTail stillTail = StillTail::Joined;
+    BlockContact blockContact = BlockContact::Off;  // docs/model.md section 17 (off until its open problems are solved)
     bool operator==(const SolverSpec&) const = default;
 };
 

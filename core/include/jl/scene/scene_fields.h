@@ -63,7 +63,7 @@ inline constexpr NumberField<Scene> kDampingNumbers[] = {
     {"angular", &Scene::angularDamping, "N m s", range::angularDamping, "air drag on their turning"},
 };
 
-// The solver's numbers; `integrator`, `events`, `rigid_pairs` and `still_tail` are choices
+// The solver's numbers; `integrator`, `events`, `rigid_pairs`, `still_tail` and `block_contact` are choices
 // (below). The writer puts the choices first, then these.
 inline constexpr NumberField<SolverSpec> kSolverNumbers[] = {
     {"step", &SolverSpec::step, "s", range::step,
@@ -105,6 +105,10 @@ inline constexpr Word<RigidPairs> kRigidPairs[] = {
 inline constexpr Word<StillTail> kStillTails[] = {
     {"joined", StillTail::Joined, "Still blocks joined until the motion nears them"},
     {"separate", StillTail::Separate, "Every block its own body from the start"},
+};
+inline constexpr Word<BlockContact> kBlockContacts[] = {
+    {"on", BlockContact::On, "Blocks that are not neighbours push each other apart"},
+    {"off", BlockContact::Off, "Blocks pass through one another (the paper's)"},
 };
 inline constexpr Word<InitialState::Kind> kInitialKinds[] = {
     {"equilibrium", InitialState::Kind::Equilibrium, "Hanging at rest"},

@@ -181,7 +181,11 @@ private:
     Eigen::VectorXd stepStartQ_, stepStartV_;  // the state the step started from
     Ledger stepStartLedger_;
     std::vector<double> eventValues_;
-    Powers lastPowers_;         // of smallestEventFunction's evaluation
+    Powers lastPowers_;  // of smallestEventFunction's evaluation
+    int hingeFunctions_ = 0;
+    double hingeForces_ = 0;    // eventFunctionsNow: the smallest of the hinges' force functions
+    bool locating_ = false;     // locateEvent: a block contact's function counts if it crossed at the step's end  //
+                                // eventValues_: the hinges' functions, then the block contacts'
     std::vector<int> crossed_;  // locateEvent: the event functions past their event at the step's end
     StepInterpolant interpolant_;
     FrameGrid grid_;

@@ -1,0 +1,145 @@
+// Contact between blocks that are not neighbours (docs/model.md section
+// 17): a corner of one block against a face of another, frictionless and
+// unilateral. Neighbours meet through their hinge (LOCK and FOLD) and are
+// never tested here.
+#pragma once
+
+#include "jl/engine/dynamics.h"
+#include "jl/engine/world.h"
+#include "jl/ladder/hinge_event.h"
+
+#include <array>
+#include <utility>
+#include <vector>
+
+namespace jl {
+
+class Ladder;
+
+// Where a corner stands against a block's box, in the box's frame: the
+// signed distance to the face it is nearest to crossing (> 0 outside that
+// face's plane, < 0 inside every face's), and that face.
+struct CornerAgainstBox {
+    double gap = 0;  // m: max over the four faces of (n . local - half size)
+    int face = 0;    // 0, 1: -x, +x (the long faces); 2, 3: -y, +y (the ends)
+};
+
+// Pairs of blocks whose bounding circles overlap, by a grid hashed on the
+// blocks' centres: O(N) per call on a ladder of N blocks. Neighbours,
+// blocks of one body and blocks both in the still tail are left out.
+class BlockPairs {
+public:
+    void find(const World& w, const Ladder& ladder, std::vector<std::pair<int, int>>& out);
+
+private:
+    std::vector<int> head_, next_;
+    std::vector<long long> key_;
+    std::vector<Vec2> centre_;
+};
+
+class BlockContacts {
+public:
+    // Off: the paper's model, blocks pass through one another.
+    void setEnabled(bool on) { enabled_ = on; }
+    bool enabled() const { return enabled_; }
+
+    // After a step, at its end: the corners of blocks near each other, each
+    // watched against the other block, and the contacts that rest. The
+    // event functions of the next location are these, at any state.
+    void refresh(const World& w, const Ladder& ladder);
+    // After a step (the dynamics evaluated at its end, time t): the held
+    // contacts that have pulled for a Zeno time part. What happened.
+    std::vector<Event> letGoExpired(World& w, const Dynamics& d, const Ladder& ladder, double t);
+    // Appends the functions (>= 0 while nothing happens): each watched
+    // corner's gap, and each resting contact's push and how far its corner
+    // is from sliding off the face. Returns the smallest push (+inf if none).
+    double eventFunctions(const World& w, const Dynamics& d, const Ladder& ladder, std::vector<double>& out) const;
+    // Whether function k of those needs positions alone (a gap or a slide),
+    // its value, and the bodies whose coordinates it reads.
+    bool positional(int k) const { return k < int(watched_.size()) || isSlide(k); }
+    double positionFunction(const World& w, const Ladder& ladder, int k) const;
+    std::array<int, 2> bodies(const World& w, const Ladder& ladder, int k) const;
+
+    // At an instant, after the hinges are settled (the dynamics evaluated
+    // there): contacts whose push would pull, or whose corner has slid off
+    // the face or moves away, part; corners that touch while closing (or
+    // rest with their acceleration into the face) make contact, in one
+    // plastic impact (restitution as the hinges'). Returns what happened;
+    // empty if nothing did.
+    std::vector<Event> resolveOnce(World& w, Dynamics& d, const Ladder& ladder, double t, double* loss,
+                                   double* heldWork);
+    // A new instant: the contacts parted in the last one may touch again.
+    void newInstant() { partedNow_.clear(); }
+    // While an event is located, the corners' functions cross where the
+    // gap does (the rounding of a pose aside); at a step's end a corner
+    // must be past the face by more than the pins' own tolerance (`gap`,
+    // m) to count: where the ladder folds flat, a block's corner lies on
+    // the face of the block beyond the next with gap zero to the
+    // projection's noise (the heavy-middle example, 2.4e-12 m), and that
+    // is no contact.
+    void setLocating(bool on) { locating_ = on; }
+    void setAllowance(double gap) { allowance_ = gap; }
+    // The functions (indices into those eventFunctions appended) whose
+    // crossing was located: those corners touch however little they are
+    // past the face. Forgotten once the instant is settled.
+    void markLocated(const std::vector<int>& functions);
+    void forgetLocated() { located_.clear(); }
+
+    // Which blocks each of World::contacts() joins: the corner's block and
+    // corner, the face's block and face.
+    struct Touch {
+        int block = 0, corner = 0, other = 0, face = 0;
+        double since = 0;  // s, when it closed
+        // Closed again within the Zeno time of its parting: held closed
+        // (docs/model.md section 8.6 rule 2) until it has pulled for a
+        // Zeno time; its push raises no event meanwhile.
+        bool held = false;
+        double pullingSince = -1;  // s; -1: it pushes
+        bool operator==(const Touch&) const = default;
+    };
+    const std::vector<Touch>& touches() const { return touches_; }
+    // How many pairs and corners the broad phase passed on at the last refresh.
+    int pairCount() const { return pairCount_; }
+
+    static CornerAgainstBox cornerAgainst(const World& w, const Ladder& ladder, int block, int corner, int other);
+
+private:
+    struct Watch {
+        int block = 0, corner = 0, other = 0;
+        double zero = 0;  // m, <= 0: where the gap counts as zero (a contact just parted reads a hair inside)
+    };
+    // The watched corners' functions: the gap past its zero, less the
+    // allowance (below).
+    double watchFunction(const World& w, const Ladder& ladder, const Watch& c) const;
+    bool isSlide(int k) const {
+        return k >= int(watched_.size()) + int(touches_.size()) && k < int(watched_.size()) + 2 * int(touches_.size());
+    }
+    double slideRoom(const World& w, size_t i) const;
+    static bool heldAlready(const World& w, const Contact& c, const ContactRow& row);
+    static Contact contactAt(const World& w, const Ladder& ladder, int block, int corner, int other);
+    static bool atHingeOf(const World& w, const Ladder& ladder, const Vec2& p, int b);
+    static bool onPin(const World& w, const Ladder& ladder, const Vec2& p, int a, int b);
+    double gapZero(int block, int corner, int other) const;
+    void part(World& w, size_t i, double t);
+
+    bool enabled_ = true;
+    bool locating_ = false;
+    double allowance_ = 1e-10;  // m
+    std::vector<Watch> watched_;
+    std::vector<Touch> touches_;  // parallel to World::contacts()
+    // Parted at some instant, and the gap they parted at (the projection's
+    // noise): their zero, until they are clear by kClear.
+    struct Parted {
+        int block = 0, corner = 0, other = 0;
+        double gap = 0;  // m; 0 once clear
+        double at = 0;   // s, when it parted
+    };
+    std::vector<Parted> parted_;
+    std::vector<std::array<int, 3>> partedNow_;
+    std::vector<std::array<int, 3>> located_;  // in this instant: they stay apart in it
+    std::vector<std::pair<int, int>> pairs_;
+    int pairCount_ = 0;
+    BlockPairs broad_;
+};
+
+}  // namespace jl

@@ -1,0 +1,397 @@
+// Contact between blocks that are not neighbours (docs/model.md section 17):
+// which corners are watched, the event functions, and what happens at an
+// instant where a corner touches a face or a resting contact lets go.
+#include "jl/ladder/block_contact.h"
+
+#include "jl/engine/energy.h"
+#include "jl/engine/projection.h"
+#include "jl/ladder/ladder.h"
+
+#include <Eigen/Cholesky>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace jl {
+
+namespace {
+
+// Of a block length: a corner this close to a face touches it (a located
+// crossing lands far inside: the bracket is 1e-9 s wide), and a resting
+// corner may overhang the face's end by as much before it slides off.
+constexpr double kTouchBand = 1e-7;
+// Of a block length: the rounding of a gap computed from poses (kept out
+// of the event functions, as kAngleTolerance is for the fold angle).
+constexpr double kRounding = 1e-12;
+// Of a block length: a contact that parted reads its gap from where it
+// parted until it is this far clear.
+constexpr double kClear = 1e-6;
+
+Vec2 faceNormal(int face) {
+    switch (face) {
+        case 0:
+            return {-1, 0};
+        case 1:
+            return {1, 0};
+        case 2:
+            return {0, -1};
+        default:
+            return {0, 1};
+    }
+}
+
+}  // namespace
+
+CornerAgainstBox BlockContacts::cornerAgainst(const World& w, const Ladder& ladder, int block, int corner, int other) {
+    const Pose box = w.partPose(ladder.block(other));
+    const Vec2 half = ladder.cornerLocal(other, 3).cwiseAbs();
+    const Vec2 local = rotate(-box.angle, ladder.cornerWorld(w, block, corner) - box.position);
+    const double d[4] = {-local.x() - half.x(), local.x() - half.x(), -local.y() - half.y(), local.y() - half.y()};
+    CornerAgainstBox out{d[0], 0};
+    for (int f = 1; f < 4; ++f)
+        if (d[f] > out.gap) out = {d[f], f};
+    return out;
+}
+
+double BlockContacts::gapZero(int block, int corner, int other) const {
+    for (const Parted& p : parted_)
+        if (p.block == block && p.corner == corner && p.other == other) return std::min(0.0, p.gap);
+    return 0.0;
+}
+
+void BlockContacts::refresh(const World& w, const Ladder& ladder) {
+    watched_.clear();
+    if (!enabled_) return;
+    broad_.find(w, ladder, pairs_);
+    pairCount_ = int(pairs_.size());
+    const double length = ladder.length();
+    // A corner parted at some instant is back to the plain zero once clear
+    // (the record stays, for the Zeno time, until the next parting).
+    for (Parted& p : parted_)
+        if (cornerAgainst(w, ladder, p.block, p.corner, p.other).gap > kClear * length) p.gap = 0;
+    for (const auto& [i, j] : pairs_)
+        for (const auto& [a, b] : {std::pair{i, j}, std::pair{j, i}})
+            for (int k = 0; k < 4; ++k) {
+                const bool resting = std::any_of(touches_.begin(), touches_.end(), [&](const Touch& t) {
+                    return t.block == a && t.corner == k && t.other == b;
+                });
+                if (!resting && !atHingeOf(w, ladder, ladder.cornerWorld(w, a, k), b))
+                    watched_.push_back({a, k, b, gapZero(a, k, b)});
+            }
+}
+
+void BlockContacts::markLocated(const std::vector<int>& functions) {
+    for (int k : functions)
+        if (k < int(watched_.size())) {
+            const Watch& c = watched_[size_t(k)];
+            located_.push_back({c.block, c.corner, c.other});
+        }
+}
+
+double BlockContacts::watchFunction(const World& w, const Ladder& ladder, const Watch& c) const {
+    const double gap = cornerAgainst(w, ladder, c.block, c.corner, c.other).gap - c.zero;
+    return gap + (locating_ ? kRounding * ladder.length() : std::max(kRounding * ladder.length(), allowance_));
+}
+
+double BlockContacts::slideRoom(const World& w, size_t i) const {
+    const Contact& c = w.contacts()[i];
+    return c.halfLength - std::abs(contactSlide(w, c));
+}
+
+double BlockContacts::eventFunctions(const World& w, const Dynamics& d, const Ladder& ladder,
+                                     std::vector<double>& out) const {
+    double smallestForce = std::numeric_limits<double>::infinity();
+    if (!enabled_) return smallestForce;
+    for (const Watch& c : watched_) {
+        out.push_back(watchFunction(w, ladder, c));
+    }
+    const Eigen::VectorXd& push = d.contactForces();
+    for (size_t i = 0; i < touches_.size(); ++i) {
+        const double f = touches_[i].held
+                             ? 1.0
+                             : (Eigen::Index(i) < push.size() ? push[Eigen::Index(i)] : 0.0) + ladder.forceTolerance();
+        out.push_back(f);
+        smallestForce = std::min(smallestForce, f);
+    }
+    for (size_t i = 0; i < touches_.size(); ++i) out.push_back(slideRoom(w, i) + kTouchBand * ladder.length());
+    return smallestForce;
+}
+
+double BlockContacts::positionFunction(const World& w, const Ladder& ladder, int k) const {
+    if (k < int(watched_.size())) {
+        const Watch& c = watched_[size_t(k)];
+        return watchFunction(w, ladder, c);
+    }
+    const size_t i = size_t(k) - watched_.size() - touches_.size();
+    return slideRoom(w, i) + kTouchBand * ladder.length();
+}
+
+std::array<int, 2> BlockContacts::bodies(const World& w, const Ladder& ladder, int k) const {
+    if (k < int(watched_.size())) {
+        const Watch& c = watched_[size_t(k)];
+        return {w.part(ladder.block(c.block)).body, w.part(ladder.block(c.other)).body};
+    }
+    const Touch& t = touches_[size_t(k) - watched_.size() - touches_.size()];
+    return {w.part(ladder.block(t.block)).body, w.part(ladder.block(t.other)).body};
+}
+
+// Whether point p is where a pin joins the bodies of blocks a and b: a
+// hinge's corner, after a flip or a lock, can be a corner of a block that
+// is not the hinge's (two hinges at one end of a block; a locked pair's
+// second shared corner). A pin already keeps the two bodies together
+// there, and a contact at the same point would be the pin's own equation
+// again, with a push the solve cannot tell from the pin's force.
+bool BlockContacts::onPin(const World& w, const Ladder& ladder, const Vec2& p, int a, int b) {
+    const int bodyA = w.part(ladder.block(a)).body, bodyB = w.part(ladder.block(b)).body;
+    const double near = kClear * ladder.length();
+    for (const Pin& pin : w.pins())
+        if ((pin.bodyA == bodyA && pin.bodyB == bodyB) || (pin.bodyA == bodyB && pin.bodyB == bodyA))
+            if ((w.bodyPose(pin.bodyA).apply(pin.localA) - p).norm() <= near) return true;
+    return false;
+}
+
+// Whether point p lies on one of block b's hinges. After a flip both
+// hinges of a block sit at one end, T apart, and the neighbour folded
+// against it has a corner on the other hinge: it meets the block beyond at
+// that hinge's corner, with gap zero to rounding, held there by the pins
+// (the classic cascade does this at every flip). A corner there is the
+// hinges' business, not a contact's.
+bool BlockContacts::atHingeOf(const World& w, const Ladder& ladder, const Vec2& p, int b) {
+    const double near = kClear * ladder.length();
+    for (int j : {b, b + 1})
+        if (j >= 1 && j < ladder.blockCount() && ladder.hinge(j).mode != HingeMode::Cut &&
+            (ladder.cornerWorld(w, b, ladder.hinge(j).corner) - p).norm() <= near)
+            return true;
+    return false;
+}
+
+// Whether the pins, and the contacts resting already, hold the contact's
+// two points together along its normal: a push there moves nothing (the Delassus entry G u, with the pins
+// active, is a vanishing fraction of what it is for the two bodies alone).
+// A corner can coincide with a hinge of a third block (two hinges at one
+// end of a block after a flip, T apart: a neighbour's corner lies on the
+// other hinge) and touch a face there without the pins letting it press:
+// the push would be the pins' indeterminate share, not a contact.
+bool BlockContacts::heldAlready(const World& w, const Contact& c, const ContactRow& row) {
+    thread_local ContactResponse one;
+    thread_local World alone;
+    thread_local PinSolver solver;
+    alone = w;
+    alone.contacts().push_back(c);
+    solver.reset();
+    one.build(alone, solver, solver.prepare(alone));
+    double free = 0;
+    for (int b : {row.bodyA, row.bodyB}) {
+        const Vec2 arm = b == row.bodyA ? row.armA : row.armB;
+        free += w.invMassDiag[3 * b] + w.invMassDiag[3 * b + 2] * cross(arm, row.normal) * cross(arm, row.normal);
+    }
+    // What a push at the new contact moves with the others held as well:
+    // the Schur complement of the contacts already resting.
+    const Eigen::Index n = one.matrix.rows() - 1;
+    double own = one.matrix(n, n);
+    if (n > 0) {
+        const Eigen::MatrixXd held = one.matrix.topLeftCorner(n, n);
+        const Eigen::VectorXd across = one.matrix.topRightCorner(n, 1);
+        own -= across.dot(held.ldlt().solve(across));
+    }
+    return !(own > 1e-6 * free);
+}
+
+// Corner `corner` of `block` against the face of `other` it is nearest to
+// crossing: a resting contact from now on.
+Contact BlockContacts::contactAt(const World& w, const Ladder& ladder, int block, int corner, int other) {
+    const int face = cornerAgainst(w, ladder, block, corner, other).face;
+    const Vec2 half = ladder.cornerLocal(other, 3).cwiseAbs();
+    Contact c;
+    c.cornerPart = ladder.block(block);
+    c.corner = ladder.cornerLocal(block, corner);
+    c.facePart = ladder.block(other);
+    c.normal = faceNormal(face);
+    c.offset = face < 2 ? half.x() : half.y();
+    c.halfLength = face < 2 ? half.y() : half.x();
+    return c;
+}
+
+void BlockContacts::part(World& w, size_t i, double t) {
+    const Touch& c = touches_[i];
+    const double gap = contactGap(w, w.contacts()[i]);
+    std::erase_if(parted_,
+                  [&](const Parted& p) { return p.block == c.block && p.corner == c.corner && p.other == c.other; });
+    parted_.push_back({c.block, c.corner, c.other, gap, t});
+    partedNow_.push_back({c.block, c.corner, c.other});
+    w.contacts().erase(w.contacts().begin() + std::ptrdiff_t(i));
+    touches_.erase(touches_.begin() + std::ptrdiff_t(i));
+}
+
+std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladder& ladder, double t, double* loss,
+                                              double* heldWork) {
+    std::vector<Event> events;
+    if (!enabled_) return events;
+    const double length = ladder.length();
+    const double band = kTouchBand * length;
+    const double still = ladder.restingRate() * length;  // m/s: a gap changing slower rests
+    // m/s: an impact elsewhere that parts a resting contact slower than
+    // this leaves it closed, and the force test decides (rule 6 of
+    // docs/model.md section 8.6, with the hinges' v_min times a length).
+    const double parting = ladder.hingeOptions().minReboundSpeed * length;
+    auto words = [](const char* what, const Touch& c) {
+        return "corner " + std::to_string(c.corner) + " of block " + std::to_string(c.block) + " " + what + " block " +
+               std::to_string(c.other);
+    };
+    // 1. Partings, one at a time: a corner that has slid off its face, or
+    // that moves away (an impact elsewhere parted it); else the push that
+    // would pull the most.
+    for (size_t i = 0; i < touches_.size(); ++i) {
+        const ContactRow row = contactRow(w, w.contacts()[i]);
+        const bool off = slideRoom(w, i) < -band;
+        if (off || (!touches_[i].held && rowTimes(row, w.v) > parting)) {
+            const Touch c = touches_[i];
+            part(w, i, t);
+            events.push_back({t, EventKind::Part, -1, -1, words(off ? "slides off" : "leaves", c)});
+            return events;
+        }
+    }
+    const Eigen::VectorXd& push = d.contactForces();
+    Eigen::Index worst = -1;
+    double most = -ladder.forceTolerance();
+    for (Eigen::Index i = 0; i < push.size() && i < Eigen::Index(touches_.size()); ++i)
+        if (!touches_[size_t(i)].held && push[i] < most) most = push[i], worst = i;
+    if (worst >= 0) {
+        const Touch c = touches_[size_t(worst)];
+        part(w, size_t(worst), t);
+        events.push_back({t, EventKind::Part, -1, -1, words("lets go of", c)});
+        return events;
+    }
+    // 2. Touches: corners at a face (within the band, or past it by any
+    // amount when events are not located) that close on it, or rest on it
+    // with their acceleration into it. Every one at this instant is one
+    // impact.
+    refresh(w, ladder);
+    std::vector<double> approach;
+    const size_t first = touches_.size();
+    for (const Watch& c : watched_) {
+        const std::array<int, 3> id{c.block, c.corner, c.other};
+        if (std::find(partedNow_.begin(), partedNow_.end(), id) != partedNow_.end()) continue;
+        // Its function has crossed zero (where a located event leaves it,
+        // or anywhere past it at the end of a step): a corner merely near a
+        // face, at any instant, is not touching it.
+        // A corner within the band that closes faster than v_min lands at
+        // the same instant (a block landing flat lands on both ends at
+        // once, whichever crossing rounding puts first).
+        const double gap = cornerAgainst(w, ladder, c.block, c.corner, c.other).gap - c.zero;
+        if (gap > band) continue;
+        const bool located = std::find(located_.begin(), located_.end(), id) != located_.end();
+        if (gap >= -allowance_ && !located) {
+            const Contact candidate = contactAt(w, ladder, c.block, c.corner, c.other);
+            if (!(rowTimes(contactRow(w, candidate), w.v) < -parting)) continue;
+        }
+        // At a corner against a corner each touches the other's face: the
+        // two are one contact when their normals agree (heldAlready below
+        // finds the second redundant), two when they do not (the corners
+        // meet at an angle, and each keeps the other out of one face).
+        const Vec2 p = ladder.cornerWorld(w, c.block, c.corner);
+        if (onPin(w, ladder, p, c.block, c.other)) continue;
+        // Tried without touching the world: a corner that does not close
+        // leaves every cache of the engine as it was.
+        const Contact candidate = contactAt(w, ladder, c.block, c.corner, c.other);
+        const ContactRow row = contactRow(w, candidate);
+        const double rate = rowTimes(row, w.v);
+        const bool into = rate < -still || (gap < -band) ||
+                          (rate <= still && rowTimes(row, w.a) + rowBias(w, row) < -ladder.forceTolerance());
+        if (!into || heldAlready(w, candidate, row)) continue;
+        w.contacts().push_back(candidate);
+        Touch made{c.block, c.corner, c.other, cornerAgainst(w, ladder, c.block, c.corner, c.other).face, t};
+        for (const Parted& p : parted_)
+            made.held = made.held || (p.block == c.block && p.corner == c.corner && p.other == c.other &&
+                                      t - p.at <= ladder.zenoTime());
+        touches_.push_back(made);
+        approach.push_back(-rate);
+        events.push_back({t, EventKind::Touch, -1, -1, words("touches", touches_.back())});
+    }
+    if (touches_.size() == first) return events;
+    // The plastic impact with every pin and every contact active, the
+    // contacts pushing only (the velocity projection is unilateral in
+    // them): the hand's blocks have infinite mass.
+    const std::vector<Twist> before = w.partVelocities();
+    const double keBefore = energy(w).kinetic;
+    projectVelocities(w, d.solver());
+    const double plasticJump = jumpEnergy(w, before);
+    double kept = 1.0;
+    const HingeOptions& hinges = ladder.hingeOptions();
+    const double e = hinges.restitution;
+    if (e > 0) {
+        // Restitution: a touch fast enough rebounds, the gap opening at e
+        // times the speed it closed at (for one contact with nothing else).
+        bool bounced = false;
+        for (size_t i = touches_.size(); i-- > first;)
+            if (e * approach[i - first] > hinges.minReboundSpeed * length) {
+                const Touch c = touches_[i];
+                w.contacts().erase(w.contacts().begin() + std::ptrdiff_t(i));
+                touches_.erase(touches_.begin() + std::ptrdiff_t(i));
+                partedNow_.push_back({c.block, c.corner, c.other});
+                events.push_back({t, EventKind::Bounce, -1, -1, words("bounces off", c)});
+                bounced = true;
+            }
+        if (bounced) {
+            const std::vector<Twist> plastic = w.partVelocities();
+            std::vector<Twist> bounce(before.size());
+            for (size_t p = 0; p < before.size(); ++p)
+                bounce[p] = {before[p].linear + (1 + e) * (plastic[p].linear - before[p].linear),
+                             before[p].angular + (1 + e) * (plastic[p].angular - before[p].angular)};
+            w.setPartVelocities(bounce);
+            projectVelocities(w, d.solver());
+            kept = 1 - e * e;
+        }
+    }
+    const double dissipated = kept * plasticJump;
+    *loss += dissipated;
+    *heldWork += energy(w).kinetic - keBefore + dissipated;
+    return events;
+}
+
+std::vector<Event> BlockContacts::letGoExpired(World& w, const Dynamics& d, const Ladder& ladder, double t) {
+    std::vector<Event> events;
+    const Eigen::VectorXd& push = d.contactForces();
+    for (size_t i = 0; i < touches_.size() && Eigen::Index(i) < push.size(); ++i) {
+        Touch& c = touches_[i];
+        if (!c.held) continue;
+        if (push[Eigen::Index(i)] >= -ladder.forceTolerance()) {
+            c.pullingSince = -1;
+            continue;
+        }
+        if (c.pullingSince < 0) c.pullingSince = t;
+        if (t - c.pullingSince < ladder.zenoTime()) continue;
+        const Touch gone = c;
+        part(w, i, t);
+        events.push_back({t, EventKind::Part, -1, -1,
+                          "corner " + std::to_string(gone.corner) + " of block " + std::to_string(gone.block) +
+                              " lets go of block " + std::to_string(gone.other) + " (held for a Zeno time)"});
+        return events;  // one at a time: the rest are tested again after the instant is settled
+    }
+    return events;
+}
+
+// An instant settled with the contacts between blocks too: the hinges
+// first (their own active set, with every resting contact in each of their
+// impacts), then the block contacts, and the hinges again after each change
+// there, until neither has anything to do.
+std::vector<Event> Ladder::settle(World& w, Dynamics& d, double t, double* impactLoss, double* heldWork) {
+    std::vector<Event> events = resolve(w, d, t, impactLoss, heldWork);
+    if (!blockContacts_.enabled()) return events;
+    blockContacts_.newInstant();
+    for (int guard = 0; guard < 8 * blockCount() + 8; ++guard) {
+        std::vector<Event> more = blockContacts_.resolveOnce(w, d, *this, t, impactLoss, heldWork);
+        if (more.empty()) {
+            blockContacts_.forgetLocated();
+            return events;
+        }
+        events.insert(events.end(), more.begin(), more.end());
+        more = resolve(w, d, t, impactLoss, heldWork);
+        events.insert(events.end(), more.begin(), more.end());
+    }
+    if (error_.empty()) error_ = "the contacts between blocks at t = " + std::to_string(t) + " s could not be settled";
+    return events;
+}
+
+}  // namespace jl
