@@ -9,22 +9,8 @@ jladder=$1
 source=$2
 work=$3
 check="python3 $(cd "$(dirname "$0")" && pwd)/check_formats.py"
+source "$(cd "$(dirname "$0")" && pwd)/expect.sh"
 rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
-failures=0
-
-fail() {
-    echo "FAIL: $*" >&2
-    failures=$((failures + 1))
-}
-
-# expect STATUS COMMAND...: runs the command, its stdout in out.txt, its stderr in err.txt.
-expect() {
-    local want=$1
-    shift
-    "$@" >out.txt 2>err.txt
-    local got=$?
-    [ "$got" = "$want" ] || fail "exit $got, wanted $want: $* ($(head -c 300 err.txt))"
-}
 
 # strict KIND FILE...: each file read by the strict reader.
 strict() {

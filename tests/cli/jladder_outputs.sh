@@ -6,26 +6,8 @@ set -u
 jladder=$1
 source=$2
 work=$3
+source "$(cd "$(dirname "$0")" && pwd)/expect.sh"
 rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
-failures=0
-
-fail() {
-    echo "FAIL: $*" >&2
-    failures=$((failures + 1))
-}
-
-# expect STATUS COMMAND...: runs the command, its stderr kept in err.txt.
-expect() {
-    local want=$1
-    shift
-    "$@" >out.txt 2>err.txt
-    local got=$?
-    [ "$got" = "$want" ] || fail "exit $got, wanted $want: $* ($(head -c 300 err.txt))"
-}
-
-expect_message() {
-    grep -q -- "$1" err.txt || fail "no message '$1' in: $(head -c 300 err.txt)"
-}
 
 same() {
     cmp -s "$1" "$2" || fail "$1 changed"

@@ -25,20 +25,6 @@
 
 using namespace jl::ui;
 
-namespace {
-
-int cutLabels(TimeChart* chart) {
-    int cut = 0;
-    for (QGraphicsItem* item : chart->scene()->items())
-        if (auto* text = dynamic_cast<QGraphicsTextItem*>(item))
-            if (text->isVisible() &&
-                (text->toPlainText().contains("...") || text->toPlainText().contains(QChar(0x2026))))
-                ++cut;
-    return cut;
-}
-
-}  // namespace
-
 class PresentationLayoutTest : public QObject {
     Q_OBJECT
 private slots:
@@ -75,7 +61,8 @@ private slots:
                                 .arg(lesson->document()->size().height())
                                 .arg(lesson->viewport()->height())));
         for (TimeChart* c : {plots->energyChart(), plots->foldChart(), plots->speedChart()})
-            QVERIFY2(cutLabels(c) == 0, qPrintable(size + ": a label of '" + c->chart()->title() + "' is cut"));
+            QVERIFY2(jl::test::cutLabels(c) == 0,
+                     qPrintable(size + ": a label of '" + c->chart()->title() + "' is cut"));
         const QWidget* view = window.findChild<QWidget*>("ladderView");
         QVERIFY(view);
         const double share = double(view->width() * view->height()) / (screen.width() * screen.height());

@@ -43,15 +43,6 @@ jl::Scene classic() {
 }
 
 // Axis labels and titles a chart had to cut short ("..." in place of text).
-int cutLabels(TimeChart* chart) {
-    int cut = 0;
-    for (QGraphicsItem* item : chart->scene()->items())
-        if (auto* text = dynamic_cast<QGraphicsTextItem*>(item))
-            if (text->isVisible() &&
-                (text->toPlainText().contains("...") || text->toPlainText().contains(QChar(0x2026))))
-                ++cut;
-    return cut;
-}
 
 struct Fixture {
     MainWindow window{jl::test::quietWindow()};
@@ -277,7 +268,7 @@ private slots:
         QTest::qWait(200);
         for (TimeChart* c :
              {f.teaching.plots()->energyChart(), f.teaching.plots()->foldChart(), f.teaching.plots()->speedChart()})
-            QCOMPARE(cutLabels(c), 0);
+            QCOMPARE(jl::test::cutLabels(c), 0);
         // The keyboard still drives: Space plays, though the toolbar is hidden.
         f.window.activateWindow();
         QVERIFY(QTest::qWaitForWindowActive(&f.window));

@@ -6,9 +6,11 @@
 #include "ui/ladder_view.h"
 #include "ui/main_window.h"
 #include "ui/sim_controller.h"
+#include "ui/time_chart.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
+#include <QGraphicsTextItem>
 #include <QStandardPaths>
 #include <QTest>
 #include <Qt3DRender/QRenderCapture>
@@ -69,6 +71,17 @@ inline QImage captureView(jl::ui::LadderView* view) {
         image = reply->image();
     }
     return image;
+}
+
+// How many of a chart's texts (title, tick labels, legend) Qt cut to "...".
+inline int cutLabels(jl::ui::TimeChart* chart) {
+    int cut = 0;
+    for (QGraphicsItem* item : chart->scene()->items())
+        if (auto* text = dynamic_cast<QGraphicsTextItem*>(item))
+            if (text->isVisible() &&
+                (text->toPlainText().contains("...") || text->toPlainText().contains(QChar(0x2026))))
+                ++cut;
+    return cut;
 }
 
 }  // namespace jl::test
