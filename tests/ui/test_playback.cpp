@@ -33,6 +33,19 @@ double runQueueWaitMs() {
     return double(waited) / 1e6;
 }
 
+// A swinging ladder whose lesson lasts 0.5 s, and playing it (at 4x) until it stops there.
+jl::Scene halfSecondLesson() {
+    jl::Scene scene = jl::test::swingingLadder();
+    scene.duration = 0.5;
+    return scene;
+}
+bool playToTheEnd(Fixture& f) {
+    f.window.setSpeed(4.0);
+    f.sim->play();
+    return jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.frame && s.frame->time > 0.1; }) &&
+           jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return !s.playing; });
+}
+
 }  // namespace
 
 class PlaybackTest : public QObject {
@@ -368,13 +381,8 @@ private slots:
     // The scene's duration is the lesson's length: playing stops there (the
     // classic cascade used to run on to 40 s), and Play goes on past it.
     void playingStopsAtTheScenesDurationThenGoesOnWhenAsked() {
-        jl::Scene scene = jl::test::swingingLadder();
-        scene.duration = 0.5;
-        Fixture f(scene);
-        f.window.setSpeed(4.0);
-        f.sim->play();
-        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.frame && s.frame->time > 0.1; }));
-        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return !s.playing; }));
+        Fixture f(halfSecondLesson());
+        QVERIFY(playToTheEnd(f));
         const auto end = f.sim->status();
         QVERIFY2(std::abs(end->frame->time - 0.5) <= end->interval, qPrintable(QString::number(end->frame->time)));
         f.sim->play();
@@ -385,13 +393,8 @@ private slots:
     // on Play then goes on (it took two: the first stopped at the end again).
     // The duration has a field of its own, and changing it runs nothing again.
     void anEditAtTheEndThenOneClickOnPlayGoesOn() {
-        jl::Scene scene = jl::test::swingingLadder();
-        scene.duration = 0.5;
-        Fixture f(scene);
-        f.window.setSpeed(4.0);
-        f.sim->play();
-        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.frame && s.frame->time > 0.1; }));
-        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return !s.playing; }));
+        Fixture f(halfSecondLesson());
+        QVERIFY(playToTheEnd(f));
         const auto before = f.editThickness(14);
         QVERIFY(jl::test::loadedAfter(f.sim, before));
         QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) {
