@@ -83,4 +83,12 @@ double jumpEnergy(const World& w, const std::vector<Twist>& before) {
     return e;
 }
 
+std::vector<Twist> bounced(const std::vector<Twist>& before, const std::vector<Twist>& plastic, double e) {
+    std::vector<Twist> out(before.size());
+    for (size_t p = 0; p < before.size(); ++p)
+        out[p] = {before[p].linear + (1 + e) * (plastic[p].linear - before[p].linear),
+                  before[p].angular + (1 + e) * (plastic[p].angular - before[p].angular)};
+    return out;
+}
+
 }  // namespace jl

@@ -323,7 +323,7 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
     if (e > 0) {
         // Restitution: a touch fast enough rebounds, the gap opening at e
         // times the speed it closed at (for one contact with nothing else).
-        bool bounced = false;
+        bool anyBounce = false;
         for (size_t i = touches_.size(); i-- > first;)
             if (e * approach[i - first] > hinges.minReboundSpeed * length) {
                 const Touch c = touches_[i];
@@ -331,15 +331,10 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
                 touches_.erase(touches_.begin() + std::ptrdiff_t(i));
                 partedNow_.push_back({c.block, c.corner, c.other});
                 events.push_back({t, EventKind::Bounce, -1, -1, words("bounces off", c)});
-                bounced = true;
+                anyBounce = true;
             }
-        if (bounced) {
-            const std::vector<Twist> plastic = w.partVelocities();
-            std::vector<Twist> bounce(before.size());
-            for (size_t p = 0; p < before.size(); ++p)
-                bounce[p] = {before[p].linear + (1 + e) * (plastic[p].linear - before[p].linear),
-                             before[p].angular + (1 + e) * (plastic[p].angular - before[p].angular)};
-            w.setPartVelocities(bounce);
+        if (anyBounce) {
+            w.setPartVelocities(bounced(before, w.partVelocities(), e));
             projectVelocities(w, d.solver());
             kept = 1 - e * e;
         }

@@ -219,7 +219,7 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
     const double e = spec_.hinges.restitution;
     if (e > 0) {
         const std::vector<Twist> plastic = w.partVelocities();
-        bool bounced = false;
+        bool anyBounce = false;
         for (size_t i = 0; i < hits.size(); ++i) {
             const int j = hits[i];
             const HingeMode mode = hinge(j).mode;
@@ -228,15 +228,11 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
                 continue;
             release(w, j, mode == HingeMode::OpenLocked ? EventKind::Unlock : EventKind::Unfold, t, rebound);
             events.push_back({t, EventKind::Bounce, j, hinge(j).corner, {}});
-            bounced = true;
+            anyBounce = true;
         }
-        bouncedAtAll = bounced;
-        if (bounced) {
-            std::vector<Twist> bounce(before.size());
-            for (size_t p = 0; p < before.size(); ++p)
-                bounce[p] = {before[p].linear + (1 + e) * (plastic[p].linear - before[p].linear),
-                             before[p].angular + (1 + e) * (plastic[p].angular - before[p].angular)};
-            w.setPartVelocities(bounce);
+        bouncedAtAll = anyBounce;
+        if (anyBounce) {
+            w.setPartVelocities(bounced(before, plastic, e));
             projectVelocities(w, d.solver());
         }
     }

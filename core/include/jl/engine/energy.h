@@ -27,4 +27,10 @@ double heldFrameKinetic(const World& w);
 // dissipates, whatever is held.
 double jumpEnergy(const World& w, const std::vector<Twist>& before);
 
+// Newton's law of restitution on a jump: from the velocities `before` an
+// impact and the plastic ones `plastic` after it, the velocities of a
+// bounce, v + (1 + e)(v_plastic - v). It keeps e^2 of the plastic jump's
+// energy (docs/model.md section 12.3).
+std::vector<Twist> bounced(const std::vector<Twist>& before, const std::vector<Twist>& plastic, double e);
+
 }  // namespace jl
