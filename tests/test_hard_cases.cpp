@@ -287,6 +287,21 @@ private slots:
         QVERIFY(Simulation::build(s).simulation);
     }
 
+    // Blocks placed 4 km apart, each coordinate within the format's range:
+    // the hinges cannot be joined at t = 0. The scene used to be built (and
+    // `jladder validate` passed it), the run then failing in its first step;
+    // now the build refuses it with the ladder's reason.
+    void aLadderWhoseHingesCannotJoinIsNotBuilt() {
+        Scene s = ladderScene(6);
+        s.ladder->initial.kind = InitialState::Kind::Poses;
+        for (int b = 0; b < 6; ++b) s.ladder->initial.poses.push_back({b, {-10000.0 + 4000.0 * b, 0}, 0, {0, 0}, 0});
+        Simulation::Built built = Simulation::build(s);
+        QVERIFY(!built.simulation);
+        QVERIFY(!built.errors.empty());
+        qInfo("%s", built.errors.front().c_str());
+        QVERIFY(built.errors.front().find("could not join") != std::string::npos);
+    }
+
     void violentDragTenMetresAwayForOneSecond() {
         Scene s = ladderScene(6);
         DragRecord d;

@@ -144,6 +144,9 @@ std::optional<std::string> Simulation::buildWorld() {
     applyDueInputs();
     if (ladder_)
         for (Event& e : ladder_->settle(world_, dynamics_, 0, &impactLoss_, &impactHeldWork_)) record(e);
+    // A start the ladder cannot settle (hinges whose corners cannot be
+    // joined) is a scene that cannot be built, not a run that fails later.
+    if (ladder_ && !ladder_->error().empty()) return "at t = 0: " + ladder_->error();
     // E(0) is the energy before the inputs at t = 0: what they did (pushes,
     // joins, impacts) is on the books already.
     const Energy e0 = energy(world_);
