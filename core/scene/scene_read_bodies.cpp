@@ -2,6 +2,7 @@
 // the ladder's initial state, free bodies, particles, pins and springs.
 #include "jl/scene/scene_ranges.h"
 #include "scene_read_parts.h"
+#include "shown_text.h"
 
 #include <yaml-cpp/yaml.h>
 
@@ -151,7 +152,7 @@ void checkReference(Fields& f, const std::string& body, int blocks, const Names&
     if (names.count(body)) return;
     std::vector<std::string_view> known(names.begin(), names.end());
     known.push_back("world");
-    std::string message = "no body or particle is named '" + body + "'";
+    std::string message = "no body or particle is named '" + shownText(body) + "'";
     if (const auto guess = closestWord(body, known)) message += "; did you mean '" + std::string(*guess) + "'?";
     f.errorAt("body", message);
 }

@@ -3,6 +3,7 @@
 #include "yaml_fields.h"
 
 #include "jl/scene/scalar_text.h"
+#include "shown_text.h"
 
 #include <yaml-cpp/yaml.h>
 
@@ -214,7 +215,7 @@ Fields::Fields(Problems& problems, const Located& map, const std::vector<std::st
         }
         const std::string& name = key.Scalar();
         if (std::find(words.begin(), words.end(), name) == words.end()) {
-            std::string message = "unknown key '" + name + "'" + (path_.empty() ? "" : " in " + path_);
+            std::string message = "unknown key '" + shownText(name) + "'" + (path_.empty() ? "" : " in " + path_);
             if (const auto guess = meantKey(name, words, help))
                 message += "; did you mean '" + std::string(*guess) + "'?";
             else if (!help.keys.empty())

@@ -90,6 +90,22 @@ std::pair<int, int> position(std::string_view text, std::size_t offset) {
     return {line, column};
 }
 
+// Where a plain key longer than YAML's limit of 1024 characters starts,
+// and its length: yaml-cpp says only "illegal map value" of it.
+std::optional<std::pair<std::size_t, std::size_t>> overlongKey(std::string_view text) {
+    for (std::size_t start = 0; start < text.size();) {
+        const std::size_t end = std::min(text.find('\n', start), text.size());
+        const std::string_view line = text.substr(start, end - start);
+        const std::size_t first = line.find_first_not_of(" -");
+        const std::size_t colon = line.find(':');
+        if (first != std::string_view::npos && colon != std::string_view::npos && colon > first && line[first] != '#' &&
+            colon - first > 1024)
+            return std::pair{start + first, colon - first};
+        start = end + 1;
+    }
+    return std::nullopt;
+}
+
 }  // namespace
 
 bool checkText(std::string_view text, const LoadLimits& limits, Problems& problems) {
@@ -117,6 +133,17 @@ bool checkText(std::string_view text, const LoadLimits& limits, Problems& proble
             fault->notUtf8
                 ? std::string("the file is not UTF-8 text (byte ") + hex + " is not valid UTF-8); save it as UTF-8"
                 : "control character " + controlName(fault->code) + " is not allowed in a YAML file");
+        return false;
+    }
+    // A byte-order mark may open the file; anywhere else (a file saved with
+    // one twice, or pasted together) it is invisible text that breaks a key.
+    constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
+    if (const std::size_t bom = text.find(kByteOrderMark, text.starts_with(kByteOrderMark) ? 3 : 0);
+        bom != std::string_view::npos) {
+        const auto [line, column] = position(text, bom);
+        problems.add(line, column,
+                     "a byte-order mark (U+FEFF, invisible) stands here; only the file's first character may be one: "
+                     "delete it");
         return false;
     }
     // The YAML reader takes only LF and CRLF as line breaks: a file with old
@@ -277,6 +304,14 @@ private:
     void checkEscapes(const YAML::Mark& mark, const std::string& value) {
         const auto fault = firstTextFault(value);
         if (!fault) return;
+        // yaml-cpp gives the escape \N (NEL, U+0085) as the lone byte 0x85:
+        // a C1 control, refused as such, not as text that is not UTF-8.
+        if (fault->notUtf8 && value[fault->offset] == '\x85') {
+            refuse(mark,
+                   "control character U+0085 (next line, written as the escape \\N) is not allowed in a scene "
+                   "file");
+            return;
+        }
         refuse(mark, fault->notUtf8 ? std::string("an escape here gives text that is not UTF-8")
                                     : "control character " + controlName(fault->code) +
                                           " (written as an escape) is not allowed in a scene file");
@@ -355,6 +390,13 @@ bool checkStructure(std::string_view text, const LoadLimits& limits, Problems& p
             problems.add(line, column,
                          "'#' starts a comment, so the rest of this line is not read and the bracket before it is "
                          "never closed; a colour goes in quotes: \"#c8a26b\"");
+            return false;
+        }
+        if (const auto key = overlongKey(text)) {
+            const auto [line, column] = position(text, key->first);
+            problems.add(
+                line, column,
+                "a key of " + std::to_string(key->second) + " characters: YAML reads a key of at most 1024 characters");
             return false;
         }
         // yaml-cpp's words for a tab in the indentation do not say "tab".
