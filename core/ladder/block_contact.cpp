@@ -28,6 +28,12 @@ constexpr double kRounding = 1e-12;
 // parted until it is this far clear.
 constexpr double kClear = 1e-6;
 
+// An event in the words of the log: "block 3 strikes block 0 (corner 2)".
+std::string contactWords(int block, const char* what, int other, int corner) {
+    return "block " + std::to_string(block) + " " + what + " block " + std::to_string(other) + " (corner " +
+           std::to_string(corner) + ")";
+}
+
 Vec2 faceNormal(int face) {
     switch (face) {
         case 0:
@@ -235,10 +241,7 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
     // this leaves it closed, and the force test decides (rule 6 of
     // docs/model.md section 8.6, with the hinges' v_min times a length).
     const double parting = ladder.hingeOptions().minReboundSpeed * length;
-    auto words = [](const char* what, const Touch& c) {
-        return "corner " + std::to_string(c.corner) + " of block " + std::to_string(c.block) + " " + what + " block " +
-               std::to_string(c.other);
-    };
+    auto words = [](const char* what, const Touch& c) { return contactWords(c.block, what, c.other, c.corner); };
     // 1. Partings, one at a time: a corner that has slid off its face, or
     // that moves away (an impact elsewhere parted it); else the push that
     // would pull the most.
@@ -260,7 +263,7 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
     if (worst >= 0) {
         const Touch c = touches_[size_t(worst)];
         part(w, size_t(worst), t);
-        events.push_back({t, EventKind::Part, -1, -1, words("lets go of", c)});
+        events.push_back({t, EventKind::Part, -1, -1, words("leaves", c)});
         return events;
     }
     // 2. Touches: corners at a face (within the band, or past it by any
@@ -307,7 +310,7 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
                                       t - p.at <= ladder.zenoTime());
         touches_.push_back(made);
         approach.push_back(-rate);
-        events.push_back({t, EventKind::Touch, -1, -1, words("touches", touches_.back())});
+        events.push_back({t, EventKind::Touch, -1, -1, words("strikes", touches_.back())});
     }
     if (touches_.size() == first) return events;
     // The plastic impact with every pin and every contact active, the
@@ -360,8 +363,7 @@ std::vector<Event> BlockContacts::letGoExpired(World& w, const Dynamics& d, cons
         const Touch gone = c;
         part(w, i, t);
         events.push_back({t, EventKind::Part, -1, -1,
-                          "corner " + std::to_string(gone.corner) + " of block " + std::to_string(gone.block) +
-                              " lets go of block " + std::to_string(gone.other) + " (held for a Zeno time)"});
+                          contactWords(gone.block, "leaves", gone.other, gone.corner) + ", held for a Zeno time"});
         return events;  // one at a time: the rest are tested again after the instant is settled
     }
     return events;
