@@ -83,6 +83,19 @@ private slots:
         QVERIFY2(worst < 1e-9, qPrintable(QString("worst distance from the lifted equilibrium %1 m").arg(worst)));
     }
 
+    // The segments are as docs/model.md section 3.7 says: 16, 16, 32, 64,
+    // ... blocks from the tail's top, the last one taking a remnant shorter
+    // than a wake. 300 blocks at rest: blocks 1-16 move (16 bodies), the
+    // tail 17-299 is 16, 16, 32, 64, 128 and 27 blocks (6 bodies). The
+    // sizes came out 16, 32, 64, 128, 43 (5 bodies) before.
+    void theTailIsCutIntoTheDocumentedSegments() {
+        auto sim = simulate(ladderScene(300, ""));
+        QVERIFY(sim);
+        const Frame start = sim->frame();
+        QCOMPARE(start.solver.stillFrom, kFirstStill);
+        QCOMPARE(start.solver.bodies, (kFirstStill - 1) + 6);
+    }
+
     // The turned ladder of the benchmark, RK4 at the engine's step: with the
     // tail and without, the same steps, the same events and block centres
     // within 1e-9 m (the tail wakes at 1e-9 block lengths of strain; every

@@ -22,8 +22,8 @@ bool Ladder::hangStill(World& w, int first) {
     // rigid body at its current pose (the paper's "a hinge plus a further
     // combine"). Particles are never deleted: made once, parted once.
     std::vector<std::pair<ParticleId, ParticleId>> pairs;
-    int size = kWakeBlocks;
-    for (int start = first; start < n; size *= (start == first ? 1 : 2)) {
+    // The size doubles from the third segment on: 16, 16, 32, 64, ...
+    for (int start = first, segment = 0, size = kWakeBlocks; start < n; size *= (++segment >= 2 ? 2 : 1)) {
         const int end = n - (start + size) < kWakeBlocks ? n : start + size;  // no remnant shorter than a wake
         for (int j = start + 1; j < end; ++j) {
             std::array<ParticleId, 2>& p = stillPoints_[size_t(j - 1)];
@@ -75,11 +75,12 @@ void Ladder::partStill(World& w, int first, int last) {
 
 int Ladder::wakeThrough(World& w, int block) {
     const int n = blockCount();
-    if (block < stillFrom_ || stillFrom_ >= n) return 0;
+    if (stillFrom_ >= n) return 0;
     const int before = stillFrom_;
     // Whatever touches block `block` reaches a few dozen blocks further at
-    // once (a push, a grab): those move too. A tail too short to pay for
-    // itself goes whole.
+    // once (a push, a grab): those move too, even when the block itself
+    // already moves a few places above the tail. A tail too short to pay
+    // for itself goes whole.
     int target = std::min(n, block + kWakeBlocks);
     if (n - target < kLeastStillTail) target = n;
     while (stillFrom_ < target && error_.empty()) {
