@@ -516,11 +516,11 @@ private slots:
     }
 
     // No chattering (docs/model.md, "No chattering"): impacts that would
-    // part a pair slower than v_min keep it locked (rule 6), and a contact
+    // part a pair slower than v_min keep it locked (the slow-release rule), and a contact
     // that closes again within the Zeno time of its release twice in a row
     // is held, so no hinge goes through more than three quick cycles (a
     // release and a close within 1 ms) in a row. Before locks were located
-    // exactly and contacts held, the heavy-middle ladder without rule 6 made
+    // exactly and contacts held, the heavy-middle ladder without the slow-release rule made
     // about 490 quick cycles in 2.5 s, and the 12-block, 12 mm ladder
     // 1,400 within 20 ms. The books balance either way (RK4 at 0.25 ms: at
     // 1 ms the heavy block's swing near 1.8 s costs 1e-4 J of integration

@@ -238,7 +238,7 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
     const double band = kTouchBand * length;
     const double still = ladder.restingRate() * length;  // m/s: a gap changing slower rests
     // m/s: an impact elsewhere that parts a resting contact slower than
-    // this leaves it closed, and the force test decides (rule 6 of
+    // this leaves it closed, and the force test decides (the slow-release rule of
     // docs/model.md section 8.6, with the hinges' v_min times a length).
     const double parting = ladder.hingeOptions().minReboundSpeed * length;
     auto words = [](const char* what, const Touch& c) { return contactWords(c.block, what, c.other, c.corner); };

@@ -97,7 +97,7 @@ std::optional<std::pair<int, EventKind>> Ladder::pullingContact(const World& w, 
     return worst;
 }
 
-// Rule 6 (docs/model.md section 8.6, "No chattering"): releasing hinge j at this impact would
+// The slow-release rule (docs/model.md section 8.6, "No chattering"): releasing hinge j at this impact would
 // part the pair slower than v_min while its free acceleration turns it back
 // into the limit, so it would only close again at once: it stays locked and
 // the force test decides afterwards. Tried on a copy of the world, kept per
@@ -179,7 +179,7 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
     // A hinge released in this impact stays free in it, even at its limit
     // (docs/model.md section 8.4): the next step decides whether it closes again.
     std::vector<int>& released = *releasedNow;
-    std::vector<int> kept;  // rule 6: stays locked through this impact
+    std::vector<int> kept;  // the slow-release rule: stays locked through this impact
     bool settled = false;
     for (int guard = 0; guard < 4 * blockCount() + 4 && !settled; ++guard) {
         w.setPartVelocities(before);

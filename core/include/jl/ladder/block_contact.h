@@ -91,7 +91,7 @@ public:
         int block = 0, corner = 0, other = 0, face = 0;
         double since = 0;  // s, when it closed
         // Closed again within the Zeno time of its parting: held closed
-        // (docs/model.md section 8.6 rule 2) until it has pulled for a
+        // (docs/model.md section 8.6, held contacts) until it has pulled for a
         // Zeno time; its push raises no event meanwhile.
         bool held = false;
         double pullingSince = -1;  // s; -1: it pushes

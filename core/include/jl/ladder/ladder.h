@@ -128,7 +128,7 @@ public:
     // An impulse P at a point (block frame) of block i that the hand does not
     // hold itself, taken up like an impact: with every constraint active; a
     // locked or folded contact it would pull is released (most negative
-    // first, rule 6 included) and P taken up again. Returns the releases.
+    // first, the slow-release rule included) and P taken up again. Returns the releases.
     std::vector<Event> push(World& w, Dynamics& d, double t, int i, const Vec2& local, const Vec2& impulse);
 
     // Contact forces of hinge j in the state last evaluated by d.
