@@ -207,6 +207,25 @@ private slots:
         }
     }
 
+    // A block the script grabs at t = 0 is not swallowed by the tail: 300
+    // blocks, none held, block 150 turned from t = 0. The tail used to
+    // start at block 33, the hand turning the segment that held block 150
+    // rigidly (5.4 cm from the full model at 0.05 s); it now starts below
+    // block 150 and the motion is the full model's.
+    void aBlockGrabbedAtTheStartIsNotInTheTail() {
+        const std::string scene =
+            "format: jacobs-ladder/1\n"
+            "ladder: {blocks: 300, held: []}\n"
+            "script:\n"
+            "  - {at: 0, turn: {block: 150, by: 90deg, duration: 0.3}}\n";
+        auto joined = withTail(scene, true), full = withTail(scene, false);
+        QVERIFY(joined && full);
+        QVERIFY(joined->frame().solver.stillFrom > 150);
+        QVERIFY(joined->advanceExactlyTo(0.05) && full->advanceExactlyTo(0.05));
+        const double d = largestDistance(joined->frame(), full->frame());
+        QVERIFY2(d < 1e-9, qPrintable(QString("%1 m from the full model").arg(d)));
+    }
+
     // A drag of a still block wakes it at the moment the drag begins, which
     // a replay of the recorded scene meets at the same moment: bit for bit.
     void aDragOfAStillBlockReplaysBitForBit() {

@@ -178,6 +178,11 @@ void Simulation::hangStillTail() {
     const int n = ladder_->blockCount();
     int deepest = 0;
     for (int h : scene_.ladder->held) deepest = std::max(deepest, h);
+    // A block the script grabbed at t = 0 (a turn, move or hold due then)
+    // is held by now: a segment holding it would be one kinematic body,
+    // turned rigidly by the hand.
+    for (int i = 0; i < n; ++i)
+        if (world_.isHeld(blocks_[size_t(i)])) deepest = std::max(deepest, i);
     const auto touches = [&](const PointRef& r) {
         if (r.on.rfind("block:", 0) == 0) deepest = std::max(deepest, std::atoi(r.on.c_str() + 6));
     };
