@@ -62,8 +62,8 @@ int exportFrames(const std::vector<std::string>& args) {
     catchInterruptions();
     if (outputs.wantsFrames()) outputs.expectFrames(std::floor(until / every) + 1, "jladder export");
     ProgressLine progress(!o.has("--quiet"));
-    const Recording r =
-        record(*built.simulation, until, FrameGrid{0, every}, &outputs, watchedRun(progress, *built.simulation, until));
+    const Recording r = record(*built.simulation, until, FrameGrid{0, every}, &outputs,
+                               watchedRun(progress, *built.simulation, until, "jladder export"));
     progress.clear();
     const bool written = outputs.finish(r.complete(), "jladder export");
     if (!r.failure.empty()) std::fprintf(stderr, "%s: the run failed %s\n", path.c_str(), r.failure.c_str());

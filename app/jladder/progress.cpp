@@ -1,9 +1,11 @@
 #include "app/jladder/progress.h"
 
 #include "app/jladder/interruption.h"
+#include "jl/base/short_number.h"
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <unistd.h>
 
 namespace jl::cli {
@@ -91,9 +93,36 @@ void ProgressLine::clear() {
     width_ = 0;
 }
 
-std::function<int()> watchedRun(ProgressLine& line, const Simulation& sim, double until) {
-    return [&line, &sim, until] {
+std::string slowRunWarning(const Simulation& sim, double until, double wall) {
+    const double t = sim.time();
+    const double left = t > 0 ? (until - t) * wall / t : std::numeric_limits<double>::infinity();
+    if (wall < 3 || !(left > 60) || !(left > 100 * (until - t))) return {};
+    const StiffMode mode = sim.stiffestMode();
+    std::string text = "slow: t = " + shortNumber(t) + " s after " + spokenDuration(wall) + ", so the " +
+                       shortNumber(until) + " s asked for would take " +
+                       (std::isfinite(left) ? "about " + spokenDuration(left) + " more" : "forever") +
+                       ". The step is " + shortNumber(sim.lastStep()) + " s; the stiffest mode is " + describe(mode);
+    if (sim.scene().solver.integrator != Integrator::RosenbrockW && mode.rate * sim.lastStep() > 1e-2 &&
+        !mode.what.empty())
+        text +=
+            "; the linearly implicit rosenbrock_w (--integrator rosenbrock_w) is not held to a step under "
+            "such a mode's time scale: try it";
+    return text;
+}
+
+std::function<int()> watchedRun(ProgressLine& line, const Simulation& sim, double until, const char* command) {
+    const auto start = std::chrono::steady_clock::now();
+    return [&line, &sim, until, command, start, warned = false, calls = 0u]() mutable {
         line.simulated(sim.time(), until);
+        // Asked between steps: the clock is read only every 1,000th time.
+        if (!warned && ++calls % 1000 == 0) {
+            const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            if (const std::string why = slowRunWarning(sim, until, wall); !why.empty()) {
+                line.clear();
+                std::fprintf(stderr, "%s: %s\n", command, why.c_str());
+                warned = true;
+            }
+        }
         return interruption();
     };
 }

@@ -46,8 +46,15 @@ private:
 
 // What a recording asks between two steps (jl/sim/recording.h): whether
 // the run was interrupted (interruption.h), the line drawn from `sim`'s time
-// on the way.
-std::function<int()> watchedRun(ProgressLine& line, const Simulation& sim, double until);
+// on the way, and once, after `command`, slowRunWarning's words if any.
+std::function<int()> watchedRun(ProgressLine& line, const Simulation& sim, double until, const char* command);
+
+// Why a run `wall` seconds in will take far longer than the time it
+// simulates (over a minute more, and a hundred times the simulated time
+// left), in words: where it is, what it would take, the step and the
+// stiffest mode that sets it, and the integrator that copes; "" when it
+// will not (or less than 3 s have passed to tell).
+std::string slowRunWarning(const Simulation& sim, double until, double wall);
 
 // "2 min 05 s", "41 s", "3 h 20 min": a duration as a person reads it.
 std::string spokenDuration(double seconds);

@@ -37,7 +37,9 @@ const char* kRunHelp =
     "  --quiet              no progress line: when stderr is a terminal, the run shows\n"
     "                       there its simulated time, rate and the time it has left\n"
     "\n"
-    "A run that will write more than 1 GiB of frames says so before it goes on.\n"
+    "A run that will write more than 1 GiB of frames says so before it goes on; one\n"
+    "that will take far longer than the time it simulates says so a few seconds in,\n"
+    "with its step and the stiffest mode of the motion that sets it.\n"
     "Files are written as the run goes, through a temporary beside each, and replace\n"
     "the old ones only when the run completes; a run that fails or is interrupted\n"
     "(Ctrl-C) leaves them as they were and what it computed in FILE.partial, or,\n"
@@ -93,7 +95,7 @@ int run(const std::vector<std::string>& args) {
     if (outputs.wantsFrames()) outputs.expectFrames(std::floor(*until / every) + 1, "jladder run");
     ProgressLine progress(!o.has("--quiet"));
     const Recording r = record(*built.simulation, *until, FrameGrid{0, every}, &outputs,
-                               watchedRun(progress, *built.simulation, *until));
+                               watchedRun(progress, *built.simulation, *until, "jladder run"));
     progress.clear();
     const bool written = outputs.finish(r.complete(), "jladder run");
     std::cout << summaryJson(r, path) << '\n';
