@@ -26,9 +26,6 @@ namespace jl::cli {
 
 namespace {
 
-// The most values of one axis: a map a page can show.
-constexpr std::size_t kMostValues = 200;
-
 // All the files or none: each is written to its temporary first, and only
 // when every one has all its bytes are they renamed into place (a full disk
 // shows at the writes, so a failed second file leaves the first as it was).
@@ -177,7 +174,7 @@ std::string outputsProblem(const Options& o, const std::vector<std::pair<std::st
         for (const auto& [what, input] : inputs)
             if (path && sameFile(*path, input))
                 return std::string(option) + " " + *path + " is the " + what + " " + input +
-                       "; writing it would destroy it";
+                       "; writing it would destroy the " + (what == "share" ? "share" : "scene");
     if (csvPath && svgPath && sameFile(*csvPath, *svgPath) && !(writtenDirectly(*csvPath) && writtenDirectly(*svgPath)))
         return "--csv and --svg name the same file (" + *csvPath +
                "); one would overwrite the other, give each its own";
@@ -219,7 +216,7 @@ int designMap(const Options& o, std::vector<DesignAxis> axes, int jobs) {
     if (!base) return 1;
     // The axes' values as a scene file would have to hold them.
     for (const DesignAxis& a : axes)
-        if (const std::string why = axisProblem(*base, a, kMostValues); !why.empty()) {
+        if (const std::string why = axisProblem(*base, a, kMostAxisValues); !why.empty()) {
             const std::string word(describe(a.parameter).word);
             std::fprintf(stderr, "jladder reach: --%s %s: %s\n", word.c_str(), o.get("--" + word)->c_str(),
                          why.c_str());

@@ -2,6 +2,7 @@
 
 #include "jl/base/csv_reader.h"
 #include "jl/base/csv_writer.h"
+#include "jl/design/design_check.h"
 #include "jl/scene/scalar_text.h"
 #include "jl/scene/scene_io.h"
 
@@ -53,7 +54,8 @@ std::optional<RippleMap> mapOfName(const std::string& name) {
     const std::size_t one = name.find(';'), two = name.find(';', one + 1);
     if (one == std::string::npos || two == std::string::npos) return std::nullopt;
     const auto x = axisNamed(name.substr(0, one)), y = axisNamed(name.substr(one + 1, two - one - 1));
-    if (!x || !y) return std::nullopt;
+    if (!x || !y || axisCount(*x) > double(kMostAxisValues) || axisCount(*y) > double(kMostAxisValues))
+        return std::nullopt;
     RippleMap m{*x, *y, axisValues(*x), axisValues(*y), {}, false};
     m.cells.resize(m.xs.size() * m.ys.size());
     for (RippleReach& r : m.cells) r.cancelled = true;
@@ -61,10 +63,11 @@ std::optional<RippleMap> mapOfName(const std::string& name) {
     return m;
 }
 
+// A count as the share writes it: digits only, at most nine of them.
 std::optional<int> whole(const std::string& text) {
-    const auto v = parseNumber(text);
-    if (!v || *v != double(int(*v)) || text.find_first_not_of("0123456789") != std::string::npos) return std::nullopt;
-    return int(*v);
+    if (text.empty() || text.size() > 9 || text.find_first_not_of("0123456789") != std::string::npos)
+        return std::nullopt;
+    return std::stoi(text);
 }
 
 // "2/4" -> {2, 4}.

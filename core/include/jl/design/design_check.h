@@ -12,6 +12,10 @@
 
 namespace jl {
 
+// The most values of one axis: a map a page can show (and a map's shares
+// name no larger one).
+inline constexpr std::size_t kMostAxisValues = 200;
+
 // The range a parameter's value may take (SI): that of the scene file's
 // field it sets (jl/scene/scene_fields.h, jl/scene/scene_ranges.h).
 Bound parameterRange(DesignParameter p);
