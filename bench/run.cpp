@@ -107,6 +107,16 @@ bool runBench(const BenchRequest& request) {
     BenchPlan plan;
     plan.quick = request.quick;
     plan.minSeconds = plan.quick ? 0.005 : 0.05;
+    const std::vector<int> chainSizes = plan.quick ? std::vector<int>{10, 100} : std::vector<int>{10, 100, 1000};
+    const int studies = only.empty() ? 8 + int(chainSizes.size()) : 1;
+    int started = 0;
+    const auto starts = [&](const std::string& study) {
+        if (request.studyStarts)
+            request.studyStarts(study, started, studies);
+        else
+            std::fprintf(stderr, "%s\n", study.c_str());
+        ++started;
+    };
     std::error_code ec;
     std::filesystem::create_directories(out, ec);
     if (!ec && report.has_parent_path()) std::filesystem::create_directories(report.parent_path(), ec);
@@ -115,23 +125,23 @@ bool runBench(const BenchRequest& request) {
         return false;
     }
     if (onlyStability) {
-        std::fprintf(stderr, "stability limit\n");
+        starts("stability limit");
         const StabilityStudy study = stabilityStudy(plan);
         return (writeStabilityCsv(study, out / "stability.csv") && writeStabilityReport(study, plan.quick, report));
     }
     if (onlyModels) {
-        std::fprintf(stderr, "rigid pairs: merged or welded\n");
+        starts("rigid pairs: merged or welded");
         const std::vector<BenchRow> rows = rigidPairModelStudy(plan);
         return (writeCsv(rows, out / "models.csv") && writeModelsReport(rows, plan.quick, report));
     }
     if (onlyEvents) {
-        std::fprintf(stderr, "cost of an event\n");
+        starts("cost of an event");
         const std::vector<EventCostRow> rows = eventCostStudy(plan);
         return (writeEventCostCsv(rows, out / "events.csv") && writeEventCostReport(rows, plan.quick, report));
     }
 
     if (onlyExamples) {
-        std::fprintf(stderr, "examples at default settings\n");
+        starts("examples at default settings");
         const ExamplesStudy study = examplesStudy(plan, examplesDir);
         return (writeExamplesCsv(study, out / "examples.csv") && writeExamplesReport(study, plan.quick, report) &&
                 study.error.empty());
@@ -139,32 +149,31 @@ bool runBench(const BenchRequest& request) {
 
     BenchResults results;
     results.quick = plan.quick;
-    std::fprintf(stderr, "pendulum\n");
+    starts("pendulum");
     results.pendulum = pendulumStudy(plan);
-    const std::vector<int> chainSizes = plan.quick ? std::vector<int>{10, 100} : std::vector<int>{10, 100, 1000};
     const std::vector<double> peerSteps =
         plan.quick ? std::vector<double>{1e-3, 1e-4} : std::vector<double>{1e-3, 5e-4, 2.5e-4, 1e-4};
     for (int n : chainSizes) {
-        std::fprintf(stderr, "falling chain N=%d\n", n);
+        starts("falling chain N=" + std::to_string(n));
         std::vector<Vec2> reference;
         std::vector<BenchRow> rows = chainStudy(plan, n, n <= 100, reference);
         for (const PeerRun& p : measurePeers(n, peerSteps, 0.5, reference, plan.minSeconds))
             rows.push_back({"chain" + std::to_string(n), p.engine, n, p.step, p.cost, p.error, p.finished, ""});
         results.chains[n] = rows;
     }
-    std::fprintf(stderr, "ladder cascade\n");
+    starts("ladder cascade");
     results.ladder = ladderStudy(plan);
-    std::fprintf(stderr, "scaling\n");
+    starts("scaling");
     results.scaling = scalingStudy(plan);
-    std::fprintf(stderr, "long ladder\n");
+    starts("long ladder");
     results.longLadder = longLadderStudy(plan);
-    std::fprintf(stderr, "stability limit\n");
+    starts("stability limit");
     results.stability = stabilityStudy(plan);
-    std::fprintf(stderr, "rigid pairs: merged or welded\n");
+    starts("rigid pairs: merged or welded");
     results.models = rigidPairModelStudy(plan);
-    std::fprintf(stderr, "cost of an event\n");
+    starts("cost of an event");
     results.eventCost = eventCostStudy(plan);
-    std::fprintf(stderr, "examples at default settings\n");
+    starts("examples at default settings");
     results.examples = examplesStudy(plan, examplesDir);
     results.peers = peerVersions();
 

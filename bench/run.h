@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
 
 namespace jl::bench {
@@ -15,6 +16,9 @@ struct BenchRequest {
     std::filesystem::path out = "docs/bench";  // CSV and SVG
     std::filesystem::path report = "docs/performance.md";
     std::filesystem::path examples = "examples";  // the scenes of the examples study
+    // Told as each study starts (its name, how many are done, of how many);
+    // without it the name is a line on stderr.
+    std::function<void(const std::string& study, int done, int total)> studyStarts;
 };
 
 // False if a study failed or a file could not be written (said on stderr).

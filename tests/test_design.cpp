@@ -4,6 +4,8 @@
 // the same whatever the number of threads.
 #include "jl/base/xml_text.h"
 #include "jl/design/design_axis.h"
+#include "jl/design/design_check.h"
+#include "jl/design/map_share.h"
 #include "jl/design/ripple_map.h"
 #include "jl/design/ripple_reach.h"
 #include "jl/scene/scene_ranges.h"
@@ -142,6 +144,60 @@ private slots:
         QCOMPARE(one.at(2, 0).reached, alone.reached);
         QCOMPARE(one.at(2, 0).flipTimes, alone.flipTimes);
         QVERIFY(rippleMapCsv(one).starts_with("blocks,thickness,hinges,reached,"));
+    }
+
+    // Shares of a map, joined, are the map: failure texts with commas,
+    // quotes and line breaks read back as they were written, every cell at
+    // its place; a missing share, a share twice and another map refused.
+    void sharesJoinIntoTheMap() {
+        const DesignAxis x{DesignParameter::Blocks, 4, 8, 2}, y{DesignParameter::Thickness, 0.006, 0.012, 0.006};
+        RippleMap m{x, y, axisValues(x), axisValues(y), std::vector<RippleReach>(6), false};
+        for (std::size_t k = 0; k < m.cells.size(); ++k) {
+            m.cells[k].hinges = int(k) + 3;
+            m.cells[k].reached = int(k);
+            m.cells[k].meanTimeBetweenFlips = 0.125 * double(k);
+            m.cells[k].events = 10 * int(k);
+        }
+        m.cells[1].failure = "the run failed at t = 0.5 s: a, \"b\"\nand c";
+        m.cells[4].meanTimeBetweenFlips = std::nan("");
+        const std::string name = mapName(turnedLadder(6, 0.012), x, y);
+        std::vector<std::pair<std::string, std::string>> shares;
+        for (int k : {3, 1, 2}) shares.emplace_back(std::to_string(k) + ".csv", rippleShareCsv(m, name, k, 3));
+        const JoinedMap joined = joinRippleShares(shares);
+        QVERIFY2(joined.map, joined.error.c_str());
+        QCOMPARE(rippleMapCsv(*joined.map), rippleMapCsv(m));
+        QCOMPARE(rippleMapSvg(*joined.map, "t"), rippleMapSvg(m, "t"));
+        QCOMPARE(joined.map->cells[1].failure, m.cells[1].failure);
+
+        const auto refusal = [](std::vector<std::pair<std::string, std::string>> s) {
+            return joinRippleShares(s).error;
+        };
+        QVERIFY(refusal({shares[0], shares[1]}).find("share 2 of 3 is missing") != std::string::npos);
+        QVERIFY(refusal({shares[0], shares[1], shares[2], shares[1]}).find("are both share 1 of 3") !=
+                std::string::npos);
+        const std::string other = mapName(turnedLadder(7, 0.012), x, y);
+        QVERIFY(refusal({shares[0], shares[1], {"o", rippleShareCsv(m, other, 2, 3)}}).find("of one map") !=
+                std::string::npos);
+        QCOMPARE(shareCells(6, 1, 4), (std::pair<std::size_t, std::size_t>{0, 1}));
+        QCOMPARE(shareCells(6, 4, 4), (std::pair<std::size_t, std::size_t>{4, 6}));
+    }
+
+    // An axis holds what a scene file may: the field table's ranges, whole
+    // blocks counts, designs the loader accepts; too many values said so.
+    void axesHoldOnlyWhatASceneFileMay() {
+        const Scene base = turnedLadder(6, 0.012);
+        QCOMPARE(axisProblem(base, {DesignParameter::Thickness, 0.002, 0.012, 0.002}, 200), std::string());
+        QVERIFY(!axisProblem(base, {DesignParameter::Thickness, 0, 0.012, 0.002}, 200).empty());
+        QVERIFY(!axisProblem(base, {DesignParameter::Blocks, 1, 4, 1}, 200).empty());
+        QVERIFY(!axisProblem(base, {DesignParameter::Blocks, 2, 5, 1.5}, 200).empty());
+        QVERIFY(!axisProblem(base, {DesignParameter::HingeDamping, -1, 0, 1}, 200).empty());
+        QVERIFY(!axisProblem(base, {DesignParameter::TurnDuration, 0, 0.3, 0.1}, 200).empty());
+        QVERIFY(axisProblem(base, {DesignParameter::Blocks, 2, 1e9, 1}, 200).find("more than the 200") !=
+                std::string::npos);
+        Scene held = base;
+        held.ladder->held = {5};
+        QVERIFY(axisProblem(held, {DesignParameter::Blocks, 4, 8, 2}, 200).find("not valid") != std::string::npos);
+        QCOMPARE(parameterRange(DesignParameter::Density).lo, range::density.lo);
     }
 
     // XML 1.0 holds no C0 control but tab and line ends, no U+FFFE/U+FFFF and

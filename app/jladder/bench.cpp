@@ -3,6 +3,7 @@
 #include "app/jladder/commands.h"
 #include "app/jladder/json_text.h"
 #include "app/jladder/options.h"
+#include "app/jladder/progress.h"
 #include "bench/run.h"
 
 #include <cstdio>
@@ -13,7 +14,7 @@ namespace {
 
 const char* kHelp =
     "usage: jladder bench [--quick] [--out DIR] [--report FILE] [--examples DIR]\n"
-    "                     [--only stability|models|events|examples]\n"
+    "                     [--only stability|models|events|examples] [--quiet]\n"
     "Measures cost (CPU seconds per simulated second) against error for every\n"
     "integrator and event policy on the physical pendulum, the falling chain\n"
     "(N = 10, 100, 1,000; against an independent reduced-coordinate reference)\n"
@@ -32,12 +33,14 @@ const char* kHelp =
     "--quick: fewer sizes and steps; fits in CI (under a minute).\n"
     "--only stability|models|events|examples: that study alone; FILE (default\n"
     "DIR/stability.md, DIR/models.md, DIR/events.md or DIR/examples.md) gets\n"
-    "its section only.\n";
+    "its section only.\n"
+    "Each study's name goes to stderr as it starts; when stderr is a terminal,\n"
+    "with how many studies are done and the time so far (not with --quiet).\n";
 
 }  // namespace
 
 int bench(const std::vector<std::string>& args) {
-    Options o = parse(args, {"--out", "--report", "--only", "--examples"}, {"--quick", "--help"});
+    Options o = parse(args, {"--out", "--report", "--only", "--examples"}, {"--quick", "--help", "--quiet"});
     if (o.has("--help")) {
         return printHelp(kHelp);
     }
@@ -57,6 +60,12 @@ int bench(const std::vector<std::string>& args) {
         o.get("--report")
             .value_or(!only.empty() ? (request.out / (only + ".md")).string() : std::string("docs/performance.md"));
     request.examples = o.get("--examples").value_or("examples");
+    // On a terminal each study's name comes with how far the benchmark is.
+    ProgressLine progress(!o.has("--quiet"));
+    if (progress.shown())
+        request.studyStarts = [&](const std::string& study, int done, int total) {
+            progress.stage(study, done, total);
+        };
     const bool ok = bench::runBench(request);
     const Json line{{"out", request.out.string()}, {"report", request.report.string()}, {"ok", ok}};
     std::printf("%s\n", jsonText(line).c_str());

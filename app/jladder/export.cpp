@@ -2,28 +2,32 @@
 #include "app/jladder/commands.h"
 #include "app/jladder/interruption.h"
 #include "app/jladder/options.h"
+#include "app/jladder/progress.h"
 #include "app/jladder/run_outputs.h"
 #include "jl/scene/scene_io.h"
 #include "jl/scene/scene_ranges.h"
 #include "jl/sim/recording.h"
 
+#include <cmath>
 #include <cstdio>
 
 namespace jl::cli {
 
 int exportFrames(const std::vector<std::string>& args) {
-    Options o = parse(args, {"--until", "--every", "--csv", "--energy", "--events"}, {"--help"});
+    Options o = parse(args, {"--until", "--every", "--csv", "--energy", "--events"}, {"--help", "--quiet"});
     if (o.has("--help")) {
         return printHelp(
             "usage: jladder export SCENE [--until T] [--every DT] [--csv POSES.csv] [--energy ENERGY.csv]\n"
-            "                      [--events EVENTS.json]\n"
+            "                      [--events EVENTS.json] [--quiet]\n"
             "Runs SCENE headless (to T, default the scene's duration) and writes block poses\n"
             "(t,block,x,y,theta), energies (kinetic, potential, total, work by the hand and\n"
             "drags, losses, balance) every DT (default the scene's frame interval) and events.\n"
             "Files are written as the run goes and replace the old ones only when it\n"
             "completes; a run that fails or is interrupted leaves them as they were and\n"
             "what it computed in FILE.partial (or, when that exists, in the temporary).\n"
-            "No output may be the scene or another output.\n");
+            "No output may be the scene or another output. When stderr is a terminal, a\n"
+            "line there shows the simulated time, the rate and the time left (not with\n"
+            "--quiet); more than 1 GiB of frames to write is said before the run goes on.\n");
     }
     if (o.error.empty() && o.positional.size() != 1) o.error = "give exactly one scene file";
     RunOutputs outputs;
@@ -56,7 +60,11 @@ int exportFrames(const std::vector<std::string>& args) {
         return 1;
     }
     catchInterruptions();
-    const Recording r = record(*built.simulation, until, FrameGrid{0, every}, &outputs, interruption);
+    if (outputs.wantsFrames()) outputs.expectFrames(std::floor(until / every) + 1, "jladder export");
+    ProgressLine progress(!o.has("--quiet"));
+    const Recording r = record(*built.simulation, until, FrameGrid{0, every}, &outputs,
+                               watchedRun(progress, *built.simulation, until, "jladder export"));
+    progress.clear();
     const bool written = outputs.finish(r.complete(), "jladder export");
     if (!r.failure.empty()) std::fprintf(stderr, "%s: the run failed %s\n", path.c_str(), r.failure.c_str());
     if (r.interrupted) endByInterruption();

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -28,6 +29,23 @@ std::optional<double> Options::number(const std::string& name, Bound bound) {
     if (x && bound.contains(*x)) return x;
     error = name + " needs " + bound.describe() + ", not '" + *text + "'";
     return std::nullopt;
+}
+
+std::optional<long long> Options::count(const std::string& name, long long lo, long long hi) {
+    const auto text = get(name);
+    if (!text) return std::nullopt;
+    if (const auto n = wholeNumber(*text); n && *n >= lo && *n <= hi) return n;
+    error = name + " takes a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) + ", not '" +
+            *text + "'";
+    return std::nullopt;
+}
+
+std::optional<long long> wholeNumber(const std::string& text) {
+    long long n = 0;
+    const char* end = text.data() + text.size();
+    const auto [at, error] = std::from_chars(text.data(), end, n);
+    if (text.empty() || error != std::errc{} || at != end) return std::nullopt;
+    return n;
 }
 
 Options parse(const std::vector<std::string>& args, const std::vector<std::string>& valued,

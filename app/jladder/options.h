@@ -23,6 +23,9 @@ struct Options {
     // A number within `bound` (jl/scene/scene_ranges.h: the same as the scene
     // file's), or an error message set and nullopt.
     std::optional<double> number(const std::string& name, Bound bound);
+    // A whole number from `lo` to `hi`, written as one ("2x", "1e3" and
+    // "2.0" are not), or an error message set and nullopt.
+    std::optional<long long> count(const std::string& name, long long lo, long long hi);
 };
 
 // `valued` lists the options that take a value; anything else starting
@@ -40,6 +43,10 @@ bool sameFile(const std::string& a, const std::string& b);
 // Why the output `path` given to `option` is refused because no one can say
 // which file it names (a chain of more than 40 links, a loop), or "".
 std::string unresolvedOutput(const std::string& option, const std::string& path);
+
+// The whole text as a decimal integer ("12", "-3"; not "12x", "1e3",
+// "1.0", " 12"), or nullopt.
+std::optional<long long> wholeNumber(const std::string& text);
 
 // Help on stdout: 0, or 1 and a message when it could not be written (a
 // full disk, a closed pipe); help that went nowhere is not a success.

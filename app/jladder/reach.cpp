@@ -4,16 +4,19 @@
 // them (jl/design/ripple_map.h), as CSV and an SVG heat map.
 #include "app/jladder/commands.h"
 #include "app/jladder/options.h"
+#include "app/jladder/progress.h"
 #include "jl/base/output_file.h"
 #include "jl/base/xml_text.h"
+#include "jl/design/design_check.h"
+#include "jl/design/map_share.h"
 #include "jl/design/ripple_map.h"
 #include "jl/scene/scene_io.h"
 
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -49,7 +52,8 @@ bool save(const std::string& path, const std::string& text) {
 const char* kHelp =
     "usage: jladder reach [--out FILE]\n"
     "       jladder reach --PARAMETER FROM:TO:STEP [--PARAMETER FROM:TO:STEP] [--scene BASE.yaml]\n"
-    "                     [--jobs N] [--csv FILE] [--svg FILE] [--title TEXT]\n"
+    "                     [--jobs N] [--cells K/N] [--csv FILE] [--svg FILE] [--title TEXT] [--quiet]\n"
+    "       jladder reach --merge SHARE.csv... [--csv FILE] [--svg FILE] [--title TEXT]\n"
     "Without axes: turns the top block of ladders of 6, 8, 12, 25 and 50 blocks (60 x 12 mm)\n"
     "and of the thinner designs docs/model.md section 15 quotes, and tabulates how many\n"
     "hinges the first ripple flips, every hinge event of the run, and the chatter measure\n"
@@ -57,12 +61,20 @@ const char* kHelp =
     "Markdown (stdout, or FILE).\n"
     "With axes: a design map. PARAMETER is one of blocks, thickness, length, width (lengths\n"
     "in m, or with mm or cm), density (kg/m^3), hinge_damping (N m s), turn_duration\n"
-    "(s, or ms); one axis gives a line, two a map. Every cell is a full simulation of the\n"
+    "(s, or ms); one axis gives a line, two a map. An axis has at most 200 values, each\n"
+    "within the range a scene file allows for it (docs/scene-format.md; blocks: a whole\n"
+    "number from 2 to 100000; turn_duration: 1 ms to 1e5 s), and each design must be a\n"
+    "valid scene; else nothing runs (exit 2). Every cell is a full simulation of the\n"
     "first ripple on BASE (default: 6 blocks of 60 x 12 x 45 mm, density 600, block 0 held\n"
     "and turned half a turn from 0.2 s over 0.3 s), run on N threads (default: every core).\n"
     "Writes CSV (stdout, or --csv FILE) and an SVG heat map (--svg FILE); the same command\n"
     "gives the same bytes whatever N. Files are replaced only once both are written whole;\n"
-    "neither may be the --scene file.\n";
+    "neither may be the --scene file. When stderr is a terminal, a line there shows the\n"
+    "cells done and the time left (not with --quiet).\n"
+    "--cells K/N computes only the K-th of N equal shares of the cells (for N machines)\n"
+    "and writes them as CSV naming the map; --merge joins every share of one map into the\n"
+    "CSV and SVG the whole map gives on one machine, byte for byte, and refuses shares of\n"
+    "different maps and a share missing or given twice.\n";
 
 // Standard output written and flushed, or a message: a full disk or a closed
 // pipe is a failed run, not a silent one.
@@ -125,7 +137,8 @@ std::optional<double> quantity(const std::string& text, DesignParameter p, std::
     return v * scale;
 }
 
-// "6:50:2" -> an axis; checked for a count of cells a map can show.
+// "6:50:2" -> an axis, as written; its values are checked against the
+// scene format's ranges once the base scene is known (jl/design/design_check.h).
 std::optional<DesignAxis> axis(const std::string& text, DesignParameter p, std::string& error) {
     const size_t a = text.find(':'), b = a == std::string::npos ? a : text.find(':', a + 1);
     if (b == std::string::npos || text.find(':', b + 1) != std::string::npos) {
@@ -136,92 +149,164 @@ std::optional<DesignAxis> axis(const std::string& text, DesignParameter p, std::
     const auto to = from ? quantity(text.substr(a + 1, b - a - 1), p, error) : std::nullopt;
     const auto step = to ? quantity(text.substr(b + 1), p, error) : std::nullopt;
     if (!step) return std::nullopt;
-    DesignAxis x{p, *from, *to, *step};
-    const size_t n = axisValues(x).size();
-    if (n == 0 || n > 200) {
-        error = "--" + std::string(describe(p).word) + " " + text + " gives " + (n ? "more than 200" : "no") +
-                " values (FROM <= TO, STEP > 0)";
-        return std::nullopt;
-    }
-    return x;
+    return DesignAxis{p, *from, *to, *step};
 }
 
-}  // namespace
+// "2/4" -> share 2 of 4: whole numbers, 1 <= K <= N.
+std::optional<std::pair<int, int>> shareOption(const std::string& text) {
+    const std::size_t slash = text.find('/');
+    if (slash == std::string::npos) return std::nullopt;
+    const auto k = wholeNumber(text.substr(0, slash)), n = wholeNumber(text.substr(slash + 1));
+    if (!k || !n || *k < 1 || *n < 1 || *k > *n || *n > 100000) return std::nullopt;
+    return std::pair{int(*k), int(*n)};
+}
 
-int reach(const std::vector<std::string>& args) {
-    std::vector<std::string> valued{"--out", "--scene", "--jobs", "--csv", "--svg", "--title"};
-    for (const DesignParameterWord& w : kDesignParameters) valued.push_back("--" + std::string(w.word));
-    Options o = parse(args, valued, {"--help"});
-    if (o.has("--help")) {
-        return printHelp(kHelp);
-    }
-    std::vector<DesignAxis> axes;
-    for (const DesignParameterWord& w : kDesignParameters)
-        if (auto text = o.get("--" + std::string(w.word)); text && o.error.empty())
-            if (auto a = axis(*text, w.value, o.error)) axes.push_back(*a);
-    if (o.error.empty() && axes.size() > 2) o.error = "give at most two axes";
-    if (o.error.empty() && axes.empty() && (o.get("--csv") || o.get("--svg") || o.get("--scene")))
-        o.error = "--csv, --svg and --scene make a map: give one or two axes (--blocks 4:12:2 ...)";
-    int jobs = 0;
-    if (auto j = o.get("--jobs"); j && o.error.empty()) {
-        jobs = std::atoi(j->c_str());
-        if (jobs < 1 || jobs > 256) o.error = "--jobs takes a whole number from 1 to 256";
-    }
-    // An output may not be the base scene, nor both outputs one file.
-    const auto csvPath = o.get("--csv"), svgPath = o.get("--svg"), scenePath = o.get("--scene");
+// Why the outputs cannot be written as asked: a name no one can resolve, an
+// input (the base scene, a share) named as an output, or both outputs one
+// file; "" when they can.
+std::string outputsProblem(const Options& o, const std::vector<std::pair<std::string, std::string>>& inputs) {
+    const auto csvPath = o.get("--csv"), svgPath = o.get("--svg");
     for (const auto& [option, path] :
          {std::pair{"--csv", csvPath}, std::pair{"--svg", svgPath}, std::pair{"--out", o.get("--out")}})
-        if (o.error.empty() && path) o.error = unresolvedOutput(option, *path);
+        if (path)
+            if (std::string why = unresolvedOutput(option, *path); !why.empty()) return why;
     for (const auto& [option, path] : {std::pair{"--csv", csvPath}, std::pair{"--svg", svgPath}})
-        if (o.error.empty() && path && scenePath && sameFile(*path, *scenePath))
-            o.error = std::string(option) + " " + *path + " is the scene file " + *scenePath +
-                      "; writing it would destroy the scene";
-    if (o.error.empty() && csvPath && svgPath && sameFile(*csvPath, *svgPath) &&
-        !(writtenDirectly(*csvPath) && writtenDirectly(*svgPath)))
-        o.error =
-            "--csv and --svg name the same file (" + *csvPath + "); one would overwrite the other, give each its own";
+        for (const auto& [what, input] : inputs)
+            if (path && sameFile(*path, input))
+                return std::string(option) + " " + *path + " is the " + what + " " + input +
+                       "; writing it would destroy the " + (what == "share" ? "share" : "scene");
+    if (csvPath && svgPath && sameFile(*csvPath, *svgPath) && !(writtenDirectly(*csvPath) && writtenDirectly(*svgPath)))
+        return "--csv and --svg name the same file (" + *csvPath +
+               "); one would overwrite the other, give each its own";
     // A title XML cannot hold (a control character, bytes not UTF-8) is
     // refused before the map is computed, not written as a broken SVG.
-    if (auto title = o.get("--title"); title && o.error.empty())
+    if (auto title = o.get("--title"))
         if (const std::string why = xmlTextProblem(*title); !why.empty())
-            o.error = "--title cannot be written in the SVG: " + why;
-    if (!o.error.empty()) {
-        std::fprintf(stderr, "jladder reach: %s\n", o.error.c_str());
-        return 2;
-    }
-    if (axes.empty()) return table(o.get("--out"));
+            return "--title cannot be written in the SVG: " + why;
+    return {};
+}
 
-    Scene base = turnedLadder(6, 0.012);
-    if (auto path = o.get("--scene")) {
-        SceneLoad load = loadScene(*path);
-        for (const Diagnostic& d : load.errors) std::fprintf(stderr, "%s\n", d.format().c_str());
-        if (!load.scene) return 1;
-        if (!load.scene->ladder) {
-            std::fprintf(stderr, "jladder reach: %s has no ladder\n", path->c_str());
-            return 1;
-        }
-        base = *load.scene;
-    }
-    // One axis: a line, the second axis the base's own blocks count.
-    if (axes.size() == 1) {
-        const DesignParameter other =
-            axes[0].parameter == DesignParameter::Blocks ? DesignParameter::Thickness : DesignParameter::Blocks;
-        const double value = other == DesignParameter::Blocks ? base.ladder->blocks : base.ladder->block.thickness;
-        axes.push_back({other, value, value, 1});
-    }
-    const RippleMap map = computeRippleMap(base, axes[0], axes[1], jobs, nullptr, [](int done, int total) {
-        std::fprintf(stderr, "\r%d of %d designs", done, total);
-    });
-    std::fputc('\n', stderr);
-    const std::string csv = rippleMapCsv(map);
-    const std::string title = o.get("--title").value_or("How far the first ripple travels");
+// The CSV to --csv (or stdout) and the SVG of `map` to --svg, all or none.
+int writeMap(const Options& o, const std::string& csv, const RippleMap* map) {
     std::vector<std::pair<std::string, std::string>> files;
     if (auto path = o.get("--csv"))
         files.emplace_back(*path, csv);
     else if (!print(csv))
         return 1;
-    if (auto path = o.get("--svg")) files.emplace_back(*path, rippleMapSvg(map, title));
+    if (auto path = o.get("--svg"); path && map)
+        files.emplace_back(*path, rippleMapSvg(*map, o.get("--title").value_or("How far the first ripple travels")));
     return saveAll(files) ? 0 : 1;
+}
+
+// The base scene of a map: --scene's ladder, or the classic one; nullopt
+// (said on stderr) when the file is not a scene with a ladder.
+std::optional<Scene> baseScene(const Options& o) {
+    const auto path = o.get("--scene");
+    if (!path) return turnedLadder(6, 0.012);
+    SceneLoad load = loadScene(*path);
+    for (const Diagnostic& d : load.errors) std::fprintf(stderr, "%s\n", d.format().c_str());
+    if (load.scene && !load.scene->ladder) std::fprintf(stderr, "jladder reach: %s has no ladder\n", path->c_str());
+    if (!load.scene || !load.scene->ladder) return std::nullopt;
+    return load.scene;
+}
+
+// A map (or with --cells K/N, its K-th share) over one or two axes.
+int designMap(const Options& o, std::vector<DesignAxis> axes, int jobs) {
+    const auto base = baseScene(o);
+    if (!base) return 1;
+    // The axes' values as a scene file would have to hold them.
+    for (const DesignAxis& a : axes)
+        if (const std::string why = axisProblem(*base, a, kMostAxisValues); !why.empty()) {
+            const std::string word(describe(a.parameter).word);
+            std::fprintf(stderr, "jladder reach: --%s %s: %s\n", word.c_str(), o.get("--" + word)->c_str(),
+                         why.c_str());
+            return 2;
+        }
+    // One axis: a line, the second axis the base's own blocks count.
+    if (axes.size() == 1) {
+        const DesignParameter other =
+            axes[0].parameter == DesignParameter::Blocks ? DesignParameter::Thickness : DesignParameter::Blocks;
+        const double value = parameterValue(*base, other);
+        axes.push_back({other, value, value, 1});
+    }
+    const auto share = o.get("--cells") ? shareOption(*o.get("--cells")) : std::pair{1, 1};
+    const std::size_t total = axisValues(axes[0]).size() * axisValues(axes[1]).size();
+    if (share->second > int(total)) {
+        std::fprintf(stderr, "jladder reach: --cells %s: the map has only %zu cells, give at most %zu shares\n",
+                     o.get("--cells")->c_str(), total, total);
+        return 2;
+    }
+    ProgressLine progress(!o.has("--quiet"));
+    const RippleMap map = computeRippleMap(
+        *base, axes[0], axes[1], jobs, nullptr, [&](int done, int all) { progress.cells(done, all); },
+        shareCells(total, share->first, share->second));
+    progress.clear();
+    if (o.get("--cells"))
+        return writeMap(o, rippleShareCsv(map, mapName(*base, axes[0], axes[1]), share->first, share->second), nullptr);
+    return writeMap(o, rippleMapCsv(map), &map);
+}
+
+// The shares (positional files) joined into their map.
+int mergeShares(const Options& o) {
+    std::vector<std::pair<std::string, std::string>> shares;
+    for (const std::string& file : o.positional) {
+        std::ifstream in(file, std::ios::binary);
+        std::ostringstream text;
+        text << in.rdbuf();
+        if (!in.good() && !in.eof()) {
+            std::fprintf(stderr, "jladder reach: %s: cannot read it: %s\n", file.c_str(), std::strerror(errno));
+            return 1;
+        }
+        shares.emplace_back(file, text.str());
+    }
+    const JoinedMap joined = joinRippleShares(shares);
+    if (!joined.map) {
+        std::fprintf(stderr, "jladder reach: --merge: %s\n", joined.error.c_str());
+        return 1;
+    }
+    return writeMap(o, rippleMapCsv(*joined.map), &*joined.map);
+}
+
+// The arguments' error as a map or a merge sees them, or "".
+std::string argumentsProblem(const Options& o, const std::vector<DesignAxis>& axes) {
+    const bool merge = o.has("--merge");
+    if (merge && (!axes.empty() || o.get("--scene") || o.get("--jobs") || o.get("--cells") || o.get("--out")))
+        return "--merge joins shares already computed: give it the share files, --csv, --svg and --title only";
+    if (merge && o.positional.empty()) return "--merge needs the share files (reach --cells K/N wrote them)";
+    if (!merge && !o.positional.empty()) return "unexpected argument '" + o.positional.front() + "'";
+    if (axes.size() > 2) return "give at most two axes";
+    if (!merge && axes.empty() && (o.get("--csv") || o.get("--svg") || o.get("--scene") || o.get("--cells")))
+        return "--csv, --svg, --scene and --cells make a map: give one or two axes (--blocks 4:12:2 ...)";
+    if (auto cells = o.get("--cells"); cells && !shareOption(*cells))
+        return "--cells takes K/N, whole numbers with 1 <= K <= N, not '" + *cells + "'";
+    if (o.get("--cells") && o.get("--svg"))
+        return "a share (--cells) has no map to draw: give --svg to --merge, which joins the shares";
+    std::vector<std::pair<std::string, std::string>> inputs;
+    if (auto scene = o.get("--scene")) inputs.emplace_back("scene file", *scene);
+    for (const std::string& file : o.positional) inputs.emplace_back("share", file);
+    return outputsProblem(o, inputs);
+}
+
+}  // namespace
+
+int reach(const std::vector<std::string>& args) {
+    std::vector<std::string> valued{"--out", "--scene", "--jobs", "--csv", "--svg", "--title", "--cells"};
+    for (const DesignParameterWord& w : kDesignParameters) valued.push_back("--" + std::string(w.word));
+    Options o = parse(args, valued, {"--help", "--quiet", "--merge"});
+    if (o.has("--help")) return printHelp(kHelp);
+    std::vector<DesignAxis> axes;
+    for (const DesignParameterWord& w : kDesignParameters)
+        if (auto text = o.get("--" + std::string(w.word)); text && o.error.empty())
+            if (auto a = axis(*text, w.value, o.error)) axes.push_back(*a);
+    const int jobs = int(o.count("--jobs", 1, 256).value_or(0));
+    if (o.error.empty()) o.error = argumentsProblem(o, axes);
+    if (!o.error.empty()) {
+        std::fprintf(stderr, "jladder reach: %s\n", o.error.c_str());
+        return 2;
+    }
+    if (o.has("--merge")) return mergeShares(o);
+    if (axes.empty()) return table(o.get("--out"));
+    return designMap(o, axes, jobs);
 }
 
 }  // namespace jl::cli

@@ -2,12 +2,14 @@
 #include "app/jladder/commands.h"
 #include "app/jladder/interruption.h"
 #include "app/jladder/options.h"
+#include "app/jladder/progress.h"
 #include "app/jladder/run_outputs.h"
 #include "app/jladder/summary.h"
 #include "jl/scene/scene_io.h"
 #include "jl/scene/scene_ranges.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
@@ -32,7 +34,12 @@ const char* kRunHelp =
     "  --step DT            fixed step (s)\n"
     "  --tolerance TOL      adaptive integrator's tolerance\n"
     "  --event-policy P     located | end-of-step\n"
+    "  --quiet              no progress line: when stderr is a terminal, the run shows\n"
+    "                       there its simulated time, rate and the time it has left\n"
     "\n"
+    "A run that will write more than 1 GiB of frames says so before it goes on; one\n"
+    "that will take far longer than the time it simulates says so a few seconds in,\n"
+    "with its step and the stiffest mode of the motion that sets it.\n"
     "Files are written as the run goes, through a temporary beside each, and replace\n"
     "the old ones only when the run completes; a run that fails or is interrupted\n"
     "(Ctrl-C) leaves them as they were and what it computed in FILE.partial, or,\n"
@@ -47,7 +54,7 @@ const char* kRunHelp =
 int run(const std::vector<std::string>& args) {
     Options o = parse(
         args, {"--until", "--events", "--frames", "--every", "--integrator", "--step", "--tolerance", "--event-policy"},
-        {"--help"});
+        {"--help", "--quiet"});
     if (o.has("--help")) {
         return printHelp(kRunHelp);
     }
@@ -85,7 +92,11 @@ int run(const std::vector<std::string>& args) {
         return 1;
     }
     catchInterruptions();
-    const Recording r = record(*built.simulation, *until, FrameGrid{0, every}, &outputs, interruption);
+    if (outputs.wantsFrames()) outputs.expectFrames(std::floor(*until / every) + 1, "jladder run");
+    ProgressLine progress(!o.has("--quiet"));
+    const Recording r = record(*built.simulation, *until, FrameGrid{0, every}, &outputs,
+                               watchedRun(progress, *built.simulation, *until, "jladder run"));
+    progress.clear();
     const bool written = outputs.finish(r.complete(), "jladder run");
     std::cout << summaryJson(r, path) << '\n';
     std::cout.flush();

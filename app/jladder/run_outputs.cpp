@@ -75,8 +75,14 @@ bool RunOutputs::put(Output& o, const std::string& text) {
     return false;
 }
 
+void RunOutputs::expectFrames(double count, const char* command) {
+    expectedFrames_ = count;
+    command_ = command;
+}
+
 bool RunOutputs::frame(const Frame& f) {
     bool ok = true;
+    double bytes = 0;
     for (Output& o : outputs_) {
         if (o.table == Table::Events) continue;
         text_.str({});
@@ -84,8 +90,16 @@ bool RunOutputs::frame(const Frame& f) {
             writePosesCsvRows(text_, f);
         else
             writeEnergyCsvRow(text_, f);
+        bytes += double(text_.str().size());
         ok = put(o, text_.str()) && ok;
     }
+    constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
+    if (expectedFrames_ > 0 && bytes * expectedFrames_ > kGiB)
+        std::fprintf(stderr,
+                     "%s: this run will write about %.3g GiB of frames (%.0f frames of about %.0f bytes); a larger "
+                     "--every or a shorter --until writes less\n",
+                     command_, bytes * expectedFrames_ / kGiB, expectedFrames_, bytes);
+    expectedFrames_ = 0;
     return ok;
 }
 

@@ -26,6 +26,10 @@ public:
     // Creates every file (its temporary) and writes the headers.
     bool open();
     bool wantsFrames() const;
+    // How many frames the run will write: the first frame's bytes times
+    // these, when over 1 GiB, are said on stderr, after `command`, before
+    // the run goes on (a small --every over a long run fills a disk).
+    void expectFrames(double count, const char* command);
 
     bool frame(const Frame& f) override;
     bool event(const Event& e) override;
@@ -49,6 +53,8 @@ private:
     std::vector<Output> outputs_;
     std::ostringstream text_;  // reused for every frame's rows
     std::string error_;
+    double expectedFrames_ = 0;  // 0: the first frame is written
+    const char* command_ = "";
 };
 
 }  // namespace jl::cli

@@ -13,13 +13,15 @@
 namespace jl {
 
 RippleMap computeRippleMap(const Scene& base, const DesignAxis& x, const DesignAxis& y, int jobs,
-                           const std::atomic<bool>* cancel, const std::function<void(int, int)>& progress) {
+                           const std::atomic<bool>* cancel, const std::function<void(int, int)>& progress,
+                           std::pair<std::size_t, std::size_t> cells) {
     RippleMap m{x, y, axisValues(x), axisValues(y), {}, false};
-    const size_t total = m.xs.size() * m.ys.size();
-    m.cells.resize(total);
+    m.cells.resize(m.xs.size() * m.ys.size());
     // A cell never started says so: cancelled until its run has written it.
     for (RippleReach& r : m.cells) r.cancelled = true;
-    std::atomic<size_t> next{0};
+    const size_t total = std::min(cells.second, m.cells.size());
+    const size_t first = std::min(cells.first, total);
+    std::atomic<size_t> next{first};
     std::atomic<int> done{0};
     auto work = [&] {
         for (size_t k = next++; k < total; k = next++) {
@@ -36,11 +38,11 @@ RippleMap computeRippleMap(const Scene& base, const DesignAxis& x, const DesignA
                 m.cells[k].failure = e.what();
             }
             const int d = ++done;
-            if (progress) progress(d, int(total));
+            if (progress) progress(d, int(total - first));
         }
     };
     if (jobs < 1) jobs = int(std::max(1u, std::thread::hardware_concurrency()));
-    jobs = int(std::min<size_t>(size_t(jobs), std::max<size_t>(total, 1)));
+    jobs = int(std::min<size_t>(size_t(jobs), std::max<size_t>(total - first, 1)));
     std::vector<std::thread> workers;
     for (int t = 1; t < jobs; ++t) workers.emplace_back(work);
     work();
@@ -91,18 +93,33 @@ std::string colour(double fraction) {
 
 }  // namespace
 
+std::string rippleMapColumns(const RippleMap& m) {
+    return std::string(describe(m.x.parameter).word) + ',' + std::string(describe(m.y.parameter).word) +
+           ",hinges,reached,mean_time_between_flips_s,flips_elsewhere,events,quick_row,failure";
+}
+
+void writeRippleMapCells(CsvWriter& csv, const RippleMap& m, std::size_t k) {
+    const size_t i = k % m.xs.size(), j = k / m.xs.size();
+    const RippleReach& r = m.cells[k];
+    csv.cell(value(m.x.parameter, m.xs[i]));
+    csv.cell(value(m.y.parameter, m.ys[j]));
+    csv.cell(r.hinges);
+    csv.cell(r.reached);
+    csv.cell(std::isfinite(r.meanTimeBetweenFlips) ? fixed(r.meanTimeBetweenFlips, 6) : std::string());
+    csv.cell(r.flipsElsewhere);
+    csv.cell(r.events);
+    csv.cell(r.quickRow);
+    csv.cell(r.cancelled ? "cancelled" : r.failure);
+}
+
 std::string rippleMapCsv(const RippleMap& m) {
     std::ostringstream out;
-    out << describe(m.x.parameter).word << ',' << describe(m.y.parameter).word
-        << ",hinges,reached,mean_time_between_flips_s,flips_elsewhere,events,quick_row,failure\n";
+    out << rippleMapColumns(m) << '\n';
     CsvWriter csv(out);
-    for (size_t j = 0; j < m.ys.size(); ++j)
-        for (size_t i = 0; i < m.xs.size(); ++i) {
-            const RippleReach& r = m.at(i, j);
-            csv.row(value(m.x.parameter, m.xs[i]), value(m.y.parameter, m.ys[j]), r.hinges, r.reached,
-                    std::isfinite(r.meanTimeBetweenFlips) ? fixed(r.meanTimeBetweenFlips, 6) : std::string(),
-                    r.flipsElsewhere, r.events, r.quickRow, r.cancelled ? "cancelled" : r.failure);
-        }
+    for (size_t k = 0; k < m.cells.size(); ++k) {
+        writeRippleMapCells(csv, m, k);
+        csv.end();
+    }
     return out.str();
 }
 

@@ -1,9 +1,11 @@
 // Stepping a simulation: one step of the integrator, the check that the
 // motion has not blown up, and the ladder's events located inside the step
 // and resolved at their instant.
+#include "jl/base/short_number.h"
 #include "jl/engine/energy.h"
 #include "jl/engine/motion.h"
 #include "jl/engine/stable_step.h"
+#include "jl/scene/scene_ranges.h"
 #include "jl/sim/event_bracket.h"
 #include "jl/sim/simulation.h"
 
@@ -11,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace jl {
 
@@ -334,34 +337,66 @@ bool Simulation::retryWithSmallerStep() {
 
 namespace {
 
-std::string gapText(double metres) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3g m", metres);
-    return text;
+std::string gapText(double metres) { return shortNumber(metres) + " m"; }
+
+}  // namespace
+
+StiffMode Simulation::stiffestMode() const { return jl::stiffestMode(world_, dynamics_.pinForces()); }
+
+namespace {
+
+// Why a projection tolerance cannot be met where the bodies are: below the
+// rounding of their coordinates (a few units in the last place of the
+// largest), or "".
+std::string roundingNote(const World& w, double tolerance) {
+    double largest = 0;
+    for (int b = 0; b < w.bodyCount(); ++b)
+        if (w.body(b).alive) largest = std::max(largest, w.bodyPose(b).position.cwiseAbs().maxCoeff());
+    const double rounding = 8 * std::numeric_limits<double>::epsilon() * largest;
+    if (tolerance >= rounding) return {};
+    return "the projection tolerance " + shortNumber(tolerance) + " m is below the rounding of coordinates near " +
+           shortNumber(largest) + " m (about " + shortNumber(rounding) + " m): give a larger projection_tolerance";
 }
 
 }  // namespace
 
-// What to try after a step blew up. The scene's own step may be too long
-// for the integrator; the engine's own step, halved ten times already, is
-// not the cause: something the constraints cannot follow is (two held
-// blocks pulling the ladder apart, a load beyond the blocks' strength).
+// What to try after a step blew up, from what sets the step: the stiffest
+// mode of the motion (a stiff spring, heavy damping on a light body, a taut
+// pin on a small inertia), which an explicit step must resolve and the
+// linearly implicit rosenbrock_w need not. A user's step or tolerance may be
+// too coarse; at their floors, or with the engine's own step halved ten
+// times, the advice names the mode, and held blocks only in a scene that
+// holds some.
 std::string Simulation::blowUpAdvice(double h) const {
-    char step[32];
-    std::snprintf(step, sizeof step, "%.3g s", h);
-    if (isAdaptive(scene_.solver.integrator)) {
-        char tolerance[32];
-        std::snprintf(tolerance, sizeof tolerance, "%.3g", scene_.solver.tolerance);
-        return std::string("the adaptive integrator's tolerance ") + tolerance +
-               " lets too much error through here; try a tighter tolerance";
+    if (std::string note = roundingNote(world_, scene_.solver.projectionTolerance); !note.empty()) return note;
+    const SolverSpec& solver = scene_.solver;
+    const StiffMode mode = stiffestMode();
+    const bool unresolved = mode.rate * h > 1;  // more than a radian (or a decay time) per step
+    const std::string stiff = "the stiffest mode is " + describe(mode);
+    const std::string cope =
+        solver.integrator == Integrator::RosenbrockW
+            ? "; it is faster than the engine can follow: make the scene less stiff"
+            : "; the linearly implicit rosenbrock_w is not held to a step under such a mode's time scale: try it";
+    if (isAdaptive(solver.integrator)) {
+        const std::string tolerance = "the adaptive integrator's tolerance " + shortNumber(solver.tolerance);
+        if (solver.tolerance > range::tolerance.lo)
+            return tolerance + " lets too much error through here; try a tighter tolerance" +
+                   (unresolved ? " (" + stiff + ")" : "");
+        return tolerance + " is at its floor and still lets too much error through: " + stiff + cope;
     }
-    if (scene_.solver.step > 0)
-        return std::string("the step ") + step +
-               " is too large for this integrator here (a fast vibration grows at every step); try a smaller step, "
-               "or leave the step to the engine, or the adaptive integrator";
-    return "it still does at a step of " + std::string(step) + ", halved " + std::to_string(stats_.stepHalvings) +
-           " times, so the step is not the cause: look for held blocks driven against each other or forces "
-           "the ladder cannot follow";
+    const std::string step = shortNumber(h) + " s";
+    if (solver.step > 0 && solver.step > range::step.lo)
+        return "the step " + step + " is too large for this integrator here (" +
+               (unresolved ? stiff : "a fast vibration grows at every step") +
+               "); try a smaller step, or leave the step to the engine, or the adaptive integrator";
+    if (solver.step > 0) return "the step " + step + " is at its floor and still too large here: " + stiff + cope;
+    std::string text =
+        "it still does at a step of " + step + ", halved " + std::to_string(stats_.stepHalvings) + " times";
+    if (unresolved) return text + ": " + stiff + cope;
+    bool held = false;  // part 0 is the ground, held still, not a block
+    for (PartId p = 1; p < PartId(world_.partCount()); ++p) held = held || world_.part(p).drive.has_value();
+    return text + ", so the step is not the cause: it resolves the stiffest mode, " + describe(mode) + ". Look for " +
+           (held ? "held blocks driven against each other or " : "") + "forces the bodies cannot follow";
 }
 
 bool Simulation::takeStep(double limit) {

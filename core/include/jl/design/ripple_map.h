@@ -8,11 +8,16 @@
 #include "jl/design/ripple_reach.h"
 
 #include <atomic>
+#include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace jl {
+
+class CsvWriter;
 
 struct RippleMap {
     DesignAxis x, y;
@@ -25,14 +30,20 @@ struct RippleMap {
 // `progress(done, total)` is called from the workers as cells finish (it must
 // be thread-safe); `cancel` is polled by every run. jobs < 1: one per core.
 // A run that throws (no memory for a huge ladder) is its cell's failure.
+// `cells` [first, last) limits the work to those cells (a share of the map,
+// jl/design/map_share.h); the others stay cancelled, never run.
 RippleMap computeRippleMap(const Scene& base, const DesignAxis& x, const DesignAxis& y, int jobs,
                            const std::atomic<bool>* cancel = nullptr,
-                           const std::function<void(int done, int total)>& progress = {});
+                           const std::function<void(int done, int total)>& progress = {},
+                           std::pair<std::size_t, std::size_t> cells = {0, SIZE_MAX});
 
 // One row per cell: the two values (SI), the hinges, how many the first ripple
 // flipped, the mean time between flips, events, chatter, failure. Numbers
 // with fixed precision: the same map gives the same bytes.
 std::string rippleMapCsv(const RippleMap& m);
+// Its header line's columns, and the columns of cell k's row (no line end).
+std::string rippleMapColumns(const RippleMap& m);
+void writeRippleMapCells(CsvWriter& csv, const RippleMap& m, std::size_t k);
 
 // A heat map: each cell coloured by the fraction of the hinges the first
 // ripple flips and labelled with that count, axes with their units, a legend.

@@ -8,6 +8,7 @@
 #include "jl/engine/kept_evaluation.h"
 #include "jl/engine/step_interpolant.h"
 #include "jl/engine/stepper.h"
+#include "jl/engine/stiff_mode.h"
 #include "jl/engine/world.h"
 #include "jl/ladder/ladder.h"
 #include "jl/scene/scene.h"
@@ -53,6 +54,10 @@ public:
     // recorder that needs every event but not every frame takes these).
     std::vector<Event> takeEvents() { return std::exchange(pending_, {}); }
     double lastResidual() const { return lastResidual_; }  // m, after the last step
+    double lastStep() const { return stats_.lastStep; }    // s, the last step taken
+    // The fastest rate of the motion now, what makes it and where
+    // (jl/engine/stiff_mode.h): what sets the step of an explicit method.
+    StiffMode stiffestMode() const;
 
     // Steps until time() >= t (possibly a little past it: the last step is not
     // shortened). Returns false, keeping the last good state, on failure.
