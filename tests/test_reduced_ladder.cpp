@@ -1,0 +1,181 @@
+// labels: physics;reference;ladder
+// The engine's hinge events against an independent implementation of the
+// same model (core/reference/reduced_ladder*.cpp: reduced coordinates, a
+// dense mass matrix, RK4 and event location of its own; docs/model.md
+// sections 14.8 and 15): every event in the same order, same hinge and
+// kind, within 1e-6 s. The reference is first checked on its own against
+// known answers: the hanging equilibrium and the energy books.
+#include "jl/reference/reduced_ladder.h"
+#include "tests/scene_run.h"
+
+#include <QtTest>
+
+#include <cmath>
+
+using namespace jl;
+using namespace jl::test;
+
+namespace {
+
+// The engine tight enough that its event times are good to well below the
+// 1e-6 s compared (Dormand-Prince at 1e-12, events to 1e-12 s).
+Scene tightScene(const std::string& path) {
+    SceneLoad load = loadScene(std::string(JL_SOURCE_DIR) + "/" + path);
+    if (!load.scene) return {};
+    Scene scene = *load.scene;
+    scene.solver.integrator = Integrator::DormandPrince45;
+    scene.solver.tolerance = 1e-12;
+    scene.solver.eventTolerance = 1e-12;
+    return scene;
+}
+
+// The 12-block, 60 x 6 mm ladder of docs/model.md section 15, turned over
+// once: examples/two-ripples.yaml without its turn back.
+Scene twelveThinBlocks() {
+    Scene scene = tightScene("examples/two-ripples.yaml");
+    if (scene.script.size() == 2) scene.script.pop_back();
+    return scene;
+}
+
+EventKind engineKind(ReducedEvent::Kind k) {
+    switch (k) {
+        case ReducedEvent::Kind::Lock:
+            return EventKind::Lock;
+        case ReducedEvent::Kind::Unlock:
+            return EventKind::Unlock;
+        case ReducedEvent::Kind::Fold:
+            return EventKind::Fold;
+        case ReducedEvent::Kind::Unfold:
+            return EventKind::Unfold;
+        case ReducedEvent::Kind::FlipFlop:
+            return EventKind::FlipFlop;
+    }
+    return EventKind::Script;
+}
+
+struct Agreement {
+    std::string difference;  // empty when every event agrees
+    int events = 0;
+    double largest = 0;  // s, the largest time difference of the events compared
+    std::vector<int> firstFlips;
+};
+
+// Both runs to `until`: the engine's hinge events against the reference's,
+// one by one, to the first that differs in hinge, kind, or time by more
+// than `within` seconds.
+Agreement compare(const Scene& scene, double until, double within) {
+    Agreement a;
+    auto sim = Simulation::build(scene).simulation;
+    if (!sim) {
+        a.difference = "the engine did not build the scene";
+        return a;
+    }
+    const Run run = runUntil(*sim, until);
+    ReducedLadder reference(scene);
+    if (!run.failure.empty() || !reference.error().empty() || !reference.advanceTo(until)) {
+        a.difference = "engine: " + run.failure + "; reference: " + reference.error();
+        return a;
+    }
+    std::vector<Event> engine;
+    for (const Event& e : run.events)
+        if (e.time <= until) engine.push_back(e);
+    const std::vector<ReducedEvent>& mine = reference.events();
+    a.firstFlips = firstFlipOrder(engine);
+    for (size_t i = 0; i < std::min(engine.size(), mine.size()); ++i) {
+        const Event& e = engine[i];
+        const ReducedEvent& r = mine[i];
+        if (e.hinge != r.hinge || e.kind != engineKind(r.kind) || std::abs(e.time - r.time) > within) {
+            a.difference = "event " + std::to_string(i) + ": engine " + toString(e.kind) + " of hinge " +
+                           std::to_string(e.hinge) + " at " + std::to_string(e.time) + " s, reference " +
+                           toString(r.kind) + " of hinge " + std::to_string(r.hinge) + " at " + std::to_string(r.time) +
+                           " s";
+            return a;
+        }
+        a.largest = std::max(a.largest, std::abs(e.time - r.time));
+        ++a.events;
+    }
+    if (engine.size() != mine.size())
+        a.difference = std::to_string(engine.size()) + " events in the engine, " + std::to_string(mine.size()) +
+                       " in the reference";
+    return a;
+}
+
+std::string listed(const std::vector<int>& hinges) {
+    std::string s;
+    for (int j : hinges) {
+        if (!s.empty()) s += ' ';
+        s += std::to_string(j);
+    }
+    return s;
+}
+
+}  // namespace
+
+class ReducedLadderTest : public QObject {
+    Q_OBJECT
+private slots:
+    // docs/model.md section 2.5: fold angles atan(T/L), then 2 atan(T/L).
+    void hangsInTheEquilibrium() {
+        const Scene scene = tightScene("examples/classic.yaml");
+        const ReducedLadder reference(scene);
+        QVERIFY2(reference.error().empty(), reference.error().c_str());
+        QVERIFY(reference.events().empty());
+        const double one = std::atan(0.012 / 0.06);
+        QVERIFY(std::abs(reference.foldAngle(1) - one) < 1e-14);
+        for (int j = 2; j < 6; ++j) QVERIFY(std::abs(reference.foldAngle(j) - 2 * one) < 1e-14);
+    }
+
+    // Once the hand stops (0.5 s) nothing works on the ladder: its energy
+    // is constant between events and can only fall at one (plastic
+    // impacts, docs/model.md section 12.3).
+    void energyOnlyFallsAtEvents() {
+        const Scene scene = tightScene("examples/classic.yaml");
+        ReducedLadder reference(scene);
+        QVERIFY(reference.advanceTo(0.5));
+        double drift = 0, rise = 0, fall = 0;
+        for (int i = 1; i <= 200; ++i) {
+            const double before = reference.energy();
+            const size_t events = reference.events().size();
+            QVERIFY2(reference.advanceTo(0.5 + 0.01 * i), reference.error().c_str());
+            const double change = reference.energy() - before;
+            if (reference.events().size() == events)
+                drift = std::max(drift, std::abs(change));
+            else
+                rise = std::max(rise, change), fall = std::min(fall, change);
+        }
+        qInfo(
+            "energy from 0.5 s to 2.5 s: drift between events %.2e J, largest rise over events %.2e J, "
+            "largest fall %.2e J",
+            drift, rise, fall);
+        QVERIFY(drift < 1e-12);
+        QVERIFY(rise < 1e-12);
+        QVERIFY(fall < -1e-6);  // the impacts do dissipate
+    }
+
+    void classicCascadeAgrees() {
+        const Scene scene = tightScene("examples/classic.yaml");
+        const Agreement a = compare(scene, scene.duration, 1e-6);
+        qInfo("classic cascade to %.1f s: %d events agree, largest time difference %.2e s; hinges by first flip: %s",
+              scene.duration, a.events, a.largest, listed(a.firstFlips).c_str());
+        QVERIFY2(a.difference.empty(), a.difference.c_str());
+        QCOMPARE(a.firstFlips, (std::vector<int>{1, 2, 3, 4, 5}));
+    }
+
+    // To 3.4 s, the run `jladder reach` makes of a 12-block design
+    // (1 + 0.2 N s). Past it the two drift apart as any two accurate runs
+    // of this ladder do: differences of 1e-12 rad at the first fold grow
+    // to 1e-6 s by 3.8 s (docs/ripple-reach.md).
+    void twelveBlockRippleAgrees() {
+        const Scene scene = twelveThinBlocks();
+        QCOMPARE(scene.script.size(), size_t(1));
+        const Agreement a = compare(scene, 3.4, 1e-6);
+        qInfo(
+            "12 blocks, 60 x 6 mm, to 3.4 s: %d events agree, largest time difference %.2e s; hinges by first flip: %s",
+            a.events, a.largest, listed(a.firstFlips).c_str());
+        QVERIFY2(a.difference.empty(), a.difference.c_str());
+        QCOMPARE(a.firstFlips, (std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}));
+    }
+};
+
+QTEST_GUILESS_MAIN(ReducedLadderTest)
+#include "test_reduced_ladder.moc"
