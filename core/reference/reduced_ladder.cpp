@@ -199,17 +199,37 @@ Eigen::VectorXd ReducedLadder::solveClosed(const Eigen::MatrixXd& mass, const Ei
     return out;
 }
 
-// Section 8.4: the plastic impact, the velocities nearest to `before` in
-// the kinetic-energy metric that meet every closed hinge.
-Eigen::VectorXd ReducedLadder::project(const Eigen::VectorXd& before) const {
+// The centres' velocities and the blocks' rates as they stand.
+ReducedLadder::Motion ReducedLadder::motion() const {
+    Motion m{std::vector<Vec2>(size_t(n_), Vec2::Zero()), omega_};
+    for (int i = 0; i < n_; ++i)
+        for (int l = 0; l <= i; ++l) m.velocity[size_t(i)] += perp(arm_[size_t(i * n_ + l)]) * omega_[l];
+    return m;
+}
+
+// Section 8.4: the plastic impact, the motion nearest to `before` in the
+// kinetic-energy metric that meets every pin and closed hinge as they now
+// stand (the hand's rate given). Its normal equations: M omega = the
+// momentum of `before` along each free angle, sum_(i >= l) m_i (v_i minus
+// the hand's part of it) . perp(arm_il) + I_l rate_l.
+Eigen::VectorXd ReducedLadder::project(const Motion& before) const {
     const int f = n_ - 1;
+    const double handRate = hand(t_, within_, 1);
     Eigen::MatrixXd mass = Eigen::MatrixXd::Zero(f, f);
-    for (int i = 1; i < n_; ++i)
-        for (int l = 1; l <= i; ++l)
+    Eigen::VectorXd momentum = Eigen::VectorXd::Zero(f);
+    for (int i = 1; i < n_; ++i) {
+        const Vec2 own = before.velocity[size_t(i)] - perp(arm_[size_t(i * n_)]) * handRate;
+        for (int l = 1; l <= i; ++l) {
+            momentum[l - 1] += mass_[size_t(i)] * own.dot(perp(arm_[size_t(i * n_ + l)]));
             for (int k = 1; k <= i; ++k)
                 mass(l - 1, k - 1) += mass_[size_t(i)] * arm_[size_t(i * n_ + l)].dot(arm_[size_t(i * n_ + k)]);
-    for (int l = 1; l < n_; ++l) mass(l - 1, l - 1) += inertia_[size_t(l)];
-    return solveClosed(mass, mass * before.tail(f), hand(t_, within_, 1));
+        }
+    }
+    for (int l = 1; l < n_; ++l) {
+        mass(l - 1, l - 1) += inertia_[size_t(l)];
+        momentum[l - 1] += inertia_[size_t(l)] * before.rate[l];
+    }
+    return solveClosed(mass, momentum, handRate);
 }
 
 // The state's places and accelerations, the hand's piece being the one that
@@ -264,25 +284,20 @@ double ReducedLadder::foldRate(int j, const Eigen::VectorXd& rate) const {
 }
 
 // What the side above hinge j exerts on blocks j.. below it, as a force and
-// its moment about the hinge point: from the accelerations (`impulse`
-// false: m (a - g) and I alpha summed) or from the velocity jump `jump`
-// of an impact (m dv and I domega summed). Block j.. are all that hangs from
-// hinge j, so nothing else acts on them.
-void ReducedLadder::wrench(int j, const Eigen::VectorXd& jump, const Eigen::VectorXd* alpha, Vec2& force,
-                           double& moment) const {
+// its moment about the hinge point, from each block's rate of change of
+// momentum (`momentum`: m (a - g) for forces, m dv at an impact) and of
+// spin (I alpha, or I domega). Blocks j.. are all that hangs from hinge j,
+// so nothing else acts on them. Split as section 8.3 says.
+ReducedLadder::Contact ReducedLadder::wrenchSplit(int j, const std::vector<Vec2>& momentum,
+                                                  const Eigen::VectorXd& spin) const {
     const Vec2 p = hingePoint(j);
-    force = Vec2::Zero();
-    moment = 0;
+    Vec2 force = Vec2::Zero();
+    double moment = 0;
     for (int i = j; i < n_; ++i) {
-        Vec2 a = Vec2::Zero();
-        for (int l = 0; l <= i; ++l) {
-            const Vec2& arm = arm_[size_t(i * n_ + l)];
-            a += alpha ? Vec2(perp(arm) * (*alpha)[l] - arm * omega_[l] * omega_[l]) : Vec2(perp(arm) * jump[l]);
-        }
-        const Vec2 momentum = mass_[size_t(i)] * (alpha ? Vec2(a - gravity_) : a);
-        force += momentum;
-        moment += inertia_[size_t(i)] * (alpha ? (*alpha)[i] : jump[i]) + cross(centres_[size_t(i)] - p, momentum);
+        force += momentum[size_t(i)];
+        moment += inertia_[size_t(i)] * spin[i] + cross(centres_[size_t(i)] - p, momentum[size_t(i)]);
     }
+    return split(j, force, moment);
 }
 
 // Section 8.3: N = sigma M / t for an open-locked pair; for a folded one
@@ -303,18 +318,25 @@ ReducedLadder::Contact ReducedLadder::split(int j, const Vec2& force, double mom
 }
 
 ReducedLadder::Contact ReducedLadder::contactForce(int j) const {
-    Vec2 force;
-    double moment;
-    wrench(j, alpha_, &alpha_, force, moment);
-    return split(j, force, moment);
+    std::vector<Vec2> momentum(size_t(n_), Vec2::Zero());
+    for (int i = j; i < n_; ++i) {
+        Vec2 a = Vec2::Zero();
+        for (int l = 0; l <= i; ++l) {
+            const Vec2& arm = arm_[size_t(i * n_ + l)];
+            a += perp(arm) * alpha_[l] - arm * omega_[l] * omega_[l];
+        }
+        momentum[size_t(i)] = mass_[size_t(i)] * (a - gravity_);
+    }
+    return wrenchSplit(j, momentum, alpha_);
 }
 
-ReducedLadder::Contact ReducedLadder::contactImpulse(int j, const Eigen::VectorXd& before) const {
-    Vec2 force;
-    double moment;
-    const Eigen::VectorXd jump = omega_ - before;
-    wrench(j, jump, nullptr, force, moment);
-    return split(j, force, moment);
+// The impulse of the impact that took the blocks from `before` to now.
+ReducedLadder::Contact ReducedLadder::contactImpulse(int j, const Motion& before) const {
+    const Motion now = motion();
+    std::vector<Vec2> momentum(size_t(n_), Vec2::Zero());
+    for (int i = j; i < n_; ++i)
+        momentum[size_t(i)] = mass_[size_t(i)] * (now.velocity[size_t(i)] - before.velocity[size_t(i)]);
+    return wrenchSplit(j, momentum, now.rate - before.rate);
 }
 
 // Kinetic and potential energy of the blocks the hand does not hold.

@@ -138,7 +138,7 @@ bool ReducedLadder::touching(int j, bool folded, bool resting) const {
 // Section 8.4 step 2 and 8.5 step 3: the most negative contact force (or
 // impulse, against the velocities `before` the impact) and what releasing
 // it means. A pair that could tip over both ends tips over the far one.
-int ReducedLadder::pulling(bool impulse, const Eigen::VectorXd& before, const std::vector<int>& keep, bool spareHeld,
+int ReducedLadder::pulling(bool impulse, const Motion& before, const std::vector<int>& keep, bool spareHeld,
                            ReducedEvent::Kind& kind) const {
     const double tolerance = impulse ? impulseTolerance_ : forceTolerance_;
     double most = -tolerance;
@@ -169,7 +169,7 @@ int ReducedLadder::pulling(bool impulse, const Eigen::VectorXd& before, const st
 // Rule 6 (section 8.6): released from the velocities before the impact,
 // would the pair part slower than v_min with its acceleration turning it
 // back into the limit? Tried on a copy.
-bool ReducedLadder::wouldChatter(int j, ReducedEvent::Kind kind, const Eigen::VectorXd& before) const {
+bool ReducedLadder::wouldChatter(int j, ReducedEvent::Kind kind, const Motion& before) const {
     ReducedLadder trial = *this;
     trial.release(j, kind, -1);
     trial.omega_ = trial.project(before);
@@ -178,14 +178,16 @@ bool ReducedLadder::wouldChatter(int j, ReducedEvent::Kind kind, const Eigen::Ve
     return away * trial.foldRate(j, trial.omega_) < minReboundSpeed_ && away * trial.foldRate(j, trial.alpha_) < 0;
 }
 
-// LOCK or FOLD (section 8.2): the lower side turned about the hinge to the
-// limit exactly, the relative angle kept from then on.
+// LOCK or FOLD (section 8.2): snapped to the limit exactly by turning
+// everything below the hinge about it (all of it, so that no other fold
+// angle moves: turning block j alone would move hinge j + 1's angle by the
+// snap, and could leave it a hair past a limit it then never crosses), the
+// relative angle kept from then on.
 void ReducedLadder::close(int j, bool folded) {
     Vec2 da, na;
     hingeFrame(j, da, na);
-    theta_[j] += cross(da, na) * ((folded ? kPi : 0.0) - foldAngle(j));
-    for (int i = j + 1; i < n_ && hinges_[size_t(i)].mode != Mode::Free; ++i)
-        theta_[i] = theta_[i - 1] + hinges_[size_t(i)].offset;
+    const double snap = cross(da, na) * ((folded ? kPi : 0.0) - foldAngle(j));
+    for (int i = j; i < n_; ++i) theta_[i] += snap;
     Hinge& h = hinges_[size_t(j)];
     h.mode = folded ? Mode::Folded : Mode::Locked;
     h.offset = theta_[j] - theta_[j - 1];
@@ -219,7 +221,7 @@ bool ReducedLadder::noteClose(int j) {
 // velocities before it while a contact impulse would pull (release it,
 // unless rule 6 keeps it) or a free hinge is driven into a limit (close it).
 void ReducedLadder::impact(const std::vector<int>& hits, std::vector<int>& released) {
-    const Eigen::VectorXd before = omega_;
+    const Motion before = motion();
     double rebound = 0;  // the shortest rebound this impact ends: it launches what it releases
     bool accumulating = false;
     const auto closeNoted = [&](int j, bool folded) {
@@ -273,7 +275,7 @@ bool ReducedLadder::resolve() {
             continue;
         }
         ReducedEvent::Kind kind = ReducedEvent::Kind::Unlock;
-        if (const int j = pulling(false, omega_, {}, false, kind)) {
+        if (const int j = pulling(false, motion(), {}, false, kind)) {
             released.push_back(j);
             release(j, kind, -1);
             events_.push_back({t_, kind, j});

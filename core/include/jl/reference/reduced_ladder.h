@@ -59,6 +59,14 @@ private:
     struct Contact {  // section 8.3, on block j, > 0 pushing it away
         double normal = 0, nearEnd = 0, farEnd = 0;
     };
+    // The blocks' motion as velocities of their centres and turning rates:
+    // what an impact starts from. Angle rates alone would not do, because
+    // a flip-flop moves a hinge, and the same angle rates then mean another
+    // motion.
+    struct Motion {
+        std::vector<Vec2> velocity;  // m/s, of each centre
+        Eigen::VectorXd rate;        // rad/s
+    };
     struct Turn {
         double at, duration, angle;
     };
@@ -73,7 +81,8 @@ private:
     Eigen::VectorXd accelerations(double t, double within, const Eigen::VectorXd& theta,
                                   const Eigen::VectorXd& omega) const;
     Eigen::VectorXd solveClosed(const Eigen::MatrixXd& mass, const Eigen::VectorXd& rhs, double handValue) const;
-    Eigen::VectorXd project(const Eigen::VectorXd& before) const;
+    Motion motion() const;
+    Eigen::VectorXd project(const Motion& before) const;
     void place();
     void evaluate(double within);
     Vec2 hingePoint(int j) const;
@@ -81,8 +90,8 @@ private:
     double foldRate(int j, const Eigen::VectorXd& rate) const;
     Contact split(int j, const Vec2& force, double moment) const;
     Contact contactForce(int j) const;
-    Contact contactImpulse(int j, const Eigen::VectorXd& before) const;
-    void wrench(int j, const Eigen::VectorXd& dOmega, const Eigen::VectorXd* alpha, Vec2& force, double& moment) const;
+    Contact contactImpulse(int j, const Motion& before) const;
+    Contact wrenchSplit(int j, const std::vector<Vec2>& momentum, const Eigen::VectorXd& spin) const;
     void hangInEquilibrium();
     std::string readScene(const Scene& scene);
 
@@ -95,9 +104,9 @@ private:
     void locate(double h, const Eigen::VectorXd& theta0, const Eigen::VectorXd& omega0,
                 const std::vector<double>& start);
     bool touching(int j, bool folded, bool resting) const;
-    int pulling(bool impulse, const Eigen::VectorXd& before, const std::vector<int>& keep, bool spareHeld,
+    int pulling(bool impulse, const Motion& before, const std::vector<int>& keep, bool spareHeld,
                 ReducedEvent::Kind& kind) const;
-    bool wouldChatter(int j, ReducedEvent::Kind kind, const Eigen::VectorXd& before) const;
+    bool wouldChatter(int j, ReducedEvent::Kind kind, const Motion& before) const;
     void close(int j, bool folded);
     void release(int j, ReducedEvent::Kind kind, double launchedBy);
     bool noteClose(int j);
