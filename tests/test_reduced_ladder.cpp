@@ -1,4 +1,4 @@
-// labels: physics;reference;ladder
+// labels: physics;reference
 // The engine's hinge events against an independent implementation of the
 // same model (core/reference/reduced_ladder*.cpp: reduced coordinates, a
 // dense mass matrix, RK4 and event location of its own; docs/model.md

@@ -3,7 +3,8 @@
 // block, the top block's angle prescribed by the hand), a dense mass matrix,
 // fixed-step RK4 of its own, events located by bisection on re-run steps,
 // and the rules of sections 8.2 to 8.6 (plastic impacts with an active set,
-// releases when a contact force would pull, held contacts) written afresh.
+// releases when a contact force would pull, rule 6, held contacts) written
+// afresh.
 // It shares no code with core/engine or core/ladder; it reads the scene with
 // core/scene. Small and slow: meant for ladders of a few dozen blocks.
 //
@@ -118,7 +119,7 @@ private:
     double length_ = 0;
     std::vector<double> mass_, inertia_, thickness_;
     Vec2 gravity_{0, -9.81};
-    std::vector<Turn> turns_;     // of block 0, in time order
+    std::vector<Turn> turns_;     // of block 0, as the script gives them (they add up)
     std::vector<double> breaks_;  // s: where the hand's acceleration jumps
     double forceTolerance_ = 0, impulseTolerance_ = 0, restingRate_ = 0, zenoTime_ = 0;
     double minReboundSpeed_ = 1e-4;  // rad/s
