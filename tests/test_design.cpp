@@ -92,8 +92,8 @@ private slots:
         QCOMPARE(r.until, 1.0 + 0.2 * 12);      // the run of the fixed table in jladder reach
     }
 
-    // The counts of the independent implementation docs/model.md section 15
-    // quotes, where the engine agrees with it (docs/ripple-reach.md).
+    // The counts of docs/model.md section 15, which the independent
+    // reduced-coordinate ladder gives too (tests/test_reduced_ladder.cpp).
     void theLongThinLaddersAgreeWithTheReference() {
         QCOMPARE(firstRippleReach(turnedLadder(25, 0.004)).reached, 7);
         QCOMPARE(firstRippleReach(turnedLadder(25, 0.003)).reached, 23);
