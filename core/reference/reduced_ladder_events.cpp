@@ -1,7 +1,7 @@
 // The reduced ladder's stepping and events: fixed-step RK4 that lands on
 // every jump of the hand's acceleration, events located by bisection on
 // re-run steps, and the rules of docs/model.md sections 8.2 to 8.6 (settling
-// an instant, plastic impacts with an active set, rule 6 and held contacts).
+// an instant, plastic impacts with an active set, the slow-release rule and held contacts).
 #include "jl/reference/reduced_ladder.h"
 
 #include <algorithm>
@@ -166,7 +166,7 @@ int ReducedLadder::pulling(bool impulse, const Motion& before, const std::vector
     return worst;
 }
 
-// Rule 6 (section 8.6): released from the velocities before the impact,
+// The slow-release rule (section 8.6): released from the velocities before the impact,
 // would the pair part slower than v_min with its acceleration turning it
 // back into the limit? Tried on a copy.
 bool ReducedLadder::wouldChatter(int j, ReducedEvent::Kind kind, const Motion& before) const {
@@ -219,7 +219,7 @@ bool ReducedLadder::noteClose(int j) {
 
 // Section 8.4: close the hinges hit, then repeat the plastic impact from the
 // velocities before it while a contact impulse would pull (release it,
-// unless rule 6 keeps it) or a free hinge is driven into a limit (close it).
+// unless the slow-release rule keeps it) or a free hinge is driven into a limit (close it).
 void ReducedLadder::impact(const std::vector<int>& hits, std::vector<int>& released) {
     const Motion before = motion();
     double rebound = 0;  // the shortest rebound this impact ends: it launches what it releases

@@ -412,6 +412,9 @@ bool Simulation::takeStep(double limit) {
 
     stepStartQ_ = world_.q;
     stepStartV_ = world_.v;
+    // The start's accelerations (the last evaluation, of this state), for
+    // a limit passed and left within an adaptive step.
+    if (adaptive && ladder_) stepStartA_ = world_.a;
     stepStartLedger_ = ledger_;
     const double next0 = stepper_.nextStep();
     // The last step's end, evaluated for its event functions, is this
@@ -492,6 +495,18 @@ bool Simulation::takeStep(double limit) {
             }
             // The settled state is the next step's start, evaluated already.
             keptEnd_.keep(world_, dynamics_, t_ + taken, ladder_->settledPowers());
+        } else if (const double dip = adaptive && taken > 100 * solver.eventTolerance ? limitDip(taken) : 0.0;
+                   dip > 0) {
+            // A free hinge swung past a limit and back within this (long,
+            // adaptive) step: no sign change at its ends shows it. The step
+            // is taken again to end at the dip, where the crossing shows
+            // (docs/model.md section 9.1). Fixed steps are short enough.
+            restoreStepStart();
+            world_.updateKinematics(t_);
+            dynamics_.evaluate(world_, t_);
+            stepper_.setNextStep(dip);
+            ++stats_.rejected;
+            return true;
         } else {
             emitGridFrames(taken);
         }
@@ -523,6 +538,11 @@ bool Simulation::takeStep(double limit) {
         }
     }
     return true;
+}
+
+double Simulation::limitDip(double taken) {
+    Ladder::StepStart start{stepStartQ_, stepStartV_, stepStartA_};
+    return ladder_->limitDip(world_, start, taken);
 }
 
 bool Simulation::stepOnce() { return takeStep(kOpenEnd); }

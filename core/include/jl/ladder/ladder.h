@@ -108,6 +108,16 @@ public:
     // angleEventBodies gives, and nothing else.
     double angleEventFunction(const World& w, int k) const;
     std::array<int, 2> angleEventBodies(const World& w, int k) const;
+    // A free hinge that passes a limit and comes back within one step shows
+    // no sign change at the step's ends. The time within the step (from 0
+    // to h; `w` holds its end, evaluated, and `start` its start) where the
+    // quintic through each free hinge's angle, rate and acceleration at the
+    // ends is past a limit, the earliest; or 0 if none dips. `start` is
+    // swapped into the world and back.
+    struct StepStart {
+        Eigen::VectorXd &q, &v, &a;
+    };
+    double limitDip(World& w, StepStart& start, double h) const;
 
     // resolve, then the contacts between blocks that are not neighbours
     // (docs/model.md section 17), and the hinges again after each change

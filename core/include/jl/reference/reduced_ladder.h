@@ -3,7 +3,7 @@
 // block, the top block's angle prescribed by the hand), a dense mass matrix,
 // fixed-step RK4 of its own, events located by bisection on re-run steps,
 // and the rules of sections 8.2 to 8.6 (plastic impacts with an active set,
-// releases when a contact force would pull, rule 6, held contacts) written
+// releases when a contact force would pull, the slow-release rule, held contacts) written
 // afresh.
 // It shares no code with core/engine or core/ladder; it reads the scene with
 // core/scene. Small and slow: meant for ladders of a few dozen blocks.

@@ -145,6 +145,8 @@ private:
     double fixedStep();
     void noteStep(double h);
     bool retryWithSmallerStep();
+    // Where within the step just taken a free hinge dips past a limit (0: none).
+    double limitDip(double taken);
     std::string blowUpAdvice(double h) const;
     // What a Snapshot holds, in its order (simulation_snapshot.cpp).
     template <class Self>
@@ -184,6 +186,7 @@ private:
     double imbalanceBase_ = 0;  // J, the books' imbalance at the last halving (the check watches growth past it)
     // Kept from step to step so that stepping allocates nothing.
     Eigen::VectorXd stepStartQ_, stepStartV_;  // the state the step started from
+    Eigen::VectorXd stepStartA_;               // and its accelerations (adaptive steps of a ladder)
     Ledger stepStartLedger_;
     std::vector<double> eventValues_;
     Powers lastPowers_;  // of smallestEventFunction's evaluation
