@@ -184,12 +184,9 @@ void RunPlots::rebuildChosenCurves() {
     charts_[2]->fitLegend();
 }
 
-double RunPlots::span() const {
-    // The time axis grows in whole steps, as the timeline's does, so it does not creep.
-    double s = duration_;
-    while (traces_.endTime() > s * 1.01) s *= 1.5;  // a last step a little past the end is not "past" it
-    return s;
-}
+// The time axis ends where the timeline's does: at the scene's length, or
+// where the run has got to past it (never at an empty tail).
+double RunPlots::span() const { return std::max(duration_, traces_.endTime()); }
 
 void RunPlots::setDuration(double seconds) {
     duration_ = std::max(0.1, seconds);

@@ -55,12 +55,9 @@ void Timeline::setState(double cursor, double recorded, std::shared_ptr<const st
     update();
 }
 
-// The scale grows in whole steps as the run goes past the scene's length.
-double Timeline::span() const {
-    double s = duration_;
-    while (recorded_ > s * 0.98) s *= 1.5;
-    return s;
-}
+// The axis ends at the scene's length, or where the run has got to once it
+// went on past it: an axis drawn further would promise time nobody asked for.
+double Timeline::span() const { return std::max(duration_, recorded_); }
 
 QFont Timeline::labelFont() const {
     QFont f = font();
