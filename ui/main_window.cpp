@@ -5,6 +5,7 @@
 #include "ui/events_panel.h"
 #include "ui/ladder_panel.h"
 #include "ui/ladder_view.h"
+#include "ui/pacing.h"
 #include "ui/presentation_mode.h"
 #include "ui/scene_text_dialog.h"
 #include "ui/screen_fit.h"
@@ -365,6 +366,12 @@ void MainWindow::createTeaching() {
     });
     connect(teaching_, &TeachingDocks::message, this,
             [this](const QString& text) { statusBar()->showMessage(text, 5000); });
+    connect(teaching_->pacing(), &Pacing::loopChanged, this, [this](bool on) {
+        const Pacing* pacing = teaching_->pacing();
+        timeline_->setLoop(on ? std::make_optional(std::make_pair(pacing->loopFrom(), pacing->loopTo()))
+                              : std::nullopt);
+    });
+    connect(teaching_, &TeachingDocks::editTextRequested, this, [this] { SceneTextDialog(doc_, this).exec(); });
     QDockWidget* side = teaching_->sideViewDock();
     addDockWidget(Qt::RightDockWidgetArea, side);
     // The script is seldom edited in class: the side view shares its place, in front.
@@ -491,6 +498,7 @@ void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {
     if (s->frame) view_->showFrame(*s->frame);
     timeline_->setState(s->frame ? s->frame->time : s->frameIndex * s->interval, s->headTime, s->events);
     eventsPanel_->setEvents(s->events);
+    eventsPanel_->setTime(s->frame ? s->frame->time : 0);
     if (s->playing != playing_) {
         playing_ = s->playing;
         playAct_->setIcon(style()->standardIcon(playing_ ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
@@ -512,7 +520,10 @@ void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {
         if (wall >= kSecondsBeforeTimeLeft && ran > 0)
             done = tr("%1, %2 left").arg(done, durationText((1 - s->seekProgress) * wall / ran));
         rateLabel_->setText(tr("running to t = %1 s (%2)").arg(s->seekingTo, 0, 'f', 3).arg(done));
-    } else if (s->playing)
+    } else if (s->playing && s->frameIndex < s->frameCount - 1)
+        // Frames recorded earlier: nothing is simulated, so no rate to measure.
+        rateLabel_->setText(tr("replaying recorded frames at %1×").arg(s->speed, 0, 'f', 2));
+    else if (s->playing)
         rateLabel_->setText(
             tr("%1× real time · %2 steps/s").arg(s->realTimeFactor, 0, 'f', 2).arg(s->stepsPerSecond, 0, 'f', 0));
     else if (atInstant(*s))
