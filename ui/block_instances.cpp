@@ -8,6 +8,7 @@
 #include <Qt3DRender/QGeometryRenderer>
 #include <Qt3DRender/QMaterial>
 
+#include <algorithm>
 #include <array>
 
 namespace jl::ui {
@@ -71,7 +72,7 @@ BlockInstances::BlockInstances(Qt3DCore::QNode* parent) : Qt3DCore::QEntity(pare
 
 void BlockInstances::setShapes(std::vector<BlockShape> shapes) { shapes_ = std::move(shapes); }
 
-void BlockInstances::showFrame(const jl::Frame& frame, int grabbed) {
+void BlockInstances::showFrame(const jl::Frame& frame, int grabbed, const std::vector<int>& pointedAt) {
     const size_t n = std::min(frame.poses.size(), shapes_.size());
     QByteArray data(int(n * kInstanceFloats * sizeof(float)), Qt::Uninitialized);
     auto* f = reinterpret_cast<float*>(data.data());
@@ -81,7 +82,8 @@ void BlockInstances::showFrame(const jl::Frame& frame, int grabbed) {
         const bool held = i < frame.held.size() && frame.held[i];
         // Held blocks are a shade darker: the hand has them.
         const float shade = held ? 0.8f : 1.0f;
-        const float hi = int(i) == grabbed ? 1.0f : 0.0f;
+        const bool pointed = std::find(pointedAt.begin(), pointedAt.end(), int(i)) != pointedAt.end();
+        const float hi = int(i) == grabbed ? 1.0f : pointed ? 0.85f : 0.0f;
         const float values[kInstanceFloats] = {float(p.position.x()),
                                                float(p.position.y()),
                                                float(p.angle),

@@ -23,8 +23,9 @@ class BlockInstances : public Qt3DCore::QEntity {
 public:
     explicit BlockInstances(Qt3DCore::QNode* parent);
     void setShapes(std::vector<BlockShape> shapes);
-    // `grabbed`: the block under the mouse spring, drawn highlighted (-1: none).
-    void showFrame(const jl::Frame& frame, int grabbed);
+    // `grabbed`: the block under the mouse spring, drawn highlighted (-1: none);
+    // `pointedAt`: blocks drawn half as highlighted (an event's hinge joins them).
+    void showFrame(const jl::Frame& frame, int grabbed, const std::vector<int>& pointedAt = {});
 
 private:
     std::vector<BlockShape> shapes_;

@@ -3,6 +3,8 @@
 #include <QListWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace jl::ui {
 
 namespace {
@@ -47,6 +49,15 @@ QString eventsInWords(const std::vector<jl::Event>& events) {
     QStringList what;
     for (const jl::Event& e : events) what << whatHappened(e);
     return QString("%1 s: %2").arg(events.front().time, 0, 'f', 3).arg(what.join("; "));
+}
+
+std::vector<int> hingesAtInstant(const jl::Frame& frame) {
+    std::vector<int> hinges;
+    for (const jl::Event& e : frame.events)
+        if (e.time == frame.time && e.hinge >= 1 && e.hinge <= int(frame.hinges.size()) &&
+            std::find(hinges.begin(), hinges.end(), e.hinge) == hinges.end())
+            hinges.push_back(e.hinge);
+    return hinges;
 }
 
 EventsPanel::EventsPanel(QWidget* parent) : QWidget(parent) {
@@ -116,6 +127,41 @@ void EventsPanel::setEvents(std::shared_ptr<const std::vector<jl::Event>> events
     if (!events_) return;
     for (size_t i = had; i < events_->size(); ++i) append(i);
     if (had < events_->size()) list_->scrollToBottom();
+    follow();
+}
+
+void EventsPanel::setTime(double t) {
+    if (t == time_) return;
+    time_ = t;
+    follow();
+}
+
+// Rows are in time order (a run's row at its first event): the last row at
+// or before the time on screen.
+void EventsPanel::follow() {
+    int lo = 0, hi = list_->count();
+    while (lo < hi) {
+        const int mid = (lo + hi) / 2;
+        if (list_->item(mid)->data(Qt::UserRole).toDouble() <= time_ + 1e-12)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    const int row = lo - 1;
+    if (row == list_->currentRow()) return;
+    if (row < 0) {
+        list_->clearSelection();
+        list_->setCurrentRow(-1);
+        return;
+    }
+    list_->setCurrentRow(row);
+    list_->scrollToItem(list_->item(row));
+}
+
+std::optional<double> EventsPanel::selectedTime() const {
+    const QListWidgetItem* item = list_->currentItem();
+    if (!item || !item->isSelected()) return std::nullopt;
+    return item->data(Qt::UserRole).toDouble();
 }
 
 }  // namespace jl::ui

@@ -7,6 +7,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <vector>
 
 class QListWidget;
@@ -19,12 +20,20 @@ QString eventInWords(const jl::Event& e);
 QString whatHappened(const jl::Event& e);
 // Events of one instant: "0.512 s: block 1 folds ...; block 2 flips ...".
 QString eventsInWords(const std::vector<jl::Event>& events);
+// The hinges (1..N-1) of the events at the frame's own instant, the one an
+// event's entry or mark shows: the views point at them.
+std::vector<int> hingesAtInstant(const jl::Frame& frame);
 
 class EventsPanel : public QWidget {
     Q_OBJECT
 public:
     explicit EventsPanel(QWidget* parent = nullptr);
     void setEvents(std::shared_ptr<const std::vector<jl::Event>> events);
+    // The time on screen: the latest event at or before it is selected, so
+    // the log follows a scrub and says what last happened.
+    void setTime(double t);
+    // The time of the selected row, if any.
+    std::optional<double> selectedTime() const;
 
 signals:
     void instantRequested(double time);
@@ -41,7 +50,10 @@ private:
     void append(size_t index);
     QListWidgetItem* addRow(const QString& text, double time);
 
+    void follow();
+
     QListWidget* list_;
+    double time_ = 0;
     std::shared_ptr<const std::vector<jl::Event>> events_;
     std::map<int, Run> runs_;  // by hinge: its latest run of locks and unlocks
 };

@@ -1,4 +1,5 @@
-// Why a scene file could not be opened: every problem with file, line and column.
+// Why a scene file could not be opened: the file named once, then every
+// problem as "line:column: message", wrapped to the dialog's width.
 #pragma once
 
 #include "jl/base/diagnostic.h"
@@ -7,7 +8,7 @@
 
 #include <vector>
 
-class QListWidget;
+class QPlainTextEdit;
 
 namespace jl::ui {
 
@@ -16,10 +17,12 @@ class FileErrorsDialog : public QDialog {
 public:
     FileErrorsDialog(const QString& path, const std::vector<jl::Diagnostic>& errors, QWidget* parent);
     int errorCount() const;
-    QStringList lines() const;
+    QStringList lines() const;  // as shown, one per problem
 
 private:
-    QListWidget* list_;
+    QPlainTextEdit* problems_;
+    QStringList lines_;
+    QStringList located_;  // "file:line:column: message", what Copy copies (editors jump to it)
 };
 
 }  // namespace jl::ui

@@ -8,7 +8,6 @@
 #include <QCheckBox>
 #include <QColorDialog>
 #include <QFormLayout>
-#include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -85,20 +84,17 @@ LadderPanel::LadderPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_
         editLadder("held", tr("Change held blocks"), [held](jl::LadderSpec& l) { l.held = held; });
         held_->setText(heldText(doc_->scene().ladder ? doc_->scene().ladder->held : std::vector<int>{}));
     });
-    // Under the block count: the live estimate of the first ripple, and the
-    // map of it over two parameters.
-    auto* reach = new QWidget(this);
-    auto* reachRow = new QHBoxLayout(reach);
-    reachRow->setContentsMargins(0, 0, 0, 0);
-    estimate_ = new ReachEstimate(reach);
-    auto* mapButton = new QPushButton(tr("Design map..."), reach);
+    // Under the block count: the live estimate of the first ripple, across
+    // the whole form (in the room beside a button it took five lines), and
+    // the map of it over two parameters.
+    estimate_ = new ReachEstimate(this);
+    auto* mapButton = new QPushButton(tr("Design map..."), this);
     mapButton->setObjectName("designMapButton");
     mapButton->setToolTip(
         tr("How far the first ripple travels over two of the design's parameters, one simulation per design."));
     connect(mapButton, &QPushButton::clicked, this, &LadderPanel::designMapRequested);
-    reachRow->addWidget(estimate_, 1);
-    reachRow->addWidget(mapButton);
-    form->insertRow(1, QString(), reach);
+    form->insertRow(1, estimate_);
+    form->insertRow(2, QString(), mapButton);
 
     overrides_ = new BlockOverrides(doc, this);
     box->addWidget(new QLabel(tr("<b>Blocks that differ</b>"), this));

@@ -2,6 +2,7 @@
 
 #include "ui/block_instances.h"
 #include "ui/block_shapes.h"
+#include "ui/events_panel.h"
 #include "ui/room.h"
 #include "ui/strip_entity.h"
 
@@ -89,10 +90,12 @@ void LadderView::setScene(const jl::Scene& scene, bool resetCamera) {
     if (resetCamera) {
         shownPoses_.clear();  // the old scene's blocks say nothing of the new one's
         resetView();
-    } else if (resized && wasWhole) {
+    } else if (resized && (wasWhole || !showsSomeOfLadder())) {
         // The whole ladder was in view: so it stays. A view of part of it
         // (the top of a long ladder, where the ripple starts) is left alone:
         // blocks added or taken away at the bottom do not move the top.
+        // A view of nothing (the bottom of a long ladder made short by an
+        // undo) is of no use: the ladder is framed.
         frameLadder();
         frameOnNextFrame_ = true;
     }
@@ -126,7 +129,10 @@ void LadderView::showFrame(const jl::Frame& frame) {
         frameOnNextFrame_ = false;
         frameLadder();
     }
-    blocks_->showFrame(frame, frame.dragging ? grabbed_ : -1);
+    // At an event's instant, the blocks its hinge joins: where to look.
+    pointedAt_.clear();
+    for (const int j : hingesAtInstant(frame)) pointedAt_.insert(pointedAt_.end(), {j - 1, j});
+    blocks_->showFrame(frame, frame.dragging ? grabbed_ : -1, pointedAt_);
     // Ribbons are a few pixels wide at best when the whole of a long ladder is
     // in view, yet they cost more to draw than all the blocks: show them close up.
     const bool ribbonsShow = ribbonSpec_.visible && camera_.distance() < kRibbonDistanceInBlocks * blockLength_;
@@ -221,6 +227,19 @@ bool LadderView::showsWholeLadder() const {
             return false;
     }
     return true;
+}
+
+bool LadderView::showsSomeOfLadder() const {
+    const QMatrix4x4 viewProjection = camera()->projectionMatrix() * camera()->viewMatrix();
+    // The ladder's outline on screen, in normalised coordinates (-1 .. 1 in view).
+    float left = INFINITY, right = -INFINITY, bottom = INFINITY, top = -INFINITY;
+    for (const QVector3D& c : ladderCorners()) {
+        const QVector4D clip = viewProjection * QVector4D(c, 1);
+        if (clip.w() <= 0) return true;  // it reaches behind the eye: around it, so in view
+        left = std::min(left, clip.x() / clip.w()), right = std::max(right, clip.x() / clip.w());
+        bottom = std::min(bottom, clip.y() / clip.w()), top = std::max(top, clip.y() / clip.w());
+    }
+    return left <= 1 && right >= -1 && bottom <= 1 && top >= -1;
 }
 
 std::vector<QVector3D> LadderView::ladderCorners() const {

@@ -14,6 +14,7 @@
 #include <Qt3DExtras/Qt3DWindow>
 
 #include <optional>
+#include <vector>
 
 namespace Qt3DRender {
 class QRenderCapture;
@@ -33,6 +34,8 @@ public:
     // A new or edited scene: shapes, colours and the room; the camera too when asked.
     void setScene(const jl::Scene& scene, bool resetCamera);
     void showFrame(const jl::Frame& frame);
+    // The blocks drawn highlighted because an event's hinge joins them.
+    const std::vector<int>& pointedAt() const { return pointedAt_; }
     void resetView();
     // Keeps the direction of view and fits the whole ladder, as last shown, in the view.
     void frameLadder();
@@ -100,6 +103,8 @@ private:
     std::vector<QVector3D> ladderCorners() const;
     // Whether every corner of the ladder, as last shown, is in view (or nearly).
     bool showsWholeLadder() const;
+    // Whether any of it is: its outline on screen meets the view.
+    bool showsSomeOfLadder() const;
 
     Qt3DCore::QEntity* root_;
     BlockInstances* blocks_;
@@ -129,6 +134,7 @@ private:
     bool dragging_ = false;
     bool orbiting_ = false;  // a left drag that began off every block
     int grabbed_ = -1;
+    std::vector<int> pointedAt_;  // blocks joined by the hinge of an event at the instant on screen
     QPointF lastMouse_;
     QSet<int> keysDown_;
     QTimer walkTimer_;

@@ -78,9 +78,12 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     text_->setObjectName("lessonText");
     text_->setOpenLinks(false);
     box->addWidget(text_);
+    connect(text_, &QTextBrowser::anchorClicked, this, [this](const QUrl& url) {
+        if (url.toString() == "edit") emit editTextRequested();
+    });
 }
 
-void LessonPanel::showScene(const jl::Scene& scene) {
+void LessonPanel::showScene(const jl::Scene& scene, bool edited) {
     const QString title = QString::fromStdString(scene.title).toHtmlEscaped();
     QString description = QString::fromStdString(scene.description).trimmed().toHtmlEscaped();
     description.replace("\n\n", "</p><p>");
@@ -90,7 +93,14 @@ void LessonPanel::showScene(const jl::Scene& scene) {
                "(<tt>title:</tt> and <tt>description:</tt>) to make it a lesson.</i></p>"));
         return;
     }
-    text_->setHtml(QString("<h3>%1</h3><p>%2</p>").arg(title, description));
+    // A lesson's words describe the scene as it was written: after an edit
+    // they may describe another ladder (six blocks, over ten on screen).
+    const QString note =
+        edited ? tr("<p style=\"background:#fff4c2\"><i>Edited: the scene has changed since these words were "
+                    "written, and they may no longer describe it.</i> <a href=\"edit\">Edit the title and "
+                    "description...</a></p>")
+               : QString();
+    text_->setHtml(QString("%1<h3>%2</h3><p>%3</p>").arg(note, title, description));
 }
 
 void LessonPanel::setLarge(bool large) {

@@ -42,9 +42,14 @@ class LessonPanel : public QWidget {
     Q_OBJECT
 public:
     explicit LessonPanel(QWidget* parent = nullptr);
-    void showScene(const jl::Scene& scene);
+    // `edited`: the scene was changed since its words were written, and the
+    // panel says so above them, with a link to edit them.
+    void showScene(const jl::Scene& scene, bool edited = false);
     void setLarge(bool large);
     QString text() const;
+
+signals:
+    void editTextRequested();  // the link under an edited scene's note
 
 private:
     QTextBrowser* text_;

@@ -1,10 +1,12 @@
 #include "ui/main_window.h"
 
 #include "ui/change_value.h"
+#include "ui/controls_sheet.h"
 #include "ui/design_map.h"
 #include "ui/events_panel.h"
 #include "ui/ladder_panel.h"
 #include "ui/ladder_view.h"
+#include "ui/pacing.h"
 #include "ui/presentation_mode.h"
 #include "ui/scene_text_dialog.h"
 #include "ui/screen_fit.h"
@@ -229,7 +231,7 @@ void MainWindow::createMenus() {
     for (QDockWidget* d : findChildren<QDockWidget*>()) viewMenu_->addAction(d->toggleViewAction());
     helpMenu_ = menuBar()->addMenu(tr("&Help"));
     QMenu* help = helpMenu_;
-    QAction* controls = help->addAction(tr("&Controls"), this, &MainWindow::showControls);
+    QAction* controls = help->addAction(tr("&Controls"), this, [this] { showControlsSheet(this); });
     controls->setShortcut(QKeySequence::HelpContents);
     help->addAction(tr("&About"), this, [this] {
         QMessageBox::about(
@@ -238,41 +240,6 @@ void MainWindow::createMenus() {
                 .arg(QApplication::applicationVersion()));
     });
     updateRecentMenu();
-}
-
-// The mouse and the keys in one page. The keys are read from the actions
-// themselves, so the page cannot drift from what the program does.
-void MainWindow::showControls() {
-    QString keys;
-    std::vector<std::pair<QString, QString>> rows;
-    for (QAction* a : findChildren<QAction*>()) {
-        if (a->shortcut().isEmpty() || a->text().isEmpty()) continue;
-        rows.emplace_back(a->text().remove('&'), a->shortcut().toString(QKeySequence::NativeText));
-    }
-    std::sort(rows.begin(), rows.end());
-    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
-    for (const auto& [what, key] : rows)
-        keys += QString("<tr><td><b>%1</b></td><td>%2</td></tr>").arg(key.toHtmlEscaped(), what.toHtmlEscaped());
-    const QString mouse =
-        tr("<tr><td><b>Left-drag a block</b></td><td>push it with a spring (a held block: move the hand); recorded, so "
-           "a replay repeats it</td></tr>"
-           "<tr><td><b>Left-drag off the blocks, or right-drag</b></td><td>orbit the camera about the ladder</td></tr>"
-           "<tr><td><b>Middle-drag</b></td><td>pan</td></tr>"
-           "<tr><td><b>Wheel</b></td><td>zoom toward the pointer</td></tr>"
-           "<tr><td><b>Walk mode</b></td><td>W A S D to move, Q E down and up, drag to look, Esc to stop</td></tr>"
-           "<tr><td><b>Timeline, plots</b></td><td>click or drag to see that moment</td></tr>"
-           "<tr><td><b>An event's mark on the timeline, an entry in Events</b></td><td>click to see that event's "
-           "instant</td></tr>");
-    auto* box = findChild<QMessageBox*>("controlsHelp");
-    if (!box) {
-        box = new QMessageBox(QMessageBox::Information, tr("Controls"), {}, QMessageBox::Close, this);
-        box->setObjectName("controlsHelp");
-        box->setModal(false);
-        box->setTextFormat(Qt::RichText);
-    }
-    box->setText(tr("<h3>Mouse</h3><table cellspacing=4>%1</table><h3>Keys</h3><table cellspacing=4>%2</table>")
-                     .arg(mouse, keys));
-    box->show();
 }
 
 void MainWindow::createToolBar() {
@@ -365,6 +332,12 @@ void MainWindow::createTeaching() {
     });
     connect(teaching_, &TeachingDocks::message, this,
             [this](const QString& text) { statusBar()->showMessage(text, 5000); });
+    connect(teaching_->pacing(), &Pacing::loopChanged, this, [this](bool on) {
+        const Pacing* pacing = teaching_->pacing();
+        timeline_->setLoop(on ? std::make_optional(std::make_pair(pacing->loopFrom(), pacing->loopTo()))
+                              : std::nullopt);
+    });
+    connect(teaching_, &TeachingDocks::editTextRequested, this, [this] { SceneTextDialog(doc_, this).exec(); });
     QDockWidget* side = teaching_->sideViewDock();
     addDockWidget(Qt::RightDockWidgetArea, side);
     // The script is seldom edited in class: the side view shares its place, in front.
@@ -385,27 +358,7 @@ void MainWindow::createTeaching() {
     connect(teaching_->presentationAction(), &QAction::triggered, presentation_, &PresentationMode::toggle);
     connect(presentation_, &PresentationMode::activeChanged, teaching_->presentationAction(), &QAction::setChecked);
     connect(presentation_, &PresentationMode::activeChanged, teaching_, &TeachingDocks::setLarge);
-    // Large type needs room: on the projector the plots get a third of the
-    // screen's height (their tick labels would otherwise be cut to "..."),
-    // and their own height back afterwards.
-    connect(presentation_, &PresentationMode::activeChanged, this, [this](bool on) {
-        QDockWidget* plots = teaching_->plotsDock();
-        if (!on) {
-            if (plotsHeightBefore_ > 0) resizeDocks({plots}, {plotsHeightBefore_}, Qt::Vertical);
-            plotsHeightBefore_ = -1;
-            return;
-        }
-        plotsHeightBefore_ = plots->height();
-        QTimer::singleShot(0, this, [this, plots] {
-            if (!presentation_->active()) return;
-            resizeDocks({plots}, {std::max(plots->height(), height() / 3)}, Qt::Vertical);
-            // The 3-D view is what the class watches: the columns beside it
-            // get less than the desk layout gave (the lesson's words more
-            // than the side view's thread), and the view half the width.
-            resizeDocks({teaching_->lessonDock(), teaching_->sideViewDock()}, {width() * 3 / 10, width() / 5},
-                        Qt::Horizontal);
-        });
-    });
+    connect(presentation_, &PresentationMode::activeChanged, presentation_, &PresentationMode::arrangeDocks);
 }
 
 void MainWindow::createStatusBar() {
@@ -491,6 +444,7 @@ void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {
     if (s->frame) view_->showFrame(*s->frame);
     timeline_->setState(s->frame ? s->frame->time : s->frameIndex * s->interval, s->headTime, s->events);
     eventsPanel_->setEvents(s->events);
+    eventsPanel_->setTime(s->frame ? s->frame->time : 0);
     if (s->playing != playing_) {
         playing_ = s->playing;
         playAct_->setIcon(style()->standardIcon(playing_ ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
@@ -512,7 +466,10 @@ void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {
         if (wall >= kSecondsBeforeTimeLeft && ran > 0)
             done = tr("%1, %2 left").arg(done, durationText((1 - s->seekProgress) * wall / ran));
         rateLabel_->setText(tr("running to t = %1 s (%2)").arg(s->seekingTo, 0, 'f', 3).arg(done));
-    } else if (s->playing)
+    } else if (s->playing && s->frameIndex < s->frameCount - 1)
+        // Frames recorded earlier: nothing is simulated, so no rate to measure.
+        rateLabel_->setText(tr("replaying recorded frames at %1×").arg(s->speed, 0, 'f', 2));
+    else if (s->playing)
         rateLabel_->setText(
             tr("%1× real time · %2 steps/s").arg(s->realTimeFactor, 0, 'f', 2).arg(s->stepsPerSecond, 0, 'f', 0));
     else if (atInstant(*s))

@@ -72,7 +72,6 @@ private:
     void createStatusBar();
     void connectView();
     void showFailure(const QString& failure);
-    void showControls();
     void readSettings();
     void arrangeDocks();
     QSize framedBy_;              // what the window manager's frame adds, when the window was last fitted to its screen
@@ -113,7 +112,6 @@ private:
     PresentationMode* presentation_ = nullptr;
     QMenu* helpMenu_ = nullptr;
     DesignMap* designMap_ = nullptr;
-    int plotsHeightBefore_ = -1;  // the plots dock's height before presentation mode
     QMenu* recentMenu_ = nullptr;
     QMenu* viewMenu_ = nullptr;
     QSlider* speedSlider_ = nullptr;

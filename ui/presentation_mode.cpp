@@ -17,8 +17,12 @@
 
 namespace jl::ui {
 
-PresentationMode::PresentationMode(QMainWindow* window, QList<QDockWidget*> keepDocks, QAction* play)
-    : QObject(window), window_(window), keepDocks_(std::move(keepDocks)), play_(play) {
+PresentationMode::PresentationMode(QMainWindow* window, Docks docks, QAction* play)
+    : QObject(window),
+      window_(window),
+      docks_(docks),
+      keepDocks_{docks.sideView, docks.plots, docks.lesson},
+      play_(play) {
     escape_ = new QAction(tr("Leave presentation mode"), this);
     escape_->setShortcut(Qt::Key_Escape);
     // The 3-D view is a window of its own inside ours: with the keyboard
@@ -82,6 +86,28 @@ bool PresentationMode::eventFilter(QObject* watched, QEvent* event) {
     else if (!key->isAutoRepeat())
         play_->trigger();
     return true;
+}
+
+// Large type needs room: on the projector the plots get a third of the
+// screen's height (their tick labels would otherwise be cut to "..."), and
+// their own height back afterwards.
+void PresentationMode::arrangeDocks(bool on) {
+    QDockWidget* plots = docks_.plots;
+    if (!on) {
+        if (plotsHeightBefore_ > 0) window_->resizeDocks({plots}, {plotsHeightBefore_}, Qt::Vertical);
+        plotsHeightBefore_ = -1;
+        return;
+    }
+    plotsHeightBefore_ = plots->height();
+    QTimer::singleShot(0, this, [this, plots] {
+        if (!active()) return;
+        window_->resizeDocks({plots}, {std::max(plots->height(), window_->height() / 3)}, Qt::Vertical);
+        // The 3-D view is what the class watches: the columns beside it get
+        // less than the desk layout gave (the lesson's words more than the
+        // side view's thread), and the view half the width.
+        window_->resizeDocks({docks_.lesson, docks_.sideView}, {window_->width() * 3 / 10, window_->width() / 5},
+                             Qt::Horizontal);
+    });
 }
 
 void PresentationMode::leave() {

@@ -22,9 +22,14 @@ double presentationSize(const QWidget* w);
 class PresentationMode : public QObject {
     Q_OBJECT
 public:
-    // `keepDocks`: the docks that stay in view (the rest hide); `play`: what
-    // Space does while presenting, wherever the keyboard is.
-    PresentationMode(QMainWindow* window, QList<QDockWidget*> keepDocks, QAction* play);
+    // The docks that stay in view while presenting (the rest hide).
+    struct Docks {
+        QDockWidget* sideView;
+        QDockWidget* plots;
+        QDockWidget* lesson;
+    };
+    // `play`: what Space does while presenting, wherever the keyboard is.
+    PresentationMode(QMainWindow* window, Docks docks, QAction* play);
 
     bool active() const { return active_; }
     void setActive(bool on);
@@ -32,6 +37,9 @@ public:
     // Fonts in presentation mode are this many times the normal size on a
     // screen 900 pixels high (times presentationSize elsewhere).
     static constexpr double kFontScale = 1.6;
+    // The docks' sizes on the projector, and back afterwards; the window
+    // calls it after the docks have taken their large type.
+    void arrangeDocks(bool on);
 
 signals:
     // Views and plots connect here to draw large (SideView scale, RunPlots::setLarge).
@@ -45,7 +53,9 @@ private:
     void leave();
 
     QMainWindow* window_;
+    Docks docks_;
     QList<QDockWidget*> keepDocks_;
+    int plotsHeightBefore_ = -1;  // the plots dock's height before presenting
     bool active_ = false;
     // What entering changed, to put back exactly on leaving.
     Qt::WindowStates windowState_;

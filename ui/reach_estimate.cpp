@@ -2,6 +2,7 @@
 
 #include "ui/design_map_cache.h"
 
+#include <QPainter>
 #include <QThread>
 #include <QTimer>
 #include <QtConcurrent>
@@ -15,20 +16,30 @@ namespace {
 // whole run is a hundred CPU seconds); 10,000 blocks their first second
 // (a whole run, 2,000 s simulated, would take hours).
 constexpr double kBlockSeconds = 10000;
+// The estimate's height, in lines, whatever it says: a label that grew and
+// shrank with its text moved every field below it (and the click meant for
+// one landed in another).
+constexpr int kLines = 3;
 
 double scriptEnd(const jl::Scene& scene) {
     double end = 0;
     for (const jl::ScriptAction& a : scene.script) end = std::max(end, a.at + std::max(0.0, a.duration));
     return end;
 }
+
+QString explanation() {
+    return QObject::tr(
+        "How far the first ripple travels down this design when the script turns the top block, "
+        "simulated in the background after every change (docs/model.md section 15).");
+}
 }  // namespace
 
 ReachEstimate::ReachEstimate(QWidget* parent) : QLabel(parent) {
     setObjectName("reachEstimate");
     setWordWrap(true);
-    setToolTip(
-        tr("How far the first ripple travels down this design when the script turns the top block, "
-           "simulated in the background after every change (docs/model.md section 15)."));
+    setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);
+    reserveLines();
+    setToolTip(explanation());
     pool_.setMaxThreadCount(1);
     settle_ = new QTimer(this);
     settle_->setSingleShot(true);
@@ -55,7 +66,7 @@ void ReachEstimate::estimate(const jl::Scene& scene) {
         settle_->stop();
         if (stop_) stop_->store(true);
         computing_ = false;
-        setText({});
+        say({});
         return;
     }
     const QByteArray whole = ReachCache::designKey(scene);
@@ -80,15 +91,14 @@ void ReachEstimate::estimate(const jl::Scene& scene) {
     if (longest < scriptEnd(scene) + 0.5) {
         settle_->stop();
         computing_ = false;
-        setText(
-            tr("First ripple: not estimated for a ladder of %1 blocks, which would take long to run; the design map "
+        say(tr("First ripple: not estimated for a ladder of %1 blocks, which would take long to run; the design map "
                "runs any design whole.")
                 .arg(blocks));
         emit estimated();
         return;
     }
     computing_ = true;
-    setText(tr("First ripple: computing..."));
+    say(tr("First ripple: computing..."));
     settle_->start();
 }
 
@@ -115,8 +125,45 @@ void ReachEstimate::show(const jl::RippleReach& r) {
             : tr("The first ripple reaches hinge %1 of %2").arg(r.reached).arg(r.hinges);
     if (r.reached >= 2) text += tr(", one flip every %1 s").arg(r.meanTimeBetweenFlips, 0, 'f', 3);
     if (!r.failure.empty()) text += tr("; the run failed: %1").arg(QString::fromStdString(r.failure));
-    setText(text);
+    say(text);
     emit estimated();
+}
+
+void ReachEstimate::say(const QString& text) {
+    setText(text);
+    setToolTip(text.isEmpty() ? explanation() : text + "\n\n" + explanation());
+}
+
+void ReachEstimate::reserveLines() {
+    const QMargins m = contentsMargins();
+    setFixedHeight(kLines * fontMetrics().lineSpacing() + m.top() + m.bottom());
+}
+
+void ReachEstimate::changeEvent(QEvent* e) {
+    QLabel::changeEvent(e);
+    if (e->type() == QEvent::FontChange) reserveLines();
+}
+
+QString ReachEstimate::shownText() const {
+    const QRect box = contentsRect();
+    const auto fits = [&](const QString& t) {
+        return fontMetrics().boundingRect(QRect(0, 0, box.width(), 1 << 20), Qt::TextWordWrap, t).height() <=
+               box.height();
+    };
+    if (fits(text())) return text();
+    QStringList words = text().split(' ');
+    while (words.size() > 1) {
+        words.removeLast();
+        const QString shorter = words.join(' ') + QChar(0x2026);
+        if (fits(shorter)) return shorter;
+    }
+    return QString(QChar(0x2026));
+}
+
+void ReachEstimate::paintEvent(QPaintEvent*) {
+    QPainter p(this);
+    p.setPen(palette().color(QPalette::WindowText));
+    p.drawText(contentsRect(), Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap, shownText());
 }
 
 }  // namespace jl::ui

@@ -28,11 +28,20 @@ public:
     // The design to estimate; the same design again changes nothing.
     void estimate(const jl::Scene& scene);
     bool computing() const { return computing_; }
+    // The words drawn: the whole text when it fits the reserved lines, else
+    // as many of its words as fit, then "..." (the tooltip has them all).
+    QString shownText() const;
 
 signals:
     void estimated();  // the label shows the newest design's result
 
+protected:
+    void paintEvent(QPaintEvent*) override;
+    void changeEvent(QEvent* e) override;
+
 private:
+    void reserveLines();
+    void say(const QString& text);
     void start();
     void show(const jl::RippleReach& r);
 

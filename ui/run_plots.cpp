@@ -26,6 +26,8 @@
 namespace jl::ui {
 
 namespace {
+// How many fold angles and angular speeds a ladder shows at first.
+constexpr int kHingesPlotted = 5, kBlocksPlotted = 3;
 
 // Ten colours told apart by most eyes and projectors (Tableau 10).
 QColor curveColor(int i) {
@@ -136,9 +138,8 @@ RunPlots::RunPlots(QWidget* parent) : QWidget(parent) {
         const EnergyLook look = energyLook(EnergyTrace(t));
         energyCurves_[size_t(t)] = charts_[0]->addCurve(traceName(EnergyTrace(t)), look.color, look.width, look.style);
     }
-    // Damping and drags are usually absent: their curves start hidden, one click in the legend away.
-    charts_[0]->setCurveShown(energyCurves_[size_t(EnergyTrace::DampingLoss)], false);
-    charts_[0]->setCurveShown(energyCurves_[size_t(EnergyTrace::UserWork)], false);
+    // Every energy curve starts shown: a hidden one (damping, a drag's work)
+    // was missing just when it mattered, and its legend entry looked cut.
     rebuildChosenCurves();
 
     refreshTimer_.setInterval(150);
@@ -184,12 +185,24 @@ void RunPlots::rebuildChosenCurves() {
     charts_[2]->fitLegend();
 }
 
-double RunPlots::span() const {
-    // The time axis grows in whole steps, as the timeline's does, so it does not creep.
-    double s = duration_;
-    while (traces_.endTime() > s * 1.01) s *= 1.5;  // a last step a little past the end is not "past" it
-    return s;
+// Up to `count` indices from `first` to `last`, both ends included, evenly
+// apart: on a long ladder the curves tell how the motion travels down it
+// (the first five hinges of ten told nothing of the bottom half).
+std::vector<int> spreadOver(int first, int last, int count) {
+    std::vector<int> out;
+    const int n = last - first + 1;
+    if (n <= 0) return out;
+    if (n <= count) {
+        for (int i = first; i <= last; ++i) out.push_back(i);
+        return out;
+    }
+    for (int k = 0; k < count; ++k) out.push_back(first + int(std::lround(double(k) * (n - 1) / (count - 1))));
+    return out;
 }
+
+// The time axis ends where the timeline's does: at the scene's length, or
+// where the run has got to past it (never at an empty tail).
+double RunPlots::span() const { return std::max(duration_, traces_.endTime()); }
 
 void RunPlots::setDuration(double seconds) {
     duration_ = std::max(0.1, seconds);
@@ -206,10 +219,7 @@ void RunPlots::append(const jl::Frame& frame) {
     // A ladder of another size: choose hinges and blocks that exist.
     if (traces_.hingeCount() != knownHinges_) {
         knownHinges_ = traces_.hingeCount();
-        std::vector<int> h, b;
-        for (int j = 1; j <= std::min(5, knownHinges_); ++j) h.push_back(j);
-        for (int i = 0; i < std::min(3, traces_.blockCount()); ++i) b.push_back(i);
-        setChosen(h, b);
+        setChosen(spreadOver(1, knownHinges_, kHingesPlotted), spreadOver(0, traces_.blockCount() - 1, kBlocksPlotted));
     }
     scheduleRefresh();
 }

@@ -99,6 +99,8 @@ private:
     int alignPasses_ = 0;
 };
 
+// Up to `count` indices from `first` to `last` (both included), evenly apart.
+std::vector<int> spreadOver(int first, int last, int count);
 // "1-3, 5" -> {1, 2, 3, 5}, kept within [lo, hi]; nonsense is skipped.
 std::vector<int> parseIndexList(const QString& text, int lo, int hi);
 QString indexListText(const std::vector<int>& indices);

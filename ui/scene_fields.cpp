@@ -35,6 +35,12 @@ NumberField ladderNumber(QString key, QString label, QString unit, QString tip, 
     return f;
 }
 
+// A number whose useful values span decades: kept to `decimals`, shown to `digits`.
+NumberField significant(NumberField f, int digits) {
+    f.significant = digits;
+    return f;
+}
+
 NumberField solverNumber(QString key, QString label, QString unit, QString tip, Shown range, double scale, int decimals,
                          bool scientific, double jl::SolverSpec::*member) {
     NumberField f;
@@ -140,11 +146,12 @@ std::vector<NumberField> ladderNumberFields() {
             "ribbonInset", tr("Ribbon inset"), "mm", tr("From a block's edge to an outer ribbon (drawing only)."),
             within(jl::range::inset, 1000), 1000, 1, [](const L& l) { return l.ribbons.inset; },
             [](L& l, double v) { l.ribbons.inset = v; }),
-        ladderNumber(
-            "damping", tr("Hinge damping"), "N·m·s",
-            tr("Viscous torque in free hinges; above about 1e-5 it stops long ripples."),
-            within(jl::range::angularDamping, 1), 1, 7, [](const L& l) { return l.hinges.damping; },
-            [](L& l, double v) { l.hinges.damping = v; }),
+        significant(ladderNumber(
+                        "damping", tr("Hinge damping"), "N·m·s",
+                        tr("Viscous torque in free hinges; above about 1e-5 it stops long ripples."),
+                        within(jl::range::angularDamping, 1), 1, 9, [](const L& l) { return l.hinges.damping; },
+                        [](L& l, double v) { l.hinges.damping = v; }),
+                    3),
         ladderNumber(
             "restitution", tr("Restitution"), "", tr("Bounce at a lock or fold, 0 (plastic) to just under 1."),
             within(jl::range::restitution, 1), 1, 3, [](const L& l) { return l.hinges.restitution; },

@@ -21,6 +21,7 @@ struct NumberField {
     double scale = 1;         // shown = SI * scale (mm for lengths)
     int decimals = 3;         // 0: an integer field
     bool scientific = false;  // tolerances: typed as 1e-8
+    int significant = 0;      // > 0: shown to this many significant digits (damping: 2e-05, not 0.0000200)
     SceneChange change = SceneChange::Ladder;
     std::function<double(const jl::Scene&)> get;  // SI
     std::function<void(jl::Scene&, double)> set;  // SI

@@ -20,6 +20,7 @@ const QColor kBackground(252, 252, 249);
 const QColor kGrid(232, 232, 226);
 const QColor kInk(40, 40, 46);
 const QColor kCornerInk(90, 40, 120);  // corner numbers: apart from block numbers at a glance
+const QColor kEventRing(200, 30, 30);  // round the hinge of an event at the instant on screen
 
 // Text with a pale halo, readable on wood, ribbon and background alike.
 void haloText(QPainter& p, const QPointF& centre, const QString& text, const QColor& ink) {
@@ -397,6 +398,12 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
         p.setPen(QPen(Qt::white, 1.2 * ui));
         p.setBrush(hingeColor(h.mode));
         p.drawEllipse(map(h.position), r, r);
+    }
+    // At an event's instant, a ring round its hinge: the eye finds it at once.
+    for (const int j : hingesAtInstant(*frame_)) {
+        p.setPen(QPen(kEventRing, 2.5 * ui));
+        p.setBrush(Qt::NoBrush);
+        p.drawEllipse(map(frame_->hinges[size_t(j - 1)].position), r + 5 * ui, r + 5 * ui);
     }
     // Blocks too thin on screen for a number at each corner (a whole ladder
     // in a small view): each hinge says at which corner k its blocks meet.

@@ -17,6 +17,7 @@
 #include <QMenu>
 #include <QMessageBox>
 #include <QProgressDialog>
+#include <QTimer>
 
 namespace jl::ui {
 
@@ -36,6 +37,7 @@ TeachingDocks::TeachingDocks(Document* doc, SimController* sim, QWidget* parent)
     connect(plots_, &RunPlots::seekRequested, sim, &SimController::seek);
     connect(doc, &Document::changed, this, &TeachingDocks::onSceneChanged);
     connect(pacing_, &Pacing::message, this, &TeachingDocks::say);
+    connect(lessonPanel_, &LessonPanel::editTextRequested, this, &TeachingDocks::editTextRequested);
     onSceneChanged();
 }
 
@@ -112,11 +114,22 @@ void TeachingDocks::setLook() {
     sideView_->setOptions(o);
 }
 
-void TeachingDocks::onSceneChanged() {
+void TeachingDocks::onSceneChanged(SceneChange change) {
     const jl::Scene& scene = doc_->scene();
     sideView_->setScene(scene);
     plots_->setDuration(scene.duration);
-    lessonPanel_->showScene(scene);
+    // New words describe the scene as it is; a change to the design (not a
+    // drag, not where the lesson ends) may leave the old ones wrong, unless
+    // it was undone back to the file. Whether it was is known once the undo
+    // stack has taken the edit (its command runs before it is counted).
+    if (change == SceneChange::Text) edited_ = false;
+    lessonPanel_->showScene(scene, edited_);
+    if (change == SceneChange::Text || change == SceneChange::Drags || change == SceneChange::Duration) return;
+    QTimer::singleShot(0, this, [this] {
+        if (edited_ == doc_->isModified()) return;
+        edited_ = doc_->isModified();
+        lessonPanel_->showScene(doc_->scene(), edited_);
+    });
 }
 
 void TeachingDocks::onStatus(std::shared_ptr<const SimStatus> s) {

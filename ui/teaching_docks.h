@@ -4,6 +4,7 @@
 // window: the window places the docks and menus they make.
 #pragma once
 
+#include "ui/scene_change.h"
 #include "ui/sim_status.h"
 
 #include <QObject>
@@ -52,12 +53,14 @@ signals:
     void lessonRequested(const QString& path);
     // A short message for the status bar.
     void message(const QString& text);
+    // The Lesson panel's link under an edited scene's note.
+    void editTextRequested();
 
 private:
     QDockWidget* dock(const QString& title, const QString& name, QWidget* w);
     void createMenus();
     void onStatus(std::shared_ptr<const jl::ui::SimStatus> s);
-    void onSceneChanged();
+    void onSceneChanged(SceneChange change = SceneChange::Whole);
     void setLook();
     void markLoop();
     void sideViewPicture();
@@ -85,6 +88,7 @@ private:
     QAction* cornerNumbers_ = nullptr;
     QAction* arrows_ = nullptr;
     std::optional<double> loopStart_;  // L pressed once: the loop starts here
+    bool edited_ = false;              // the design changed since its title and description were written
 };
 
 }  // namespace jl::ui

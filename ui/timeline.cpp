@@ -55,12 +55,14 @@ void Timeline::setState(double cursor, double recorded, std::shared_ptr<const st
     update();
 }
 
-// The scale grows in whole steps as the run goes past the scene's length.
-double Timeline::span() const {
-    double s = duration_;
-    while (recorded_ > s * 0.98) s *= 1.5;
-    return s;
+void Timeline::setLoop(std::optional<std::pair<double, double>> loop) {
+    loop_ = loop;
+    update();
 }
+
+// The axis ends at the scene's length, or where the run has got to once it
+// went on past it: an axis drawn further would promise time nobody asked for.
+double Timeline::span() const { return std::max(duration_, recorded_); }
 
 QFont Timeline::labelFont() const {
     QFont f = font();
@@ -116,6 +118,14 @@ void Timeline::paintEvent(QPaintEvent*) {
                pal.color(QPalette::Highlight).lighter(170));
     p.setPen(pal.color(QPalette::Mid));
     p.drawRect(r);
+    if (loop_) {
+        // A tinted stretch with a bar along its top: what L ... L repeats.
+        const QRectF band(QPointF(xOf(loop_->first), r.top()), QPointF(xOf(loop_->second), r.bottom()));
+        QColor tint = kLoopColor;
+        tint.setAlpha(50);
+        p.fillRect(band, tint);
+        p.fillRect(QRectF(band.left(), r.top() + 1, band.width(), 4), kLoopColor);
+    }
 
     p.setFont(labelFont());
     for (const Label& l : labels()) {

@@ -5,11 +5,14 @@
 
 #include "jl/sim/frame.h"
 
+#include <QColor>
 #include <QRectF>
 #include <QString>
 #include <QWidget>
 
 #include <memory>
+#include <optional>
+#include <utility>
 #include <vector>
 
 namespace jl::ui {
@@ -20,6 +23,9 @@ public:
     explicit Timeline(QWidget* parent = nullptr);
     void setDuration(double seconds);  // the scene's suggested length
     void setState(double cursor, double recorded, std::shared_ptr<const std::vector<jl::Event>> events);
+    // The stretch being looped (L ... L), drawn as a bar along the track's top; none: no loop.
+    void setLoop(std::optional<std::pair<double, double>> loop);
+    static inline const QColor kLoopColor{230, 150, 0};
     QSize sizeHint() const override;
     // The time labels under the track: their tick's x, their text and where
     // they are drawn (always inside the widget, whatever the type's size).
@@ -52,6 +58,7 @@ private:
 
     double duration_ = 5, cursor_ = 0, recorded_ = 0;
     std::shared_ptr<const std::vector<jl::Event>> events_;
+    std::optional<std::pair<double, double>> loop_;
 };
 
 }  // namespace jl::ui

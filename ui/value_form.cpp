@@ -13,6 +13,30 @@
 
 namespace jl::ui {
 
+namespace {
+// A spin box that shows its value to a few significant digits ("2e-05",
+// "0.0003", "0"): with the decimals a small damping needs, every value read
+// "0.0000000".
+class SignificantSpinBox : public QDoubleSpinBox {
+public:
+    SignificantSpinBox(int digits, QWidget* parent) : QDoubleSpinBox(parent), digits_(digits) {}
+    QString textFromValue(double v) const override { return locale().toString(v, 'g', digits_); }
+    double valueFromText(const QString& text) const override { return locale().toDouble(number(text)); }
+    QValidator::State validate(QString& text, int&) const override {
+        bool ok = false;
+        const double v = locale().toDouble(number(text), &ok);
+        return ok && v >= minimum() && v <= maximum() ? QValidator::Acceptable : QValidator::Intermediate;
+    }
+
+private:
+    QString number(QString text) const {
+        if (text.endsWith(suffix())) text.chop(suffix().size());
+        return text.trimmed();
+    }
+    int digits_;
+};
+}  // namespace
+
 ValueForm::ValueForm(Document* doc, std::vector<NumberField> fields, QWidget* parent)
     : QWidget(parent), doc_(doc), fields_(std::move(fields)), form_(new QFormLayout(this)) {
     form_->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
@@ -54,7 +78,7 @@ QWidget* ValueForm::makeEditor(const NumberField& f) {
         connect(spin, &QSpinBox::valueChanged, this, [this, f](int v) { changeNumber(doc_, f, v / f.scale); });
         return spin;
     }
-    auto* spin = new QDoubleSpinBox(this);
+    auto* spin = f.significant > 0 ? new SignificantSpinBox(f.significant, this) : new QDoubleSpinBox(this);
     spin->setRange(f.min, f.max);
     spin->setDecimals(f.decimals);
     spin->setSingleStep(std::pow(10.0, -std::min(f.decimals, 2)));

@@ -5,6 +5,8 @@
 // mouse drags: test_drag_replay.cpp).
 #include "example_runs.h"
 #include "playback_fixture.h"
+#include "ui/run_plots.h"
+#include "ui/timeline.h"
 
 #include <QLabel>
 #include <QMessageBox>
@@ -12,6 +14,7 @@
 #include <QTimer>
 #include <QToolBar>
 #include <QUndoStack>
+#include <QValueAxis>
 #include <QtTest>
 
 #include <cmath>
@@ -387,6 +390,42 @@ private slots:
         QVERIFY2(std::abs(end->frame->time - 0.5) <= end->interval, qPrintable(QString::number(end->frame->time)));
         f.sim->play();
         QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.frame && s.frame->time > 0.6; }));
+    }
+
+    // The timeline of a 0.5 s lesson ends at 0.5 s (it was drawn to 0.75 s,
+    // an empty tail), and once the run goes on past it, at the run's end.
+    void theTimelineEndsAtTheScenesDurationOrTheRunsEnd() {
+        Fixture f(halfSecondLesson());
+        QVERIFY(playToTheEnd(f));
+        auto* timeline = f.window.findChild<Timeline*>();
+        QVERIFY(timeline);
+        const double right = timeline->width() - 8;  // the track's right end
+        QCOMPARE(f.sim->status()->headTime, 0.5);
+        QTRY_COMPARE(timeline->xOf(0.5), right);  // once the timeline has the run's end
+        QCOMPARE(timeline->labels().back().text, QString("0.5 s"));
+        // The plots' time axis ends there too.
+        auto* plots = f.window.findChild<RunPlots*>();
+        QVERIFY(plots);
+        const auto* axis = qobject_cast<QValueAxis*>(plots->energyChart()->chart()->axes(Qt::Horizontal).value(0));
+        QVERIFY(axis);
+        QTRY_COMPARE(axis->max(), 0.5);
+        // A click near the right end, off any event's mark, shows the last frames.
+        int x = int(right) - 1;
+        while (timeline->eventNear(x)) --x;
+        const double dt = f.sim->status()->interval;
+        const double expected = 0.5 * (x - 8) / (right - 8);  // the time under x
+        QTest::mouseClick(timeline, Qt::LeftButton, {}, QPoint(x, timeline->height() / 3));
+        QVERIFY(jl::test::waitForStatus(f.sim, [&](const SimStatus& s) {
+            return s.seekingTo < 0 && s.frame && s.frame->time < 0.5 - 1e-9 && std::abs(s.frame->time - expected) <= dt;
+        }));
+        f.sim->play();  // the last frames: it stops at the end again, then goes on past it
+        QVERIFY(jl::test::waitForStatus(
+            f.sim, [](const SimStatus& s) { return !s.playing && s.frame && s.frame->time > 0.5 - 1e-9; }));
+        f.sim->play();
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.frame && s.frame->time > 0.6; }));
+        f.sim->pause();
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return !s.playing; }));
+        QTRY_COMPARE(timeline->xOf(f.sim->status()->headTime), right);
     }
 
     // At the scene's end, an edit runs the scene again up to there; one click

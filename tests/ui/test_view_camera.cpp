@@ -382,6 +382,36 @@ private slots:
         const QString problem = framingProblem(w);
         QVERIFY2(problem.isEmpty(), qPrintable(problem));
     }
+
+    // Zoomed in on the bottom of a long ladder, an undo back to six blocks
+    // left a view of empty room until F: a view that shows none of the
+    // ladder after a change of its size frames it.
+    void anUndoFromAZoomedViewStillShowsTheLadder() {
+        MainWindow w(jl::test::quietWindow());
+        QVERIFY(showScene(w, kClassic));
+        auto* blocks = w.findChild<QSpinBox*>("blocks");
+        const auto before = jl::test::loadsSoFar(w.controller());
+        blocks->setFocus();
+        blocks->selectAll();
+        QTest::keyClicks(blocks, "200");
+        QTest::keyClick(blocks, Qt::Key_Return);
+        QVERIFY(jl::test::loadedAfter(w.controller(), before));
+        QVERIFY(QTest::qWaitFor([&] { return w.controller()->status()->frame->poses.size() == 200; }));
+        QTest::qWait(200);
+        const QPointF bottom = w.ladderView()->pixelOf(w.controller()->status()->frame->poses[190].position);
+        QWheelEvent wheel(bottom, w.ladderView()->mapToGlobal(bottom), {}, QPoint(0, 120 * 12), Qt::NoButton,
+                          Qt::NoModifier, Qt::NoScrollPhase, false);
+        QCoreApplication::sendEvent(w.ladderView(), &wheel);
+        QVERIFY(!framingProblem(w).isEmpty());
+        const auto edited = jl::test::loadsSoFar(w.controller());
+        QVERIFY(jl::test::clickToolButton(w, "&Undo"));
+        QCOMPARE(w.document()->scene().ladder->blocks, 6);
+        QVERIFY(jl::test::loadedAfter(w.controller(), edited));
+        QVERIFY(QTest::qWaitFor([&] { return w.controller()->status()->frame->poses.size() == 6; }));
+        QTest::qWait(200);
+        const QString problem = framingProblem(w);
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
+    }
 };
 
 QTEST_MAIN(ViewCameraTest)

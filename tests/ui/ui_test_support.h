@@ -8,11 +8,13 @@
 #include "ui/sim_controller.h"
 #include "ui/time_chart.h"
 
+#include <QAction>
 #include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QGraphicsTextItem>
 #include <QStandardPaths>
 #include <QTest>
+#include <QToolBar>
 #include <Qt3DRender/QRenderCapture>
 
 #include <memory>
@@ -40,6 +42,19 @@ inline void isolateSettings() {
 }
 
 inline jl::ui::MainWindow::Options quietWindow() { return {false, false}; }
+
+// Clicks the main toolbar's button whose action's text starts with `text`
+// ("&Undo", "&Play"), as a user does; false when there is none.
+inline bool clickToolButton(jl::ui::MainWindow& w, const QString& text) {
+    auto* bar = w.findChild<QToolBar*>("mainToolBar");
+    if (!bar) return false;
+    for (QAction* a : bar->actions())
+        if (a->text().startsWith(text)) {
+            QTest::mouseClick(bar->widgetForAction(a), Qt::LeftButton);
+            return true;
+        }
+    return false;
+}
 
 // Waits (running the event loop) until the newest status satisfies `pred`.
 template <typename Pred>
