@@ -8,8 +8,9 @@ JL_PACKAGES=(build-essential cmake ninja-build qt6-base-dev qt6-3d-dev
   nlohmann-json3-dev
   libgl1-mesa-dev xvfb xauth)
 # What only ./test.sh needs: a window manager and xwininfo for the window's
-# fit on the screen, clang-format for the house style.
-JL_TEST_PACKAGES=(openbox x11-utils clang-format)
+# fit on the screen, clang-format for the house style, GNU parallel for
+# the design map computed in shares.
+JL_TEST_PACKAGES=(openbox x11-utils clang-format parallel)
 
 # jl_missing_packages [more packages...]: those of JL_PACKAGES and the more not installed.
 jl_missing_packages() {
