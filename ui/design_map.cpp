@@ -1,6 +1,7 @@
 #include "ui/design_map.h"
 
 #include "jl/base/csv_writer.h"
+#include "jl/design/design_check.h"
 #include "ui/design_map_cache.h"
 #include "ui/design_map_grid.h"
 
@@ -286,6 +287,13 @@ void DesignMap::showMap() {
         problem = tr("Each range must run upwards: from at most to.");
     else if (int(xs_.size()) > kMostPerAxis || int(ys_.size()) > kMostPerAxis)
         problem = tr("At most %1 values per axis: widen the step.").arg(kMostPerAxis);
+    else
+        // The scene file's ranges and loader, as for `jladder reach`: one
+        // validation of a field, whichever way its value comes in.
+        for (const jl::DesignAxis& a : {x, y})
+            if (const std::string why = jl::axisProblem(doc_->scene(), a, std::size_t(kMostPerAxis));
+                problem.isEmpty() && !why.empty())
+                problem = QString::fromStdString(why);
     if (!problem.isEmpty()) {
         xs_.clear(), ys_.clear();
         grid_->setAxes(axisTitle(sx), {}, axisTitle(sy), {});

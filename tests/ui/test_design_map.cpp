@@ -16,6 +16,7 @@
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QImage>
+#include <QLabel>
 #include <QPainter>
 #include <QProgressBar>
 #include <QPushButton>
@@ -148,6 +149,28 @@ private slots:
         QVERIFY(!again.running());
         QCOMPARE(done.count(), 1);
         QCOMPARE(ReachCache::shared().size(), cached);
+    }
+
+    // The map's axes meet the scene file's own checks, as `jladder reach`'s
+    // do: a ladder held at blocks 0 and 5 cannot be shortened to 4 blocks.
+    // The map says so and runs nothing; it used to start all four cells.
+    void anAxisTheSceneCannotTakeRunsNothing() {
+        Document doc;
+        jl::Scene s = doc.scene();
+        s.ladder->blocks = 6;
+        s.ladder->held = {0, 5};
+        doc.reset(s, QString());
+        DesignMap map(&doc);
+        map.setAxes(kBlocks, kThickness);
+        auto* compute = map.findChild<QPushButton*>("computeMap");
+        QVERIFY(compute);
+        QTest::mouseClick(compute, Qt::LeftButton);
+        QCOMPARE(map.cellsToRun(), 0);
+        QVERIFY(!map.running());
+        auto* status = map.findChild<QLabel*>("mapStatus");
+        QVERIFY(status);
+        qInfo("%s", qPrintable(status->text()));
+        QVERIFY(status->text().contains("held"));
     }
 
     void cancelStopsTheRuns() {
