@@ -336,9 +336,9 @@ void Simulation::applyScriptAction(const ScriptAction& a) {
 // mass-weighted projection onto the new pin) and their motion is merged
 // (velocities only: a plastic impact, the merge of a rigid pair and the
 // projection onto the pin). The books, as for the ladder's own impacts:
-// the pull's change of potential energy is the user's work; the merge loses
-// kinetic energy in the frame of the held block (impact dissipation, >= 0)
-// and the held blocks' impulses do the rest of its change (held work).
+// the pull's change of potential energy is the user's work; the merge
+// dissipates the energy of its velocity jump (>= 0, in any frame) and the
+// held blocks' impulses do the rest of the change (held work).
 // Hinges the pull drove past their limits are settled at once by the
 // ladder's events; their snaps finish the pull (user's work too).
 // Refused, leaving the world as it was, when it would not make a hinge:
@@ -360,15 +360,12 @@ std::optional<std::string> Simulation::join(const ScriptAction& a) {
         hinge ? ladder_->hinge(*hinge).own[size_t(4 + a.corner)] : ladder_->particle(a.otherBlock, a.otherCorner);
     const World saved = world_;
     const Energy e0 = energy(world_);
-    const double k0 = heldFrameKinetic(world_);
+    const std::vector<Twist> before = world_.partVelocities();
     if (auto e = world_.combine(p, q, false)) return e->message;  // refused by the world: nothing changed
-    const double k1 = heldFrameKinetic(world_);
     PinSolver solver;
     const double tolerance = scene_.solver.projectionTolerance;
     const ProjectionResult pulled = projectPositions(world_, solver, tolerance);
-    const double k2 = heldFrameKinetic(world_);
     projectVelocities(world_, solver);
-    const double k3 = heldFrameKinetic(world_);
     if (!pulled.converged || !(particleSpread(world_, p) <= tolerance) || !world_.q.allFinite() ||
         !world_.v.allFinite()) {
         world_ = saved;
@@ -377,7 +374,10 @@ std::optional<std::string> Simulation::join(const ScriptAction& a) {
                                 : "the pull onto the new pin did not converge";
     }
     const Energy e1 = energy(world_);
-    const double dissipated = (k0 - k1) + (k2 - k3);
+    // The merge's loss is the energy of its velocity jump in the mass
+    // metric, held parts left out (as a grab's and an impact's): it needs
+    // no frame, and a moving hand's share goes to the held work below.
+    const double dissipated = jumpEnergy(world_, before);
     ledger_.user += e1.potential - e0.potential;
     impactLoss_ += dissipated;
     impactHeldWork_ += e1.kinetic - e0.kinetic + dissipated;
