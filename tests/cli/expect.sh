@@ -21,3 +21,13 @@ expect() {
 expect_message() {
     grep -q -- "$1" err.txt || fail "no message '$1' in: $(head -c 300 err.txt)"
 }
+
+# Sourced as `source expect.sh "$@"` by a test run as TEST JLADDER
+# [SOURCE_DIR] WORK_DIR: sets $jladder, $source (when given) and $work,
+# and runs the rest in an empty $work.
+if [ $# -ge 2 ]; then
+    jladder=$1
+    work=${!#}
+    if [ $# -ge 3 ]; then source=$2; fi
+    rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
+fi

@@ -7,11 +7,7 @@
 # c/I for air damping on a block of inertia m (l^2 + t^2) / 12.
 # Usage: jladder_diagnoses.sh JLADDER SOURCE_DIR WORK_DIR
 set -u
-jladder=$1
-source=$2
-work=$3
-source "$(cd "$(dirname "$0")" && pwd)/expect.sh"
-rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
+source "$(cd "$(dirname "$0")" && pwd)/expect.sh" "$@"
 
 # A 1 mg particle on a 1e7 N/m spring: omega = sqrt(1e7 / 1e-6) = 3.16e6 rad/s,
 # a period of 2 pi / omega = 1.99e-6 s. Nothing is held.

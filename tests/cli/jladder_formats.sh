@@ -5,12 +5,8 @@
 # and titles it was given; and a title XML cannot hold is refused.
 # Usage: jladder_formats.sh JLADDER SOURCE_DIR WORK_DIR
 set -u
-jladder=$1
-source=$2
-work=$3
 check="python3 $(cd "$(dirname "$0")" && pwd)/check_formats.py"
-source "$(cd "$(dirname "$0")" && pwd)/expect.sh"
-rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
+source "$(cd "$(dirname "$0")" && pwd)/expect.sh" "$@"
 
 # strict KIND FILE...: each file read by the strict reader.
 strict() {

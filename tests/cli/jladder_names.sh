@@ -5,11 +5,7 @@
 # stopped early computed never lands on a file the run did not create.
 # Usage: jladder_names.sh JLADDER SOURCE_DIR WORK_DIR
 set -u
-jladder=$1
-source=$2
-work=$3
-source "$(cd "$(dirname "$0")" && pwd)/expect.sh"
-rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
+source "$(cd "$(dirname "$0")" && pwd)/expect.sh" "$@"
 
 # same FILE ORIGINAL: FILE unchanged; put back if not, for the next case.
 same() {

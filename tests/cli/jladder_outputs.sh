@@ -3,11 +3,7 @@
 # report success when something was not written, and keep what a run that
 # stopped early computed. Usage: jladder_outputs.sh JLADDER SOURCE_DIR WORK_DIR
 set -u
-jladder=$1
-source=$2
-work=$3
-source "$(cd "$(dirname "$0")" && pwd)/expect.sh"
-rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
+source "$(cd "$(dirname "$0")" && pwd)/expect.sh" "$@"
 
 same() {
     cmp -s "$1" "$2" || fail "$1 changed"

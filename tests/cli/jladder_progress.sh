@@ -7,11 +7,7 @@
 # command a terminal.
 # Usage: jladder_progress.sh JLADDER SOURCE_DIR WORK_DIR
 set -u
-jladder=$1
-source=$2
-work=$3
-source "$(cd "$(dirname "$0")" && pwd)/expect.sh"
-rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
+source "$(cd "$(dirname "$0")" && pwd)/expect.sh" "$@"
 command -v script >/dev/null || {
     echo "script (util-linux) is not installed"
     exit 1

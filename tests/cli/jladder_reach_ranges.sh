@@ -7,10 +7,7 @@
 # answer. Counts (--jobs) are whole numbers, written as such.
 # Usage: jladder_reach_ranges.sh JLADDER WORK_DIR
 set -u
-jladder=$1
-work=$2
-source "$(cd "$(dirname "$0")" && pwd)/expect.sh"
-rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
+source "$(cd "$(dirname "$0")" && pwd)/expect.sh" "$@"
 
 # refused MESSAGE ARGS...: exit 2, MESSAGE on stderr, no map written; quick
 # (a check, not a run: well under the timeout's seconds).

@@ -6,10 +6,7 @@
 # shows: with GNU parallel when it is installed, else one after another.
 # Usage: jladder_reach_shares.sh JLADDER WORK_DIR
 set -u
-jladder=$1
-work=$2
-source "$(cd "$(dirname "$0")" && pwd)/expect.sh"
-rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
+source "$(cd "$(dirname "$0")" && pwd)/expect.sh" "$@"
 
 # A small map: 3 x 2 cells of short ladders (a few seconds in all).
 axes=(--blocks 2:4:1 --thickness 8mm:12mm:4mm)
