@@ -1,16 +1,9 @@
 #!/usr/bin/env bash
 # jladder reach as a user meets it: a design map written as CSV and SVG, the
 # same bytes whatever the number of threads; bad axes refused with a message.
-# Usage: jladder_reach.sh JLADDER WORK_DIR
+# Usage: jladder_reach.sh JLADDER [SOURCE_DIR] WORK_DIR
 set -u
-jladder=$1
-work=$2
-rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
-failures=0
-fail() {
-    echo "FAIL: $*" >&2
-    failures=$((failures + 1))
-}
+source "$(cd "$(dirname "$0")" && pwd)/expect.sh" "$@"
 
 for jobs in 1 2; do
     "$jladder" reach --blocks 4:8:2 --thickness 6mm:12mm:6mm --jobs $jobs --csv map$jobs.csv --svg map$jobs.svg \
