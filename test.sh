@@ -10,19 +10,20 @@ set -euo pipefail
 cd "$(dirname "$0")"
 source tools/setup.sh
 jl_install "${JL_TEST_PACKAGES[@]}"
-jl_build build
+# Warnings are errors in our own code here (not for a user's ./run.sh).
+jl_build build -DJL_WERROR=ON
 
 xvfb() { xvfb-run -a -s "-screen 0 1600x1000x24" "$@"; }
 
 if [ "${JL_SANITIZERS:-1}" = 1 ]; then
   echo "== AddressSanitizer + UndefinedBehaviorSanitizer (engine, ladder, loader, fuzz)"
-  jl_configure build-asan -DJL_SANITIZE_ADDRESS=ON -DJL_BUILD_UI=OFF
+  jl_configure build-asan -DJL_SANITIZE_ADDRESS=ON -DJL_BUILD_UI=OFF -DJL_WERROR=ON
   jl_compile build-asan
   ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     ctest --test-dir build-asan --output-on-failure --timeout 900 -L "engine|ladder|io|fuzz"
 
   echo "== ThreadSanitizer (the worker hand-off)"
-  jl_configure build-tsan -DJL_SANITIZE_THREAD=ON
+  jl_configure build-tsan -DJL_SANITIZE_THREAD=ON -DJL_WERROR=ON
   jl_compile build-tsan test_worker_handoff
   TSAN_OPTIONS="halt_on_error=1 suppressions=$PWD/tests/tsan/qt.supp" \
     xvfb ctest --test-dir build-tsan --output-on-failure --timeout 900 -R '^test_worker_handoff$'

@@ -37,11 +37,14 @@ jl_install() {
   fi
 }
 
-# jl_configure DIR [cmake options...]: configure once (Release, Ninja).
+# jl_configure DIR [cmake options...]: configure once (Release, Ninja); an
+# existing build takes the options given again into its cache.
 jl_configure() {
   local dir=$1; shift
   if [ ! -f "$dir/build.ninja" ]; then
     cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@"
+  elif [ $# -gt 0 ]; then
+    cmake -B "$dir" "$@" >/dev/null
   fi
 }
 
