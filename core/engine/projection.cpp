@@ -1,5 +1,6 @@
 #include "jl/engine/projection.h"
 
+#include "jl/engine/energy.h"
 #include "jl/engine/turns.h"
 #include "jl/engine/world.h"
 
@@ -171,6 +172,14 @@ void projectVelocities(World& w, PinSolver& solver, Eigen::VectorXd* impulses, C
         impulses->head(x.size()) = x;
         impulses->tail(push.size()) = push;
     }
+}
+
+double bounce(World& w, PinSolver& solver, const std::vector<Twist>& before, double e) {
+    const double plasticJump = jumpEnergy(w, before);
+    const std::vector<Twist> bouncing = bounced(before, w.partVelocities(), e);
+    w.setPartVelocities(bouncing);
+    projectVelocities(w, solver);
+    return (1 - e * e) * plasticJump + jumpEnergy(w, bouncing);
 }
 
 ProjectionResult makeConsistent(World& w, PinSolver& solver, double tolerance, bool contacts) {

@@ -319,8 +319,7 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
     const std::vector<Twist> before = w.partVelocities();
     const double keBefore = energy(w).kinetic;
     projectVelocities(w, d.solver());
-    const double plasticJump = jumpEnergy(w, before);
-    double kept = 1.0;
+    double dissipated = jumpEnergy(w, before);
     const HingeOptions& hinges = ladder.hingeOptions();
     const double e = hinges.restitution;
     if (e > 0) {
@@ -336,13 +335,8 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
                 events.push_back({t, EventKind::Bounce, -1, -1, words("bounces off", c)});
                 anyBounce = true;
             }
-        if (anyBounce) {
-            w.setPartVelocities(bounced(before, w.partVelocities(), e));
-            projectVelocities(w, d.solver());
-            kept = 1 - e * e;
-        }
+        if (anyBounce) dissipated = bounce(w, d.solver(), before, e);
     }
-    const double dissipated = kept * plasticJump;
     *loss += dissipated;
     *heldWork += energy(w).kinetic - keBefore + dissipated;
     return events;

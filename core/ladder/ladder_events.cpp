@@ -154,6 +154,9 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
         const double r = hinge(j).lastRebound;
         if (r > 0 && (rebound == 0 || r < rebound)) rebound = r;
     };
+    // Every approach speed before any hit merges its pair: a merge gives the
+    // pair one velocity, which changes the rate of the hinge next to it.
+    for (size_t i = 0; i < hits.size(); ++i) approach[i] = std::abs(foldRate(w, hits[i]));
     for (size_t i = 0; i < hits.size(); ++i) {
         const int j = hits[i];
         const bool folding = hinge(j).foldAngle > kPi / 2;
@@ -166,7 +169,6 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
                          " s): a lock between two hands is not modelled; let go of one of them first";
             return events;
         }
-        approach[i] = std::abs(foldRate(w, j));
         if (folding)
             fold(w, j);
         else
@@ -213,32 +215,22 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
         settled = !driven;
     }
     if (!settled) capped(t, "an impact's contacts");
-    const double plasticJump = jumpEnergy(w, before);
-    bool bouncedAtAll = false;
+    double dissipated = jumpEnergy(w, before);
     // Restitution: phi_dot+ = -e phi_dot- for the hinges that were hit.
     const double e = spec_.hinges.restitution;
-    if (e > 0) {
-        const std::vector<Twist> plastic = w.partVelocities();
-        bool anyBounce = false;
-        for (size_t i = 0; i < hits.size(); ++i) {
-            const int j = hits[i];
-            const HingeMode mode = hinge(j).mode;
-            if ((mode != HingeMode::OpenLocked && mode != HingeMode::Folded) || hinge(j).held ||
-                e * approach[i] <= spec_.hinges.minReboundSpeed)
-                continue;
-            release(w, j, mode == HingeMode::OpenLocked ? EventKind::Unlock : EventKind::Unfold, t, rebound);
-            events.push_back({t, EventKind::Bounce, j, hinge(j).corner, {}});
-            anyBounce = true;
-        }
-        bouncedAtAll = anyBounce;
-        if (anyBounce) {
-            w.setPartVelocities(bounced(before, plastic, e));
-            projectVelocities(w, d.solver());
-        }
+    bool anyBounce = false;
+    for (size_t i = 0; e > 0 && i < hits.size(); ++i) {
+        const int j = hits[i];
+        const HingeMode mode = hinge(j).mode;
+        if ((mode != HingeMode::OpenLocked && mode != HingeMode::Folded) || hinge(j).held ||
+            e * approach[i] <= spec_.hinges.minReboundSpeed)
+            continue;
+        release(w, j, mode == HingeMode::OpenLocked ? EventKind::Unlock : EventKind::Unfold, t, rebound);
+        events.push_back({t, EventKind::Bounce, j, hinge(j).corner, {}});
+        anyBounce = true;
     }
-    // The plastic jump dissipates its own energy in the mass metric; a bounce
-    // v+ = v- + (1 + e) dv keeps e^2 of it (docs/model.md section 12.3).
-    const double dissipated = (bouncedAtAll ? 1 - e * e : 1.0) * plasticJump;
+    // Releases restructure only: the parts keep their plastic velocities.
+    if (anyBounce) dissipated = bounce(w, d.solver(), before, e);
     *loss += dissipated;
     *heldWork += energy(w).kinetic - keBefore + dissipated;
     return events;

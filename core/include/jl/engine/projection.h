@@ -41,6 +41,16 @@ enum class ContactRule { PushOnly, Hold };
 void projectVelocities(World& w, PinSolver& solver, Eigen::VectorXd* impulses = nullptr,
                        ContactRule contacts = ContactRule::PushOnly);
 
+// A bounce after a plastic impact, the world at its plastic velocities
+// (restructured as the bounce leaves it): Newton's law from the part
+// velocities `before` the impact, v +
+// (1 + e)(v_plastic - v), then projected onto the constraints that stay
+// closed (a hinge too slow to rebound, one the impact locked): that is a
+// second, plastic jump. Returns what the whole impact dissipates, (1 - e^2)
+// of the plastic jump's energy and all of the second's (docs/model.md
+// section 12.3).
+double bounce(World& w, PinSolver& solver, const std::vector<Twist>& before, double e);
+
 // Both, after a change of structure (combine, separate, hold), with the
 // caller's solver: reset first, so nothing but its capacity carries over.
 ProjectionResult makeConsistent(World& w, PinSolver& solver, double tolerance, bool contacts = true);
