@@ -237,7 +237,6 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
 }
 
 std::vector<Event> Ladder::push(World& w, Dynamics& d, double t, int i, const Vec2& local, const Vec2& impulse) {
-    std::vector<Event> events;
     const PartId p = block(i);
     const Part& part = w.part(p);
     // The velocities the impulse gives the block on its own: a block locked
@@ -247,6 +246,12 @@ std::vector<Event> Ladder::push(World& w, Dynamics& d, double t, int i, const Ve
     const Vec2 arm = w.pointPosition(p, local) - w.partPose(p).position;
     before[size_t(p)].linear += impulse / part.mass;
     if (part.inertia > 0) before[size_t(p)].angular += cross(arm, impulse) / part.inertia;
+    return takeUp(w, d, t, before, "a push's contacts");
+}
+
+std::vector<Event> Ladder::takeUp(World& w, Dynamics& d, double t, const std::vector<Twist>& before,
+                                  const std::string& what) {
+    std::vector<Event> events;
     Eigen::VectorXd impulses;
     const Impact im{&before, &impulses};
     std::vector<int> kept;
@@ -264,7 +269,7 @@ std::vector<Event> Ladder::push(World& w, Dynamics& d, double t, int i, const Ve
         release(w, pull->first, pull->second, t);
         events.push_back({t, pull->second, pull->first, hinge(pull->first).corner, words(pull->second, pull->first)});
     }
-    if (!settled) capped(t, "a push's contacts");
+    if (!settled) capped(t, what);
     return events;
 }
 

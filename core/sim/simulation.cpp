@@ -243,16 +243,22 @@ double Simulation::nextScheduledTime() const {
 // energy of the velocity jump is dissipated, the rest is the hand's work. A held block is outside the books (its energy
 // is the hand's), so its own kinetic and potential energy leave them as the hand's work too. The force tests follow
 // (applyDueInputs runs them after any action).
-void Simulation::grab(PartId part) {
+std::vector<Event> Simulation::grab(PartId part) {
     const double before = energy(world_).total();
     const std::vector<Twist> velocities = world_.partVelocities();
     world_.hold(part, Drive(world_.partPose(part)));
     world_.updateKinematics(t_);
-    projectVelocities(world_, dynamics_.solver());
+    // A neighbour locked or folded to the block that would move away from
+    // it goes on: its contact would have to pull to stop it.
+    std::vector<Event> released;
+    if (ladder_)
+        released = ladder_->takeUp(world_, dynamics_, t_, velocities, "a grab's contacts");
+    else
+        projectVelocities(world_, dynamics_.solver());
     const double dissipated = jumpEnergy(world_, velocities);
     impactLoss_ += dissipated;
     impactHeldWork_ += energy(world_).total() - before + dissipated;
-    if (ladder_) ladder_->updateAngles(world_);
+    return released;
 }
 
 void Simulation::applyScriptAction(const ScriptAction& a) {
@@ -264,10 +270,11 @@ void Simulation::applyScriptAction(const ScriptAction& a) {
     if (a.kind == K::Join) wakeThrough(a.otherBlock);
     const PartId part = blockOk ? blockPart(a.block) : 0;
     Event e{t_, EventKind::Script, -1, -1, {}};
+    std::vector<Event> released;  // contacts the action opened
     switch (a.kind) {
         case K::Turn:
         case K::Move: {
-            if (!world_.isHeld(part)) grab(part);
+            if (!world_.isHeld(part)) released = grab(part);
             const double turn = a.kind == K::Turn ? a.angle : 0.0;
             const Vec2 offset = a.kind == K::Move ? vec(a.offset) : Vec2::Zero();
             world_.drive(part)->add({a.at, a.duration, offset, turn});
@@ -276,7 +283,7 @@ void Simulation::applyScriptAction(const ScriptAction& a) {
             break;
         }
         case K::Hold:
-            grab(part);
+            released = grab(part);
             e.text = "the hand holds block " + std::to_string(a.block);
             break;
         case K::Release: {
@@ -296,7 +303,6 @@ void Simulation::applyScriptAction(const ScriptAction& a) {
             const double before = energy(world_).kinetic;
             const Vec2 local = vec(a.point), impulse = vec(a.impulse);
             const Vec2 v0 = world_.pointVelocity(part, local);
-            std::vector<Event> released;
             if (ladder_) {
                 released = ladder_->push(world_, dynamics_, t_, a.block, local, impulse);
             } else {
@@ -309,8 +315,7 @@ void Simulation::applyScriptAction(const ScriptAction& a) {
             const double work = 0.5 * impulse.dot(v0 + world_.pointVelocity(part, local));
             ledger_.user += work;
             impactHeldWork_ += energy(world_).kinetic - before - work;
-            record({t_, EventKind::Script, -1, -1, "block " + std::to_string(a.block) + " is pushed"});
-            for (Event& r : released) record(r);
+            e.text = "block " + std::to_string(a.block) + " is pushed";
             break;
         }
         case K::Cut:
@@ -330,6 +335,7 @@ void Simulation::applyScriptAction(const ScriptAction& a) {
             break;
     }
     if (!e.text.empty()) record(e);
+    for (Event& r : released) record(r);
 }
 
 // A scripted join: the two corners are pulled together (positions only: the

@@ -140,6 +140,12 @@ public:
     // locked or folded contact it would pull is released (most negative
     // first, the slow-release rule included) and P taken up again. Returns the releases.
     std::vector<Event> push(World& w, Dynamics& d, double t, int i, const Vec2& local, const Vec2& impulse);
+    // The part velocities `before` a jump that the world's constraints must
+    // take up (a push added in, or a block the hand has just taken hold
+    // of), with the same active set: every contact closed, one that would
+    // pull released and the jump taken up again. Returns the releases.
+    std::vector<Event> takeUp(World& w, Dynamics& d, double t, const std::vector<Twist>& before,
+                              const std::string& what);
 
     // Contact forces of hinge j in the state last evaluated by d.
     HingeContact contact(const World& w, const Dynamics& d, int j) const;

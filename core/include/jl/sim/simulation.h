@@ -126,7 +126,7 @@ private:
     double nextScheduledTime() const;
     void applyDueInputs();
     void applyScriptAction(const ScriptAction& a);
-    void grab(PartId part);
+    std::vector<Event> grab(PartId part);  // the contacts it opened
     // A scripted join; the reason if refused (the world unchanged then).
     std::optional<std::string> join(const ScriptAction& a);
     void applyDragSample(const DragRecord& d, const DragRecord::Sample& s);
