@@ -25,6 +25,8 @@ void showControlsSheet(QWidget* window) {
     const QString mouse = QObject::tr(
         "<tr><td><b>Left-drag a block</b></td><td>push it with a spring (a held block: move the hand); recorded, so "
         "a replay repeats it</td></tr>"
+        "<tr><td><b>Shift + left-drag a block</b></td><td>the hand turns it about its centre: sweep round it; the "
+        "angle snaps to quarter turns, the turn takes as long as you did; a script row, undoable</td></tr>"
         "<tr><td><b>Left-drag off the blocks, or right-drag</b></td><td>orbit the camera about the ladder</td></tr>"
         "<tr><td><b>Middle-drag</b></td><td>pan</td></tr>"
         "<tr><td><b>Wheel</b></td><td>zoom toward the pointer</td></tr>"

@@ -8,6 +8,7 @@
 
 #include <QKeyEvent>
 #include <QMouseEvent>
+#include <QToolTip>
 #include <QWheelEvent>
 #include <Qt3DExtras/QForwardRenderer>
 #include <Qt3DRender/QCamera>
@@ -16,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace jl::ui {
 
@@ -292,7 +294,11 @@ void LadderView::mousePressEvent(QMouseEvent* e) {
     if (e->button() == Qt::LeftButton && !walk_) {
         const auto p = planePoint(e->position());
         const auto grab = p ? grabAt(*p) : std::nullopt;
-        if (grab) {
+        if (grab && (e->modifiers() & Qt::ShiftModifier)) {
+            turning_.emplace(grab->block, shownPoses_[size_t(grab->block)].position, *p);
+            turnShownTime_ = shownTime_;
+            turnClock_.start();
+        } else if (grab) {
             dragging_ = true;
             grabbed_ = -1;
             emit dragBegun(*p, grab->block, grab->local, shownTime_);
@@ -319,6 +325,13 @@ void LadderView::mouseMoveEvent(QMouseEvent* e) {
     lastMouse_ = e->position();
     if (dragging_) {  // until the release, whatever else the buttons do
         if (const auto p = planePoint(e->position())) emit dragMoved(*p);
+    } else if (turning_) {
+        if (const auto p = planePoint(e->position())) turning_->moveTo(*p);
+        // What the release will give, beside the pointer.
+        const double degrees = TurnGesture::snapped(turning_->swept()) * 180 / std::numbers::pi;
+        QToolTip::showText(e->globalPosition().toPoint(),
+                           degrees == 0 ? tr("Turn: sweep at least 45 degrees")
+                                        : tr("Turn block %1 by %2 degrees").arg(turning_->block()).arg(degrees));
     } else if ((e->buttons() & Qt::RightButton) || (orbiting_ && (e->buttons() & Qt::LeftButton))) {
         if (walk_)
             camera_.lookAround(-float(delta.x()) * kLookDegreesPerPixel, float(delta.y()) * kLookDegreesPerPixel);
@@ -339,6 +352,13 @@ void LadderView::mouseReleaseEvent(QMouseEvent* e) {
     if (e->button() == Qt::LeftButton && dragging_) {
         dragging_ = false;
         emit dragEnded();
+    }
+    if (e->button() == Qt::LeftButton && turning_) {
+        if (const auto p = planePoint(e->position())) turning_->moveTo(*p);
+        const auto turn = turning_->turn(double(turnClock_.nsecsElapsed()) * 1e-9);
+        turning_.reset();
+        QToolTip::hideText();
+        if (turn) emit turnGiven(turn->block, turn->angle, turn->duration, turnShownTime_);
     }
 }
 

@@ -5,6 +5,7 @@
 #include "jl/scene/scene.h"
 #include "jl/sim/frame.h"
 #include "ui/block_shapes.h"
+#include "ui/turn_gesture.h"
 #include "ui/view_camera.h"
 
 #include <QElapsedTimer>
@@ -81,6 +82,9 @@ signals:
     void dragBegun(const jl::Vec2& point, int block, const jl::Vec2& local, double shownTime);
     void dragMoved(const jl::Vec2& target);
     void dragEnded();
+    // Shift and a drag on a block: the hand turns it (turn_gesture.h), from
+    // the time `shownTime` the view showed at the press.
+    void turnGiven(int block, double angle, double duration, double shownTime);
     // Keys the view does not use, for the main window's shortcuts (this
     // window, embedded, has the keyboard focus when the ladder is clicked).
     void unhandledKey(const QKeySequence& key);
@@ -105,6 +109,10 @@ private:
     bool showsWholeLadder() const;
     // Whether any of it is: its outline on screen meets the view.
     bool showsSomeOfLadder() const;
+
+    std::optional<TurnGesture> turning_;
+    double turnShownTime_ = 0;  // s, the frame shown at the turn's press
+    QElapsedTimer turnClock_;   // how long the hand has swept
 
     Qt3DCore::QEntity* root_;
     BlockInstances* blocks_;

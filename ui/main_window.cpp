@@ -400,6 +400,7 @@ void MainWindow::connectView() {
     connect(view_, &LadderView::dragBegun, sim_, &SimController::beginDrag);
     connect(view_, &LadderView::dragMoved, sim_, &SimController::moveDrag);
     connect(view_, &LadderView::dragEnded, sim_, &SimController::endDrag);
+    connect(view_, &LadderView::turnGiven, scriptPanel_, &ScriptPanel::addTurn);
     // The embedded 3-D window keeps the keyboard: its keys still reach our shortcuts.
     connect(view_, &LadderView::unhandledKey, this, [this](const QKeySequence& key) {
         for (QAction* a : findChildren<QAction*>())

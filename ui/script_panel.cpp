@@ -11,6 +11,7 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <numbers>
 
 namespace jl::ui {
@@ -119,6 +120,24 @@ ScriptPanel::ScriptPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_
 
 void ScriptPanel::setScript(std::vector<jl::ScriptAction> script, const QString& text) {
     changeScene(doc_, scriptField(), std::move(script), text);
+}
+
+void ScriptPanel::addTurn(int block, double angle, double duration, double at) {
+    jl::ScriptAction turn;
+    turn.kind = Kind::Turn;
+    turn.at = at;
+    turn.block = block;
+    turn.angle = angle;
+    turn.duration = duration;
+    addAction(turn, tr("Turn block %1").arg(block));
+}
+
+void ScriptPanel::addAction(const jl::ScriptAction& action, const QString& text) {
+    auto script = doc_->scene().script;
+    const auto later = std::upper_bound(script.begin(), script.end(), action.at,
+                                        [](double at, const jl::ScriptAction& a) { return at < a.at; });
+    script.insert(later, action);
+    setScript(std::move(script), text);
 }
 
 void ScriptPanel::commitRow(int row) {

@@ -1,0 +1,91 @@
+// labels: ui
+// The toy's famous move with the mouse: Shift and a drag on a block turns
+// it. The angle snaps to a quarter turn, the turn takes as long as the hand
+// took, and it is a script row: undoable, and replayed bit for bit.
+#include "playback_fixture.h"
+#include "ui/document.h"
+#include "ui/turn_gesture.h"
+
+#include <QUndoStack>
+
+#include <cmath>
+#include <numbers>
+
+using namespace jl::test;
+using jl::ui::TurnGesture;
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+}
+
+class TurnGestureTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { jl::test::isolateSettings(); }
+
+    // The sweep adds up the short way round at each move, so one and a
+    // half turns are 540 degrees, not 180; it snaps to the nearest quarter
+    // turn and takes the hand's time for the snapped angle.
+    void aSweepSnapsToQuarterTurnsAtTheHandsSpeed() {
+        const jl::Vec2 c(1, 2);
+        TurnGesture g(3, c, c + jl::Vec2(0.01, 0));
+        for (int k = 1; k <= 27; ++k) g.moveTo(c + 0.01 * jl::Vec2(std::cos(k * kPi / 18), std::sin(k * kPi / 18)));
+        QVERIFY(std::abs(g.swept() - 1.5 * kPi) < 1e-12);  // 270 degrees
+        const auto turn = g.turn(0.6);
+        QVERIFY(turn);
+        QCOMPARE(turn->block, 3);
+        QCOMPARE(turn->angle, 1.5 * kPi);
+        QCOMPARE(turn->duration, 0.6);
+        QCOMPARE(TurnGesture::snapped(2.0), kPi / 2);               // 115 degrees -> 90
+        QCOMPARE(TurnGesture::snapped(2.5), kPi);                   // 143 degrees -> 180
+        QCOMPARE(TurnGesture::snapped(-3.5), -kPi);                 // clockwise
+        QVERIFY(!TurnGesture(0, c, c + jl::Vec2(1, 0)).turn(1.0));  // no sweep, no turn
+        TurnGesture flick(0, c, c + jl::Vec2(1, 0));
+        flick.moveTo(c + jl::Vec2(0, 1));
+        QCOMPARE(flick.turn(0.001)->duration, TurnGesture::kShortest);
+    }
+
+    // In the 3-D view, on the held block of a paused run: half a turn
+    // counter-clockwise in the plane becomes a script row at the frame
+    // shown, the run from there turns the block, undo takes it away.
+    void shiftAndADragOnABlockTurnsIt() {
+        const jl::Scene scene = jl::test::swingingLadder();
+        Fixture f(scene);
+        LadderView* view = f.window.ladderView();
+        QVERIFY(QTest::qWaitForWindowExposed(view));
+        QVERIFY(f.goTo(10));
+        QVERIFY(f.blockOnScreen(0));
+        const jl::Pose pose = f.sim->status()->frame->poses[0];
+        const double shownTime = f.sim->status()->frame->time;
+        // A point 20 mm along the block from its centre, swept about it.
+        const auto pixel = [&](double turned) {
+            const jl::Vec2 arm = jl::rotate(pose.angle + turned, jl::Vec2(0, 0.02));
+            return view->pixelOf(pose.position + arm).toPoint();
+        };
+        QTest::mousePress(view, Qt::LeftButton, Qt::ShiftModifier, pixel(0));
+        for (int k = 1; k <= 12; ++k) QTest::mouseMove(view, pixel(k * kPi / 12));
+        QTest::mouseRelease(view, Qt::LeftButton, Qt::ShiftModifier, pixel(kPi));
+
+        jl::ui::Document* doc = f.window.document();
+        QCOMPARE(int(doc->scene().script.size()), int(scene.script.size()) + 1);
+        const jl::ScriptAction& turn = doc->scene().script.back();
+        QVERIFY(turn.kind == jl::ScriptAction::Kind::Turn);
+        QCOMPARE(turn.block, 0);
+        QCOMPARE(turn.angle, kPi);
+        QCOMPARE(turn.at, shownTime);
+        QVERIFY(turn.duration >= TurnGesture::kShortest && turn.duration <= TurnGesture::kLongest);
+        QVERIFY(!f.sim->status()->dragging);  // a turn, not a push
+
+        // The run from there is the scene's, turned: bit for bit.
+        const jl::Scene turned = doc->scene();
+        QVERIFY(f.goTo(40));
+        QCOMPARE(f.sim->status()->headHash, engineHashAt(turned, 40));
+        QVERIFY(engineHashAt(scene, 40) != engineHashAt(turned, 40));
+
+        doc->undoStack()->undo();
+        QCOMPARE(doc->scene().script.size(), scene.script.size());
+    }
+};
+
+QTEST_MAIN(TurnGestureTest)
+#include "test_turn_gesture.moc"

@@ -1,0 +1,42 @@
+// The hand's turn, given with the mouse: Shift and a drag on a block sweeps
+// an angle about the block's centre (the point a scripted turn turns it
+// about). On release the angle snaps to a quarter turn and the turn takes
+// as long as the hand took to sweep that much: a script row, replayed as
+// any other.
+#pragma once
+
+#include "jl/base/geometry.h"
+
+#include <optional>
+
+namespace jl::ui {
+
+struct Turn {
+    int block = 0;
+    double angle = 0;     // rad, counter-clockwise, a whole number of quarter turns
+    double duration = 0;  // s
+};
+
+class TurnGesture {
+public:
+    TurnGesture(int block, const Vec2& centre, const Vec2& point);
+    void moveTo(const Vec2& point);
+    int block() const { return block_; }
+    double swept() const { return swept_; }  // rad, so far
+    // The turn the gesture gives after `seconds` of sweeping: none under
+    // half a quarter turn.
+    std::optional<Turn> turn(double seconds) const;
+    static double snapped(double angle);  // to the nearest quarter turn
+
+    // The shortest and longest turn a gesture gives (s): a flick is not an
+    // impact, and a hand left on the mouse is not a turn of minutes.
+    static constexpr double kShortest = 0.05, kLongest = 10.0;
+
+private:
+    int block_;
+    Vec2 centre_;
+    double last_;       // rad, the pointer's bearing from the centre
+    double swept_ = 0;  // rad
+};
+
+}  // namespace jl::ui
