@@ -75,6 +75,7 @@ public:
         jl::Vec2 local = jl::Vec2::Zero();
     };
     std::optional<Grab> grabAt(const jl::Vec2& point) const;
+    double shownTime() const { return shownTime_; }  // s, of the frame drawn
 
 signals:
     // A push begun on `block` at `local` (its own frame) in the frame of

@@ -12,6 +12,7 @@
 #include "ui/screen_fit.h"
 #include "ui/script_panel.h"
 #include "ui/shader_material.h"
+#include "ui/side_view.h"
 #include "ui/sim_controller.h"
 #include "ui/simulation_panel.h"
 #include "ui/teaching_docks.h"
@@ -327,6 +328,7 @@ void MainWindow::showDesignMap() {
 // The teaching tools make their docks and menus; the window places them.
 void MainWindow::createTeaching() {
     teaching_ = new TeachingDocks(doc_, sim_, this);
+    connect(teaching_->sideView(), &SideView::turnGiven, scriptPanel_, &ScriptPanel::addTurn);
     connect(teaching_, &TeachingDocks::lessonRequested, this, [this](const QString& path) {
         if (maybeSave()) openFile(path);
     });

@@ -7,10 +7,12 @@
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
+#include <QToolTip>
 #include <QWheelEvent>
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace jl::ui {
 
@@ -119,13 +121,48 @@ void SideView::wheelEvent(QWheelEvent* e) {
     e->accept();
 }
 
+jl::Vec2 SideView::planePoint(const QPointF& pixel) const {
+    if (framing_.isEmpty()) return jl::Vec2::Zero();
+    const Mapping map(framing_, plotArea(rect(), uiScale(rect())));
+    return {(pixel.x() - map.origin.x()) / map.scale, (map.origin.y() - pixel.y()) / map.scale};
+}
+
+int SideView::blockAt(const jl::Vec2& point) const {
+    constexpr double margin = 0.002;  // m
+    const size_t n = std::min({frame_->poses.size(), shapes_.size(), size_t(ladderBlocks_)});
+    for (size_t i = n; i-- > 0;) {
+        const jl::Vec2 local = jl::rotate(-frame_->poses[i].angle, point - frame_->poses[i].position);
+        if (std::abs(local.x()) <= shapes_[i].across / 2 + margin &&
+            std::abs(local.y()) <= shapes_[i].along / 2 + margin)
+            return int(i);
+    }
+    return -1;
+}
+
+// Shift and a press on a block starts the hand's turn; any other press pans.
 void SideView::mousePressEvent(QMouseEvent* e) {
     if (e->button() != Qt::LeftButton) return QWidget::mousePressEvent(e);
+    const jl::Vec2 p = planePoint(e->position());
+    const int block = framing_.isEmpty() ? -1 : blockAt(p);
+    if ((e->modifiers() & Qt::ShiftModifier) && block >= 0) {
+        turning_.emplace(block, frame_->poses[size_t(block)].position, p);
+        turnShownTime_ = frame_->time;
+        turnClock_.start();
+        return;
+    }
     dragFrom_ = e->position();
     setCursor(Qt::ClosedHandCursor);
 }
 
 void SideView::mouseMoveEvent(QMouseEvent* e) {
+    if (turning_) {
+        turning_->moveTo(planePoint(e->position()));
+        const double degrees = TurnGesture::snapped(turning_->swept()) * 180 / std::numbers::pi;
+        QToolTip::showText(e->globalPosition().toPoint(),
+                           degrees == 0 ? tr("Turn: sweep at least 45 degrees")
+                                        : tr("Turn block %1 by %2 degrees").arg(turning_->block()).arg(degrees));
+        return;
+    }
     if (!(e->buttons() & Qt::LeftButton) || framing_.isEmpty()) return QWidget::mouseMoveEvent(e);
     const Mapping map(framing_, plotArea(rect(), uiScale(rect())));
     const QPointF d = e->position() - dragFrom_;
@@ -136,6 +173,13 @@ void SideView::mouseMoveEvent(QMouseEvent* e) {
 }
 
 void SideView::mouseReleaseEvent(QMouseEvent* e) {
+    if (e->button() == Qt::LeftButton && turning_) {
+        turning_->moveTo(planePoint(e->position()));
+        const auto turn = turning_->turn(double(turnClock_.nsecsElapsed()) * 1e-9);
+        turning_.reset();
+        QToolTip::hideText();
+        if (turn) emit turnGiven(turn->block, turn->angle, turn->duration, turnShownTime_);
+    }
     unsetCursor();
     QWidget::mouseReleaseEvent(e);
 }

@@ -6,13 +6,16 @@
 #include "jl/scene/scene.h"
 #include "jl/sim/frame.h"
 #include "ui/block_shapes.h"
+#include "ui/turn_gesture.h"
 
+#include <QElapsedTimer>
 #include <QImage>
 #include <QRectF>
 #include <QWidget>
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace jl::ui {
@@ -69,7 +72,17 @@ public:
     // Where a point of the plane lands in a picture of `target` (for tests and hints).
     QPointF pixelOf(const jl::Vec2& point, const QRectF& target) const;
 
+    // The point of the plane under a pixel of the widget, and the ladder
+    // block there as last shown (-1: none; within 2 mm, as in the 3-D view).
+    jl::Vec2 planePoint(const QPointF& pixel) const;
+    int blockAt(const jl::Vec2& point) const;
+
     QSize sizeHint() const override { return {420, 560}; }
+
+signals:
+    // Shift and a drag on a block: the hand turns it (turn_gesture.h), from
+    // the time `shownTime` of the frame shown at the press.
+    void turnGiven(int block, double angle, double duration, double shownTime);
 
 protected:
     void paintEvent(QPaintEvent*) override;
@@ -97,6 +110,9 @@ private:
     mutable QRectF scaleLabel_;
     bool following_ = true;  // the framing grows with the ladder (until zoomed or panned by hand)
     QPointF dragFrom_;
+    std::optional<TurnGesture> turning_;
+    double turnShownTime_ = 0;  // s
+    QElapsedTimer turnClock_;
     SideViewOptions options_;
 };
 

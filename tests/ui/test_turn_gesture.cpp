@@ -4,8 +4,11 @@
 // took, and it is a script row: undoable, and replayed bit for bit.
 #include "playback_fixture.h"
 #include "ui/document.h"
+#include "ui/side_view.h"
+#include "ui/teaching_docks.h"
 #include "ui/turn_gesture.h"
 
+#include <QDockWidget>
 #include <QUndoStack>
 
 #include <cmath>
@@ -54,9 +57,10 @@ private slots:
         LadderView* view = f.window.ladderView();
         QVERIFY(QTest::qWaitForWindowExposed(view));
         QVERIFY(f.goTo(10));
+        const double shownTime = f.sim->status()->frame->time;
+        QVERIFY(QTest::qWaitFor([&] { return view->shownTime() == shownTime; }));
         QVERIFY(f.blockOnScreen(0));
         const jl::Pose pose = f.sim->status()->frame->poses[0];
-        const double shownTime = f.sim->status()->frame->time;
         // A point 20 mm along the block from its centre, swept about it.
         const auto pixel = [&](double turned) {
             const jl::Vec2 arm = jl::rotate(pose.angle + turned, jl::Vec2(0, 0.02));
@@ -84,6 +88,33 @@ private slots:
 
         doc->undoStack()->undo();
         QCOMPARE(doc->scene().script.size(), scene.script.size());
+    }
+
+    // The same in the side view: a quarter turn clockwise on block 0.
+    void shiftAndADragInTheSideViewTurnsIt() {
+        const jl::Scene scene = jl::test::swingingLadder();
+        Fixture f(scene);
+        QVERIFY(QTest::qWaitForWindowExposed(&f.window));
+        jl::ui::SideView* side = f.window.teaching()->sideView();
+        f.window.teaching()->sideViewDock()->show();
+        QVERIFY(f.goTo(10));
+        const double shown = f.sim->status()->frame->time;
+        QVERIFY(QTest::qWaitFor([&] { return side->isVisible() && side->frame().time == shown; }));
+        const jl::Pose pose = side->frame().poses[0];
+        const double shownTime = side->frame().time;
+        const auto pixel = [&](double turned) {
+            const jl::Vec2 arm = jl::rotate(pose.angle + turned, jl::Vec2(0, 0.02));
+            return side->pixelOf(pose.position + arm, side->rect()).toPoint();
+        };
+        QCOMPARE(side->blockAt(side->planePoint(pixel(0))), 0);
+        QTest::mousePress(side, Qt::LeftButton, Qt::ShiftModifier, pixel(0));
+        for (int k = 1; k <= 6; ++k) QTest::mouseMove(side, pixel(-k * kPi / 12));
+        QTest::mouseRelease(side, Qt::LeftButton, Qt::ShiftModifier, pixel(-kPi / 2));
+        const auto& script = f.window.document()->scene().script;
+        QCOMPARE(int(script.size()), int(scene.script.size()) + 1);
+        QCOMPARE(script.back().block, 0);
+        QCOMPARE(script.back().angle, -kPi / 2);
+        QCOMPARE(script.back().at, shownTime);
     }
 };
 
