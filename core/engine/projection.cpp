@@ -1,7 +1,7 @@
 #include "jl/engine/projection.h"
 
-#include "jl/engine/turns.h"
 #include "jl/engine/world.h"
+#include "turns.h"
 
 #include <algorithm>
 #include <cmath>

@@ -6,7 +6,6 @@
 #include "jl/engine/dynamics.h"
 #include "jl/engine/integrator.h"
 #include "jl/engine/projection.h"
-#include "jl/engine/stage_sums.h"
 
 #include <Eigen/Core>
 
@@ -16,6 +15,7 @@
 namespace jl {
 
 class World;
+struct StageTerms;  // the engine's own (core/engine/stage_sums.h)
 
 // Energy that entered or left through held blocks, drags and damping (J),
 // integrated with the same method as the motion so the balance holds to its order.
