@@ -3,8 +3,8 @@
 // Verner 6(5), and the adaptive, linearly implicit Rosenbrock-W method ROS34PW2.
 #pragma once
 
+#include "jl/base/integrator.h"
 #include "jl/engine/dynamics.h"
-#include "jl/engine/integrator.h"
 #include "jl/engine/projection.h"
 
 #include <Eigen/Core>
