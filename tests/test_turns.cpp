@@ -3,7 +3,10 @@
 // it): as accurate as the scalar functions for what a turn is used for, and
 // the same bits for the same angle wherever it sits in the list. Every
 // routine the machine can run is checked, not only the one it chooses.
-#include "jl/engine/turns.h"
+// turns.h is private to the engine (no other part calls it); the test
+// reaches into the engine's sources by the repository root, which every
+// test has on its include path.
+#include "core/engine/turns.h"
 
 #include <QtTest>
 

@@ -13,6 +13,7 @@
 // solves the dynamics: one factorisation per step, one solve per stage.
 #include "jl/engine/stepper.h"
 #include "jl/engine/world.h"
+#include "stage_sums.h"
 
 #include <Eigen/LU>
 

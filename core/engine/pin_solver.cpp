@@ -1,7 +1,7 @@
 #include "jl/engine/pin_solver.h"
 
-#include "jl/engine/turns.h"
 #include "jl/engine/world.h"
+#include "turns.h"
 
 #include <Eigen/LU>
 

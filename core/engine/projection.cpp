@@ -1,8 +1,8 @@
 #include "jl/engine/projection.h"
 
 #include "jl/engine/energy.h"
-#include "jl/engine/turns.h"
 #include "jl/engine/world.h"
+#include "turns.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "jl/engine/stage_sums.h"
+#include "stage_sums.h"
 
 #include <algorithm>
 #include <cassert>

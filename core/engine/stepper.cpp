@@ -1,7 +1,7 @@
 #include "jl/engine/stepper.h"
 
-#include "jl/engine/stage_sums.h"
 #include "jl/engine/world.h"
+#include "stage_sums.h"
 
 #include <algorithm>
 #include <cassert>

@@ -1,4 +1,4 @@
-#include "jl/engine/turns.h"
+#include "turns.h"
 
 #include <cmath>
 #include <vector>

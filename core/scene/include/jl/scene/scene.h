@@ -1,7 +1,7 @@
 // The scene: plain data, exactly what a scene file holds (see docs/scene-format.md).
 #pragma once
 
-#include "jl/engine/integrator.h"
+#include "jl/base/integrator.h"
 
 #include <array>
 #include <cstdint>

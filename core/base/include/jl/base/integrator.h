@@ -1,7 +1,8 @@
 // The engine's time integrators, by name: the stepper runs them, the scene
 // names one, the stability bounds know each one's limit. All are explicit
 // but RosenbrockW, which is linearly implicit in the ladder's stiff part
-// (docs/model.md section 6.4).
+// (docs/model.md section 6.4). A word the scene and the engine share, kept
+// in base so that reading a scene does not link the engine.
 #pragma once
 
 namespace jl {

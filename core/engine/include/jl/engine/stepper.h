@@ -3,10 +3,9 @@
 // Verner 6(5), and the adaptive, linearly implicit Rosenbrock-W method ROS34PW2.
 #pragma once
 
+#include "jl/base/integrator.h"
 #include "jl/engine/dynamics.h"
-#include "jl/engine/integrator.h"
 #include "jl/engine/projection.h"
-#include "jl/engine/stage_sums.h"
 
 #include <Eigen/Core>
 
@@ -16,6 +15,7 @@
 namespace jl {
 
 class World;
+struct StageTerms;  // the engine's own (core/engine/stage_sums.h)
 
 // Energy that entered or left through held blocks, drags and damping (J),
 // integrated with the same method as the motion so the balance holds to its order.

@@ -3,7 +3,7 @@
 // limit on an undamped oscillation (docs/model.md section 6.3).
 #pragma once
 
-#include "jl/engine/integrator.h"
+#include "jl/base/integrator.h"
 #include "jl/engine/world.h"
 
 #include <Eigen/Core>
