@@ -114,6 +114,15 @@ private slots:
         for (const QString& a : linked) QVERIFY2(anchors.contains(a), qPrintable("Concepts has no #" + a));
     }
 
+    void aClickOnTheGapOpensConcepts() {
+        MainWindow w(jl::test::quietWindow());
+        auto* gap = w.findChild<QLabel*>("residual");
+        QVERIFY(gap);
+        QTest::mouseClick(gap, Qt::LeftButton);
+        auto* page = w.findChild<QDialog*>("helpPage_concepts");
+        QVERIFY(page && page->isVisible());
+    }
+
     void controlsSheetIsOrderedByTask() {
         MainWindow w(jl::test::quietWindow());
         QAction* controls = helpAction(w, "Controls");
