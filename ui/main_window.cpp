@@ -4,6 +4,7 @@
 #include "ui/controls_sheet.h"
 #include "ui/design_map.h"
 #include "ui/events_panel.h"
+#include "ui/help_pages.h"
 #include "ui/ladder_panel.h"
 #include "ui/ladder_view.h"
 #include "ui/pacing.h"
@@ -232,6 +233,7 @@ void MainWindow::createMenus() {
     for (QDockWidget* d : findChildren<QDockWidget*>()) viewMenu_->addAction(d->toggleViewAction());
     helpMenu_ = menuBar()->addMenu(tr("&Help"));
     QMenu* help = helpMenu_;
+    addHelpPages(help, this);
     QAction* controls = help->addAction(tr("&Controls"), this, [this] { showControlsSheet(this); });
     controls->setShortcut(QKeySequence::HelpContents);
     help->addAction(tr("&About"), this, [this] {
@@ -396,6 +398,7 @@ void MainWindow::createStatusBar() {
                            "(docs/model.md section 3.7; solver.still_tail: separate turns it off)."),
                         120);
     stillLabel_->hide();
+    linkStatusBarToConcepts(this);
 }
 
 void MainWindow::connectView() {
