@@ -6,6 +6,7 @@
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
+#include <QStandardPaths>
 #include <QTextBrowser>
 #include <QVBoxLayout>
 
@@ -43,6 +44,19 @@ QString lessonsDirectoryBeside(const QString& programDirectory) {
 QString lessonsDirectory() {
     if (const QString env = withScenes(qEnvironmentVariable("JL_EXAMPLES")); !env.isEmpty()) return env;
     return lessonsDirectoryBeside(QCoreApplication::applicationDirPath());
+}
+
+bool isLesson(const QString& path) {
+    const QString lessons = lessonsDirectory();
+    return !path.isEmpty() && !lessons.isEmpty() && QFileInfo(path).absoluteDir().canonicalPath() == lessons;
+}
+
+QString saveAsProposal(const QString& path) {
+    if (!isLesson(path)) return path;
+    // A documents folder that is not there (a bare account) is not made: home then.
+    QDir mine(QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation));
+    if (!mine.exists()) mine = QDir::home();
+    return mine.filePath(QFileInfo(path).fileName());
 }
 
 std::vector<Lesson> findLessons(const QString& directory) {

@@ -9,14 +9,17 @@
 #include "ui/time_chart.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QGraphicsTextItem>
 #include <QStandardPaths>
 #include <QTest>
+#include <QTimer>
 #include <QToolBar>
 #include <Qt3DRender/QRenderCapture>
 
+#include <functional>
 #include <memory>
 
 namespace jl::test {
@@ -86,6 +89,22 @@ inline QImage captureView(jl::ui::LadderView* view) {
         image = reply->image();
     }
     return image;
+}
+
+// Answers the next modal window the program opens that `answer` takes (it
+// returns true once it has answered), as a person would: the window is
+// modal, so the answer has to come from the event loop.
+inline void answerNextModal(const std::function<bool(QWidget*)>& answer) {
+    auto* poll = new QTimer;
+    auto* waited = new int(0);
+    QObject::connect(poll, &QTimer::timeout, [=] {
+        QWidget* modal = QApplication::activeModalWidget();
+        if (!(modal && answer(modal)) && ++*waited < 250) return;
+        poll->stop();
+        poll->deleteLater();
+        delete waited;
+    });
+    poll->start(20);
 }
 
 // How many of a chart's texts (title, tick labels, legend) Qt cut to "...".
