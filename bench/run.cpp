@@ -24,8 +24,7 @@ namespace {
 bool writeCsv(const std::vector<BenchRow>& rows, const std::filesystem::path& path) {
     std::ostringstream f;
     f << "study,method,blocks,parameter,cost_cpu_s_per_sim_s,error,finished,note\n";
-    f.precision(6);
-    CsvWriter csv(f);
+    CsvWriter csv(f, 6);
     for (const BenchRow& r : rows)
         csv.row(r.study, r.method, r.blocks, r.parameter, r.cost, r.error, r.finished, r.note);
     return saveText(path, f.str());
@@ -38,8 +37,7 @@ bool writeEventCostCsv(const std::vector<EventCostRow>& rows, const std::filesys
          "cpu_per_instant_s,event_share,plain_steps_per_event,turning_steps,turning_events,turning_step_cpu_s,"
          "cpu_per_event_turning_baseline_s,eventful_steps,eventful_steps_cpu_s,cpu_per_event_in_eventful_steps_s,"
          "failure\n";
-    f.precision(6);
-    CsvWriter csv(f);
+    CsvWriter csv(f, 6);
     for (const EventCostRow& r : rows)
         csv.row(r.blocks, r.from, r.to, r.steps, r.meanStep, r.events, r.instants, r.kinds, r.runCpu, r.runRepetitions,
                 r.repeatable, r.plainStep, r.plainSteps, r.plainRepetitions, r.plainEvents, r.plainStepCpu,
@@ -53,8 +51,7 @@ bool writeExamplesCsv(const ExamplesStudy& s, const std::filesystem::path& path)
     std::ostringstream f;
     f << "scene,blocks,asked_s,simulated_s,cpu_s,cpu_s_per_sim_s,faster_than_real_time,steps,integrator,adaptive,"
          "tolerance,automatic_step,smallest_step_s,largest_step_s,step_halvings,hinge_events,failure\n";
-    f.precision(6);
-    CsvWriter csv(f);
+    CsvWriter csv(f, 6);
     for (const ExampleRow& r : s.rows)
         csv.row(r.scene, r.blocks, r.asked, r.simulated, r.cpu, r.perSimulated(),
                 r.simulated > 0 && r.perSimulated() <= 1, r.steps, r.integrator, r.adaptive, r.tolerance,
@@ -69,8 +66,7 @@ bool writeStabilityCsv(const StabilityStudy& s, const std::filesystem::path& pat
          "rk4_seeded_stays,rk4_seeded_grows,rk4_hanging_runs,rk4_hanging_fails,rk4_turned_runs,rk4_turned_fails,"
          "hanging_cost,turned_cost,hand_tension_factor,peak_tension_factor,peak_tension_time,rk4_dt_limit_at_peak,"
          "dopri_steps,dopri_rejected,dopri_mean_step,dopri_cost\n";
-    f.precision(8);
-    CsvWriter csv(f);
+    CsvWriter csv(f, 8);
     for (const StabilityRow& r : s.rows)
         csv.row(r.blocks, r.omegaMax, std::sqrt(r.referenceOmega2), r.handUpper, r.handAiry, r.engine.iterations,
                 r.engine.residual, r.rk4Limit, r.symplecticLimit, r.dopriLimit, r.horizon, r.seededPass, r.seededFail,

@@ -82,6 +82,10 @@ bool sameValue(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max({
 QString shownValue(const AxisShown& a, double si) { return QString::number(si * a.scale, 'g', 6); }
 
 QString axisTitle(const AxisShown& a) { return a.unit.isEmpty() ? a.label : QString("%1 (%2)").arg(a.label, a.unit); }
+// A CSV column's name, its unit in brackets as in every table the programs write.
+std::string columnTitle(const AxisShown& a) {
+    return (a.unit.isEmpty() ? a.label : QString("%1 [%2]").arg(a.label, a.unit)).toStdString();
+}
 
 }  // namespace
 
@@ -407,8 +411,7 @@ bool DesignMap::exportCsv(const QString& path) const {
     std::ofstream out(path.toStdString());
     const AxisShown &sx = axisShown(xAxis().parameter), &sy = axisShown(yAxis().parameter);
     CsvWriter csv(out);
-    csv.row(axisTitle(sx).toStdString(), axisTitle(sy).toStdString(), "hinges", "reached",
-            "mean time between flips (s)", "failure");
+    csv.row(columnTitle(sx), columnTitle(sy), "hinges", "reached", "mean time between flips [s]", "failure");
     for (int r = 0; r < grid_->rows(); ++r)
         for (int c = 0; c < grid_->columns(); ++c) {
             const auto cell = grid_->cell(c, r);

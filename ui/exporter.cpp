@@ -4,6 +4,7 @@
 #include "jl/sim/frame_csv.h"
 #include "jl/sim/recording.h"
 #include "jl/sim/simulation.h"
+#include "ui/view_capture.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -11,7 +12,6 @@
 #include <QSaveFile>
 #include <QStandardPaths>
 #include <QTemporaryDir>
-#include <QWidget>
 
 #include <cmath>
 #include <optional>
@@ -22,6 +22,14 @@ namespace jl::ui {
 namespace {
 
 ExportResult failed(const QString& why) { return {false, why, {}}; }
+
+// `picture` saved as PNG at `path`, or why not (a null picture: the 3-D
+// view, which draws only on screen, drew nothing).
+std::optional<QString> savePicture(const QImage& picture, const QString& path) {
+    if (picture.isNull()) return QObject::tr("The 3-D view drew nothing: it has to be on screen to be pictured.");
+    if (!picture.save(path, "PNG")) return QObject::tr("Could not write the picture %1.").arg(path);
+    return std::nullopt;
+}
 
 // Written whole or not at all.
 std::optional<QString> saveText(const QString& path, const std::string& text) {
@@ -38,9 +46,8 @@ constexpr double kMaxPosesInMemory = 4e6;
 
 }  // namespace
 
-ExportResult Exporter::screenshot(QWidget* widget, const QString& path) {
-    if (!widget) return failed(QObject::tr("There is nothing to take a picture of."));
-    if (!widget->grab().save(path, "PNG")) return failed(QObject::tr("Could not write the picture %1.").arg(path));
+ExportResult Exporter::viewPicture(LadderView* view, const QString& path) {
+    if (const auto error = savePicture(view ? captureView(view) : QImage(), path)) return failed(*error);
     return {true, {}, {path}};
 }
 
@@ -64,7 +71,9 @@ namespace {
 // The frames of a recorded run from `from` on, handed to `each` as they come.
 struct FramesFrom : jl::RecordTarget {
     double from = 0;
+    bool ribbons = false;  // the frames are drawn in 3-D, ribbons and all
     std::function<bool(jl::Frame&&)> each;
+    bool drawsRibbons() const override { return ribbons; }
     bool frame(const jl::Frame& f) override { return f.time < from - 1e-9 || each(jl::Frame(f)); }
     bool event(const jl::Event&) override { return true; }
 };
@@ -102,8 +111,8 @@ ExportResult Exporter::imageSequence(const jl::Scene& scene, const SequenceReque
             picture = view.render(r.size);
         }
         const QString path = QDir(r.directory).filePath(QString("frame_%1.png").arg(drawn, 5, 10, QChar('0')));
-        if (!picture.save(path, "PNG")) {
-            result = failed(QObject::tr("Could not write the picture %1.").arg(path));
+        if (const auto error = savePicture(picture, path)) {
+            result = failed(*error);
             return false;
         }
         result.files << path;
@@ -116,6 +125,7 @@ ExportResult Exporter::imageSequence(const jl::Scene& scene, const SequenceReque
     };
     FramesFrom target;
     target.from = r.from;
+    target.ribbons = bool(r.painter);
     std::vector<jl::Frame> frames;
     const bool twoPasses = !r.painter && double(total) * sim.blockCount() <= kMaxPosesInMemory;
     // Two passes when they fit in memory: first the whole range, so that one
@@ -215,6 +225,11 @@ ExportResult Exporter::video(const jl::Scene& scene, SequenceRequest request, co
     request.directory = pictures.path();
     // H.264 wants even sizes.
     request.size = QSize(request.size.width() / 2 * 2, request.size.height() / 2 * 2);
+    if (request.painter)
+        request.painter = [paint = request.painter](const jl::Frame& f) {
+            const QImage picture = paint(f);
+            return picture.copy(0, 0, picture.width() / 2 * 2, picture.height() / 2 * 2);
+        };
     const ExportResult frames = imageSequence(scene, request);
     if (!frames.ok) return frames;
     QStringList args{"-y",

@@ -1,5 +1,6 @@
-// Exports of a run for slides and reports: a screenshot, a sequence of PNG
-// frames over a time range, a video made from them by ffmpeg, the event log as CSV.
+// Exports of a run for slides and reports: a picture of the 3-D view or of the
+// side view, a sequence of PNG frames over a time range (drawn by either), a
+// video made from them by ffmpeg, the event log and the tables as CSV.
 #pragma once
 
 #include "jl/scene/scene.h"
@@ -14,9 +15,9 @@
 #include <functional>
 #include <vector>
 
-class QWidget;
-
 namespace jl::ui {
+
+class LadderView;
 
 struct ExportResult {
     bool ok = false;
@@ -24,13 +25,13 @@ struct ExportResult {
     QStringList files;  // what was written
 };
 
-// Turns a frame into a picture (the 3-D view can be plugged in here).
+// Turns a frame into a picture (the 3-D view's: viewPainter, ui/view_capture.h).
 using FramePainter = std::function<QImage(const jl::Frame&)>;
 
 struct SequenceRequest {
-    double from = 0, to = 1;  // s, both ends included when on the grid
-    double fps = 30;          // pictures per simulated second
-    QSize size{1280, 720};
+    double from = 0, to = 1;                            // s, both ends included when on the grid
+    double fps = 30;                                    // pictures per simulated second
+    QSize size{1280, 720};                              // of the side view's pictures; a painter draws its own size
     QString directory;                                  // frame_00000.png, frame_00001.png, ...
     SideViewOptions look{};                             // for the side view, when no painter is given
     FramePainter painter;                               // optional: draws each frame instead of the side view
@@ -39,8 +40,8 @@ struct SequenceRequest {
 
 class Exporter {
 public:
-    // A picture of a widget as it is on screen.
-    static ExportResult screenshot(QWidget* widget, const QString& path);
+    // The 3-D view as it is on screen, at its size (ui/view_capture.h).
+    static ExportResult viewPicture(LadderView* view, const QString& path);
     // The side view of one frame.
     static ExportResult sideViewPicture(const jl::Scene& scene, const jl::Frame& frame, const QSize& size,
                                         const SideViewOptions& look, const QString& path);

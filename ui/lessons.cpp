@@ -6,6 +6,7 @@
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
+#include <QStandardPaths>
 #include <QTextBrowser>
 #include <QVBoxLayout>
 
@@ -24,19 +25,38 @@ int rank(const QString& baseName) {
     return int(it - std::begin(kTeachingOrder));
 }
 
+// `path` in full when it holds scenes, else empty.
+QString withScenes(const QString& path) {
+    const QDir d(path);
+    if (path.isEmpty() || !d.exists() || d.entryList({"*.yaml"}, QDir::Files).isEmpty()) return {};
+    return d.canonicalPath();
+}
+
 }  // namespace
 
+QString lessonsDirectoryBeside(const QString& programDirectory) {
+    // Only the layout around the program: a path compiled in would name the
+    // checkout it was built from, whose lessons a copied program would list.
+    if (programDirectory.isEmpty()) return {};
+    return withScenes(programDirectory + "/../share/jacobs-ladder/examples");
+}
+
 QString lessonsDirectory() {
-    QStringList tries;
-    if (const QString env = qEnvironmentVariable("JL_EXAMPLES"); !env.isEmpty()) tries << env;
-    const QString app = QCoreApplication::applicationDirPath();
-    tries << app + "/../share/jacobs-ladder/examples" << app + "/../examples" << app + "/../../examples";
-#ifdef JL_SOURCE_DIR
-    tries << QString(JL_SOURCE_DIR) + "/examples";
-#endif
-    for (const QString& d : tries)
-        if (QDir(d).exists() && !QDir(d).entryList({"*.yaml"}, QDir::Files).isEmpty()) return QDir(d).canonicalPath();
-    return {};
+    if (const QString env = withScenes(qEnvironmentVariable("JL_EXAMPLES")); !env.isEmpty()) return env;
+    return lessonsDirectoryBeside(QCoreApplication::applicationDirPath());
+}
+
+bool isLesson(const QString& path) {
+    const QString lessons = lessonsDirectory();
+    return !path.isEmpty() && !lessons.isEmpty() && QFileInfo(path).absoluteDir().canonicalPath() == lessons;
+}
+
+QString saveAsProposal(const QString& path) {
+    if (!isLesson(path)) return path;
+    // A documents folder that is not there (a bare account) is not made: home then.
+    QDir mine(QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation));
+    if (!mine.exists()) mine = QDir::home();
+    return mine.filePath(QFileInfo(path).fileName());
 }
 
 std::vector<Lesson> findLessons(const QString& directory) {

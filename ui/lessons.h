@@ -20,9 +20,19 @@ struct Lesson {
     QString description;  // its `description`
 };
 
-// Where the example scenes are: $JL_EXAMPLES, else next to the program
-// (installed or in the build tree), else the source tree it was built from.
+// Where the example scenes are: $JL_EXAMPLES, else beside the program, in
+// share/jacobs-ladder/examples next to its bin/ (an install, or the build
+// tree, which is laid out as one); else none.
 QString lessonsDirectory();
+// The lessons folder a program in `programDirectory` finds beside it, or empty.
+QString lessonsDirectoryBeside(const QString& programDirectory);
+// A lesson is read-only: `path` is a scene in the lessons folder.
+bool isLesson(const QString& path);
+// Where Save As proposes to write the scene read from `path`: `path` itself,
+// but for a lesson the user's documents folder (home when there is none),
+// under the lesson's name.
+QString saveAsProposal(const QString& path);
+
 // The scenes of `directory` that load, in teaching order (the classic
 // cascade first, then the variations, then whatever else is there).
 std::vector<Lesson> findLessons(const QString& directory);

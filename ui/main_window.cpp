@@ -329,7 +329,7 @@ void MainWindow::showDesignMap() {
 
 // The teaching tools make their docks and menus; the window places them.
 void MainWindow::createTeaching() {
-    teaching_ = new TeachingDocks(doc_, sim_, this);
+    teaching_ = new TeachingDocks(doc_, sim_, view_, this);
     connect(teaching_->sideView(), &SideView::turnGiven, scriptPanel_, &ScriptPanel::addTurn);
     connect(teaching_, &TeachingDocks::lessonRequested, this, [this](const QString& path) {
         if (maybeSave()) openFile(path);

@@ -3,6 +3,7 @@
 #include "jl/scene/scene_io.h"
 #include "jl/scene/yaml_comments.h"
 #include "ui/file_errors_dialog.h"
+#include "ui/lessons.h"
 #include "ui/main_window.h"
 #include "ui/sim_controller.h"
 
@@ -47,6 +48,14 @@ bool MainWindow::openFile(const QString& path) {
 }
 
 bool MainWindow::saveTo(const QString& path) {
+    // Lessons stay as they were written: the next class opens the same one.
+    if (isLesson(path)) {
+        QMessageBox::warning(this, tr("Not saved"),
+                             tr("%1 is a lesson, and lessons stay as they are. Save your version under "
+                                "another name or in another folder, such as %2.")
+                                 .arg(QFileInfo(path).fileName(), QFileInfo(saveAsProposal(path)).absolutePath()));
+        return false;
+    }
     if (const auto error = doc_->saveAs(path)) {
         QMessageBox::warning(this, tr("Not saved"), tr("The scene was not saved:\n%1").arg(*error));
         return false;
@@ -69,7 +78,7 @@ void MainWindow::openDialog() {
 }
 
 bool MainWindow::save() {
-    if (doc_->path().isEmpty()) return saveAsDialog();
+    if (doc_->path().isEmpty() || isLesson(doc_->path())) return saveAsDialog();
     switch (askAboutComments(doc_->path())) {
         case CommentsChoice::SaveOver:
             return saveTo(doc_->path());
@@ -107,7 +116,8 @@ MainWindow::CommentsChoice MainWindow::askAboutComments(const QString& path) {
 }
 
 bool MainWindow::saveAsDialog() {
-    QString path = QFileDialog::getSaveFileName(this, tr("Save scene as"), doc_->path(), tr(kSceneFilter));
+    QString path =
+        QFileDialog::getSaveFileName(this, tr("Save scene as"), saveAsProposal(doc_->path()), tr(kSceneFilter));
     if (path.isEmpty()) return false;
     if (QFileInfo(path).suffix().isEmpty()) path += ".yaml";
     return saveTo(path);

@@ -2,6 +2,7 @@
 
 #include "ui/document.h"
 #include "ui/exporter.h"
+#include "ui/ladder_view.h"
 #include "ui/lessons.h"
 #include "ui/pacing.h"
 #include "ui/presentation_mode.h"
@@ -9,6 +10,7 @@
 #include "ui/sequence_dialog.h"
 #include "ui/side_view.h"
 #include "ui/sim_controller.h"
+#include "ui/view_capture.h"
 
 #include <QAction>
 #include <QApplication>
@@ -17,12 +19,13 @@
 #include <QMenu>
 #include <QMessageBox>
 #include <QProgressDialog>
+#include <QSignalBlocker>
 #include <QTimer>
 
 namespace jl::ui {
 
-TeachingDocks::TeachingDocks(Document* doc, SimController* sim, QWidget* parent)
-    : QObject(parent), doc_(doc), sim_(sim), parent_(parent) {
+TeachingDocks::TeachingDocks(Document* doc, SimController* sim, LadderView* view, QWidget* parent)
+    : QObject(parent), doc_(doc), sim_(sim), view_(view), parent_(parent) {
     setObjectName("teaching");
     sideView_ = new SideView(parent);
     plots_ = new RunPlots(parent);
@@ -96,9 +99,12 @@ void TeachingDocks::createMenus() {
     arrows_ = toggle(tr("Lengthwise &orientation arrows"), Qt::Key_O, false);
     teach->addSeparator();
     QMenu* exports = teach->addMenu(tr("E&xport"));
+    exports->setObjectName("exportMenu");
+    exports->addAction(tr("3-D view as a p&icture..."), this, &TeachingDocks::viewPicture);
+    exports->addAction(tr("3-D view as a vi&deo (ffmpeg)..."), this, [this] { exportSequence(true, true); });
     exports->addAction(tr("Side view as a &picture..."), this, &TeachingDocks::sideViewPicture);
-    exports->addAction(tr("&Image sequence..."), this, [this] { exportSequence(false); });
-    exports->addAction(tr("&Video (ffmpeg)..."), this, [this] { exportSequence(true); });
+    exports->addAction(tr("&Image sequence..."), this, [this] { exportSequence(false, false); });
+    exports->addAction(tr("&Video (ffmpeg)..."), this, [this] { exportSequence(true, false); });
     exports->addAction(tr("&Event log as CSV..."), this, &TeachingDocks::exportEvents);
     exports->addAction(tr("&Tables as CSV (poses, energies, events)..."), this, &TeachingDocks::exportTables);
     teach->addSeparator();
@@ -171,7 +177,18 @@ void TeachingDocks::sideViewPicture() {
         QMessageBox::warning(parent_, tr("Not exported"), tr("Could not write the picture %1.").arg(path));
 }
 
-void TeachingDocks::exportSequence(bool video) {
+void TeachingDocks::viewPicture() {
+    const QString path =
+        QFileDialog::getSaveFileName(parent_, tr("3-D view as a picture"), "ladder.png", tr("PNG picture (*.png)"));
+    if (path.isEmpty()) return;
+    const ExportResult result = Exporter::viewPicture(view_, path);
+    if (!result.ok)
+        QMessageBox::warning(parent_, tr("Not exported"), result.error);
+    else
+        say(tr("Exported %1.").arg(path));
+}
+
+void TeachingDocks::exportSequence(bool video, bool threeD) {
     const auto s = latest();
     if (video && Exporter::ffmpeg().isEmpty()) {
         QMessageBox::information(parent_, tr("Export a video"), Exporter::ffmpegMissing());
@@ -184,6 +201,7 @@ void TeachingDocks::exportSequence(bool video) {
     if (dialog.exec() != QDialog::Accepted) return;
     SequenceRequest r = dialog.request();
     r.look = sideView_->options();
+    if (threeD) r.painter = viewPainter(view_);
     QProgressDialog progress(tr("Drawing the pictures..."), tr("Cancel"), 0, Exporter::frameCount(r.from, r.to, r.fps),
                              parent_);
     progress.setWindowModality(Qt::WindowModal);
@@ -194,7 +212,15 @@ void TeachingDocks::exportSequence(bool video) {
     };
     // The run as recorded, with the user's drags: the pictures show what was on screen.
     const jl::Scene scene = s && s->recorded ? *s->recorded : doc_->scene();
+    // The 3-D view draws the exported frames: the run on screen must not
+    // draw its own into it meanwhile, and comes back after.
+    if (threeD) sim_->pause();
+    std::optional<QSignalBlocker> quiet;
+    if (threeD) quiet.emplace(sim_);
     const ExportResult result = video ? Exporter::video(scene, r, dialog.target()) : Exporter::imageSequence(scene, r);
+    quiet.reset();
+    // The views missed what the run published meanwhile (a pause): they get the latest.
+    if (const auto now = latest(); threeD && now) emit sim_->statusChanged(now);
     progress.reset();
     if (!result.ok)
         QMessageBox::warning(parent_, tr("Not exported"), result.error);

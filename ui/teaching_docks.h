@@ -20,6 +20,7 @@ class QWidget;
 namespace jl::ui {
 
 class Document;
+class LadderView;
 class LessonPanel;
 class Pacing;
 class RunPlots;
@@ -29,8 +30,9 @@ class SimController;
 class TeachingDocks : public QObject {
     Q_OBJECT
 public:
-    // `parent` owns the docks and menus and is the parent of the dialogs.
-    TeachingDocks(Document* doc, SimController* sim, QWidget* parent);
+    // `parent` owns the docks and menus and is the parent of the dialogs;
+    // `view`, the 3-D view, is pictured by the exports.
+    TeachingDocks(Document* doc, SimController* sim, LadderView* view, QWidget* parent);
 
     QDockWidget* sideViewDock() const { return sideViewDock_; }
     QDockWidget* plotsDock() const { return plotsDock_; }
@@ -64,7 +66,9 @@ private:
     void setLook();
     void markLoop();
     void sideViewPicture();
-    void exportSequence(bool video);
+    void viewPicture();
+    // `threeD`: pictures of the 3-D view, else of the side view.
+    void exportSequence(bool video, bool threeD);
     void exportEvents();
     void exportTables();
     void say(const QString& text);
@@ -72,6 +76,7 @@ private:
 
     Document* doc_;
     SimController* sim_;
+    LadderView* view_;
     QWidget* parent_;
     SideView* sideView_;
     RunPlots* plots_;

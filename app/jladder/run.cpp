@@ -27,7 +27,7 @@ const char* kRunHelp =
     "\n"
     "options:\n"
     "  --events FILE        write the events as JSON [{\"t\",\"hinge\",\"event\",\"corner\"}]\n"
-    "  --frames FILE        write block centres as CSV t,block,x,y,theta\n"
+    "  --frames FILE        write block centres as CSV \"t [s],block,x [m],y [m],angle [rad]\"\n"
     "  --every DT           interval of --frames rows (default: the scene's frame interval)\n"
     "  --integrator NAME    explicit_euler | symplectic_euler | rk4 | dormand_prince45 | verner65 |\n"
     "                       rosenbrock_w\n"

@@ -1,5 +1,6 @@
 #include "jl/base/csv_writer.h"
 
+#include <charconv>
 #include <cmath>
 
 namespace jl {
@@ -26,7 +27,11 @@ void CsvWriter::cell(std::string_view text) {
 
 void CsvWriter::cell(double x) {
     separate();
-    if (std::isfinite(x)) out_ << x;
+    if (!std::isfinite(x)) return;
+    char text[32];
+    const auto written = digits_ > 0 ? std::to_chars(text, text + sizeof text, x, std::chars_format::general, digits_)
+                                     : std::to_chars(text, text + sizeof text, x);
+    out_.write(text, written.ptr - text);
 }
 
 void CsvWriter::end() {

@@ -5,11 +5,9 @@
 namespace jl {
 
 void writeEventsCsv(std::ostream& out, const std::vector<Event>& events) {
-    const auto precision = out.precision(17);
-    out << "t,hinge,event,corner,text\n";
+    out << "t [s],hinge,event,corner,text\n";
     CsvWriter csv(out);
     for (const Event& e : events) csv.row(e.time, e.hinge, toString(e.kind), e.corner, e.text);
-    out.precision(precision);
 }
 
 }  // namespace jl

@@ -18,9 +18,9 @@ void account(Recording& r, const Frame& f) {
 Recording record(Simulation& sim, double until, const FrameGrid& grid, RecordTarget* target,
                  const std::function<int()>& interruption) {
     Recording r;
-    // Numbers only: no ribbons to draw in these frames.
+    // Numbers only, unless the target draws the frames: no ribbons to draw then.
     const bool ribbons = sim.ribbonsInFrames();
-    sim.setRibbonsInFrames(false);
+    sim.setRibbonsInFrames(target && target->drawsRibbons());
     const auto handOn = [&](const std::vector<Event>& events) {
         for (const Event& e : events) {
             ++r.events;

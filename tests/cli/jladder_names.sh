@@ -66,7 +66,7 @@ cp pristine.yaml frames.partial
 expect 1 "$jladder" run frames.partial --until 2 --integrator explicit_euler --step 0.01 --frames frames
 same frames.partial pristine.yaml
 kept=$(ls frames.partial-* 2>/dev/null | head -1)
-[ -n "$kept" ] && [ "$(head -1 "$kept")" = "t,block,x,y,theta" ] || fail "the failed run's frames are not kept"
+[ -n "$kept" ] && [ "$(head -1 "$kept")" = "t [s],block,x [m],y [m],angle [rad]" ] || fail "the failed run's frames are not kept"
 expect_message "$kept"
 
 # ... or another output, left as it was by the same failed run.

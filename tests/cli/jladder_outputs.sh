@@ -83,7 +83,7 @@ echo old >frames.csv
 echo old >events-target.json
 ln -s events-target.json events.json
 expect 0 "$jladder" run scene.yaml --until 0.5 --frames frames.csv --events events.json
-[ "$(head -1 frames.csv)" = "t,block,x,y,theta" ] || fail "frames.csv not replaced"
+[ "$(head -1 frames.csv)" = "t [s],block,x [m],y [m],angle [rad]" ] || fail "frames.csv not replaced"
 [ -L events.json ] || fail "events.json is no longer a link"
 [ "$(tail -1 events-target.json)" = "]" ] || fail "events not written through the link"
 ls | grep -q partial && fail "temporaries left behind: $(ls | grep partial)"

@@ -100,7 +100,7 @@ private slots:
         QVERIFY2(pixelsNear(picture, at, 30, QColor(200, 30, 30)) > 10, "no ring round the event's hinge");
         if (const QByteArray dir = qgetenv("JL_SHOT_DIR"); !dir.isEmpty()) {
             picture.save(QString("%1/event-side-view.png").arg(dir));
-            captureView(view).save(QString("%1/event-3d-view.png").arg(dir));
+            jl::test::captureView(view).save(QString("%1/event-3d-view.png").arg(dir));
         }
         // A frame later nothing is pointed at.
         QTest::keyClick(view, Qt::Key_Right);

@@ -300,6 +300,8 @@ private slots:
         QVERIFY(csv.open(QIODevice::ReadOnly));
         const QString text = QString::fromUtf8(csv.readAll());
         QCOMPARE(text.count('\n'), 5);  // a header and one line per cell
+        QCOMPARE(text.section('\n', 0, 0),
+                 QString("Blocks,Block thickness [mm],hinges,reached,mean time between flips [s],failure"));
         QVERIFY(map.exportSvg(dir.filePath("map.svg")));
         QVERIFY(QFileInfo(dir.filePath("map.svg")).size() > 0);
         QVERIFY(map.exportPng(dir.filePath("map.png")));

@@ -8,6 +8,7 @@
 
 #include <QAction>
 #include <QFile>
+#include <QFileDialog>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QPushButton>
@@ -21,46 +22,42 @@ using namespace jl::ui;
 namespace {
 const QString kClassic = QStringLiteral(JL_SOURCE_DIR "/examples/classic.yaml");
 
-// Answers the next message box the window opens with `button`, as a person
-// would click it (the box is modal: the answer has to come from the event loop).
+// Answers the next message box with `button`.
 void answerNextBox(QMessageBox::StandardButton button, QString* text = nullptr) {
-    auto* poll = new QTimer;
-    auto* waited = new int(0);
-    QObject::connect(poll, &QTimer::timeout, [=] {
-        auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
-        if (!box && ++*waited < 250) return;
-        if (box) {
-            if (text) *text = box->text();
-            box->button(button)->click();
-        }
-        poll->stop();
-        poll->deleteLater();
-        delete waited;
+    jl::test::answerNextModal([=](QWidget* modal) {
+        auto* box = qobject_cast<QMessageBox*>(modal);
+        if (!box) return false;
+        if (text) *text = box->text();
+        box->button(button)->click();
+        return true;
     });
-    poll->start(20);
 }
 
-// The same for a box whose buttons are the program's own words.
+// The same for a box whose buttons are the program's own words; another box
+// may come first (the unsaved-changes prompt): it waits for ours.
 void clickInNextBox(const QString& buttonText, QString* text = nullptr) {
-    auto* poll = new QTimer;
-    auto* waited = new int(0);
-    QObject::connect(poll, &QTimer::timeout, [=] {
-        // Another box may come first (the unsaved-changes prompt): wait for ours.
-        auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
-        QAbstractButton* wanted = nullptr;
-        if (box)
-            for (QAbstractButton* b : box->buttons())
-                if (b->text() == buttonText) wanted = b;
-        if (!wanted && ++*waited < 250) return;
-        if (wanted) {
-            if (text) *text = box->text();
-            wanted->click();
-        }
-        poll->stop();
-        poll->deleteLater();
-        delete waited;
+    jl::test::answerNextModal([=](QWidget* modal) {
+        auto* box = qobject_cast<QMessageBox*>(modal);
+        if (!box) return false;
+        for (QAbstractButton* b : box->buttons())
+            if (b->text() == buttonText) {
+                if (text) *text = box->text();
+                b->click();
+                return true;
+            }
+        return false;
     });
-    poll->start(20);
+}
+
+// Reads the file the next file dialog proposes, then cancels it.
+void cancelNextFileDialog(QString* proposed) {
+    jl::test::answerNextModal([=](QWidget* modal) {
+        auto* dialog = qobject_cast<QFileDialog*>(modal);
+        if (!dialog) return false;
+        *proposed = dialog->selectedFiles().value(0);
+        dialog->reject();
+        return true;
+    });
 }
 
 QAction* action(QWidget& w, const QString& text) {
@@ -88,6 +85,7 @@ class DocumentFilesTest : public QObject {
 private slots:
     void initTestCase() { jl::test::isolateSettings(); }
     void init() { Document::removeRecovery(); }
+    void cleanup() { qunsetenv("JL_EXAMPLES"); }
 
     // A new scene plays the classic trick: its turn sends a ripple down (it
     // turned the other way, which only throws the ladder about).
@@ -249,6 +247,35 @@ private slots:
         action(w, "&Save")->trigger();
         QVERIFY(!w.document()->isModified());
         QVERIFY(w.close());
+    }
+
+    // A lesson is read-only: Save As proposes the user's documents folder
+    // (home on an account without one) under the lesson's name, Save asks where, and saving over it is refused.
+    void lessonsAreNeverSavedOver() {
+        QTemporaryDir lessons;
+        const QString lesson = lessons.filePath("classic.yaml");
+        QVERIFY(QFile::copy(kClassic, lesson));
+        const QByteArray onDisk = contents(lesson);
+        qputenv("JL_EXAMPLES", lessons.path().toUtf8());
+        MainWindow w(jl::test::quietWindow());
+        QVERIFY(w.openFile(lesson));
+        w.findChild<QSpinBox*>("blocks")->setValue(9);
+        const QDir documents(QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation));
+        const QString mine = (documents.exists() ? documents : QDir::home()).filePath("classic.yaml");
+        QString proposed;
+        cancelNextFileDialog(&proposed);
+        action(w, "Save &As...")->trigger();
+        QCOMPARE(proposed, mine);
+        proposed.clear();
+        cancelNextFileDialog(&proposed);
+        action(w, "&Save")->trigger();
+        QCOMPARE(proposed, mine);
+        QString refusal;
+        answerNextBox(QMessageBox::Ok, &refusal);
+        QVERIFY(!w.saveTo(lesson));
+        QVERIFY2(refusal.contains("lesson"), qPrintable(refusal));
+        QCOMPARE(contents(lesson), onDisk);
+        QVERIFY(w.document()->isModified());
     }
 
     void droppingASceneFileOnTheWindowOpensIt() {

@@ -26,24 +26,10 @@ using namespace jl::ui;
 namespace {
 const QString kClassic = QStringLiteral(JL_SOURCE_DIR "/examples/classic.yaml");
 
-// Hue in degrees and saturation of a colour, to recognise the wood under any shading.
-bool woodColoured(QColor c, QColor wood) {
-    const float h = c.hsvHueF() * 360, s = c.hsvSaturationF();
-    return std::abs(h - wood.hsvHueF() * 360) < 5 && s > 0.2f && c.valueF() > 0.3f;
-}
-
 // The blocks' centres show their wood seen edge-on (yaw 0): from the default
 // three-quarter view the centre of a block is on a shaded face or a ribbon.
 void turnEdgeOn(MainWindow& w) { w.ladderView()->orbit(-w.ladderView()->viewCamera().yaw(), 0); }
 
-// Shows the window on the classic scene with its first frame simulated.
-bool showClassic(MainWindow& w) {
-    w.resize(1400, 900);
-    w.show();
-    if (!QTest::qWaitForWindowExposed(&w)) return false;
-    const auto before = jl::test::loadsSoFar(w.controller());
-    return w.openFile(kClassic) && jl::test::loadedAfter(w.controller(), before);
-}
 }  // namespace
 
 class MainWindowTest : public QObject {
@@ -53,7 +39,7 @@ private slots:
 
     void opensClassicAndTheCaptureShowsTheBlocks() {
         MainWindow w(jl::test::quietWindow());
-        QVERIFY(showClassic(w));
+        QVERIFY(jl::test::showScene(w, kClassic));
         QCOMPARE(w.document()->scene().title, std::string("The classic cascade"));
         const auto status = w.controller()->status();
         QCOMPARE(int(status->frame->poses.size()), 6);
@@ -68,17 +54,18 @@ private slots:
             const jl::Vec2 c = status->frame->poses[size_t(i)].position;
             const QPointF p = w.ladderView()->pixelOf(c) * scale;
             const QColor got = image.pixelColor(p.toPoint());
-            QVERIFY2(woodColoured(got, wood),
+            QVERIFY2(jl::test::woodColoured(got, wood),
                      qPrintable(QString("block %1 at %2,%3 is %4").arg(i).arg(p.x()).arg(p.y()).arg(got.name())));
             // 15 cm beside the ladder there is no wood, so the test can fail.
             const QPointF beside = w.ladderView()->pixelOf(c + jl::Vec2(0.15, 0)) * scale;
-            QVERIFY2(!woodColoured(image.pixelColor(beside.toPoint()), wood), "wood colour where no block is");
+            QVERIFY2(!jl::test::woodColoured(image.pixelColor(beside.toPoint()), wood),
+                     "wood colour where no block is");
         }
     }
 
     void ribbonsAreDrawnOverTheFacesAndHideWhenAsked() {
         MainWindow w(jl::test::quietWindow());
-        QVERIFY(showClassic(w));
+        QVERIFY(jl::test::showScene(w, kClassic));
         turnEdgeOn(w);
         w.ladderView()->orbit(35, 0);  // from the front the ribbons are edge on
         QTest::qWait(300);
@@ -186,7 +173,7 @@ private slots:
 
     void aBlockOverrideChangesThatBlockAloneAndUndoes() {
         MainWindow w(jl::test::quietWindow());
-        QVERIFY(showClassic(w));
+        QVERIFY(jl::test::showScene(w, kClassic));
         const jl::Scene original = w.document()->scene();
         auto* table = w.findChild<QTableWidget*>("blockOverrides");
         QVERIFY(table);
@@ -218,9 +205,9 @@ private slots:
             return image.pixelColor((w.ladderView()->pixelOf(frame->poses[size_t(block)].position) * scale).toPoint());
         };
         const jl::Color oc = *o[0].color;
-        QVERIFY(woodColoured(colourAt(2), QColor(oc.r, oc.g, oc.b)));
-        QVERIFY(!woodColoured(colourAt(2), QColor(200, 162, 107)));
-        QVERIFY(woodColoured(colourAt(3), QColor(200, 162, 107)));
+        QVERIFY(jl::test::woodColoured(colourAt(2), QColor(oc.r, oc.g, oc.b)));
+        QVERIFY(!jl::test::woodColoured(colourAt(2), QColor(200, 162, 107)));
+        QVERIFY(jl::test::woodColoured(colourAt(3), QColor(200, 162, 107)));
 
         while (w.document()->undoStack()->canUndo()) w.document()->undoStack()->undo();
         QVERIFY(w.document()->scene() == original);
@@ -274,7 +261,7 @@ private slots:
     // mode taller than the screen, the plots and the status bar off it.
     void leavingPresentationModeKeepsTheWindowOnTheScreen() {
         MainWindow w(jl::test::quietWindow());
-        QVERIFY(showClassic(w));
+        QVERIFY(jl::test::showScene(w, kClassic));
         const QRect screen = w.screen()->availableGeometry();
         w.setGeometry(screen);
         w.activateWindow();

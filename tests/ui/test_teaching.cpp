@@ -331,7 +331,7 @@ private slots:
         QVERIFY(file.open(QIODevice::ReadOnly | QIODevice::Text));
         const QStringList rows = QString::fromUtf8(file.readAll()).split('\n', Qt::SkipEmptyParts);
         QCOMPARE(rows.size(), int(run.events.size()) + 1);
-        QCOMPARE(rows.front(), QString("t,hinge,event,corner,text"));
+        QCOMPARE(rows.front(), QString("t [s],hinge,event,corner,text"));
         for (size_t i = 0; i < run.events.size(); ++i) {
             const QStringList cells = rows[int(i) + 1].split(',');
             QVERIFY(cells.size() >= 5);  // the text may hold commas (quoted)
@@ -350,10 +350,10 @@ private slots:
         };
         const QStringList poses = rowsOf("poses.csv"), energies = rowsOf("energy.csv");
         QCOMPARE(poses.size(), 11 * 6 + 1);
-        QCOMPARE(poses.front(), QString("t,block,x,y,theta"));
+        QCOMPARE(poses.front(), QString("t [s],block,x [m],y [m],angle [rad]"));
         QCOMPARE(energies.size(), 11 + 1);
         QCOMPARE(energies.front().split(',').size(), 9);
-        QCOMPARE(energies.front().split(',').last(), QString("balance"));
+        QCOMPARE(energies.front().split(',').last(), QString("balance [J]"));
         for (const QString& row : energies.mid(1)) QVERIFY(std::abs(row.split(',').last().toDouble()) < 1e-6);
         // Block 3 at 0.5 s (frame 5) is where the engine puts it, to the last bit.
         auto engine = jl::Simulation::build(scene).simulation;

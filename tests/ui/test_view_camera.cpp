@@ -34,11 +34,7 @@ QString ladderFile(const QTemporaryDir& dir, int blocks) {
 }
 
 bool showScene(MainWindow& w, const QString& path) {
-    w.resize(1400, 900);
-    w.show();
-    if (!QTest::qWaitForWindowExposed(&w)) return false;
-    const auto before = jl::test::loadsSoFar(w.controller());
-    if (!w.openFile(path) || !jl::test::loadedAfter(w.controller(), before)) return false;
+    if (!jl::test::showScene(w, path)) return false;
     QTest::qWait(200);  // the first frame reaches the view
     return true;
 }

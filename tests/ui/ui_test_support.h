@@ -7,16 +7,20 @@
 #include "ui/main_window.h"
 #include "ui/sim_controller.h"
 #include "ui/time_chart.h"
+#include "ui/view_capture.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QGraphicsTextItem>
 #include <QStandardPaths>
 #include <QTest>
+#include <QTimer>
 #include <QToolBar>
-#include <Qt3DRender/QRenderCapture>
 
+#include <cmath>
+#include <functional>
 #include <memory>
 
 namespace jl::test {
@@ -76,16 +80,39 @@ inline bool loadedAfter(jl::ui::SimController* c, std::uint64_t before) {
         c, [before](const jl::ui::SimStatus& s) { return s.loadSerial > before && s.frame && s.failure.empty(); });
 }
 
-// A capture may come back with a frame drawn just before the latest changes
-// reached the renderer; the second one in a row is drawn after them.
-inline QImage captureView(jl::ui::LadderView* view) {
-    QImage image;
-    for (int i = 0; i < 2; ++i) {
-        std::unique_ptr<Qt3DRender::QRenderCaptureReply> reply(view->capture()->requestCapture());
-        if (!QTest::qWaitFor([&] { return reply->isComplete(); }, 15000)) return {};
-        image = reply->image();
-    }
-    return image;
+// Shows the window at a size with room for the 3-D view, on the scene file
+// `path` with its first frame simulated.
+inline bool showScene(jl::ui::MainWindow& w, const QString& path) {
+    w.resize(1400, 900);
+    w.show();
+    if (!QTest::qWaitForWindowExposed(&w)) return false;
+    const auto before = loadsSoFar(w.controller());
+    return w.openFile(path) && loadedAfter(w.controller(), before);
+}
+
+// What the 3-D view shows (the program's own capture, as its exports take it).
+inline QImage captureView(jl::ui::LadderView* view) { return jl::ui::captureView(view); }
+
+// Hue in degrees and saturation of a colour, to recognise the wood under any shading.
+inline bool woodColoured(QColor c, QColor wood) {
+    const float h = c.hsvHueF() * 360, s = c.hsvSaturationF();
+    return std::abs(h - wood.hsvHueF() * 360) < 5 && s > 0.2f && c.valueF() > 0.3f;
+}
+
+// Answers the next modal window the program opens that `answer` takes (it
+// returns true once it has answered), as a person would: the window is
+// modal, so the answer has to come from the event loop.
+inline void answerNextModal(const std::function<bool(QWidget*)>& answer) {
+    auto* poll = new QTimer;
+    auto* waited = new int(0);
+    QObject::connect(poll, &QTimer::timeout, [=] {
+        QWidget* modal = QApplication::activeModalWidget();
+        if (!(modal && answer(modal)) && ++*waited < 250) return;
+        poll->stop();
+        poll->deleteLater();
+        delete waited;
+    });
+    poll->start(20);
 }
 
 // How many of a chart's texts (title, tick labels, legend) Qt cut to "...".

@@ -18,8 +18,11 @@ std::string csvField(std::string_view text);
 
 class CsvWriter {
 public:
-    // Numbers are written with `out`'s precision, which the caller sets.
-    explicit CsvWriter(std::ostream& out) : out_(out) {}
+    // Numbers are written as the shortest text that reads back to the same
+    // double (std::to_chars), so that a table read back is the run itself;
+    // `digits` > 0 rounds them instead to that many significant digits, for
+    // tables of measurements read by eye (the benchmark's).
+    explicit CsvWriter(std::ostream& out, int digits = 0) : out_(out), digits_(digits) {}
 
     // One row: every cell, then the line's end ("\n").
     template <class... Cells>
@@ -46,6 +49,7 @@ private:
     void separate();
 
     std::ostream& out_;
+    int digits_;
     bool first_ = true;
 };
 

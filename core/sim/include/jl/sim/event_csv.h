@@ -10,8 +10,8 @@
 
 namespace jl {
 
-// Header "t,hinge,event,corner,text"; times with 17 significant digits so
-// they read back bit for bit; `event` is toString(EventKind).
+// Header "t [s],hinge,event,corner,text"; times as the shortest text that
+// reads back bit for bit; `event` is toString(EventKind).
 void writeEventsCsv(std::ostream& out, const std::vector<Event>& events);
 
 }  // namespace jl

@@ -11,9 +11,11 @@
 
 namespace jl {
 
-// "t,block,x,y,theta": m and rad, 17 significant digits (they read back exactly).
+// "t [s],block,x [m],y [m],angle [rad]": each number the shortest text that
+// reads back to the same double (jl/base/csv_writer.h).
 void writePosesCsv(std::ostream& out, const std::vector<Frame>& frames);
-// "t,kinetic,potential,total,held_work,user_work,impact_loss,damping_loss,balance": J.
+// "t [s],kinetic [J],potential [J],total [J],held_work [J],user_work [J],
+// impact_loss [J],damping_loss [J],balance [J]".
 void writeEnergyCsv(std::ostream& out, const std::vector<Frame>& frames);
 
 // The same tables a frame at a time: the header line, then each frame's rows.

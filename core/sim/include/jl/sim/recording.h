@@ -21,6 +21,9 @@ public:
     virtual ~RecordTarget() = default;
     virtual bool frame(const Frame& f) = 0;
     virtual bool event(const Event& e) = 0;
+    // A target that draws the frames (a video of the 3-D view) wants the
+    // ribbons in them; one that keeps numbers does not pay for them.
+    virtual bool drawsRibbons() const { return false; }
 };
 
 struct Recording {
@@ -35,7 +38,8 @@ struct Recording {
 };
 
 // Runs `sim` to exactly `until` (the last step shortened to land on it),
-// handing every event to `target` and a frame (without ribbons) at t = 0
+// handing every event to `target` and a frame (with ribbons only when the
+// target draws them) at t = 0
 // and then at exactly each instant of `grid` up to `until` (energy books
 // checked on each; the frame times never change the steps), and keeping the
 // largest pin gap after every step. Ends early on a failure, a refusal of
