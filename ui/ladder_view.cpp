@@ -326,7 +326,7 @@ void LadderView::mouseMoveEvent(QMouseEvent* e) {
     if (dragging_) {  // until the release, whatever else the buttons do
         if (const auto p = planePoint(e->position())) emit dragMoved(*p);
     } else if (turning_) {
-        if (const auto p = planePoint(e->position())) turning_->moveTo(*p);
+        if (const auto p = planePoint(e->position())) turning_->moveTo(*p, double(turnClock_.nsecsElapsed()) * 1e-9);
         // What the release will give, beside the pointer.
         const double degrees = TurnGesture::snapped(turning_->swept()) * 180 / std::numbers::pi;
         QToolTip::showText(e->globalPosition().toPoint(),
@@ -354,8 +354,8 @@ void LadderView::mouseReleaseEvent(QMouseEvent* e) {
         emit dragEnded();
     }
     if (e->button() == Qt::LeftButton && turning_) {
-        if (const auto p = planePoint(e->position())) turning_->moveTo(*p);
-        const auto turn = turning_->turn(double(turnClock_.nsecsElapsed()) * 1e-9);
+        if (const auto p = planePoint(e->position())) turning_->moveTo(*p, double(turnClock_.nsecsElapsed()) * 1e-9);
+        const auto turn = turning_->turn();
         turning_.reset();
         QToolTip::hideText();
         if (turn) emit turnGiven(turn->block, turn->angle, turn->duration, turnShownTime_);

@@ -156,7 +156,7 @@ void SideView::mousePressEvent(QMouseEvent* e) {
 
 void SideView::mouseMoveEvent(QMouseEvent* e) {
     if (turning_) {
-        turning_->moveTo(planePoint(e->position()));
+        turning_->moveTo(planePoint(e->position()), double(turnClock_.nsecsElapsed()) * 1e-9);
         const double degrees = TurnGesture::snapped(turning_->swept()) * 180 / std::numbers::pi;
         QToolTip::showText(e->globalPosition().toPoint(),
                            degrees == 0 ? tr("Turn: sweep at least 45 degrees")
@@ -174,8 +174,8 @@ void SideView::mouseMoveEvent(QMouseEvent* e) {
 
 void SideView::mouseReleaseEvent(QMouseEvent* e) {
     if (e->button() == Qt::LeftButton && turning_) {
-        turning_->moveTo(planePoint(e->position()));
-        const auto turn = turning_->turn(double(turnClock_.nsecsElapsed()) * 1e-9);
+        turning_->moveTo(planePoint(e->position()), double(turnClock_.nsecsElapsed()) * 1e-9);
+        const auto turn = turning_->turn();
         turning_.reset();
         QToolTip::hideText();
         if (turn) emit turnGiven(turn->block, turn->angle, turn->duration, turnShownTime_);

@@ -20,12 +20,15 @@ struct Turn {
 class TurnGesture {
 public:
     TurnGesture(int block, const Vec2& centre, const Vec2& point);
-    void moveTo(const Vec2& point);
+    // The pointer at `seconds` after the press.
+    void moveTo(const Vec2& point, double seconds);
     int block() const { return block_; }
     double swept() const { return swept_; }  // rad, so far
-    // The turn the gesture gives after `seconds` of sweeping: none under
-    // half a quarter turn.
-    std::optional<Turn> turn(double seconds) const;
+    // The turn the gesture gives: none under half a quarter turn. Its time
+    // is the hand's from the last still moment before it swept to the last
+    // move that swept: a wait before the sweep or before the release is
+    // not part of the turn.
+    std::optional<Turn> turn() const;
     static double snapped(double angle);  // to the nearest quarter turn
 
     // The shortest and longest turn a gesture gives (s): a flick is not an
@@ -35,8 +38,10 @@ public:
 private:
     int block_;
     Vec2 centre_;
-    double last_;       // rad, the pointer's bearing from the centre
-    double swept_ = 0;  // rad
+    double last_;                          // rad, the pointer's bearing from the centre
+    double swept_ = 0;                     // rad
+    double lastAt_ = 0;                    // s, the last move
+    double sweepFrom_ = -1, sweepTo_ = 0;  // s, the moves that swept
 };
 
 }  // namespace jl::ui

@@ -28,24 +28,34 @@ private slots:
 
     // The sweep adds up the short way round at each move, so one and a
     // half turns are 540 degrees, not 180; it snaps to the nearest quarter
-    // turn and takes the hand's time for the snapped angle.
+    // turn and takes the hand's time for the snapped angle, from the last
+    // still moment before the sweep to its last move: waits before and
+    // after do not count.
     void aSweepSnapsToQuarterTurnsAtTheHandsSpeed() {
         const jl::Vec2 c(1, 2);
-        TurnGesture g(3, c, c + jl::Vec2(0.01, 0));
-        for (int k = 1; k <= 27; ++k) g.moveTo(c + 0.01 * jl::Vec2(std::cos(k * kPi / 18), std::sin(k * kPi / 18)));
+        const auto at = [&](double degrees) -> jl::Vec2 {
+            return c + 0.01 * jl::Vec2(std::cos(degrees * kPi / 180), std::sin(degrees * kPi / 180));
+        };
+        TurnGesture g(3, c, at(0));
+        g.moveTo(at(0), 2.0);  // held still for 2 s after the press
+        for (int k = 1; k <= 27; ++k) g.moveTo(at(10 * k), 2.0 + 0.6 * k / 27);
+        g.moveTo(at(270), 5.0);                            // and 2.4 s before the release
         QVERIFY(std::abs(g.swept() - 1.5 * kPi) < 1e-12);  // 270 degrees
-        const auto turn = g.turn(0.6);
+        const auto turn = g.turn();
         QVERIFY(turn);
         QCOMPARE(turn->block, 3);
         QCOMPARE(turn->angle, 1.5 * kPi);
-        QCOMPARE(turn->duration, 0.6);
-        QCOMPARE(TurnGesture::snapped(2.0), kPi / 2);               // 115 degrees -> 90
-        QCOMPARE(TurnGesture::snapped(2.5), kPi);                   // 143 degrees -> 180
-        QCOMPARE(TurnGesture::snapped(-3.5), -kPi);                 // clockwise
-        QVERIFY(!TurnGesture(0, c, c + jl::Vec2(1, 0)).turn(1.0));  // no sweep, no turn
-        TurnGesture flick(0, c, c + jl::Vec2(1, 0));
-        flick.moveTo(c + jl::Vec2(0, 1));
-        QCOMPARE(flick.turn(0.001)->duration, TurnGesture::kShortest);
+        QVERIFY(std::abs(turn->duration - 0.6) < 1e-12);
+        QCOMPARE(TurnGesture::snapped(2.0), kPi / 2);  // 115 degrees -> 90
+        QCOMPARE(TurnGesture::snapped(2.5), kPi);      // 143 degrees -> 180
+        QCOMPARE(TurnGesture::snapped(-3.5), -kPi);    // clockwise
+        QVERIFY(!TurnGesture(0, c, at(0)).turn());     // no sweep, no turn
+        TurnGesture flick(0, c, at(0));
+        flick.moveTo(at(90), 0.001);
+        QCOMPARE(flick.turn()->duration, TurnGesture::kShortest);
+        TurnGesture slow(0, c, at(0));
+        slow.moveTo(at(90), 60);
+        QCOMPARE(slow.turn()->duration, TurnGesture::kLongest);
     }
 
     // In the 3-D view, on the held block of a paused run: half a turn
