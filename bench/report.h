@@ -4,6 +4,7 @@
 #pragma once
 
 #include "bench/cases.h"
+#include "bench/contacts.h"
 #include "bench/events.h"
 #include "bench/examples.h"
 #include "bench/stability.h"
@@ -24,6 +25,7 @@ struct BenchResults {
     std::vector<BenchRow> models;  // rigidPairModelStudy
     std::vector<EventCostRow> eventCost;
     ExamplesStudy examples;
+    ContactsStudy contacts;
 };
 
 bool writeReport(const BenchResults& r, const std::filesystem::path& plots, const std::filesystem::path& report);

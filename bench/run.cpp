@@ -2,6 +2,7 @@
 
 #include "bench/cases.h"
 #include "bench/chart.h"
+#include "bench/contacts_report.h"
 #include "bench/events.h"
 #include "bench/examples.h"
 #include "bench/models.h"
@@ -96,7 +97,7 @@ Chart workPrecision(const std::string& title, const std::string& errorLabel, con
 bool runBench(const BenchRequest& request) {
     const std::string& only = request.only;
     const bool onlyStability = only == "stability", onlyModels = only == "models", onlyEvents = only == "events";
-    const bool onlyExamples = only == "examples";
+    const bool onlyExamples = only == "examples", onlyContacts = only == "contacts";
     const std::filesystem::path& examplesDir = request.examples;
     const std::filesystem::path& out = request.out;
     const std::filesystem::path& report = request.report;
@@ -104,7 +105,7 @@ bool runBench(const BenchRequest& request) {
     plan.quick = request.quick;
     plan.minSeconds = plan.quick ? 0.005 : 0.05;
     const std::vector<int> chainSizes = plan.quick ? std::vector<int>{10, 100} : std::vector<int>{10, 100, 1000};
-    const int studies = only.empty() ? 8 + int(chainSizes.size()) : 1;
+    const int studies = only.empty() ? 9 + int(chainSizes.size()) : 1;
     int started = 0;
     const auto starts = [&](const std::string& study) {
         if (request.studyStarts)
@@ -142,6 +143,11 @@ bool runBench(const BenchRequest& request) {
         return (writeExamplesCsv(study, out / "examples.csv") && writeExamplesReport(study, plan.quick, report) &&
                 study.error.empty());
     }
+    if (onlyContacts) {
+        starts("block contacts");
+        const ContactsStudy study = contactsStudy(plan, examplesDir);
+        return writeContactsCsv(study, out) && writeContactsReport(study, plan.quick, report) && study.error.empty();
+    }
 
     BenchResults results;
     results.quick = plan.quick;
@@ -171,6 +177,8 @@ bool runBench(const BenchRequest& request) {
     results.eventCost = eventCostStudy(plan);
     starts("examples at default settings");
     results.examples = examplesStudy(plan, examplesDir);
+    starts("block contacts");
+    results.contacts = contactsStudy(plan, examplesDir);
     results.peers = peerVersions();
 
     bool ok = writeCsv(results.pendulum, out / "pendulum.csv") && writeCsv(results.ladder, out / "ladder.csv") &&
@@ -178,7 +186,7 @@ bool runBench(const BenchRequest& request) {
               writeStabilityCsv(results.stability, out / "stability.csv") &&
               writeCsv(results.models, out / "models.csv") &&
               writeEventCostCsv(results.eventCost, out / "events.csv") &&
-              writeExamplesCsv(results.examples, out / "examples.csv");
+              writeExamplesCsv(results.examples, out / "examples.csv") && writeContactsCsv(results.contacts, out);
     ok = writeChart(
              workPrecision("Physical pendulum, one exact period (theta0 = 2 rad)", "error (rad)", results.pendulum),
              out, "pendulum") &&

@@ -14,7 +14,7 @@ namespace {
 
 const char* kHelp =
     "usage: jladder bench [--quick] [--out DIR] [--report FILE] [--examples DIR]\n"
-    "                     [--only stability|models|events|examples] [--quiet]\n"
+    "                     [--only stability|models|events|examples|contacts] [--quiet]\n"
     "Measures cost (CPU seconds per simulated second) against error for every\n"
     "integrator and event policy on the physical pendulum, the falling chain\n"
     "(N = 10, 100, 1,000; against an independent reduced-coordinate reference)\n"
@@ -26,13 +26,15 @@ const char* kHelp =
     "pairs; the CPU cost of an event on ladders of 12 .. 10,000 thin blocks;\n"
     "every scene of --examples DIR (default: examples, relative to the current\n"
     "directory) at its own settings for 3 s (quick: 1 s), and long-ladder.yaml\n"
-    "with 1,000 blocks (not in --quick);\n"
+    "with 1,000 blocks (not in --quick); block contacts: the broad phase per\n"
+    "block on 12 .. 100,000 blocks and every example with contact off and on;\n"
     "and, if built with -DJL_BENCH_PEERS=ON, MuJoCo, Box2D and\n"
     "Bullet on the same chains. Writes DIR/*.csv, DIR/*.svg\n"
     "(default DIR: docs/bench) and FILE (default docs/performance.md).\n"
     "--quick: fewer sizes and steps; fits in CI (under a minute).\n"
-    "--only stability|models|events|examples: that study alone; FILE (default\n"
-    "DIR/stability.md, DIR/models.md, DIR/events.md or DIR/examples.md) gets\n"
+    "--only stability|models|events|examples|contacts: that study alone; FILE (default\n"
+    "DIR/stability.md, DIR/models.md, DIR/events.md, DIR/examples.md or\n"
+    "DIR/contacts.md) gets\n"
     "its section only.\n"
     "Each study's name goes to stderr as it starts; when stderr is a terminal,\n"
     "with how many studies are done and the time so far (not with --quiet).\n";
@@ -46,8 +48,8 @@ int bench(const std::vector<std::string>& args) {
     }
     const std::string only = o.get("--only").value_or("");
     if (o.error.empty() && !only.empty() && only != "stability" && only != "models" && only != "events" &&
-        only != "examples")
-        o.error = "--only takes 'stability', 'models', 'events' or 'examples', not '" + only + "'";
+        only != "examples" && only != "contacts")
+        o.error = "--only takes 'stability', 'models', 'events', 'examples' or 'contacts', not '" + only + "'";
     if (!o.error.empty()) {
         std::fprintf(stderr, "jladder bench: %s\n", o.error.c_str());
         return 2;

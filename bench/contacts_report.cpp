@@ -1,0 +1,96 @@
+// The section "Block contacts" of docs/performance.md, from contactsStudy.
+#include "bench/contacts_report.h"
+
+#include "bench/report_text.h"
+#include "bench/save_text.h"
+#include "jl/base/csv_writer.h"
+
+#include <algorithm>
+#include <sstream>
+
+namespace jl::bench {
+
+namespace {
+
+std::string broadTable(const ContactsStudy& s) {
+    std::ostringstream md;
+    md << "| N | still tail from block | pairs tested | calls timed | CPU per block per call |\n"
+       << "|---:|---:|---:|---:|---:|\n";
+    double lo = 1e300, hi = 0;
+    for (const BroadPhaseRow& r : s.broad) {
+        md << "| " << r.blocks << " | " << (r.stillFrom < 0 ? std::string("none") : std::to_string(r.stillFrom))
+           << " | " << r.pairs << " | " << r.calls << " | " << sig(1e9 * r.perBlock, 3) << " ns |"
+           << (r.failure.empty() ? "" : " failed: " + r.failure) << "\n";
+        if (r.perBlock > 0) lo = std::min(lo, r.perBlock), hi = std::max(hi, r.perBlock);
+    }
+    if (s.broad.empty()) return "Not measured (no classic.yaml among the examples).\n";
+    md << "\n- Flat within 1.5x, N = " << s.broad.front().blocks << " .. " << s.broad.back().blocks
+       << ": max/min = " << sig(hi / lo, 3) << " — **" << (hi / lo <= 1.5 ? "met" : "missed") << "**.\n";
+    return md.str();
+}
+
+std::string examplesTable(const ContactsStudy& s) {
+    if (!s.error.empty()) return "Not measured: " + s.error + ".\n";
+    std::ostringstream md;
+    md << "| scene | CPU s off | CPU s on | on / off | steps off / on | events off / on | strikes | events off against "
+          "on "
+          "| largest energy balance on (J) | failure on |\n"
+       << "|---|---:|---:|---:|---:|---:|---:|---|---:|---|\n";
+    int quiet = 0, quietMet = 0;
+    for (const ContactExampleRow& r : s.examples) {
+        const double ratio = r.cpuOff > 0 ? r.cpuOn / r.cpuOff : 0;
+        md << "| " << r.scene << " | " << sig(r.cpuOff, 3) << " | " << sig(r.cpuOn, 3) << " | " << sig(ratio, 3)
+           << " | " << r.stepsOff << " / " << r.stepsOn << " | " << r.eventsOff << " / " << r.eventsOn << " | "
+           << r.touches << " | "
+           << (r.sameSequence ? "same, times within " + sig(r.largestShift, 2) + " s"
+                              : "part at " + sig(r.partAt, 4) + " s")
+           << " | " << sig(r.balanceOn, 3) << " | " << r.failureOn << " |\n";
+        if (r.touches == 0) {
+            ++quiet;
+            if (ratio <= 1.1 && r.sameSequence && r.largestShift <= 1e-9) ++quietMet;
+        }
+    }
+    md << "\n- Where no block strikes another, at most 1.1x, and the same events at the same times to 1e-9 s: "
+       << quietMet << " of " << quiet << " — **" << (quietMet == quiet ? "met" : "missed") << "**.\n";
+    return md.str();
+}
+
+}  // namespace
+
+std::string contactsSection(const ContactsStudy& s, bool quick, bool& ok) {
+    return filled(
+        "contacts",
+        {{"quick_flag", quick ? " --quick" : ""},
+         {"quick_note", quick ? " **Quick run**: 1 s of simulated time, N up to 10,000, one repetition." : ""},
+         {"min_time", quick ? "20 ms" : "0.2 s"},
+         {"horizon", quick ? "1" : "3"},
+         {"repetitions", quick ? "one run" : "three runs"},
+         {"broad", broadTable(s)},
+         {"examples", examplesTable(s)}},
+        ok);
+}
+
+bool writeContactsCsv(const ContactsStudy& s, const std::filesystem::path& dir) {
+    std::ostringstream broad;
+    broad << "blocks,still_from,pairs,calls,cpu_s_per_block_call,build_cpu_s,failure\n";
+    CsvWriter b(broad, 6);
+    for (const BroadPhaseRow& r : s.broad)
+        b.row(r.blocks, r.stillFrom, r.pairs, r.calls, r.perBlock, r.buildCpu, r.failure);
+    std::ostringstream examples;
+    examples << "scene,asked_s,cpu_off_s,cpu_on_s,steps_off,steps_on,events_off,events_on,strikes,"
+                "same_sequence,largest_shift_s,part_at_s,largest_balance_on_J,failure_off,failure_on\n";
+    CsvWriter e(examples, 6);
+    for (const ContactExampleRow& r : s.examples)
+        e.row(r.scene, r.asked, r.cpuOff, r.cpuOn, r.stepsOff, r.stepsOn, r.eventsOff, r.eventsOn, r.touches,
+              r.sameSequence, r.largestShift, r.partAt, r.balanceOn, r.failureOff, r.failureOn);
+    return saveText(dir / "contacts_broad_phase.csv", broad.str()) &&
+           saveText(dir / "contacts_examples.csv", examples.str());
+}
+
+bool writeContactsReport(const ContactsStudy& s, bool quick, const std::filesystem::path& report) {
+    bool ok = true;
+    const std::string text = contactsSection(s, quick, ok);
+    return writeSection("contacts", quick, report, text, ok);
+}
+
+}  // namespace jl::bench
