@@ -5,6 +5,7 @@
 #include "jl/scene/scene.h"
 #include "jl/sim/frame.h"
 #include "ui/block_shapes.h"
+#include "ui/restructure_gesture.h"
 #include "ui/turn_gesture.h"
 #include "ui/view_camera.h"
 
@@ -86,6 +87,8 @@ signals:
     // Shift and a drag on a block: the hand turns it (turn_gesture.h), from
     // the time `shownTime` the view showed at the press.
     void turnGiven(int block, double angle, double duration, double shownTime);
+    // A cut, join, hold or release by hand (restructure_gesture.h), at the instant shown.
+    void actionGiven(const jl::ScriptAction& action, const QString& text);
     // Keys the view does not use, for the main window's shortcuts (this
     // window, embedded, has the keyboard focus when the ladder is clicked).
     void unhandledKey(const QKeySequence& key);
@@ -110,6 +113,15 @@ private:
     bool showsWholeLadder() const;
     // Whether any of it is: its outline on screen meets the view.
     bool showsSomeOfLadder() const;
+
+    // The restructuring by hand: the selected hinge's blocks highlighted,
+    // the join drag's line drawn (red, green once it snaps).
+    double metresOf(double pixels, const QPointF& at) const;
+    void showRestructure();
+    std::vector<int> highlighted() const;  // the event's blocks and the selected hinge's
+    void give(std::optional<GivenAction> given);
+    RestructureGesture restructure_;
+    QPointF rightPressAt_;  // a right press and release in one place is a click: the menu
 
     std::optional<TurnGesture> turning_;
     double turnShownTime_ = 0;  // s, the frame shown at the turn's press

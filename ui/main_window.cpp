@@ -331,6 +331,7 @@ void MainWindow::showDesignMap() {
 void MainWindow::createTeaching() {
     teaching_ = new TeachingDocks(doc_, sim_, view_, this);
     connect(teaching_->sideView(), &SideView::turnGiven, scriptPanel_, &ScriptPanel::addTurn);
+    connect(teaching_->sideView(), &SideView::actionGiven, scriptPanel_, &ScriptPanel::addAction);
     connect(teaching_, &TeachingDocks::lessonRequested, this, [this](const QString& path) {
         if (maybeSave()) openFile(path);
     });
@@ -406,6 +407,7 @@ void MainWindow::connectView() {
     connect(view_, &LadderView::dragMoved, sim_, &SimController::moveDrag);
     connect(view_, &LadderView::dragEnded, sim_, &SimController::endDrag);
     connect(view_, &LadderView::turnGiven, scriptPanel_, &ScriptPanel::addTurn);
+    connect(view_, &LadderView::actionGiven, scriptPanel_, &ScriptPanel::addAction);
     // The embedded 3-D window keeps the keyboard: its keys still reach our shortcuts.
     connect(view_, &LadderView::unhandledKey, this, [this](const QKeySequence& key) {
         for (QAction* a : findChildren<QAction*>())
