@@ -128,7 +128,10 @@ bool RestructureGesture::press(const jl::Vec2& point, double reach) {
     if (blocks() == 0) return false;
     selected_ = hingeNear(point, reach);
     if (selected_ > 0) return true;
-    joinFrom_ = freeCornerNear(point, reach, [](const BlockCorner&) { return true; });
+    // Only on blocks thick enough on screen to tell their corners apart: on a
+    // ladder seen whole, a press pushes or pans as before.
+    joinFrom_ =
+        freeCornerNear(point, reach, [&](const BlockCorner& c) { return 4 * halfSize_[size_t(c.block)].x() >= reach; });
     snappedTo_.reset();
     pointer_ = point;
     return joinFrom_.has_value();

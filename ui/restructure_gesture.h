@@ -50,8 +50,9 @@ public:
     const jl::Frame& shown() const { return shown_; }  // poses, held and hinges only
 
     // A left press at `point` within `reach` (m, a few pixels) of an uncut
-    // hinge selects it; of a free corner, starts a join drag. False: the
-    // press is not the gesture's (the view pushes, pans or orbits).
+    // hinge selects it; of a free corner of a block at least half `reach` thick,
+    // starts a join drag. False: the press is not the gesture's (the view
+    // pushes, pans or orbits).
     bool press(const jl::Vec2& point, double reach);
     // During a join drag: the pointer, and how near (m) a corner snaps.
     void dragTo(const jl::Vec2& point, double snap);

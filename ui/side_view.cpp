@@ -154,10 +154,10 @@ void SideView::mousePressEvent(QMouseEvent* e) {
         turnClock_.start();
         return;
     }
-    // By a hinge: select it; at a free corner: drag it to join (restructure_gesture.h).
-    const bool taken = !framing_.isEmpty() && restructure_.press(p, metresOf(RestructureGesture::kReachPixels));
+    // By a hinge: select it (a drag still pans); at a free corner: drag it to join (restructure_gesture.h).
+    if (!framing_.isEmpty()) restructure_.press(p, metresOf(RestructureGesture::kReachPixels));
     update();
-    if (taken) return;
+    if (restructure_.joining()) return;
     dragFrom_ = e->position();
     setCursor(Qt::ClosedHandCursor);
 }
