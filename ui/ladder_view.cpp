@@ -110,7 +110,12 @@ void LadderView::setFollow(bool on) {
     followedCentre_.reset();
 }
 
-void LadderView::showFrame(const jl::Frame& frame) {
+void LadderView::showFrame(const jl::Frame& frame) { showFrame(std::make_shared<const jl::Frame>(frame)); }
+
+void LadderView::showFrame(std::shared_ptr<const jl::Frame> shared) {
+    if (!shared) return;
+    restructure_.showFrame(shared);
+    const jl::Frame& frame = *shared;
     if (!frame.dragging) grabbed_ = -1;
     if (frame.time != shownTime_) {
         earlierPoses_ = std::move(shownPoses_);
@@ -136,7 +141,6 @@ void LadderView::showFrame(const jl::Frame& frame) {
     // At an event's instant, the blocks its hinge joins: where to look.
     pointedAt_.clear();
     for (const int j : hingesAtInstant(frame)) pointedAt_.insert(pointedAt_.end(), {j - 1, j});
-    restructure_.showFrame(frame);
     blocks_->showFrame(frame, frame.dragging ? grabbed_ : -1, highlighted());
     // Ribbons are a few pixels wide at best when the whole of a long ladder is
     // in view, yet they cost more to draw than all the blocks: show them close up.

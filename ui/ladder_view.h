@@ -15,6 +15,7 @@
 #include <QTimer>
 #include <Qt3DExtras/Qt3DWindow>
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -36,6 +37,8 @@ public:
     // A new or edited scene: shapes, colours and the room; the camera too when asked.
     void setScene(const jl::Scene& scene, bool resetCamera);
     void showFrame(const jl::Frame& frame);
+    // The simulation's published frame, shared rather than copied.
+    void showFrame(std::shared_ptr<const jl::Frame> frame);
     // The blocks drawn highlighted because an event's hinge joins them.
     const std::vector<int>& pointedAt() const { return pointedAt_; }
     void resetView();

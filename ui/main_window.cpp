@@ -449,7 +449,7 @@ void MainWindow::onSceneChanged(SceneChange change) {
 }
 
 void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {
-    if (s->frame) view_->showFrame(*s->frame);
+    if (s->frame) view_->showFrame(s->frame);
     timeline_->setState(s->frame ? s->frame->time : s->frameIndex * s->interval, s->headTime, s->events);
     eventsPanel_->setEvents(s->events);
     eventsPanel_->setTime(s->frame ? s->frame->time : 0);

@@ -29,33 +29,31 @@ void RestructureGesture::setScene(const jl::Scene& scene) {
         for (const BlockShape& s : blockShapes(scene)) halfSize_.emplace_back(s.across / 2, s.along / 2);
         halfSize_.resize(cornerLocal_.size());
     }
-    shown_ = {};
+    shown_ = std::make_shared<const jl::Frame>();
     selected_ = 0;
     joinFrom_.reset();
     snappedTo_.reset();
 }
 
-void RestructureGesture::showFrame(const jl::Frame& frame) {
-    shown_.time = frame.time;
-    shown_.poses = frame.poses;
-    shown_.held = frame.held;
-    shown_.hinges = frame.hinges;
+void RestructureGesture::showFrame(std::shared_ptr<const jl::Frame> frame) {
+    if (!frame) return;
+    shown_ = std::move(frame);
     // A hinge cut since (or gone with an edit) is no longer a selection.
-    if (selected_ > int(shown_.hinges.size()) ||
-        (selected_ > 0 && shown_.hinges[size_t(selected_ - 1)].mode == jl::HingeMode::Cut))
+    if (selected_ > int(shown_->hinges.size()) ||
+        (selected_ > 0 && shown_->hinges[size_t(selected_ - 1)].mode == jl::HingeMode::Cut))
         selected_ = 0;
 }
 
 jl::Vec2 RestructureGesture::position(const BlockCorner& c) const {
-    return shown_.poses[size_t(c.block)].apply(cornerLocal_[size_t(c.block)][size_t(c.corner)]);
+    return shown_->poses[size_t(c.block)].apply(cornerLocal_[size_t(c.block)][size_t(c.corner)]);
 }
 
 // Hinge j pins corner k of blocks j-1 and j; locked it holds k ^ 2 too,
 // folded k ^ 1 (docs/model.md 3.6).
 bool RestructureGesture::isFree(const BlockCorner& c) const {
     const auto holds = [&](int j) {
-        if (j < 1 || j > int(shown_.hinges.size())) return false;
-        const jl::HingeFrame& h = shown_.hinges[size_t(j - 1)];
+        if (j < 1 || j > int(shown_->hinges.size())) return false;
+        const jl::HingeFrame& h = shown_->hinges[size_t(j - 1)];
         switch (h.mode) {
             case jl::HingeMode::Free:
                 return c.corner == h.corner;
@@ -77,13 +75,13 @@ bool RestructureGesture::isFree(const BlockCorner& c) const {
 // refuses that join and says so in the event log.)
 bool RestructureGesture::joinable(int a, int b) const {
     if (a == b) return false;
-    const auto held = [&](int i) { return i < int(shown_.held.size()) && shown_.held[size_t(i)]; };
+    const auto held = [&](int i) { return i < int(shown_->held.size()) && shown_->held[size_t(i)]; };
     if (held(a) && held(b)) return false;
     const int lo = std::min(a, b), hi = std::max(a, b);
-    if (hi > int(shown_.hinges.size())) return false;
-    if (hi - lo == 1 && shown_.hinges[size_t(hi - 1)].mode != jl::HingeMode::Cut) return false;
+    if (hi > int(shown_->hinges.size())) return false;
+    if (hi - lo == 1 && shown_->hinges[size_t(hi - 1)].mode != jl::HingeMode::Cut) return false;
     for (int j = lo + 1; j <= hi; ++j) {
-        const jl::HingeMode m = shown_.hinges[size_t(j - 1)].mode;
+        const jl::HingeMode m = shown_->hinges[size_t(j - 1)].mode;
         if (m != jl::HingeMode::OpenLocked && m != jl::HingeMode::Folded) return true;
     }
     return false;
@@ -92,9 +90,9 @@ bool RestructureGesture::joinable(int a, int b) const {
 int RestructureGesture::hingeNear(const jl::Vec2& point, double reach) const {
     int best = 0;
     double nearest = reach;
-    for (size_t j = 0; j < shown_.hinges.size(); ++j) {
-        if (shown_.hinges[j].mode == jl::HingeMode::Cut) continue;
-        const double d = (shown_.hinges[j].position - point).norm();
+    for (size_t j = 0; j < shown_->hinges.size(); ++j) {
+        if (shown_->hinges[j].mode == jl::HingeMode::Cut) continue;
+        const double d = (shown_->hinges[j].position - point).norm();
         if (d <= nearest) nearest = d, best = int(j + 1);
     }
     return best;
@@ -116,7 +114,7 @@ std::optional<BlockCorner> RestructureGesture::freeCornerNear(
 int RestructureGesture::blockAt(const jl::Vec2& point) const {
     constexpr double margin = 0.002;  // m, as the views' own picks
     for (size_t i = size_t(blocks()); i-- > 0;) {
-        const jl::Vec2 local = jl::rotate(-shown_.poses[i].angle, point - shown_.poses[i].position);
+        const jl::Vec2 local = jl::rotate(-shown_->poses[i].angle, point - shown_->poses[i].position);
         if (std::abs(local.x()) <= halfSize_[i].x() + margin && std::abs(local.y()) <= halfSize_[i].y() + margin)
             return int(i);
     }
@@ -166,7 +164,7 @@ std::optional<std::pair<jl::Vec2, jl::Vec2>> RestructureGesture::joinLine() cons
 jl::ScriptAction RestructureGesture::row(Kind kind) const {
     jl::ScriptAction a;
     a.kind = kind;
-    a.at = shown_.time;
+    a.at = shown_->time;
     return a;
 }
 
@@ -192,8 +190,8 @@ void RestructureGesture::fillMenu(QMenu& menu, const jl::Vec2& point, double rea
         });
     }
     // The corners of a cut hinge, as the scene's join row takes them: the hinge again.
-    for (size_t j = 0; j + 1 < size_t(blocks()) && j < shown_.hinges.size(); ++j) {
-        const jl::HingeFrame& h = shown_.hinges[j];
+    for (size_t j = 0; j + 1 < size_t(blocks()) && j < shown_->hinges.size(); ++j) {
+        const jl::HingeFrame& h = shown_->hinges[j];
         const BlockCorner upper{int(j), h.corner}, lower{int(j + 1), h.corner};
         if (h.mode != jl::HingeMode::Cut ||
             std::min((position(upper) - point).norm(), (position(lower) - point).norm()) > reach)
@@ -205,7 +203,7 @@ void RestructureGesture::fillMenu(QMenu& menu, const jl::Vec2& point, double rea
         });
     }
     if (const int b = blockAt(point); b >= 0) {
-        const bool held = b < int(shown_.held.size()) && shown_.held[size_t(b)];
+        const bool held = b < int(shown_->held.size()) && shown_->held[size_t(b)];
         jl::ScriptAction a = row(held ? Kind::Release : Kind::Hold);
         a.block = b;
         const QString text = held ? QObject::tr("Release block %1").arg(b) : QObject::tr("Hold block %1 here").arg(b);
@@ -230,7 +228,7 @@ void RestructureGesture::paint(QPainter& p, const std::function<QPointF(const jl
     p.setBrush(Qt::NoBrush);
     if (selected_ > 0) {
         p.setPen(QPen(kSelection, 3 * ui));
-        p.drawEllipse(pixel(shown_.hinges[size_t(selected_ - 1)].position), 11 * ui, 11 * ui);
+        p.drawEllipse(pixel(shown_->hinges[size_t(selected_ - 1)].position), 11 * ui, 11 * ui);
     }
     if (joinFrom_) {
         // Where the corner may go: every free corner of a block it may join.

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -45,9 +46,10 @@ public:
     static constexpr double kReachPixels = 8, kSnapPixels = 18;
 
     void setScene(const jl::Scene& scene);
-    // The instant shown: what a press picks, and the time of the rows given.
-    void showFrame(const jl::Frame& frame);
-    const jl::Frame& shown() const { return shown_; }  // poses, held and hinges only
+    // The instant shown (shared, not copied, 60 times a second): what a
+    // press picks, and the time of the rows given.
+    void showFrame(std::shared_ptr<const jl::Frame> frame);
+    const jl::Frame& shown() const { return *shown_; }
 
     // A left press at `point` within `reach` (m, a few pixels) of an uncut
     // hinge selects it; of a free corner of a block at least half `reach` thick,
@@ -84,7 +86,7 @@ public:
     jl::Vec2 position(const BlockCorner& c) const;
 
 private:
-    int blocks() const { return int(std::min(shown_.poses.size(), cornerLocal_.size())); }  // of the ladder, shown
+    int blocks() const { return int(std::min(shown_->poses.size(), cornerLocal_.size())); }  // of the ladder, shown
     void fillMenu(QMenu& menu, const jl::Vec2& point, double reach, const std::function<void(GivenAction)>& give);
     int hingeNear(const jl::Vec2& point, double reach) const;
     std::optional<BlockCorner> freeCornerNear(const jl::Vec2& point, double reach,
@@ -95,7 +97,7 @@ private:
 
     std::vector<std::array<jl::Vec2, 4>> cornerLocal_;  // ladder blocks, from jl::blockCorners
     std::vector<jl::Vec2> halfSize_;                    // across, along: for a press on a block
-    jl::Frame shown_;                                   // poses, held and hinges only
+    std::shared_ptr<const jl::Frame> shown_ = std::make_shared<const jl::Frame>();
     int selected_ = 0;
     std::optional<BlockCorner> joinFrom_, snappedTo_;
     jl::Vec2 pointer_ = jl::Vec2::Zero();

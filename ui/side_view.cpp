@@ -309,7 +309,7 @@ void SideView::showFrame(const jl::Frame& frame) { showFrame(std::make_shared<co
 void SideView::showFrame(std::shared_ptr<const jl::Frame> frame) {
     if (!frame) return;
     frame_ = std::move(frame);
-    restructure_.showFrame(*frame_);
+    restructure_.showFrame(frame_);
     growFraming(extentOf(*frame_));
     update();
 }
