@@ -188,7 +188,7 @@ private slots:
     // there and joins them: the hinge again. Let go far from any corner,
     // it gives nothing.
     void aCornerDraggedOntoAnotherJoinsThem() {
-        Hand f(cutLadder(), 12);
+        Hand f(cutLadder(), 10);
         QVERIFY(f.t > 0);
         const jl::HingeFrame hinge = f.sim->status()->frame->hinges[1];
         QVERIFY(hinge.mode == jl::HingeMode::Cut);
@@ -221,7 +221,7 @@ private slots:
 
     // The same join in the side view.
     void aCornerDraggedInTheSideViewJoinsThem() {
-        Hand f(cutLadder(), 12);
+        Hand f(cutLadder(), 10);
         QVERIFY(f.t > 0);
         const int k = f.sim->status()->frame->hinges[1].corner;
         const QPoint from = f.inSide(f.corner(2, k)), onto = f.inSide(f.corner(1, k));
