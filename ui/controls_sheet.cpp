@@ -57,6 +57,12 @@ void addMouse(std::vector<Rows>& rows) {
     row(Editing, QObject::tr("Shift + left-drag a block"),
         QObject::tr("the hand turns it about its centre: sweep round it; the angle snaps to quarter turns, the turn "
                     "takes as long as you did; a script row, undoable"));
+    row(Editing, QObject::tr("Click by a hinge, then Delete (or right-click it: Cut hinge N)"),
+        QObject::tr("cut the hinge at the moment shown (3-D view or side view); a script row, undoable"));
+    row(Editing, QObject::tr("Left-drag a free corner onto another block's"),
+        QObject::tr("join them where it snaps: a cut hinge's corners make the hinge again, other corners a pin"));
+    row(Editing, QObject::tr("Right-click a block"),
+        QObject::tr("Hold block N here, or Release block N: the hand takes it or lets go at the moment shown"));
     row(Editing, QObject::tr("Ladder, Simulation and Script panels"),
         QObject::tr("change the scene; every change can be undone"));
     row(Presentation, QObject::tr("Esc"), QObject::tr("leave presentation mode"));

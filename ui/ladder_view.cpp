@@ -7,6 +7,7 @@
 #include "ui/strip_entity.h"
 
 #include <QKeyEvent>
+#include <QMenu>
 #include <QMouseEvent>
 #include <QToolTip>
 #include <QWheelEvent>
@@ -89,6 +90,7 @@ void LadderView::setScene(const jl::Scene& scene, bool resetCamera) {
         centralRibbons_->setColor(QColor(m.r, m.g, m.b));
     }
     view_ = scene.view;
+    restructure_.setScene(scene);
     if (resetCamera) {
         shownPoses_.clear();  // the old scene's blocks say nothing of the new one's
         resetView();
@@ -108,7 +110,12 @@ void LadderView::setFollow(bool on) {
     followedCentre_.reset();
 }
 
-void LadderView::showFrame(const jl::Frame& frame) {
+void LadderView::showFrame(const jl::Frame& frame) { showFrame(std::make_shared<const jl::Frame>(frame)); }
+
+void LadderView::showFrame(std::shared_ptr<const jl::Frame> shared) {
+    if (!shared) return;
+    restructure_.showFrame(shared);
+    const jl::Frame& frame = *shared;
     if (!frame.dragging) grabbed_ = -1;
     if (frame.time != shownTime_) {
         earlierPoses_ = std::move(shownPoses_);
@@ -134,7 +141,7 @@ void LadderView::showFrame(const jl::Frame& frame) {
     // At an event's instant, the blocks its hinge joins: where to look.
     pointedAt_.clear();
     for (const int j : hingesAtInstant(frame)) pointedAt_.insert(pointedAt_.end(), {j - 1, j});
-    blocks_->showFrame(frame, frame.dragging ? grabbed_ : -1, pointedAt_);
+    blocks_->showFrame(frame, frame.dragging ? grabbed_ : -1, highlighted());
     // Ribbons are a few pixels wide at best when the whole of a long ladder is
     // in view, yet they cost more to draw than all the blocks: show them close up.
     const bool ribbonsShow = ribbonSpec_.visible && camera_.distance() < kRibbonDistanceInBlocks * blockLength_;
@@ -146,6 +153,7 @@ void LadderView::showFrame(const jl::Frame& frame) {
     // The spring is drawn in front of the blocks, on the face toward the viewer.
     buildDragLine(*dragLine_, frame, float(blockWidth_ / 2 + 0.002),
                   float(std::max(0.0015, camera_.distance() * 0.003)));
+    if (restructure_.joining()) showRestructure();  // the join drag's line over the frame's
     if (frame.dragging && grabbed_ < 0) {
         // Which block: the one whose centre is nearest the grabbed point.
         double best = 1e300;
@@ -291,6 +299,7 @@ QPointF LadderView::pixelOf(const jl::Vec2& point) const {
 
 void LadderView::mousePressEvent(QMouseEvent* e) {
     lastMouse_ = e->position();
+    if (e->button() == Qt::RightButton) rightPressAt_ = e->position();
     if (e->button() == Qt::LeftButton && !walk_) {
         const auto p = planePoint(e->position());
         const auto grab = p ? grabAt(*p) : std::nullopt;
@@ -298,11 +307,15 @@ void LadderView::mousePressEvent(QMouseEvent* e) {
             turning_.emplace(grab->block, shownPoses_[size_t(grab->block)].position, *p);
             turnShownTime_ = shownTime_;
             turnClock_.start();
+        } else if (p && restructure_.press(*p, metresOf(RestructureGesture::kReachPixels, e->position()))) {
+            showRestructure();  // by a hinge: selected; at a free corner: a join drag
         } else if (grab) {
+            showRestructure();  // the selection, if any, is dropped
             dragging_ = true;
             grabbed_ = -1;
             emit dragBegun(*p, grab->block, grab->local, shownTime_);
         } else {
+            showRestructure();
             orbiting_ = true;  // empty space: turn the view, as most 3-D programs do
         }
     }
@@ -325,6 +338,10 @@ void LadderView::mouseMoveEvent(QMouseEvent* e) {
     lastMouse_ = e->position();
     if (dragging_) {  // until the release, whatever else the buttons do
         if (const auto p = planePoint(e->position())) emit dragMoved(*p);
+    } else if (restructure_.joining()) {
+        if (const auto p = planePoint(e->position()))
+            restructure_.dragTo(*p, metresOf(RestructureGesture::kSnapPixels, e->position()));
+        showRestructure();
     } else if (turning_) {
         if (const auto p = planePoint(e->position())) turning_->moveTo(*p, double(turnClock_.nsecsElapsed()) * 1e-9);
         // What the release will give, beside the pointer.
@@ -360,6 +377,44 @@ void LadderView::mouseReleaseEvent(QMouseEvent* e) {
         QToolTip::hideText();
         if (turn) emit turnGiven(turn->block, turn->angle, turn->duration, turnShownTime_);
     }
+    const auto p = planePoint(e->position());
+    if (e->button() == Qt::LeftButton && restructure_.joining())
+        give(p ? restructure_.release(*p, metresOf(RestructureGesture::kSnapPixels, e->position())) : std::nullopt);
+    const QPointF moved = e->position() - rightPressAt_;
+    if (e->button() == Qt::RightButton && p && !walk_ && moved.manhattanLength() < 4) {
+        restructure_.popMenu(nullptr, *p, metresOf(RestructureGesture::kReachPixels, e->position()),
+                             e->globalPosition().toPoint(), [this](GivenAction a) { give(a); });
+        showRestructure();
+    }
+}
+
+double LadderView::metresOf(double pixels, const QPointF& at) const {
+    const auto a = planePoint(at), b = planePoint(at + QPointF(pixels, 0));
+    return a && b ? (*b - *a).norm() : 0.0;
+}
+
+std::vector<int> LadderView::highlighted() const {
+    std::vector<int> lit = pointedAt_;
+    for (const int b : restructure_.selectedBlocks()) lit.push_back(b);
+    return lit;
+}
+
+void LadderView::showRestructure() {
+    if (!restructure_.shown().poses.empty()) blocks_->showFrame(restructure_.shown(), -1, highlighted());
+    jl::Frame line;
+    if (const auto ends = restructure_.joinLine()) {
+        line.dragging = true;
+        line.dragFrom = ends->first;
+        line.dragTo = ends->second;
+    }
+    dragLine_->setColor(restructure_.snapped() ? QColor(40, 170, 70) : QColor(225, 40, 40));
+    buildDragLine(*dragLine_, line, float(blockWidth_ / 2 + 0.002),
+                  float(std::max(0.0015, camera_.distance() * 0.003)));
+}
+
+void LadderView::give(std::optional<GivenAction> given) {
+    showRestructure();
+    if (given) emit actionGiven(given->action, given->text);
 }
 
 void LadderView::wheelEvent(QWheelEvent* e) {
@@ -380,6 +435,7 @@ void LadderView::keyPressEvent(QKeyEvent* e) {
         resetView();
         return;
     }
+    if (k == Qt::Key_Delete && restructure_.selectedHinge() > 0) return give(restructure_.cutSelected());
     if (k == Qt::Key_Escape && walk_) {
         setWalkMode(false);
         return;

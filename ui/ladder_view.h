@@ -5,6 +5,7 @@
 #include "jl/scene/scene.h"
 #include "jl/sim/frame.h"
 #include "ui/block_shapes.h"
+#include "ui/restructure_gesture.h"
 #include "ui/turn_gesture.h"
 #include "ui/view_camera.h"
 
@@ -14,6 +15,7 @@
 #include <QTimer>
 #include <Qt3DExtras/Qt3DWindow>
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -35,6 +37,8 @@ public:
     // A new or edited scene: shapes, colours and the room; the camera too when asked.
     void setScene(const jl::Scene& scene, bool resetCamera);
     void showFrame(const jl::Frame& frame);
+    // The simulation's published frame, shared rather than copied.
+    void showFrame(std::shared_ptr<const jl::Frame> frame);
     // The blocks drawn highlighted because an event's hinge joins them.
     const std::vector<int>& pointedAt() const { return pointedAt_; }
     void resetView();
@@ -86,6 +90,8 @@ signals:
     // Shift and a drag on a block: the hand turns it (turn_gesture.h), from
     // the time `shownTime` the view showed at the press.
     void turnGiven(int block, double angle, double duration, double shownTime);
+    // A cut, join, hold or release by hand (restructure_gesture.h), at the instant shown.
+    void actionGiven(const jl::ScriptAction& action, const QString& text);
     // Keys the view does not use, for the main window's shortcuts (this
     // window, embedded, has the keyboard focus when the ladder is clicked).
     void unhandledKey(const QKeySequence& key);
@@ -110,6 +116,15 @@ private:
     bool showsWholeLadder() const;
     // Whether any of it is: its outline on screen meets the view.
     bool showsSomeOfLadder() const;
+
+    // The restructuring by hand: the selected hinge's blocks highlighted,
+    // the join drag's line drawn (red, green once it snaps).
+    double metresOf(double pixels, const QPointF& at) const;
+    void showRestructure();
+    std::vector<int> highlighted() const;  // the event's blocks and the selected hinge's
+    void give(std::optional<GivenAction> given);
+    RestructureGesture restructure_;
+    QPointF rightPressAt_;  // a right press and release in one place is a click: the menu
 
     std::optional<TurnGesture> turning_;
     double turnShownTime_ = 0;  // s, the frame shown at the turn's press

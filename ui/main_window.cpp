@@ -331,6 +331,7 @@ void MainWindow::showDesignMap() {
 void MainWindow::createTeaching() {
     teaching_ = new TeachingDocks(doc_, sim_, view_, this);
     connect(teaching_->sideView(), &SideView::turnGiven, scriptPanel_, &ScriptPanel::addTurn);
+    connect(teaching_->sideView(), &SideView::actionGiven, scriptPanel_, &ScriptPanel::addAction);
     connect(teaching_, &TeachingDocks::lessonRequested, this, [this](const QString& path) {
         if (maybeSave()) openFile(path);
     });
@@ -406,6 +407,7 @@ void MainWindow::connectView() {
     connect(view_, &LadderView::dragMoved, sim_, &SimController::moveDrag);
     connect(view_, &LadderView::dragEnded, sim_, &SimController::endDrag);
     connect(view_, &LadderView::turnGiven, scriptPanel_, &ScriptPanel::addTurn);
+    connect(view_, &LadderView::actionGiven, scriptPanel_, &ScriptPanel::addAction);
     // The embedded 3-D window keeps the keyboard: its keys still reach our shortcuts.
     connect(view_, &LadderView::unhandledKey, this, [this](const QKeySequence& key) {
         for (QAction* a : findChildren<QAction*>())
@@ -447,7 +449,7 @@ void MainWindow::onSceneChanged(SceneChange change) {
 }
 
 void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {
-    if (s->frame) view_->showFrame(*s->frame);
+    if (s->frame) view_->showFrame(s->frame);
     timeline_->setState(s->frame ? s->frame->time : s->frameIndex * s->interval, s->headTime, s->events);
     eventsPanel_->setEvents(s->events);
     eventsPanel_->setTime(s->frame ? s->frame->time : 0);

@@ -21,8 +21,8 @@ using Kind = jl::ScriptAction::Kind;
 enum Column { At, Action, Block, Amount, Duration, Columns };
 const QStringList kKinds = {"turn", "move", "hold", "release", "push", "cut", "join"};  // order of Kind
 
-SceneField<std::vector<jl::ScriptAction>> scriptField() {
-    return {UndoId::ScriptTable, "script", SceneChange::Script, [](const jl::Scene& s) { return s.script; },
+SceneField<std::vector<jl::ScriptAction>> scriptField(UndoId id = UndoId::ScriptTable) {
+    return {id, "script", SceneChange::Script, [](const jl::Scene& s) { return s.script; },
             [](jl::Scene& s, const std::vector<jl::ScriptAction>& v) { s.script = v; }};
 }
 
@@ -137,7 +137,7 @@ void ScriptPanel::addAction(const jl::ScriptAction& action, const QString& text)
     const auto later = std::upper_bound(script.begin(), script.end(), action.at,
                                         [](double at, const jl::ScriptAction& a) { return at < a.at; });
     script.insert(later, action);
-    setScript(std::move(script), text);
+    changeScene(doc_, scriptField(UndoId::Apart), std::move(script), text);
 }
 
 void ScriptPanel::commitRow(int row) {

@@ -14,7 +14,7 @@ class ScriptPanel : public QWidget {
 public:
     ScriptPanel(Document* doc, QWidget* parent = nullptr);
     void refresh();
-    // A row added from elsewhere (the 3-D view's turn gesture), in time
+    // A row added from elsewhere (the views' turn and restructuring), in time
     // order, as one step of undo.
     void addAction(const jl::ScriptAction& action, const QString& text);
     void addTurn(int block, double angle, double duration, double at);

@@ -4,6 +4,7 @@
 #include "jl/ladder/ladder.h"
 #include "ui/events_panel.h"
 
+#include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
@@ -83,9 +84,11 @@ SideView::SideView(QWidget* parent) : QWidget(parent) {
     setObjectName("sideView");
     setMinimumSize(160, 160);
     setAttribute(Qt::WA_OpaquePaintEvent);
+    setFocusPolicy(Qt::ClickFocus);  // Delete cuts the selected hinge
     setToolTip(
         tr("The ladder seen from the side, as the paper draws it. Hinges: green free, blue locked open, "
-           "orange folded. Wheel: zoom; drag: pan; double-click: follow the whole ladder again."));
+           "orange folded. Wheel: zoom; drag: pan; double-click: follow the whole ladder again. Click by a hinge "
+           "and Delete: cut it; drag a free corner onto another block's: join them; right-click: hold, release, cut."));
 }
 
 // Where the ladder is drawn: all of `target` but a band at the top (the
@@ -139,7 +142,8 @@ int SideView::blockAt(const jl::Vec2& point) const {
     return -1;
 }
 
-// Shift and a press on a block starts the hand's turn; any other press pans.
+// Shift and a press on a block starts the hand's turn; a press by a hinge
+// or a free corner is the restructuring's; any other press pans.
 void SideView::mousePressEvent(QMouseEvent* e) {
     if (e->button() != Qt::LeftButton) return QWidget::mousePressEvent(e);
     const jl::Vec2 p = planePoint(e->position());
@@ -150,6 +154,10 @@ void SideView::mousePressEvent(QMouseEvent* e) {
         turnClock_.start();
         return;
     }
+    // By a hinge: select it (a drag still pans); at a free corner: drag it to join (restructure_gesture.h).
+    if (!framing_.isEmpty()) restructure_.press(p, metresOf(RestructureGesture::kReachPixels));
+    update();
+    if (restructure_.joining()) return;
     dragFrom_ = e->position();
     setCursor(Qt::ClosedHandCursor);
 }
@@ -162,6 +170,10 @@ void SideView::mouseMoveEvent(QMouseEvent* e) {
                            degrees == 0 ? tr("Turn: sweep at least 45 degrees")
                                         : tr("Turn block %1 by %2 degrees").arg(turning_->block()).arg(degrees));
         return;
+    }
+    if (restructure_.joining()) {
+        restructure_.dragTo(planePoint(e->position()), metresOf(RestructureGesture::kSnapPixels));
+        return update();
     }
     if (!(e->buttons() & Qt::LeftButton) || framing_.isEmpty()) return QWidget::mouseMoveEvent(e);
     const Mapping map(framing_, plotArea(rect(), uiScale(rect())));
@@ -180,8 +192,31 @@ void SideView::mouseReleaseEvent(QMouseEvent* e) {
         QToolTip::hideText();
         if (turn) emit turnGiven(turn->block, turn->angle, turn->duration, turnShownTime_);
     }
+    if (e->button() == Qt::LeftButton && restructure_.joining())
+        give(restructure_.release(planePoint(e->position()), metresOf(RestructureGesture::kSnapPixels)));
+    // The menu on the release, as the 3-D view's (where a right drag orbits).
+    if (e->button() == Qt::RightButton && !framing_.isEmpty())
+        restructure_.popMenu(this, planePoint(e->position()), metresOf(RestructureGesture::kReachPixels),
+                             e->globalPosition().toPoint(), [this](GivenAction a) { give(a); });
+    update();
     unsetCursor();
     QWidget::mouseReleaseEvent(e);
+}
+
+void SideView::contextMenuEvent(QContextMenuEvent* e) { e->accept(); }  // the release shows ours
+
+void SideView::keyPressEvent(QKeyEvent* e) {
+    if (e->key() == Qt::Key_Delete && restructure_.selectedHinge() > 0) return give(restructure_.cutSelected());
+    QWidget::keyPressEvent(e);
+}
+
+void SideView::give(std::optional<GivenAction> given) {
+    update();
+    if (given) emit actionGiven(given->action, given->text);
+}
+
+double SideView::metresOf(double pixels) const {
+    return (planePoint(QPointF(pixels, 0)) - planePoint(QPointF(0, 0))).norm();
 }
 
 void SideView::mouseDoubleClickEvent(QMouseEvent*) {
@@ -191,6 +226,7 @@ void SideView::mouseDoubleClickEvent(QMouseEvent*) {
 
 void SideView::setScene(const jl::Scene& scene) {
     shapes_ = blockShapes(scene);
+    restructure_.setScene(scene);
     cornerLocal_.clear();
     ladderBlocks_ = scene.ladder ? scene.ladder->blocks : 0;
     firstParticle_ = int(shapes_.size() - scene.particles.size());
@@ -273,6 +309,7 @@ void SideView::showFrame(const jl::Frame& frame) { showFrame(std::make_shared<co
 void SideView::showFrame(std::shared_ptr<const jl::Frame> frame) {
     if (!frame) return;
     frame_ = std::move(frame);
+    restructure_.showFrame(frame_);
     growFraming(extentOf(*frame_));
     update();
 }
@@ -293,6 +330,8 @@ QImage SideView::render(const QSize& size) const {
 void SideView::paintEvent(QPaintEvent*) {
     QPainter p(this);
     paint(p, rect());
+    restructure_.paint(  // not in paint(): an exported picture shows no selection
+        p, [this](const jl::Vec2& v) { return pixelOf(v, rect()); }, uiScale(rect()));
 }
 
 void SideView::paint(QPainter& p, const QRectF& target) const {

@@ -6,6 +6,7 @@
 #include "jl/scene/scene.h"
 #include "jl/sim/frame.h"
 #include "ui/block_shapes.h"
+#include "ui/restructure_gesture.h"
 #include "ui/turn_gesture.h"
 
 #include <QElapsedTimer>
@@ -83,6 +84,8 @@ signals:
     // Shift and a drag on a block: the hand turns it (turn_gesture.h), from
     // the time `shownTime` of the frame shown at the press.
     void turnGiven(int block, double angle, double duration, double shownTime);
+    // A cut, join, hold or release by hand (restructure_gesture.h), at the instant shown.
+    void actionGiven(const jl::ScriptAction& action, const QString& text);
 
 protected:
     void paintEvent(QPaintEvent*) override;
@@ -91,6 +94,8 @@ protected:
     void mouseMoveEvent(QMouseEvent* e) override;
     void mouseReleaseEvent(QMouseEvent* e) override;
     void mouseDoubleClickEvent(QMouseEvent* e) override;
+    void keyPressEvent(QKeyEvent* e) override;
+    void contextMenuEvent(QContextMenuEvent* e) override;
 
 private:
     struct Mapping;
@@ -98,6 +103,8 @@ private:
     void growFraming(const QRectF& need);
     QRectF plotArea(const QRectF& target, double ui) const;
     double uiScale(const QRectF& target) const;
+    double metresOf(double pixels) const;  // on screen now
+    void give(std::optional<GivenAction> given);
 
     std::vector<BlockShape> shapes_;
     std::vector<std::array<jl::Vec2, 4>> cornerLocal_;  // ladder blocks, from jl::blockCorners
@@ -113,6 +120,7 @@ private:
     std::optional<TurnGesture> turning_;
     double turnShownTime_ = 0;  // s
     QElapsedTimer turnClock_;
+    RestructureGesture restructure_;
     SideViewOptions options_;
 };
 

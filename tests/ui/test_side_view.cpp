@@ -130,12 +130,13 @@ private slots:
         const QRectF zoomed = view.framing();
         view.showFrame(run.frames.back());
         QCOMPARE(view.framing(), zoomed);
-        // A drag of 40 px to the right moves the picture with the mouse.
-        QTest::mousePress(&view, Qt::LeftButton, {}, QPoint(200, 250));
-        QMouseEvent move(QEvent::MouseMove, QPointF(240, 250), view.mapToGlobal(QPointF(240, 250)), Qt::NoButton,
+        // A drag of 40 px to the right, begun beside the ladder (a press at
+        // a block's free corner would begin a join), moves the picture with the mouse.
+        QTest::mousePress(&view, Qt::LeftButton, {}, QPoint(60, 250));
+        QMouseEvent move(QEvent::MouseMove, QPointF(100, 250), view.mapToGlobal(QPointF(100, 250)), Qt::NoButton,
                          Qt::LeftButton, Qt::NoModifier);
         QApplication::sendEvent(&view, &move);
-        QTest::mouseRelease(&view, Qt::LeftButton, {}, QPoint(240, 250));
+        QTest::mouseRelease(&view, Qt::LeftButton, {}, QPoint(100, 250));
         QVERIFY(std::abs(view.pixelOf(block3, target).x() - pointer.x() - 40) < 1.0);
         // A double click: the whole ladder in view again, following.
         QTest::mouseDClick(&view, Qt::LeftButton, {}, QPoint(200, 250));
