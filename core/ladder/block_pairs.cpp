@@ -21,38 +21,91 @@ size_t bucketOf(long long key, size_t mask) {
 
 }  // namespace
 
-// Each block's bounding circle (its half diagonal about its centre) goes
-// into the grid cell of its centre, the cells as wide as the widest circle
-// is across: two circles that overlap have their centres in the same or
-// neighbouring cells. One pass to fill the grid and one over each block's
-// nine cells, O(N) for N blocks.
+// The still tail's segments (docs/model.md section 3.7): each a run of
+// blocks of one body, with the box of their centres in that body's frame.
+// Built again when the tail changes (it only ever shrinks from the top).
+void BlockPairs::listSegments(const World& w, const Ladder& ladder, int still) {
+    segments_.clear();
+    segmentsFor_ = still;
+    const int n = ladder.blockCount();
+    for (int j = still; j < n; ++j) {
+        const int body = w.part(ladder.block(j)).body;
+        if (segments_.empty() || segments_.back().body != body) {
+            Segment s;
+            s.body = body, s.first = j, s.end = j;
+            s.lo = Vec2::Constant(1e300), s.hi = Vec2::Constant(-1e300);
+            segments_.push_back(s);
+        }
+        Segment& s = segments_.back();
+        const Vec2 local = w.bodyPose(body).inverse().apply(w.partPose(ladder.block(j)).position);
+        s.lo = s.lo.cwiseMin(local), s.hi = s.hi.cwiseMax(local);
+        s.end = j + 1;
+    }
+}
+
+// Each moving block's bounding circle (its half diagonal about its centre)
+// goes into the grid cell of its centre, the cells as wide as the widest
+// circle is across: two circles that overlap have their centres in the same
+// or neighbouring cells. The still tail's blocks do not move relative to
+// each other, so none of its pairs is tested; its blocks go into the grid
+// only from the segments whose box of centres comes within a cell of the
+// moving blocks' (a handful of bodies however long the ladder). Each pair
+// is found from its lower block, a moving one. O(moving blocks + segments)
+// per call.
 void BlockPairs::find(const World& w, const Ladder& ladder, std::vector<std::pair<int, int>>& out) {
     out.clear();
     const int n = ladder.blockCount();
     if (n < 3) return;
-    double reach = 0;
-    for (int i = 0; i < n; ++i) reach = std::max(reach, ladder.cornerLocal(i, 3).norm());
-    const double cell = 2 * reach;
+    if (reachFor_ != n) {  // the blocks' sizes are the ladder's, fixed for a run
+        reach_ = 0;
+        for (int i = 0; i < n; ++i) reach_ = std::max(reach_, ladder.cornerLocal(i, 3).norm());
+        reachFor_ = n;
+    }
+    const double cell = 2 * reach_;
+    const int moving = std::min(n, ladder.stillFrom());
+    if (moving < n &&
+        (segmentsFor_ != moving || segments_.empty() || segments_.front().body != w.part(ladder.block(moving)).body))
+        listSegments(w, ladder, moving);
+    members_.clear();
+    Vec2 lo = Vec2::Constant(1e300), hi = Vec2::Constant(-1e300);
+    centre_.resize(size_t(n));
+    for (int i = 0; i < moving; ++i) {
+        centre_[size_t(i)] = w.partPose(ladder.block(i)).position;
+        lo = lo.cwiseMin(centre_[size_t(i)]), hi = hi.cwiseMax(centre_[size_t(i)]);
+        members_.push_back(i);
+    }
+    if (moving < n) {
+        lo.array() -= cell, hi.array() += cell;
+        for (const Segment& s : segments_) {
+            const Pose body = w.bodyPose(s.body);
+            Vec2 slo = Vec2::Constant(1e300), shi = Vec2::Constant(-1e300);
+            for (const Vec2& c : {s.lo, s.hi, Vec2(s.lo.x(), s.hi.y()), Vec2(s.hi.x(), s.lo.y())}) {
+                const Vec2 p = body.apply(c);
+                slo = slo.cwiseMin(p), shi = shi.cwiseMax(p);
+            }
+            if ((slo.array() > hi.array()).any() || (shi.array() < lo.array()).any()) continue;
+            for (int j = s.first; j < s.end; ++j) {
+                centre_[size_t(j)] = w.partPose(ladder.block(j)).position;
+                members_.push_back(j);
+            }
+        }
+    }
     size_t buckets = 1;
-    while (buckets < 2 * size_t(n)) buckets *= 2;
+    while (buckets < 2 * members_.size()) buckets *= 2;
     const size_t mask = buckets - 1;
     head_.assign(buckets, -1);
     next_.resize(size_t(n));
     key_.resize(size_t(n));
-    std::vector<Vec2>& centre = centre_;
-    centre.resize(size_t(n));
-    for (int i = 0; i < n; ++i) {
-        centre[size_t(i)] = w.partPose(ladder.block(i)).position;
-        const long long ix = std::llround(std::floor(centre[size_t(i)].x() / cell));
-        const long long iy = std::llround(std::floor(centre[size_t(i)].y() / cell));
+    for (int i : members_) {
+        const long long ix = std::llround(std::floor(centre_[size_t(i)].x() / cell));
+        const long long iy = std::llround(std::floor(centre_[size_t(i)].y() / cell));
         key_[size_t(i)] = cellKey(ix, iy);
         const size_t b = bucketOf(key_[size_t(i)], mask);
         next_[size_t(i)] = head_[b];
         head_[b] = i;
     }
-    const int still = ladder.stillFrom();
-    for (int i = 0; i < n; ++i) {
-        const Vec2& c = centre[size_t(i)];
+    for (int i = 0; i < moving; ++i) {
+        const Vec2& c = centre_[size_t(i)];
         const long long ix = std::llround(std::floor(c.x() / cell)), iy = std::llround(std::floor(c.y() / cell));
         const int bodyI = w.part(ladder.block(i)).body;
         const bool kinematicI = w.body(bodyI).kinematic;
@@ -62,12 +115,11 @@ void BlockPairs::find(const World& w, const Ladder& ladder, std::vector<std::pai
                 const long long key = cellKey(ix + dx, iy + dy);
                 for (int j = head_[bucketOf(key, mask)]; j >= 0; j = next_[size_t(j)]) {
                     if (j <= i + 1 || key_[size_t(j)] != key)
-                        continue;                            // each pair once; neighbours meet at their hinge
-                    if (i >= still && j >= still) continue;  // the still tail does not move within itself
+                        continue;  // each pair once; neighbours meet at their hinge
                     const int bodyJ = w.part(ladder.block(j)).body;
                     if (bodyJ == bodyI || (kinematicI && w.body(bodyJ).kinematic)) continue;
                     const double rj = ladder.cornerLocal(j, 3).norm();
-                    if ((centre[size_t(j)] - c).squaredNorm() < (ri + rj) * (ri + rj)) out.emplace_back(i, j);
+                    if ((centre_[size_t(j)] - c).squaredNorm() < (ri + rj) * (ri + rj)) out.emplace_back(i, j);
                 }
             }
     }

@@ -25,16 +25,26 @@ struct CornerAgainstBox {
 };
 
 // Pairs of blocks whose bounding circles overlap, by a grid hashed on the
-// blocks' centres: O(N) per call on a ladder of N blocks. Neighbours,
-// blocks of one body and blocks both in the still tail are left out.
+// blocks' centres: O(moving blocks + segments of the still tail) per call.
+// Neighbours, blocks of one body and blocks both in the still tail are left
+// out.
 class BlockPairs {
 public:
     void find(const World& w, const Ladder& ladder, std::vector<std::pair<int, int>>& out);
 
 private:
-    std::vector<int> head_, next_;
+    struct Segment {
+        int body = 0, first = 0, end = 0;  // blocks [first, end) of one body of the still tail
+        Vec2 lo, hi;                       // m: the box of their centres in the body's frame
+    };
+    void listSegments(const World& w, const Ladder& ladder, int still);
+    std::vector<int> head_, next_, members_;
     std::vector<long long> key_;
     std::vector<Vec2> centre_;
+    std::vector<Segment> segments_;
+    int segmentsFor_ = -1;  // the still tail's first block they were listed for
+    double reach_ = 0;      // m, the largest half diagonal
+    int reachFor_ = -1;     // the block count it was found for
 };
 
 class BlockContacts {
