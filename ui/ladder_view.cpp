@@ -265,7 +265,10 @@ void LadderView::setWalkMode(bool on) {
     emit walkModeChanged(on);
 }
 
-void LadderView::updateCamera() { camera_.apply(camera()); }
+void LadderView::updateCamera() {
+    camera_.apply(camera());
+    blocks_->setView(camera()->projectionMatrix() * camera()->viewMatrix(), QSize(width(), height()));
+}
 
 std::optional<jl::Vec2> LadderView::planePoint(const QPointF& pixel) const {
     const QRect viewport(0, 0, width(), height());
