@@ -4,6 +4,7 @@
 #include "ui/block_shapes.h"
 #include "ui/events_panel.h"
 #include "ui/room.h"
+#include "ui/scale_mark.h"
 #include "ui/strip_entity.h"
 
 #include <QKeyEvent>
@@ -57,6 +58,7 @@ LadderView::LadderView() : Qt3DExtras::Qt3DWindow(nullptr, Qt3DRender::API::Open
     ribbons_ = new StripEntity(root_, false);
     centralRibbons_ = new StripEntity(root_, false);
     dragLine_ = new StripEntity(root_, true);
+    scale_ = new ScaleMark(root_);
     dragLine_->setColor(QColor(225, 40, 40));
     setRootEntity(root_);
     camera()->lens()->setPerspectiveProjection(40, 1.6f, 0.01f, 100);
@@ -265,9 +267,12 @@ void LadderView::setWalkMode(bool on) {
     emit walkModeChanged(on);
 }
 
+int LadderView::blocksDrawn() const { return blocks_->drawnCount(); }
+
 void LadderView::updateCamera() {
     camera_.apply(camera());
     blocks_->setView(camera()->projectionMatrix() * camera()->viewMatrix(), QSize(width(), height()));
+    scale_->place(camera_, height(), height() > 0 ? float(width()) / float(height()) : 1.6f);
 }
 
 std::optional<jl::Vec2> LadderView::planePoint(const QPointF& pixel) const {
