@@ -119,9 +119,7 @@ void BlockInstances::setView(const QMatrix4x4& viewProjection, QSize pixels) {
 // covers it). Nothing is left out before the view's size is known.
 void BlockInstances::upload() {
     const size_t n = marked_.size();
-    QByteArray data(int(n * kInstanceFloats * sizeof(float)), Qt::Uninitialized);
-    auto* out = reinterpret_cast<float*>(data.data());
-    size_t drawn = 0;
+    drawnData_.clear();
     const QPointF half(pixels_.width() / 2.0, pixels_.height() / 2.0);
     // Where a point of the world is drawn, in pixels from the view's centre; none at or behind the eye.
     const auto pixel = [&](float x, float y, float z) -> std::optional<QPointF> {
@@ -129,7 +127,7 @@ void BlockInstances::upload() {
         if (c.w() <= 0) return std::nullopt;
         return QPointF(c.x() / c.w() * half.x(), c.y() / c.w() * half.y());
     };
-    const auto apart = [](QPointF a, QPointF b) { return std::hypot(a.x() - b.x(), a.y() - b.y()) >= 1.0; };
+    const auto apart = [](QPointF a, QPointF b) { return QPointF::dotProduct(a - b, a - b) >= 1.0; };
     std::optional<QPointF> last;
     for (size_t i = 0; i < n; ++i) {
         const float* f = all_.data() + i * kInstanceFloats;
@@ -143,12 +141,12 @@ void BlockInstances::upload() {
         }
         if (!draw) continue;
         if (at) last = at;
-        std::copy(f, f + kInstanceFloats, out + drawn * kInstanceFloats);
-        ++drawn;
+        drawnData_.insert(drawnData_.end(), f, f + kInstanceFloats);
     }
-    data.resize(int(drawn * kInstanceFloats * sizeof(float)));
-    instances_->setData(data);
-    for (auto* a : instanceAttributes_) a->setCount(uint(drawn));
+    const auto drawn = uint(drawnData_.size() / kInstanceFloats);
+    instances_->setData(
+        QByteArray(reinterpret_cast<const char*>(drawnData_.data()), qsizetype(drawnData_.size() * sizeof(float))));
+    for (auto* a : instanceAttributes_) a->setCount(drawn);
     renderer_->setInstanceCount(int(drawn));
     drawn_ = int(drawn);
 }

@@ -44,6 +44,7 @@ private:
     // The frame's instances, every block, and those that must be drawn (held, highlighted).
     std::vector<float> all_;
     std::vector<bool> marked_;
+    std::vector<float> drawnData_;  // those drawn (kept: a long ladder's frame is 0.5 MB)
     QMatrix4x4 viewProjection_;
     QSize pixels_;
     int drawn_ = 0;

@@ -112,11 +112,13 @@ void LadderView::setFollow(bool on) {
 
 void LadderView::showFrame(const jl::Frame& frame) {
     if (!frame.dragging) grabbed_ = -1;
+    // Swapped and assigned, not moved and copied: the lists keep their room
+    // (240 kB a frame for 10,000 blocks, each a fresh page-faulting block).
     if (frame.time != shownTime_) {
-        earlierPoses_ = std::move(shownPoses_);
+        earlierPoses_.swap(shownPoses_);
         earlierTime_ = shownTime_;
     }
-    shownPoses_ = frame.poses;
+    shownPoses_.assign(frame.poses.begin(), frame.poses.end());
     shownTime_ = frame.time;
     if (follow_ && !frame.poses.empty()) {
         jl::Vec2 centre = jl::Vec2::Zero();

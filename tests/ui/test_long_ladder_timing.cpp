@@ -107,9 +107,11 @@ private slots:
 
         const double simulated = s->frame->time - simBefore;
         qInfo(
-            "%d blocks: simulated %.3f s in %.2f s wall (%.3fx; the status bar said %.2fx); longest gap between "
+            "%d blocks: simulated %.3f s (from t = %.3f s) in %.2f s wall (%.3fx; the status bar said %.2fx); longest "
+            "gap between "
             "UI ticks %lld ms (%.0f ms waiting for a processor not counted); pause took effect after %lld ms",
-            blocks, simulated, wall, simulated / wall, s->realTimeFactor, probe.worst, probe.queued, pauseMs);
+            blocks, simulated, simBefore, wall, simulated / wall, s->realTimeFactor, probe.worst, probe.queued,
+            pauseMs);
         for (const auto& [name, seconds] : cpuAfter) {
             const double used = seconds - (cpuBefore.count(name) ? cpuBefore.at(name) : 0.0);
             if (used > 0.005)
