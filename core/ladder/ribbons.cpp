@@ -8,6 +8,7 @@
 #include "jl/ladder/ladder.h"
 
 #include <array>
+#include <cmath>
 
 namespace jl {
 
@@ -23,38 +24,46 @@ int outerFaceOfUpper(int j) { return (j % 2 == 1) ? 1 : 0; }
 
 std::vector<RibbonFrame> Ladder::ribbons(const World& w) const {
     const double lift = spec_.ribbons.thickness / 2;
-    // Every block's corners, and each pushed out by the ribbon's half
-    // thickness across both faces that meet there, so the ribbon lies on
-    // the wood, not in it. Once per block: a frame of a long ladder is made
-    // 60 times a simulated second, and a block's pose is not cheap to read.
-    const size_t n = size_t(blockCount());
-    std::vector<std::array<Vec2, 4>> corners(n), lifted(n);
-    for (int i = 0; i < blockCount(); ++i) {
+    // Block i's corners, and each pushed out by the ribbon's half thickness
+    // across both faces that meet there, so the ribbon lies on the wood,
+    // not in it. Once per block, with one sine and cosine: a frame of a
+    // long ladder is made 60 times a simulated second.
+    struct Corners {
+        std::array<Vec2, 4> at, lifted;
+    };
+    const auto cornersOf = [&](int i) {
         const Pose pose = w.partPose(block(i));
-        auto& c = corners[size_t(i)];
-        for (int k = 0; k < 4; ++k) c[size_t(k)] = pose.apply(cornerLocal(i, k));
-        for (size_t k = 0; k < 4; ++k) {
-            const Vec2 across = (c[k] - c[k ^ 2]).normalized();
-            const Vec2 along = (c[k] - c[k ^ 1]).normalized();
-            lifted[size_t(i)][k] = Vec2(c[k] + (across + along) * lift);
+        const double c = std::cos(pose.angle), s = std::sin(pose.angle);
+        Corners k;
+        for (size_t j = 0; j < 4; ++j) {
+            const Vec2 local = cornerLocal(i, int(j));
+            k.at[j] = pose.position + Vec2(c * local.x() - s * local.y(), s * local.x() + c * local.y());
         }
-    }
+        for (size_t j = 0; j < 4; ++j) {
+            const Vec2 across = (k.at[j] - k.at[j ^ 2]).normalized();
+            const Vec2 along = (k.at[j] - k.at[j ^ 1]).normalized();
+            k.lifted[j] = Vec2(k.at[j] + (across + along) * lift);
+        }
+        return k;
+    };
     std::vector<RibbonFrame> out;
+    if (blockCount() == 0) return out;
     out.reserve(2 * hinges_.size());
+    Corners lower = cornersOf(0);
     for (int j = 1; j < blockCount(); ++j) {
+        const Corners upper = lower;  // block j - 1's, made for the hinge above
+        lower = cornersOf(j);
         const Hinge& h = hinge(j);
         const int end = h.corner & 1;  // the hinge's end, the same number on both blocks
-        const auto& upper = lifted[size_t(j - 1)];
-        const auto& lower = lifted[size_t(j)];
-        const Vec2 pin = corners[size_t(j - 1)][size_t(h.corner)];
         for (const bool central : {false, true}) {
             // On the upper block's face `a`, round its end at the hinge, to the lower block's other face.
             const int a = outerFaceOfUpper(j) ^ (central ? 1 : 0), b = a ^ 1;
             RibbonFrame r;
             r.central = central;
             r.visible = spec_.ribbons.visible && h.mode != HingeMode::Cut;
-            r.points = {upper[size_t(2 * a + (end ^ 1))], upper[size_t(2 * a + end)], pin, lower[size_t(2 * b + end)],
-                        lower[size_t(2 * b + (end ^ 1))]};
+            r.points = {upper.lifted[size_t(2 * a + (end ^ 1))], upper.lifted[size_t(2 * a + end)],
+                        upper.at[size_t(h.corner)], lower.lifted[size_t(2 * b + end)],
+                        lower.lifted[size_t(2 * b + (end ^ 1))]};
             out.push_back(r);
         }
     }
