@@ -140,6 +140,7 @@ private slots:
         const double perPixelBar = length / barPixels, perPixelLadder = ladder / ladderPixels;
         QVERIFY2(std::abs(perPixelBar / perPixelLadder - 1) < 0.15,
                  qPrintable(QString("bar %1 m/px, ladder %2 m/px").arg(perPixelBar).arg(perPixelLadder)));
+        qInfo("%d blocks, %d drawn; scale bar %g m over %.0f px", blocks, view->blocksDrawn(), length, barPixels);
         if (blocks < 100)
             QCOMPARE(view->blocksDrawn(), blocks);
         else
