@@ -1,5 +1,7 @@
 #include "ui/ladder_view.h"
 
+#include "jl/ladder/ladder.h"
+#include "jl/scene/ladder_blocks.h"
 #include "ui/block_instances.h"
 #include "ui/block_shapes.h"
 #include "ui/events_panel.h"
@@ -82,6 +84,8 @@ void LadderView::setScene(const jl::Scene& scene, bool resetCamera) {
     blocks_->setShapes(std::move(shapes));
     extent_ = extent;
     room_->fitTo(extent_);
+    ladder_ = scene.ladder;
+    blockSpecs_ = scene.ladder ? jl::ladderBlocks(*scene.ladder) : std::vector<jl::BlockSpec>{};
     if (scene.ladder) {
         blockWidth_ = scene.ladder->block.width;
         blockLength_ = scene.ladder->block.length;
@@ -142,10 +146,16 @@ void LadderView::showFrame(const jl::Frame& frame) {
     // Ribbons are a few pixels wide at best when the whole of a long ladder is
     // in view, yet they cost more to draw than all the blocks: show them close up.
     const bool ribbonsShow = ribbonSpec_.visible && camera_.distance() < kRibbonDistanceInBlocks * blockLength_;
-    if (ribbonsShow || ribbonsShown_)
+    if (ribbonsShow || ribbonsShown_) {
+        // The simulation's frames leave the ribbons to the views that draw them.
+        std::vector<jl::RibbonFrame> ribbons;
+        if (ribbonsShow)
+            ribbons = !frame.ribbons.empty() || !ladder_
+                          ? frame.ribbons
+                          : jl::ladderRibbons(*ladder_, blockSpecs_, frame.poses, frame.hinges);
         for (const bool central : {false, true})
-            buildRibbons(central ? *centralRibbons_ : *ribbons_, ribbonsShow ? frame : jl::Frame{}, blockWidth_,
-                         ribbonSpec_, central);
+            buildRibbons(central ? *centralRibbons_ : *ribbons_, ribbons, blockWidth_, ribbonSpec_, central);
+    }
     ribbonsShown_ = ribbonsShow;
     // The spring is drawn in front of the blocks, on the face toward the viewer.
     buildDragLine(*dragLine_, frame, float(blockWidth_ / 2 + 0.002),

@@ -141,6 +141,8 @@ private:
     double extent_ = 0.36;
     double blockWidth_ = 0.045;
     jl::RibbonSpec ribbonSpec_;
+    std::optional<jl::LadderSpec> ladder_;   // whose ribbons to draw
+    std::vector<jl::BlockSpec> blockSpecs_;  // its blocks, as built
     double blockLength_ = 0.06;
     bool ribbonsShown_ = false;
     bool walk_ = false;
