@@ -41,11 +41,6 @@ ReachEstimate::ReachEstimate(QWidget* parent) : QLabel(parent) {
     reserveLines();
     setToolTip(explanation());
     pool_.setMaxThreadCount(1);
-    // An estimate can wait; the run being played cannot (on two cores a
-    // 1,000-block estimate took a fifth of the processor from the first
-    // seconds of playing it). Idle: on Linux the thread only runs when no
-    // other thread wants the processor.
-    pool_.setThreadPriority(QThread::IdlePriority);
     settle_ = new QTimer(this);
     settle_->setSingleShot(true);
     settle_->setInterval(250);
