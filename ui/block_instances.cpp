@@ -2,6 +2,7 @@
 
 #include "ui/shader_material.h"
 
+#include <QVector4D>
 #include <Qt3DCore/QAttribute>
 #include <Qt3DCore/QBuffer>
 #include <Qt3DCore/QGeometry>
@@ -10,6 +11,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <optional>
 
 namespace jl::ui {
 
@@ -74,8 +77,9 @@ void BlockInstances::setShapes(std::vector<BlockShape> shapes) { shapes_ = std::
 
 void BlockInstances::showFrame(const jl::Frame& frame, int grabbed, const std::vector<int>& pointedAt) {
     const size_t n = std::min(frame.poses.size(), shapes_.size());
-    QByteArray data(int(n * kInstanceFloats * sizeof(float)), Qt::Uninitialized);
-    auto* f = reinterpret_cast<float*>(data.data());
+    all_.resize(n * kInstanceFloats);
+    marked_.assign(n, false);
+    float* f = all_.data();
     for (size_t i = 0; i < n; ++i, f += kInstanceFloats) {
         const jl::Pose& p = frame.poses[i];
         const BlockShape& s = shapes_[i];
@@ -84,6 +88,7 @@ void BlockInstances::showFrame(const jl::Frame& frame, int grabbed, const std::v
         const float shade = held ? 0.8f : 1.0f;
         const bool pointed = std::find(pointedAt.begin(), pointedAt.end(), int(i)) != pointedAt.end();
         const float hi = int(i) == grabbed ? 1.0f : pointed ? 0.85f : 0.0f;
+        marked_[i] = held || hi > 0;
         const float values[kInstanceFloats] = {float(p.position.x()),
                                                float(p.position.y()),
                                                float(p.angle),
@@ -98,9 +103,52 @@ void BlockInstances::showFrame(const jl::Frame& frame, int grabbed, const std::v
                                                1.0f};
         std::copy(std::begin(values), std::end(values), f);
     }
-    instances_->setData(data);
-    for (auto* a : instanceAttributes_) a->setCount(uint(n));
-    renderer_->setInstanceCount(int(n));
+    upload();
+}
+
+void BlockInstances::setView(const QMatrix4x4& viewProjection, QSize pixels) {
+    if (viewProjection == viewProjection_ && pixels == pixels_) return;
+    viewProjection_ = viewProjection;
+    pixels_ = pixels;
+    if (!all_.empty()) upload();
+}
+
+// The instances to draw: a block is left out when its centre is within a
+// pixel of the last block drawn and each of its sides spans under a pixel
+// (the shader draws a block at least 1.5 pixels across, so the one drawn
+// covers it). Nothing is left out before the view's size is known.
+void BlockInstances::upload() {
+    const size_t n = marked_.size();
+    drawnData_.clear();
+    const QPointF half(pixels_.width() / 2.0, pixels_.height() / 2.0);
+    // Where a point of the world is drawn, in pixels from the view's centre; none at or behind the eye.
+    const auto pixel = [&](float x, float y, float z) -> std::optional<QPointF> {
+        const QVector4D c = viewProjection_ * QVector4D(x, y, z, 1);
+        if (c.w() <= 0) return std::nullopt;
+        return QPointF(c.x() / c.w() * half.x(), c.y() / c.w() * half.y());
+    };
+    const auto apart = [](QPointF a, QPointF b) { return QPointF::dotProduct(a - b, a - b) >= 1.0; };
+    std::optional<QPointF> last;
+    for (size_t i = 0; i < n; ++i) {
+        const float* f = all_.data() + i * kInstanceFloats;
+        const std::optional<QPointF> at = pixels_.isEmpty() ? std::nullopt : pixel(f[0], f[1], f[3]);
+        bool draw = marked_[i] || i + 1 == n || !at || !last || apart(*at, *last);
+        const float side = std::max({f[4], f[5], f[6]});
+        for (int axis = 0; axis < 3 && !draw; ++axis) {
+            const auto reach =
+                pixel(f[0] + (axis == 0 ? side : 0), f[1] + (axis == 1 ? side : 0), f[3] + (axis == 2 ? side : 0));
+            draw = !reach || apart(*reach, *at);
+        }
+        if (!draw) continue;
+        if (at) last = at;
+        drawnData_.insert(drawnData_.end(), f, f + kInstanceFloats);
+    }
+    const auto drawn = uint(drawnData_.size() / kInstanceFloats);
+    instances_->setData(
+        QByteArray(reinterpret_cast<const char*>(drawnData_.data()), qsizetype(drawnData_.size() * sizeof(float))));
+    for (auto* a : instanceAttributes_) a->setCount(drawn);
+    renderer_->setInstanceCount(int(drawn));
+    drawn_ = int(drawn);
 }
 
 }  // namespace jl::ui

@@ -1,9 +1,12 @@
 #include "ui/ladder_view.h"
 
+#include "jl/ladder/ladder.h"
+#include "jl/scene/ladder_blocks.h"
 #include "ui/block_instances.h"
 #include "ui/block_shapes.h"
 #include "ui/events_panel.h"
 #include "ui/room.h"
+#include "ui/scale_mark.h"
 #include "ui/strip_entity.h"
 
 #include <QKeyEvent>
@@ -58,6 +61,7 @@ LadderView::LadderView() : Qt3DExtras::Qt3DWindow(nullptr, Qt3DRender::API::Open
     ribbons_ = new StripEntity(root_, false);
     centralRibbons_ = new StripEntity(root_, false);
     dragLine_ = new StripEntity(root_, true);
+    scale_ = new ScaleMark(root_);
     dragLine_->setColor(QColor(225, 40, 40));
     setRootEntity(root_);
     camera()->lens()->setPerspectiveProjection(40, 1.6f, 0.01f, 100);
@@ -81,6 +85,8 @@ void LadderView::setScene(const jl::Scene& scene, bool resetCamera) {
     blocks_->setShapes(std::move(shapes));
     extent_ = extent;
     room_->fitTo(extent_);
+    ladder_ = scene.ladder;
+    blockSpecs_ = scene.ladder ? jl::ladderBlocks(*scene.ladder) : std::vector<jl::BlockSpec>{};
     if (scene.ladder) {
         blockWidth_ = scene.ladder->block.width;
         blockLength_ = scene.ladder->block.length;
@@ -117,11 +123,13 @@ void LadderView::showFrame(std::shared_ptr<const jl::Frame> shared) {
     restructure_.showFrame(shared);
     const jl::Frame& frame = *shared;
     if (!frame.dragging) grabbed_ = -1;
+    // Swapped and assigned, not moved and copied: the lists keep their room
+    // (240 kB a frame for 10,000 blocks, each a fresh page-faulting block).
     if (frame.time != shownTime_) {
-        earlierPoses_ = std::move(shownPoses_);
+        earlierPoses_.swap(shownPoses_);
         earlierTime_ = shownTime_;
     }
-    shownPoses_ = frame.poses;
+    shownPoses_.assign(frame.poses.begin(), frame.poses.end());
     shownTime_ = frame.time;
     if (follow_ && !frame.poses.empty()) {
         jl::Vec2 centre = jl::Vec2::Zero();
@@ -145,10 +153,16 @@ void LadderView::showFrame(std::shared_ptr<const jl::Frame> shared) {
     // Ribbons are a few pixels wide at best when the whole of a long ladder is
     // in view, yet they cost more to draw than all the blocks: show them close up.
     const bool ribbonsShow = ribbonSpec_.visible && camera_.distance() < kRibbonDistanceInBlocks * blockLength_;
-    if (ribbonsShow || ribbonsShown_)
+    if (ribbonsShow || ribbonsShown_) {
+        // The simulation's frames leave the ribbons to the views that draw them.
+        std::vector<jl::RibbonFrame> ribbons;
+        if (ribbonsShow)
+            ribbons = !frame.ribbons.empty() || !ladder_
+                          ? frame.ribbons
+                          : jl::ladderRibbons(*ladder_, blockSpecs_, frame.poses, frame.hinges);
         for (const bool central : {false, true})
-            buildRibbons(central ? *centralRibbons_ : *ribbons_, ribbonsShow ? frame : jl::Frame{}, blockWidth_,
-                         ribbonSpec_, central);
+            buildRibbons(central ? *centralRibbons_ : *ribbons_, ribbons, blockWidth_, ribbonSpec_, central);
+    }
     ribbonsShown_ = ribbonsShow;
     // The spring is drawn in front of the blocks, on the face toward the viewer.
     buildDragLine(*dragLine_, frame, float(blockWidth_ / 2 + 0.002),
@@ -273,7 +287,13 @@ void LadderView::setWalkMode(bool on) {
     emit walkModeChanged(on);
 }
 
-void LadderView::updateCamera() { camera_.apply(camera()); }
+int LadderView::blocksDrawn() const { return blocks_->drawnCount(); }
+
+void LadderView::updateCamera() {
+    camera_.apply(camera());
+    blocks_->setView(camera()->projectionMatrix() * camera()->viewMatrix(), QSize(width(), height()));
+    scale_->place(camera_, height(), height() > 0 ? float(width()) / float(height()) : 1.6f);
+}
 
 std::optional<jl::Vec2> LadderView::planePoint(const QPointF& pixel) const {
     const QRect viewport(0, 0, width(), height());

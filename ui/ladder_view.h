@@ -28,6 +28,7 @@ namespace jl::ui {
 class BlockInstances;
 class StripEntity;
 class Room;
+class ScaleMark;
 
 class LadderView : public Qt3DExtras::Qt3DWindow {
     Q_OBJECT
@@ -67,6 +68,10 @@ public:
     // The point of the ladder's plane (z = 0) under a window pixel.
     std::optional<jl::Vec2> planePoint(const QPointF& pixel) const;
     // Where a point of the ladder's plane appears in the window (for tests and hints).
+    // The scale bar beside the point looked at (its round length, m).
+    const ScaleMark* scaleMark() const { return scale_; }
+    // Blocks in the instance buffer (those a pixel from the last are left out).
+    int blocksDrawn() const;
     QPointF pixelOf(const jl::Vec2& point) const;
     // Whether a block as last shown covers this point of the plane (within
     // 2 mm, so thin blocks stay easy to grab): a left drag there pushes the
@@ -136,6 +141,7 @@ private:
     StripEntity* centralRibbons_;  // the middle ribbons (a colour of their own)
     StripEntity* dragLine_;
     Room* room_;
+    ScaleMark* scale_;  // how long a length on screen is
     Qt3DRender::QRenderCapture* capture_;
     ViewCamera camera_;
     jl::ViewSpec view_;
@@ -150,6 +156,8 @@ private:
     double extent_ = 0.36;
     double blockWidth_ = 0.045;
     jl::RibbonSpec ribbonSpec_;
+    std::optional<jl::LadderSpec> ladder_;   // whose ribbons to draw
+    std::vector<jl::BlockSpec> blockSpecs_;  // its blocks, as built
     double blockLength_ = 0.06;
     bool ribbonsShown_ = false;
     bool walk_ = false;

@@ -1,12 +1,13 @@
 #include "ui/room.h"
 
+#include "ui/shader_material.h"
+
 #include <QColor>
 #include <QVector3D>
 #include <Qt3DCore/QTransform>
 #include <Qt3DExtras/QCuboidMesh>
-#include <Qt3DExtras/QDiffuseSpecularMaterial>
-#include <Qt3DRender/QDirectionalLight>
-#include <Qt3DRender/QPointLight>
+#include <Qt3DRender/QMaterial>
+#include <Qt3DRender/QParameter>
 
 namespace jl::ui {
 
@@ -16,7 +17,7 @@ constexpr float kTableTopBelowLadder = 0.12f;  // m between the bottom block and
 constexpr float kTableHeight = 0.74f, kTableWidth = 1.4f, kTableDepth = 0.7f, kTop = 0.035f;
 constexpr float kRoomWidth = 6.0f, kRoomDepth = 5.0f, kRoomHeight = 3.0f;
 
-void box(Qt3DCore::QNode* parent, QVector3D centre, QVector3D size, QColor color, float shininess = 8) {
+void box(Qt3DCore::QNode* parent, QVector3D centre, QVector3D size, QColor color) {
     auto* e = new Qt3DCore::QEntity(parent);
     auto* mesh = new Qt3DExtras::QCuboidMesh(e);
     mesh->setXExtent(size.x());
@@ -24,11 +25,8 @@ void box(Qt3DCore::QNode* parent, QVector3D centre, QVector3D size, QColor color
     mesh->setZExtent(size.z());
     auto* t = new Qt3DCore::QTransform(e);
     t->setTranslation(centre);
-    auto* m = new Qt3DExtras::QDiffuseSpecularMaterial(e);
-    m->setDiffuse(color);
-    m->setAmbient(color.darker(300));
-    m->setSpecular(QColor(30, 30, 30));
-    m->setShininess(shininess);
+    auto* m = shaderMaterial("room", e);
+    m->addParameter(new Qt3DRender::QParameter("surfaceColor", color, m));
     e->addComponent(mesh);
     e->addComponent(t);
     e->addComponent(m);
@@ -40,8 +38,8 @@ Room::Room(Qt3DCore::QNode* parent) : Qt3DCore::QEntity(parent) {
     addComponent(transform_);
     // Built for a unit room whose table top is at y = 0, centred under the ladder.
     const float floorY = -kTableHeight;
-    box(this, {0, -kTop / 2, 0}, {kTableWidth, kTop, kTableDepth}, QColor(118, 126, 138),
-        20);  // a slate bench top: the wood stands out
+    // A slate bench top: the wood stands out.
+    box(this, {0, -kTop / 2, 0}, {kTableWidth, kTop, kTableDepth}, QColor(118, 126, 138));
     for (float sx : {-1.f, 1.f})
         for (float sz : {-1.f, 1.f})
             box(this, {sx * (kTableWidth / 2 - 0.06f), floorY / 2 - kTop / 2, sz * (kTableDepth / 2 - 0.06f)},
@@ -53,18 +51,6 @@ Room::Room(Qt3DCore::QNode* parent) : Qt3DCore::QEntity(parent) {
     // A skirting board where wall meets floor, so the room reads as a room.
     box(this, {0, floorY + 0.05f, -kRoomDepth / 2 + 0.03f}, {kRoomWidth, 0.1f, 0.02f}, QColor(245, 245, 245));
 
-    auto* sun = new Qt3DCore::QEntity(this);
-    auto* light = new Qt3DRender::QDirectionalLight(sun);
-    light->setWorldDirection(QVector3D(-0.35f, -0.8f, -0.6f));
-    light->setIntensity(0.6f);
-    sun->addComponent(light);
-    auto* lamp = new Qt3DCore::QEntity(this);
-    auto* point = new Qt3DRender::QPointLight(lamp);
-    point->setIntensity(0.35f);
-    auto* lampAt = new Qt3DCore::QTransform(lamp);
-    lampAt->setTranslation({1.0f, 2.0f, 2.0f});
-    lamp->addComponent(point);
-    lamp->addComponent(lampAt);
     fitTo(0.36);
 }
 

@@ -2,6 +2,7 @@
 
 #include "jl/ladder/block_corners.h"
 #include "jl/ladder/ladder.h"
+#include "jl/scene/ladder_blocks.h"
 #include "ui/events_panel.h"
 
 #include <QKeyEvent>
@@ -228,11 +229,15 @@ void SideView::setScene(const jl::Scene& scene) {
     shapes_ = blockShapes(scene);
     restructure_.setScene(scene);
     cornerLocal_.clear();
+    ladder_.reset();
+    blockSpecs_.clear();
     ladderBlocks_ = scene.ladder ? scene.ladder->blocks : 0;
     firstParticle_ = int(shapes_.size() - scene.particles.size());
     if (scene.ladder && !jl::Ladder::validate(*scene.ladder)) {
         // The engine's own numbering, not a copy of its rule.
         cornerLocal_ = jl::blockCorners(*scene.ladder);
+        ladder_ = scene.ladder;
+        blockSpecs_ = jl::ladderBlocks(*scene.ladder);
         ribbonColor_ =
             QColor(scene.ladder->ribbons.color.r, scene.ladder->ribbons.color.g, scene.ladder->ribbons.color.b);
         ribbonThickness_ = scene.ladder->ribbons.thickness;
@@ -409,14 +414,19 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
     }
     if (options_.ribbons && !thread) {
         // Which face carries which ribbons: the outer pair as a solid line,
-        // the middle ribbon dashed, each in its colour.
+        // the middle ribbon dashed, each in its colour. The simulation's
+        // frames leave the ribbons to the views that draw them.
+        const std::vector<jl::RibbonFrame> ribbons =
+            !frame_->ribbons.empty() || !ladder_
+                ? frame_->ribbons
+                : jl::ladderRibbons(*ladder_, blockSpecs_, frame_->poses, frame_->hinges);
         const double w = std::max(1.6 * ui, ribbonThickness_ * map.scale);
         p.setBrush(Qt::NoBrush);
         for (const bool central : {false, true}) {
             QPen pen(central ? centralRibbonColor_ : ribbonColor_, w, central ? Qt::DashLine : Qt::SolidLine,
                      Qt::FlatCap, Qt::RoundJoin);
             p.setPen(pen);
-            for (const jl::RibbonFrame& r : frame_->ribbons) {
+            for (const jl::RibbonFrame& r : ribbons) {
                 if (!r.visible || r.central != central) continue;
                 QPolygonF path;
                 for (const jl::Vec2& q : r.points) path << map(q);

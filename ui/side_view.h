@@ -112,6 +112,8 @@ private:
     QColor ribbonColor_{40, 60, 140};
     QColor centralRibbonColor_;
     double ribbonThickness_ = 0.0005;
+    std::optional<jl::LadderSpec> ladder_;   // whose ribbons to draw
+    std::vector<jl::BlockSpec> blockSpecs_;  // its blocks, as built
     std::shared_ptr<const jl::Frame> frame_ = std::make_shared<const jl::Frame>();
     QRectF framing_;
     mutable QRectF scaleLabel_;

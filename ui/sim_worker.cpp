@@ -27,6 +27,12 @@ std::string SimWorker::joinLines(const std::vector<std::string>& lines) {
     return s.empty() ? std::string("the scene could not be built") : s;
 }
 
+jl::Simulation::Built SimWorker::build(const jl::Scene& scene) {
+    auto built = jl::Simulation::build(scene);
+    if (built.simulation) built.simulation->setRibbonsInFrames(false);
+    return built;
+}
+
 void SimWorker::post(SimCommand c) {
     {
         std::lock_guard lock(queueMutex_);
@@ -172,7 +178,7 @@ void SimWorker::apply(const cmd::Load& c) {
     recorded_ = std::make_shared<const jl::Scene>(c.scene);
     duration_ = c.scene.duration;
     stoppedAtEnd_ = false;
-    auto built = jl::Simulation::build(c.scene);
+    auto built = build(c.scene);
     sim_ = std::move(built.simulation);
     if (!sim_) {
         fail(joinLines(built.errors));
@@ -229,7 +235,7 @@ void SimWorker::apply(const cmd::ShowInstant& c) {
 // so the state there is the settled one, after the event; the frame carries
 // the events of that instant.
 std::shared_ptr<const jl::Frame> SimWorker::instantFrame(double time, int before) {
-    auto built = jl::Simulation::build(sim_->scene());
+    auto built = build(sim_->scene());
     if (!built.simulation) return nullptr;
     jl::Simulation& s = *built.simulation;
     if (restoreKeyframeFor(s, before) < 0) return nullptr;

@@ -89,6 +89,10 @@ private:
     using Clock = std::chrono::steady_clock;
     // Work on the engine in slices this long, then drain commands again.
     static constexpr auto kWorkSlice = std::chrono::milliseconds(12);
+    // The engine on a scene, its frames without ribbons: the views make
+    // those of the frame they draw, when they draw them (a 10,000-block
+    // ladder's ribbons were a fifth of this thread's time).
+    static jl::Simulation::Built build(const jl::Scene& scene);
     // A scene's build errors as the failure shown.
     static std::string joinLines(const std::vector<std::string>& lines);
     void apply(const SimCommand& c);

@@ -134,7 +134,7 @@ void SimWorker::showFrame(int index) {
 // An evicted frame: re-simulate it on a scratch copy from the keyframe before
 // it; the head simulation stays where it is.
 std::shared_ptr<const jl::Frame> SimWorker::regenerate(int index) {
-    auto built = jl::Simulation::build(sim_->scene());
+    auto built = build(sim_->scene());
     if (!built.simulation) return nullptr;
     jl::Simulation& s = *built.simulation;
     s.setFrameGrid(frameGrid());
@@ -179,7 +179,7 @@ void SimWorker::discardFuture() {
     if (dragsChanged) {
         // The simulation's own record of drags cannot be cut, so rebuild it
         // from the shortened scene and replay up to the cursor.
-        auto built = jl::Simulation::build(scene);
+        auto built = build(scene);
         if (!built.simulation) return fail(joinLines(built.errors));
         sim_ = std::move(built.simulation);
         sim_->setFrameGrid(frameGrid());

@@ -53,8 +53,8 @@ void StripEntity::commit() {
 // The toy's three ribbons per hinge (docs/model.md section 8.8): the frame
 // gives each one's path in the plane; the outer pair is drawn at
 // |z| = half width - inset - half ribbon width, the middle one at z = 0.
-void buildRibbons(StripEntity& strips, const jl::Frame& frame, double blockWidth, const jl::RibbonSpec& spec,
-                  bool central) {
+void buildRibbons(StripEntity& strips, const std::vector<jl::RibbonFrame>& ribbons, double blockWidth,
+                  const jl::RibbonSpec& spec, bool central) {
     strips.clear();
     const double width = central ? spec.centralWidth : spec.width;
     const float half = float(width / 2);
@@ -63,7 +63,7 @@ void buildRibbons(StripEntity& strips, const jl::Frame& frame, double blockWidth
         const float zc = float(std::max(blockWidth / 2 - spec.inset - width / 2, width / 2));
         lanes = {-zc, zc};
     }
-    for (const jl::RibbonFrame& r : frame.ribbons) {
+    for (const jl::RibbonFrame& r : ribbons) {
         if (!r.visible || r.central != central) continue;
         for (size_t i = 1; i < r.points.size(); ++i) {
             const jl::Vec2 p = r.points[i - 1], q = r.points[i];

@@ -44,8 +44,8 @@ private:
 
 // The outer pairs (or the middle ribbons) as strips over the ladder's faces
 // (z is the blocks' width direction).
-void buildRibbons(StripEntity& strips, const jl::Frame& frame, double blockWidth, const jl::RibbonSpec& spec,
-                  bool central);
+void buildRibbons(StripEntity& strips, const std::vector<jl::RibbonFrame>& ribbons, double blockWidth,
+                  const jl::RibbonSpec& spec, bool central);
 // The mouse spring from the grabbed point to the hand, as a bar facing the viewer.
 void buildDragLine(StripEntity& strip, const jl::Frame& frame, float z, float width);
 

@@ -24,7 +24,7 @@ void FrameHistory::setBudget(std::size_t bytes) {
 std::size_t FrameHistory::frameBytes(const Frame& f) {
     std::size_t n = sizeof(Frame) + f.poses.size() * sizeof(Pose) + f.held.size() / 8 +
                     f.hinges.size() * sizeof(HingeFrame) + f.events.size() * sizeof(Event);
-    for (const auto& r : f.ribbons) n += sizeof(r) + r.points.size() * sizeof(Vec2);
+    n += f.ribbons.size() * sizeof(RibbonFrame);
     return n;
 }
 

@@ -25,17 +25,6 @@ using namespace jl::test;
 
 namespace {
 
-// How long this thread has waited for a processor, in ms, or -1 where the
-// kernel does not say (/proc/thread-self/schedstat: time run, time waited
-// on a run queue, in ns). On a machine busy with other work the UI thread
-// waits its turn, and that is no stall of the program's own.
-double runQueueWaitMs() {
-    std::ifstream in("/proc/thread-self/schedstat");
-    long long ran = 0, waited = 0;
-    if (!(in >> ran >> waited)) return -1;
-    return double(waited) / 1e6;
-}
-
 // A swinging ladder whose lesson lasts 0.5 s, and playing it (at 4x) until it stops there.
 jl::Scene halfSecondLesson() {
     jl::Scene scene = jl::test::swingingLadder();
@@ -516,31 +505,9 @@ private slots:
         // Not counted: the first frames of a new scene upload its buffers and shaders once.
         QTest::qWait(500);
 
-        // A 5 ms timer on the UI thread: any gap much longer is a stall,
-        // less the time the thread spent waiting for a processor (the test
-        // shares the machine with others and the simulation's own thread).
-        QElapsedTimer clock;
-        qint64 last = 0, worst = 0;
-        double lastWait = runQueueWaitMs(), queued = 0;
-        int ticks = 0;
-        std::vector<qint64> gaps;
-        QTimer probe;
-        probe.setInterval(5);
-        QObject::connect(&probe, &QTimer::timeout, [&] {
-            const qint64 now = clock.elapsed();
-            const double wait = runQueueWaitMs();
-            const double waited = lastWait >= 0 ? wait - lastWait : 0;
-            queued += waited;
-            const qint64 gap = now - last - qint64(waited);
-            worst = std::max(worst, gap);
-            if (gap > 25) gaps.push_back(now), gaps.push_back(gap);
-            last = now;
-            lastWait = wait;
-            ++ticks;
-        });
+        jl::test::EventLoopProbe probe;
         const auto startSerial = f.sim->status()->serial;
         const double startTime = f.sim->status()->frame->time;
-        clock.start();
         probe.start();
         QTest::qWait(3000);
         probe.stop();
@@ -549,11 +516,11 @@ private slots:
         qInfo(
             "longest stall %lld ms over %d ticks (%.0f ms waiting for a processor not counted); simulated %.3f s at "
             "%.2fx real time, %0.f steps/s",
-            worst, ticks, queued, s->frame->time - startTime, s->realTimeFactor, s->stepsPerSecond);
-        for (size_t i = 0; i + 1 < gaps.size(); i += 2) qInfo("gap of %lld ms ending at %lld ms", gaps[i + 1], gaps[i]);
+            probe.worst, probe.ticks, probe.queued, s->frame->time - startTime, s->realTimeFactor, s->stepsPerSecond);
+        for (const auto& [at, gap] : probe.gaps) qInfo("gap of %lld ms ending at %lld ms", gap, at);
         QVERIFY2(s->serial > startSerial + 10, "the view was not fed new frames");
         QVERIFY(s->frame->time > startTime);
-        QVERIFY2(worst < 50, qPrintable(QString("the event loop stalled for %1 ms").arg(worst)));
+        QVERIFY2(probe.worst < 50, qPrintable(QString("the event loop stalled for %1 ms").arg(probe.worst)));
     }
 };
 

@@ -4,6 +4,7 @@
 // window, a three-quarter view that frames the whole ladder on load, after
 // an edit that makes it longer and on F.
 #include "ui/block_shapes.h"
+#include "ui/scale_mark.h"
 #include "ui/view_camera.h"
 #include "ui_test_support.h"
 
@@ -102,6 +103,49 @@ private slots:
         // 40 degrees of view must span the 60 m with a margin.
         const float visible = 2 * c.distance() * std::tan(float(20 * std::numbers::pi / 180));
         QVERIFY(visible > 60.0f && visible < 75.0f);
+    }
+
+    // The scale bar: a round length, 90 pixels or more on screen, and as
+    // long against the ladder as it says (a 6-block ladder and one of
+    // 10,000 blocks, 600 m, each framed whole). Of a long ladder only the
+    // blocks a pixel apart are drawn; of a short one, all.
+    void aScaleBarSaysHowLongTheLadderIs_data() {
+        QTest::addColumn<int>("blocks");
+        QTest::newRow("6 blocks") << 6;
+        QTest::newRow("10,000 blocks") << 10000;
+    }
+    void aScaleBarSaysHowLongTheLadderIs() {
+        QFETCH(int, blocks);
+        QTemporaryDir dir;
+        MainWindow w(jl::test::quietWindow());
+        QVERIFY(showScene(w, ladderFile(dir, blocks)));
+        LadderView* view = w.ladderView();
+        const ScaleMark* mark = view->scaleMark();
+        const double length = mark->length();
+        const double decade = std::pow(10.0, std::floor(std::log10(length) + 1e-9));
+        const double mantissa = length / decade;
+        QVERIFY2(std::abs(mantissa - 1) < 1e-9 || std::abs(mantissa - 2) < 1e-9 || std::abs(mantissa - 5) < 1e-9,
+                 qPrintable(QString::number(length)));
+        const QRect viewport(0, 0, view->width(), view->height());
+        const QMatrix4x4 v = view->camera()->viewMatrix(), p = view->camera()->projectionMatrix();
+        const double barPixels =
+            (mark->top().project(v, p, viewport) - mark->bottom().project(v, p, viewport)).toVector2D().length();
+        QVERIFY2(barPixels >= 90 && barPixels < 2.5 * 90, qPrintable(QString::number(barPixels)));
+        // The ladder hangs straight from the hand: its top and bottom blocks' centres.
+        const auto frame = w.controller()->status()->frame;
+        const QPointF top = view->pixelOf(frame->poses.front().position);
+        const QPointF bottom = view->pixelOf(frame->poses.back().position);
+        const double ladder = (frame->poses.front().position - frame->poses.back().position).norm();
+        const double ladderPixels = QLineF(top, bottom).length();
+        const double perPixelBar = length / barPixels, perPixelLadder = ladder / ladderPixels;
+        QVERIFY2(std::abs(perPixelBar / perPixelLadder - 1) < 0.15,
+                 qPrintable(QString("bar %1 m/px, ladder %2 m/px").arg(perPixelBar).arg(perPixelLadder)));
+        qInfo("%d blocks, %d drawn; scale bar %g m over %.0f px", blocks, view->blocksDrawn(), length, barPixels);
+        if (blocks < 100)
+            QCOMPARE(view->blocksDrawn(), blocks);
+        else
+            QVERIFY2(view->blocksDrawn() > 100 && view->blocksDrawn() < blocks / 5,
+                     qPrintable(QString::number(view->blocksDrawn())));
     }
 
     // A scene that says where to look is looked at there, however long its

@@ -19,9 +19,12 @@
 #include <QTimer>
 #include <QToolBar>
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <memory>
+#include <vector>
 
 namespace jl::test {
 
@@ -59,6 +62,48 @@ inline bool clickToolButton(jl::ui::MainWindow& w, const QString& text) {
         }
     return false;
 }
+
+// How long this thread has waited for a processor, in ms, or -1 where the
+// kernel does not say (/proc/thread-self/schedstat: time run, time waited
+// on a run queue, in ns). On a machine busy with other work the UI thread
+// waits its turn, and that is no stall of the program's own.
+inline double runQueueWaitMs() {
+    std::ifstream in("/proc/thread-self/schedstat");
+    long long ran = 0, waited = 0;
+    if (!(in >> ran >> waited)) return -1;
+    return double(waited) / 1e6;
+}
+
+// A 5 ms timer on the UI thread: a gap between two of its ticks much
+// longer than that is a stall (a click would wait as long), less the time
+// the thread spent waiting for a processor (counted apart, in `queued`).
+struct EventLoopProbe {
+    QElapsedTimer clock;
+    QTimer timer;
+    qint64 last = 0, worst = 0;
+    double lastWait = 0, queued = 0;
+    int ticks = 0;
+    std::vector<std::pair<qint64, qint64>> gaps;  // (ms since start at its end, its length) of gaps over 25 ms
+    void start() {
+        timer.setInterval(5);
+        QObject::connect(&timer, &QTimer::timeout, [this] {
+            const qint64 now = clock.elapsed();
+            const double wait = runQueueWaitMs();
+            const double waited = lastWait >= 0 && wait >= 0 ? wait - lastWait : 0;
+            queued += waited;
+            const qint64 gap = now - last - qint64(waited);
+            worst = std::max(worst, gap);
+            if (gap > 25) gaps.emplace_back(now, gap);
+            last = now;
+            lastWait = wait;
+            ++ticks;
+        });
+        lastWait = runQueueWaitMs();
+        clock.start();
+        timer.start();
+    }
+    void stop() { timer.stop(); }
+};
 
 // Waits (running the event loop) until the newest status satisfies `pred`.
 template <typename Pred>

@@ -5,6 +5,7 @@
 
 #include "jl/base/geometry.h"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -37,7 +38,11 @@ struct HingeFrame {
 // A ribbon drawn over the block faces: a polyline in the ladder's plane,
 // drawn across the width at the outer pair's two places or at the middle.
 struct RibbonFrame {
-    std::vector<Vec2> points;
+    // Round the upper block's end to the hinge and on down the lower block:
+    // always five points, kept in place (a long ladder's frame has two
+    // ribbons per hinge, and a list of its own for each cost more than the
+    // rest of the frame).
+    std::array<Vec2, 5> points;
     bool central = false;  // the middle ribbon; else the outer pair
     bool visible = true;
 };

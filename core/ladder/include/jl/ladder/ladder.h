@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -264,5 +265,12 @@ private:
     // The hinges the event tests visit: 1 .. liveEnd() - 1.
     int liveEnd() const { return std::min(stillFrom_ + 1, blockCount()); }
 };
+
+// The ribbons Ladder::ribbons gives, from a frame's record of the ladder
+// instead of the world: block i at poses[i], as blocks[i] (ladderBlocks)
+// says, and hinges[j - 1] hinge j. A view makes them when it draws them, so the
+// frames a long run records need not carry them (two per hinge).
+std::vector<RibbonFrame> ladderRibbons(const LadderSpec& spec, std::span<const BlockSpec> blocks,
+                                       std::span<const Pose> poses, std::span<const HingeFrame> hinges);
 
 }  // namespace jl

@@ -1,0 +1,129 @@
+// labels: ui;timing
+// A long ladder played in the window at a laptop's screen size: the UI
+// thread must never stall for long, and a click on Pause must take effect
+// at once, however slow the engine is. Wall-clock measurements, so the
+// label `timing` lets a loaded machine leave this out (ctest -LE timing).
+// It also prints where each thread's processor time went and the real-time
+// factor, for docs/desktop-performance.md (speed is measured, not asserted).
+#include "jl/scene/scene_io.h"
+#include "ui/main_window.h"
+#include "ui/sim_controller.h"
+#include "ui_test_support.h"
+
+#include <QDir>
+#include <QElapsedTimer>
+#include <QThread>
+#include <QtTest>
+
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+
+using namespace jl::ui;
+
+namespace {
+
+constexpr qint64 kLongestStallMs = 100;  // the requirement: no click waits longer
+
+// CPU seconds of every thread of this process, by name (/proc/self/task).
+std::map<std::string, double> threadSeconds() {
+    std::map<std::string, double> out;
+    const double tick = double(sysconf(_SC_CLK_TCK));
+    for (const QString& tid : QDir("/proc/self/task").entryList(QDir::Dirs | QDir::NoDotAndDotDot)) {
+        std::ifstream in(("/proc/self/task/" + tid + "/stat").toStdString());
+        std::string line;
+        std::getline(in, line);
+        const auto open = line.find('('), close = line.rfind(')');
+        if (open == std::string::npos || close == std::string::npos) continue;
+        std::string name = line.substr(open + 1, close - open - 1);
+        // Fields after the name: state is field 3, utime 14 and stime 15.
+        std::istringstream rest(line.substr(close + 2));
+        std::string field;
+        double utime = 0, stime = 0;
+        for (int i = 3; i <= 15 && rest >> field; ++i) {
+            if (i == 14) utime = std::stod(field);
+            if (i == 15) stime = std::stod(field);
+        }
+        if (name.rfind("llvmpipe", 0) == 0) name = "llvmpipe";
+        out[name] += (utime + stime) / tick;
+    }
+    return out;
+}
+
+// The classic cascade's design with `blocks` blocks, as a user makes it.
+jl::Scene classicWith(int blocks) {
+    auto load = jl::loadScene(JL_SOURCE_DIR "/examples/classic.yaml");
+    if (!load.scene) qFatal("examples/classic.yaml does not load");
+    load.scene->ladder->blocks = blocks;
+    load.scene->duration = 60;  // plays on through the measurement
+    return *load.scene;
+}
+
+}  // namespace
+
+class LongLadderTiming : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { jl::test::isolateSettings(); }
+
+    void theWindowAnswersAtOnceWhileALongLadderPlays_data() {
+        QTest::addColumn<int>("blocks");
+        QTest::newRow("1,000 blocks") << 1000;
+        QTest::newRow("10,000 blocks") << 10000;
+    }
+
+    void theWindowAnswersAtOnceWhileALongLadderPlays() {
+        QFETCH(int, blocks);
+        MainWindow window(jl::test::quietWindow());
+        window.showMaximized();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        SimController* sim = window.controller();
+        const auto before = jl::test::loadsSoFar(sim);
+        window.document()->reset(classicWith(blocks), QString());
+        QVERIFY(jl::test::loadedAfter(sim, before));
+        QTest::qWait(1000);  // the first frames upload the scene's buffers and shaders once
+        sim->play();
+        QVERIFY(jl::test::waitForStatus(sim, [](const SimStatus& s) { return s.playing && s.frameIndex > 0; }));
+
+        jl::test::EventLoopProbe probe;
+        const auto cpuBefore = threadSeconds();
+        const double simBefore = sim->status()->frame->time;
+        probe.start();
+        QTest::qWait(6000);
+        probe.stop();
+        const double wall = double(probe.clock.elapsed()) / 1000;
+        const auto cpuAfter = threadSeconds();
+        const auto s = sim->status();
+
+        // A click on Pause while it plays: from the click's event to the
+        // worker having stopped.
+        QElapsedTimer click;
+        click.start();
+        QVERIFY(jl::test::clickToolButton(window, "&Pause"));
+        while (sim->status()->playing && click.elapsed() < 5000) QThread::usleep(200);
+        const qint64 pauseMs = click.elapsed();
+
+        const double simulated = s->frame->time - simBefore;
+        qInfo(
+            "%d blocks: simulated %.3f s (from t = %.3f s) in %.2f s wall (%.3fx; the status bar said %.2fx); longest "
+            "gap between "
+            "UI ticks %lld ms (%.0f ms waiting for a processor not counted); pause took effect after %lld ms",
+            blocks, simulated, simBefore, wall, simulated / wall, s->realTimeFactor, probe.worst, probe.queued,
+            pauseMs);
+        for (const auto& [name, seconds] : cpuAfter) {
+            const double used = seconds - (cpuBefore.count(name) ? cpuBefore.at(name) : 0.0);
+            if (used > 0.005)
+                qInfo("  thread %-16s %6.2f CPU s (%.2f per simulated s)", name.c_str(), used, used / simulated);
+        }
+        for (const auto& [at, gap] : probe.gaps) qInfo("  gap of %lld ms ending at %lld ms", gap, at);
+        QVERIFY(simulated > 0);
+        QVERIFY2(probe.worst < kLongestStallMs,
+                 qPrintable(QString("the event loop stalled for %1 ms").arg(probe.worst)));
+        QVERIFY2(pauseMs < kLongestStallMs, qPrintable(QString("the pause waited %1 ms").arg(pauseMs)));
+    }
+};
+
+QTEST_MAIN(LongLadderTiming)
+#include "test_long_ladder_timing.moc"
