@@ -1,6 +1,6 @@
 #include "ui/scale_mark.h"
 
-#include "ui/side_view.h"
+#include "ui/round_length.h"
 #include "ui/strip_entity.h"
 #include "ui/view_camera.h"
 

@@ -21,13 +21,6 @@
 
 namespace jl::ui {
 
-// The grid's cell: the shortest round length (1, 2 or 5 times a power of
-// ten, from 1 cm up, without an upper end: a ladder of 100,000 blocks is
-// 6 km tall) that is at least `leastPixels` long at `pixelsPerMetre`; and
-// that length in words for the scale bar (cm, m or km).
-double gridCell(double pixelsPerMetre, double leastPixels);
-QString lengthText(double metres);
-
 struct SideViewOptions {
     bool blockNumbers = true;
     bool cornerNumbers = false;  // the paper's 0..3 (k^1 along, k^2 across)
