@@ -318,10 +318,12 @@ HingeContact Ladder::split(const World& w, int j, const Wrench& on) const {
         // N acts at the far side of the shared end face, along -d_a.
         const double t = std::min(thickness_[size_t(j - 1)], thickness_[size_t(j)]);
         c.normal = -on.moment / cross(t * na, da);
+        c.load = on.force.norm() + std::abs(c.normal);
     } else if (hinge(j).mode == HingeMode::Folded) {
         const double lever = length_ * cross(da, na);
         c.farEnd = -on.moment / lever;                                    // pin at k, N at k^1
         c.nearEnd = (on.moment - length_ * cross(da, on.force)) / lever;  // pin at k^1, N at k
+        c.load = on.force.norm() + std::abs(c.nearEnd) + std::abs(c.farEnd);
     }
     return c;
 }
@@ -329,6 +331,13 @@ HingeContact Ladder::split(const World& w, int j, const Wrench& on) const {
 HingeContact Ladder::contact(const World& w, const Dynamics& d, int j) const {
     if (hinge(j).mode != HingeMode::OpenLocked && hinge(j).mode != HingeMode::Folded) return {};
     return split(w, j, internalWrench(w, d, j, nullptr));
+}
+
+// The ladder's threshold is 1e-8 of its lightest block's weight (5e-8 of
+// it times sqrt(L/g) for impulses); a contact's load raises it by the same
+// fraction (docs/model.md section 8.3, "How small counts as zero").
+double Ladder::pullThreshold(const HingeContact& c, bool impulse) const {
+    return impulse ? std::max(impulseTolerance_, 5e-8 * c.load) : std::max(forceTolerance_, 1e-8 * c.load);
 }
 
 // Two functions per hinge, >= 0 while the mode may stand.
@@ -341,13 +350,16 @@ double Ladder::eventFunctions(const World& w, const Dynamics& d, std::vector<dou
             case HingeMode::Free:
             case HingeMode::Cut:
                 continue;
-            case HingeMode::OpenLocked:
-                g[0] = contact(w, d, j).normal + forceTolerance_;
+            case HingeMode::OpenLocked: {
+                const HingeContact c = contact(w, d, j);
+                g[0] = c.normal + pullThreshold(c, false);
                 break;
+            }
             case HingeMode::Folded: {
                 const HingeContact c = contact(w, d, j);
-                g[0] = c.nearEnd + forceTolerance_;
-                g[1] = c.farEnd + forceTolerance_;
+                const double threshold = pullThreshold(c, false);
+                g[0] = c.nearEnd + threshold;
+                g[1] = c.farEnd + threshold;
                 break;
             }
         }

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace jl {
@@ -72,23 +73,23 @@ bool Ladder::noteClose(int j, double t) {
 std::optional<std::pair<int, EventKind>> Ladder::pullingContact(const World& w, const Dynamics& d, const Impact* impact,
                                                                 const std::vector<int>& keep, bool spareHeld) const {
     std::optional<std::pair<int, EventKind>> worst;
-    const double tolerance = impact ? impulseTolerance_ : forceTolerance_;
-    double most = -tolerance;
+    double most = std::numeric_limits<double>::infinity();
     for (int j = 1; j < liveEnd(); ++j) {
         const HingeMode mode = hinge(j).mode;
         if (mode != HingeMode::OpenLocked && mode != HingeMode::Folded) continue;
         if ((spareHeld && hinge(j).held) || std::find(keep.begin(), keep.end(), j) != keep.end()) continue;
         const HingeContact c = split(w, j, internalWrench(w, d, j, impact));
-        if (mode == HingeMode::OpenLocked && c.normal < most) {
+        const double tolerance = pullThreshold(c, impact != nullptr);
+        if (mode == HingeMode::OpenLocked && c.normal < -tolerance && c.normal < most) {
             most = c.normal;
             worst = {j, EventKind::Unlock};
         }
         if (mode == HingeMode::Folded) {
             // A pair that can tip over both ends carries on over the far one.
-            if (c.nearEnd < most) {
+            if (c.nearEnd < -tolerance && c.nearEnd < most) {
                 most = c.nearEnd;
                 worst = {j, EventKind::FlipFlop};
-            } else if (c.farEnd < most && c.nearEnd >= -tolerance) {
+            } else if (c.farEnd < -tolerance && c.farEnd < most && c.nearEnd >= -tolerance) {
                 most = c.farEnd;
                 worst = {j, EventKind::Unfold};
             }

@@ -308,13 +308,22 @@ ReducedLadder::Contact ReducedLadder::split(int j, const Vec2& force, double mom
     const double sigma = cross(da, na);
     Contact c;
     if (hinges_[size_t(j)].mode == Mode::Locked) {
-        c.normal = sigma * moment / std::min(thickness_[size_t(j - 1)], thickness_[size_t(j)]);
+        const double t = std::min(thickness_[size_t(j - 1)], thickness_[size_t(j)]);
+        c.normal = sigma * moment / t;
+        c.load = force.norm() + std::abs(c.normal);
     } else {
         const double lever = length_ * sigma;
         c.farEnd = -moment / lever;
         c.nearEnd = (moment - length_ * cross(da, force)) / lever;
+        c.load = force.norm() + std::abs(c.nearEnd) + std::abs(c.farEnd);
     }
     return c;
+}
+
+// Section 8.3, "How small counts as zero": the ladder's threshold, or the
+// same fraction of the contact's load where that is larger.
+double ReducedLadder::threshold(const Contact& c, bool impulse) const {
+    return impulse ? std::max(impulseTolerance_, 5e-8 * c.load) : std::max(forceTolerance_, 1e-8 * c.load);
 }
 
 ReducedLadder::Contact ReducedLadder::contactForce(int j) const {

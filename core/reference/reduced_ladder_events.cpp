@@ -73,8 +73,9 @@ std::vector<double> ReducedLadder::eventFunctions() const {
             continue;
         }
         const Contact c = contactForce(j);
-        f.push_back((mode == Mode::Locked ? c.normal : c.nearEnd) + forceTolerance_);
-        f.push_back(mode == Mode::Locked ? 1.0 : c.farEnd + forceTolerance_);
+        const double tolerance = threshold(c, false);
+        f.push_back((mode == Mode::Locked ? c.normal : c.nearEnd) + tolerance);
+        f.push_back(mode == Mode::Locked ? 1.0 : c.farEnd + tolerance);
     }
     return f;
 }
@@ -140,24 +141,24 @@ bool ReducedLadder::touching(int j, bool folded, bool resting) const {
 // it means. A pair that could tip over both ends tips over the far one.
 int ReducedLadder::pulling(bool impulse, const Motion& before, const std::vector<int>& keep, bool spareHeld,
                            ReducedEvent::Kind& kind) const {
-    const double tolerance = impulse ? impulseTolerance_ : forceTolerance_;
-    double most = -tolerance;
+    double most = std::numeric_limits<double>::infinity();
     int worst = 0;
     for (int j = 1; j < n_; ++j) {
         const Hinge& h = hinges_[size_t(j)];
         if (h.mode == Mode::Free || (spareHeld && h.held) || contains(keep, j)) continue;
         const Contact c = impulse ? contactImpulse(j, before) : contactForce(j);
-        if (h.mode == Mode::Locked && c.normal < most) {
+        const double tolerance = threshold(c, impulse);
+        if (h.mode == Mode::Locked && c.normal < -tolerance && c.normal < most) {
             most = c.normal;
             worst = j;
             kind = ReducedEvent::Kind::Unlock;
         }
         if (h.mode != Mode::Folded) continue;
-        if (c.nearEnd < most) {
+        if (c.nearEnd < -tolerance && c.nearEnd < most) {
             most = c.nearEnd;
             worst = j;
             kind = ReducedEvent::Kind::FlipFlop;
-        } else if (c.farEnd < most && c.nearEnd >= -tolerance) {
+        } else if (c.farEnd < -tolerance && c.farEnd < most && c.nearEnd >= -tolerance) {
             most = c.farEnd;
             worst = j;
             kind = ReducedEvent::Kind::Unfold;

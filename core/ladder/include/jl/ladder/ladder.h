@@ -49,6 +49,10 @@ struct HingeContact {
     double normal = 0;   // OPEN-LOCKED: N at corner k^2
     double nearEnd = 0;  // FOLDED: N_near at corner k (with the pin at k^1)
     double farEnd = 0;   // FOLDED: N_far at corner k^1 (with the pin at k)
+    // |F| of the wrench these were split from plus the sizes of its normal
+    // forces: the load the contact carries, which sets the size of their
+    // rounding (N, or N s). Alike for a pair and its mirror image.
+    double load = 0;
 };
 
 class Ladder {
@@ -91,10 +95,15 @@ public:
     // to the ladder: forces to the weight of its lightest block, impulses to
     // that weight times the time scale sqrt(L/g), and a hinge rests when it
     // turns slower than a fraction of 1 / sqrt(L/g). A 1 mm and a 1 m block
-    // get the same relative thresholds (docs/model.md section 8.4).
+    // get the same relative thresholds (docs/model.md section 8.3).
     double forceTolerance() const { return forceTolerance_; }      // N
     double impulseTolerance() const { return impulseTolerance_; }  // N s
-    double restingRate() const { return restingRate_; }            // rad/s
+    // The threshold for one hinge contact: the ladder's, or the same
+    // fraction of the load the contact carries where that is larger (a
+    // hinge that holds up a long or heavy ladder computes its force with
+    // rounding in proportion to that load, not to the lightest block).
+    double pullThreshold(const HingeContact& c, bool impulse) const;
+    double restingRate() const { return restingRate_; }  // rad/s
     // The largest pin gap an event may leave (the scene's projection
     // tolerance, docs/model.md section 14.3); resolve closes any wider one.
     void setGapTolerance(double metres) { gapTolerance_ = metres; }

@@ -59,6 +59,7 @@ private:
     };
     struct Contact {  // section 8.3, on block j, > 0 pushing it away
         double normal = 0, nearEnd = 0, farEnd = 0;
+        double load = 0;  // |F| + the |N|s: its threshold grows with it
     };
     // The blocks' motion as velocities of their centres and turning rates:
     // what an impact starts from. Angle rates alone would not do, because
@@ -121,6 +122,7 @@ private:
     Vec2 gravity_{0, -9.81};
     std::vector<Turn> turns_;     // of block 0, as the script gives them (they add up)
     std::vector<double> breaks_;  // s: where the hand's acceleration jumps
+    double threshold(const Contact& c, bool impulse) const;
     double forceTolerance_ = 0, impulseTolerance_ = 0, restingRate_ = 0, zenoTime_ = 0;
     double minReboundSpeed_ = 1e-4;  // rad/s
     // The state: theta_[0] is the hand's; hinges_[j] for j = 1..n-1.
