@@ -27,6 +27,36 @@ double fastestVibration(const World& w, const Eigen::VectorXd& pinForces) {
     return std::sqrt(omega2);
 }
 
+double fastestSpringVibration(const World& w) {
+    const std::vector<Spring>& springs = w.springs();
+    if (springs.empty()) return 0;
+    // Each body's row of M^-1/2 K M^-1/2, bounded by the sizes of its
+    // blocks (Gershgorin): sum over its springs of k |u_b| (|u_b| + |u_o|),
+    // |u|^2 = 1/m + |r|^2 / I the inverse mass a point at arm r moves with,
+    // k the larger of the spring's stiffness and its tension over its
+    // length (the stiffness across it), plus the tension's pull T |r| / I.
+    std::vector<double> row(size_t(w.bodyCount()), 0.0);
+    for (const Spring& s : springs) {
+        const Vec2 xa = w.particlePosition(s.a), xb = w.particlePosition(s.b);
+        const double length = (xb - xa).norm();
+        const double tension = std::abs(s.stiffness * (length - s.restLength));
+        const double k = std::max(s.stiffness, length > 0 ? tension / length : 0.0);
+        const int body[2] = {w.part(w.particle(s.a).at.front().part).body,
+                             w.part(w.particle(s.b).at.front().part).body};
+        const Vec2 x[2] = {xa, xb};
+        double u[2] = {0, 0}, arm[2] = {0, 0};
+        for (int e = 0; e < 2; ++e) {
+            const Body& b = w.body(body[e]);
+            if (!b.alive || b.kinematic) continue;
+            arm[e] = (x[e] - w.q.segment<2>(3 * body[e])).norm();
+            u[e] = std::sqrt(b.invMass + arm[e] * arm[e] * b.invInertia);
+        }
+        for (int e = 0; e < 2; ++e)
+            row[size_t(body[e])] += k * u[e] * (u[e] + u[1 - e]) + tension * arm[e] * w.body(body[e]).invInertia;
+    }
+    return std::sqrt(*std::max_element(row.begin(), row.end()));
+}
+
 double fastestTurn(const World& w) {
     double omega = 0;
     for (int b = 0; b < w.bodyCount(); ++b)

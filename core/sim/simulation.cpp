@@ -156,10 +156,12 @@ std::optional<std::string> Simulation::buildWorld() {
     // What "small" means for the books when nothing has moved yet: every
     // part lifted by its own half size (at rest, the flows are all zero and
     // the first step's rounding, or explicit Euler's first kick, would look
-    // like a blow-up against them alone).
+    // like a blow-up against them alone), and what the springs hold (without
+    // gravity a plucked spring is all the energy there is to flow).
     energyFloor_ = 0;
     for (PartId p = 1; p < world_.partCount(); ++p)
         energyFloor_ += world_.part(p).mass * world_.gravity.norm() * (world_.part(p).halfSize.norm() + 1e-3);
+    for (const Spring& s : world_.springs()) energyFloor_ += elasticEnergy(world_, s);
     lastResidual_ = pinResidual(world_);
     hangStillTail();
     return std::nullopt;

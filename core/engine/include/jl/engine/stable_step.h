@@ -18,6 +18,13 @@ namespace jl {
 // without rotational inertia (particles) do not count; 0 if nothing pulls.
 double fastestVibration(const World& w, const Eigen::VectorXd& pinForces);
 
+// The same bound for the springs: a point mass or a body on springs of
+// stiffness k vibrates at most at sqrt(sum k / m_eff) (a Gershgorin bound on
+// the mass-scaled stiffness, with the rotational inertia at each spring's
+// arm); 0 without springs. Springs and pins add: their squares bound the
+// square of the whole.
+double fastestSpringVibration(const World& w);
+
 // The fastest any body turns, held ones included (rad/s). A step resolves a
 // turn only in small pieces: a hand spinning the top block at 100 turns a
 // second forces the ladder at that rate, stable step or not.
