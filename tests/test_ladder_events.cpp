@@ -285,6 +285,30 @@ private slots:
         QVERIFY(r.failure.find("blocks 0 and 1 are both held") != std::string::npos);
     }
 
+    // A ladder error stops the run in the step that raised it and keeps that
+    // step's start: the motion, the structure and the time from before it,
+    // nothing half settled. Before, the run kept the located instant with
+    // the lock half made.
+    void aLadderErrorKeepsTheStartOfItsStep() {
+        auto sim = simulate(
+            "format: jacobs-ladder/1\n"
+            "ladder: {blocks: 2, held: [0, 1], initial: {fold_angles: [1.2]}}\n"
+            "script: [{at: 0.1, turn: {block: 1, by: 90deg, duration: 0.3}}]\n");
+        QVERIFY(sim);
+        double lastTime = 0;
+        std::uint64_t lastHash = sim->stateHash();
+        while (sim->stepOnce()) {
+            lastTime = sim->time();
+            lastHash = sim->stateHash();
+        }
+        QVERIFY(!sim->failure().empty());
+        QCOMPARE(sim->time(), lastTime);
+        QCOMPARE(sim->stateHash(), lastHash);
+        QCOMPARE(sim->ladder()->hinge(1).mode, HingeMode::Free);
+        QVERIFY(sim->ladder()->error().empty());  // the kept ladder is the step's start
+        for (const Event& e : sim->frame().events) QVERIFY(e.time <= lastTime);
+    }
+
     // Turned upright, the locked pair's contact unloads; when the hand stops
     // (its acceleration jumps to zero) the hanging block would need N = -m g/2:
     // it unlocks, then swings as a pendulum about the corner from phi = 0 at

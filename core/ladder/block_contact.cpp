@@ -342,6 +342,10 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
     return events;
 }
 
+bool BlockContacts::holdsAny() const {
+    return std::any_of(touches_.begin(), touches_.end(), [](const Touch& c) { return c.held; });
+}
+
 std::vector<Event> BlockContacts::letGoExpired(World& w, const Dynamics& d, const Ladder& ladder, double t) {
     std::vector<Event> events;
     const Eigen::VectorXd& push = d.contactForces();

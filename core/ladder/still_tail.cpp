@@ -56,10 +56,11 @@ double Ladder::stillTailStrain(const World& w) const {
     return length_ * (std::abs(foldAngle(w, stillFrom_) - stillRest_) + timeScale * std::abs(foldRate(w, stillFrom_)));
 }
 
-int Ladder::wakeIfReached(World& w) {
-    if (stillFrom_ >= blockCount() || stillTailStrain(w) <= kStillTolerance * length_) return 0;
-    return wakeThrough(w, stillFrom_);
+bool Ladder::tailReached(const World& w) const {
+    return stillFrom_ < blockCount() && stillTailStrain(w) > kStillTolerance * length_;
 }
+
+int Ladder::wakeIfReached(World& w) { return tailReached(w) ? wakeThrough(w, stillFrom_) : 0; }
 
 // Separates the still points of hinges first .. last (a batch: one regroup).
 void Ladder::partStill(World& w, int first, int last) {

@@ -12,6 +12,17 @@ std::shared_ptr<const Snapshot> Simulation::snapshot() const {
     return std::make_shared<const Snapshot>(std::make_from_tuple<Snapshot>(stateOf(*this)));
 }
 
+// The state before the step's first change of structure, copied into the
+// storage the last step used.
+void Simulation::keepBeforeChange() {
+    if (changeKept_) return;
+    if (beforeChange_)
+        Snapshot::stateOf(*beforeChange_) = stateOf(*this);
+    else
+        beforeChange_ = std::make_shared<Snapshot>(std::make_from_tuple<Snapshot>(stateOf(*this)));
+    changeKept_ = true;
+}
+
 // Restores the state; recorded drags stay, so carrying on replays them.
 void Simulation::restore(const Snapshot& s) {
     stateOf(*this) = Snapshot::stateOf(s);

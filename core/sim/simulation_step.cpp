@@ -68,6 +68,32 @@ void Simulation::restoreStepStart() {
     ledger_ = stepStartLedger_;
 }
 
+// A ladder error raised anywhere in the step (an event's settling, a script
+// action, a grab or push taking up its contacts, a held contact let go, a
+// wake of the still tail) stops the run in this step, and what is kept is
+// the step's start: the structure from before the step's first change, the
+// motion from before the step, and none of its frames or events
+// (docs/model.md section 12.4). Nothing half-restructured is left to show.
+bool Simulation::stopOnLadderError(double stepStart) {
+    if (!ladder_ || ladder_->error().empty()) return true;
+    const std::string why = ladder_->error();
+    std::vector<Event> earlier;
+    for (const Event& e : pending_)
+        if (e.time <= stepStart) earlier.push_back(e);
+    if (changeKept_) restore(*beforeChange_);  // the structure, the ladder's state, no error
+    restoreStepStart();
+    t_ = stepStart;
+    world_.updateKinematics(t_);
+    dynamics_.evaluate(world_, t_);
+    keptStart_.forget();
+    keptEnd_.forget();
+    std::erase_if(gridFrames_, [&](const Frame& f) { return f.time > stepStart; });
+    gridDoneUpTo_ = std::min(gridDoneUpTo_, stepStart);
+    pending_ = std::move(earlier);
+    fail(why);
+    return false;
+}
+
 // The frames of the grid strictly inside the step just taken (from t_, of
 // length `taken`, not yet resolved: the world holds its end, in the same
 // structure as its start), read off the quintic Hermite interpolant of the
@@ -414,6 +440,8 @@ bool Simulation::takeStep(double limit) {
     if (lands) h = scheduled - t_;
     if (h <= 0) return true;
 
+    const double stepStart = t_;
+    changeKept_ = false;
     stepStartQ_ = world_.q;
     stepStartV_ = world_.v;
     // The start's accelerations (the last evaluation, of this state), for
@@ -473,6 +501,7 @@ bool Simulation::takeStep(double limit) {
                 stepper_.setNextStep(next0 > 0 ? next0 : chosen);
             }
             emitGridFrames(taken);
+            keepBeforeChange();
             std::vector<Event> happened =
                 ladder_->settle(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
             if (happened.empty() && taken < m.step.taken) {
@@ -488,10 +517,7 @@ bool Simulation::takeStep(double limit) {
                 happened = ladder_->settle(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
             }
             for (Event& e : happened) record(e);
-            if (!ladder_->error().empty()) {
-                fail(ladder_->error());
-                return false;
-            }
+            if (!stopOnLadderError(stepStart)) return false;
             if (!world_.q.allFinite() || !world_.v.allFinite()) {
                 restoreStepStart();
                 fail("an impact produced a non-finite state");
@@ -519,6 +545,7 @@ bool Simulation::takeStep(double limit) {
         // their own. A change of structure: the end is evaluated anew, so
         // that the next step starts from it and the automatic step is
         // chosen from the pin forces of the pins there are now.
+        if (ladder_->tailReached(world_)) keepBeforeChange();
         if (ladder_->wakeIfReached(world_) > 0) {
             lastPowers_ = dynamics_.evaluate(world_, t_ + taken);
             keptEnd_.keep(world_, dynamics_, t_ + taken, lastPowers_);
@@ -530,10 +557,12 @@ bool Simulation::takeStep(double limit) {
     ++stats_.steps;
     stats_.lastStep = taken;
     lastResidual_ = m.projection.residual;
+    if (nextAction_ < scene_.script.size() && scene_.script[nextAction_].at <= t_ + 1e-12) keepBeforeChange();
     applyDueInputs();
     if (ladder_) {
         // A block contact held at its Zeno limit that has pulled for a
         // Zeno time parts at the step's end (docs/model.md section 17.6).
+        if (ladder_->blockContacts().holdsAny()) keepBeforeChange();
         std::vector<Event> parted = ladder_->blockContacts().letGoExpired(world_, dynamics_, *ladder_, t_);
         if (!parted.empty()) {
             for (Event& e : parted) record(e);
@@ -541,7 +570,7 @@ bool Simulation::takeStep(double limit) {
             keptEnd_.keep(world_, dynamics_, t_, ladder_->settledPowers());
         }
     }
-    return true;
+    return stopOnLadderError(stepStart);
 }
 
 double Simulation::limitDip(double taken) {

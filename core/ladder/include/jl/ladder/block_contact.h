@@ -60,6 +60,8 @@ public:
     // After a step (the dynamics evaluated at its end, time t): the held
     // contacts that have pulled for a Zeno time part. What happened.
     std::vector<Event> letGoExpired(World& w, const Dynamics& d, const Ladder& ladder, double t);
+    // Whether any contact is held at its Zeno limit (letGoExpired may act).
+    bool holdsAny() const;
     // Appends the functions (>= 0 while nothing happens): each watched
     // corner's gap, and each resting contact's push and how far its corner
     // is from sliding off the face. Returns the smallest push (+inf if none).

@@ -195,6 +195,7 @@ public:
     // for 60 mm blocks, far below any integrator's error on a long ladder), the
     // next kWakeBlocks blocks move on their own again. Returns how many.
     int wakeIfReached(World& w);
+    bool tailReached(const World& w) const;
     // Before something acts on block `block` (a push, a grab, a join): it
     // and the kWakeBlocks below it move on their own again. Returns how many.
     int wakeThrough(World& w, int block);

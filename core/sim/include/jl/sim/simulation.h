@@ -137,6 +137,8 @@ private:
     double smallestEventFunction(double t, double* forces = nullptr);
     double eventFunctionsNow(double* forces);
     void restoreStepStart();
+    void keepBeforeChange();
+    bool stopOnLadderError(double stepStart);
     void emitGridFrames(double taken);
     Powers stepEndAsTaken(double taken);
     void record(const Event& e);
@@ -199,6 +201,12 @@ private:
     FrameGrid grid_;
     double gridDoneUpTo_ = 0;        // s, grid frames are emitted after this time
     std::vector<Frame> gridFrames_;  // emitted, not yet taken
+    // The state before the step's first change of structure (an event, a
+    // script action, a wake of the still tail): what a ladder error raised
+    // later in the step goes back to. Taken only when a change comes, into
+    // storage kept from step to step (a copy, no allocation).
+    std::shared_ptr<Snapshot> beforeChange_;
+    bool changeKept_ = false;
 };
 
 }  // namespace jl
