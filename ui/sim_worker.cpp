@@ -112,7 +112,8 @@ void SimWorker::apply(const SimCommand& c) {
                           !std::is_same_v<T, cmd::DragBegin>)
                 framesWanted_ = 0;
             if constexpr (std::is_same_v<T, cmd::Load> || std::is_same_v<T, cmd::Seek> ||
-                          std::is_same_v<T, cmd::ShowInstant> || std::is_same_v<T, cmd::DragBegin>) {
+                          std::is_same_v<T, cmd::ShowInstant> || std::is_same_v<T, cmd::DragBegin> ||
+                          std::is_same_v<T, cmd::Recall>) {
                 apply(v);
             } else if constexpr (std::is_same_v<T, cmd::Play>) {
                 play();
@@ -145,6 +146,7 @@ void SimWorker::apply(const SimCommand& c) {
             } else if constexpr (std::is_same_v<T, cmd::Budget>) {
                 budget_ = v.bytes;
                 history_.setBudget(v.bytes);
+                kept_.trim(v.bytes);
             } else if constexpr (std::is_same_v<T, cmd::DragMove>) {
                 if (!sim_ || !sim_->dragging()) return;
                 sim_->moveDrag(v.target);
@@ -164,6 +166,11 @@ void SimWorker::apply(const SimCommand& c) {
 }
 
 void SimWorker::apply(const cmd::Load& c) {
+    kept_.clear();  // runs of another scene
+    startRun(c.scene);
+}
+
+void SimWorker::startRun(const jl::Scene& scene) {
     failure_.clear();
     events_ = std::make_shared<std::vector<jl::Event>>();
     eventsChanged_ = true;
@@ -171,14 +178,14 @@ void SimWorker::apply(const cmd::Load& c) {
     feedFirst_ += feed_.size();  // the old run's frames: no longer anyone's
     feed_.clear();
     feedChanged_ = true;
-    history_.reset(c.scene.solver.frameInterval, budget_);
+    history_.reset(scene.solver.frameInterval, budget_);
     cursor_ = 0;
     midFrame_ = false;
     shown_.reset();
-    recorded_ = std::make_shared<const jl::Scene>(c.scene);
-    duration_ = c.scene.duration;
+    recorded_ = std::make_shared<const jl::Scene>(scene);
+    duration_ = scene.duration;
     stoppedAtEnd_ = false;
-    auto built = build(c.scene);
+    auto built = build(scene);
     sim_ = std::move(built.simulation);
     if (!sim_) {
         fail(joinLines(built.errors));
@@ -289,8 +296,10 @@ void SimWorker::apply(const cmd::DragBegin& c) {
     }
     // Pushing a block in the past rewrites what follows: simulate on from
     // the frame on screen (the view found a block there, in that frame).
-    // So does pushing it while the next frame was half done.
+    // So does pushing it while the next frame was half done. The run it
+    // replaces is kept, for Undo to bring back.
     if (cursor_ < history_.head() || midFrame_) {
+        if (cursor_ < history_.head()) keepRunBeforePush();
         discardFuture();
         if (!failure_.empty()) return;
     }
