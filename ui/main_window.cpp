@@ -384,7 +384,8 @@ void MainWindow::createStatusBar() {
     timeLabel_ =
         label("time", tr("Simulated time of the frame on screen, and how far the run has been recorded."), 150);
     rateLabel_ = label("rate",
-                       tr("Real-time factor (simulated seconds per second) and solver steps per second; "
+                       tr("Real-time factor (simulated seconds per second of the clock, over the last 2 s of "
+                          "playing) and solver steps per second; "
                           "after an edit, how far the run back to the moment on screen has got."),
                        190);
     energyLabel_ =
@@ -471,8 +472,11 @@ void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {
         // Frames recorded earlier: nothing is simulated, so no rate to measure.
         rateLabel_->setText(tr("replaying recorded frames at %1×").arg(s->speed, 0, 'f', 2));
     else if (s->playing)
-        rateLabel_->setText(
-            tr("%1× real time · %2 steps/s").arg(s->realTimeFactor, 0, 'f', 2).arg(s->stepsPerSecond, 0, 'f', 0));
+        rateLabel_->setText(s->realTimeFactor < 0 ? tr("playing; measuring the rate")
+                                                  : tr("%1× real time over %2 s · %3 steps/s")
+                                                        .arg(s->realTimeFactor, 0, 'f', 2)
+                                                        .arg(s->rateSpan, 0, 'f', 1)
+                                                        .arg(s->stepsPerSecond, 0, 'f', 0));
     else if (atInstant(*s))
         rateLabel_->setText(tr("paused between frames %1 and %2").arg(s->frameIndex).arg(s->frameIndex + 1));
     else

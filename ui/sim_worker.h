@@ -6,6 +6,7 @@
 #include "jl/sim/frame_history.h"
 #include "jl/sim/simulation.h"
 #include "ui/kept_runs.h"
+#include "ui/rate_window.h"
 #include "ui/sim_status.h"
 
 #include <atomic>
@@ -189,11 +190,12 @@ private:
     // Pacing: simulated time paceSim_ was on screen at wall time paceWall_.
     double paceSim_ = 0;
     Clock::time_point paceWall_;
-    // Rates over the last second.
-    Clock::time_point rateWall_;
-    double rateSim_ = 0;
-    long long rateSteps_ = 0;
-    double realTimeFactor_ = 0, stepsPerSecond_ = 0;
+    // Rates over the last seconds of playing, from the frame on screen;
+    // replaying recorded frames is a stretch apart from simulating them.
+    RateWindow rate_;
+    bool rateReplaying_ = false;
+    Clock::time_point started_ = Clock::now(), rateShown_;
+    double realTimeFactor_ = -1, stepsPerSecond_ = -1, rateSpan_ = 0;
 };
 
 }  // namespace jl::ui
