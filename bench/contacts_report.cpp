@@ -1,6 +1,7 @@
 // The section "Block contacts" of docs/performance.md, from contactsStudy.
 #include "bench/contacts_report.h"
 
+#include "bench/csv_columns.h"
 #include "bench/report_text.h"
 #include "bench/save_text.h"
 #include "jl/base/csv_writer.h"
@@ -76,13 +77,12 @@ std::string contactsSection(const ContactsStudy& s, bool quick, bool& ok) {
 
 bool writeContactsCsv(const ContactsStudy& s, const std::filesystem::path& dir) {
     std::ostringstream broad;
-    broad << "blocks,still_from,pairs,calls,cpu_s_per_block_call,build_cpu_s,failure\n";
+    broad << kBroadPhaseColumns << '\n';
     CsvWriter b(broad, 6);
     for (const BroadPhaseRow& r : s.broad)
         b.row(r.blocks, r.stillFrom, r.pairs, r.calls, r.perBlock, r.buildCpu, r.failure);
     std::ostringstream examples;
-    examples << "scene,asked_s,cpu_off_s,cpu_on_s,steps_off,steps_on,events_off,events_on,strikes,"
-                "same_sequence,largest_shift_s,part_at_s,largest_balance_on_J,failure_off,failure_on\n";
+    examples << kContactExamplesColumns << '\n';
     CsvWriter e(examples, 6);
     for (const ContactExampleRow& r : s.examples)
         e.row(r.scene, r.asked, r.cpuOff, r.cpuOn, r.stepsOff, r.stepsOn, r.eventsOff, r.eventsOn, r.touches,

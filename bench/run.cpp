@@ -3,6 +3,7 @@
 #include "bench/cases.h"
 #include "bench/chart.h"
 #include "bench/contacts_report.h"
+#include "bench/csv_columns.h"
 #include "bench/events.h"
 #include "bench/examples.h"
 #include "bench/models.h"
@@ -22,9 +23,11 @@ namespace jl::bench {
 
 namespace {
 
-bool writeCsv(const std::vector<BenchRow>& rows, const std::filesystem::path& path) {
+// `columns`: the study's header (its error's unit), bench/csv_columns.h.
+bool writeCsv(const std::vector<BenchRow>& rows, const std::filesystem::path& path,
+              const char* columns = kWorkPrecisionColumns) {
     std::ostringstream f;
-    f << "study,method,blocks,parameter,cost_cpu_s_per_sim_s,error,finished,note\n";
+    f << columns << '\n';
     CsvWriter csv(f, 6);
     for (const BenchRow& r : rows)
         csv.row(r.study, r.method, r.blocks, r.parameter, r.cost, r.error, r.finished, r.note);
@@ -33,11 +36,7 @@ bool writeCsv(const std::vector<BenchRow>& rows, const std::filesystem::path& pa
 
 bool writeEventCostCsv(const std::vector<EventCostRow>& rows, const std::filesystem::path& path) {
     std::ostringstream f;
-    f << "blocks,window_from_s,window_to_s,steps,mean_step_s,events,instants,kinds,window_cpu_s,repetitions,repeatable,"
-         "plain_step_s,plain_steps,plain_repetitions,plain_events,plain_step_cpu_s,event_cpu_s,cpu_per_event_s,"
-         "cpu_per_instant_s,event_share,plain_steps_per_event,turning_steps,turning_events,turning_step_cpu_s,"
-         "cpu_per_event_turning_baseline_s,eventful_steps,eventful_steps_cpu_s,cpu_per_event_in_eventful_steps_s,"
-         "failure\n";
+    f << kEventCostColumns << '\n';
     CsvWriter csv(f, 6);
     for (const EventCostRow& r : rows)
         csv.row(r.blocks, r.from, r.to, r.steps, r.meanStep, r.events, r.instants, r.kinds, r.runCpu, r.runRepetitions,
@@ -50,8 +49,7 @@ bool writeEventCostCsv(const std::vector<EventCostRow>& rows, const std::filesys
 
 bool writeExamplesCsv(const ExamplesStudy& s, const std::filesystem::path& path) {
     std::ostringstream f;
-    f << "scene,blocks,asked_s,simulated_s,cpu_s,cpu_s_per_sim_s,faster_than_real_time,steps,integrator,adaptive,"
-         "tolerance,automatic_step,smallest_step_s,largest_step_s,step_halvings,hinge_events,failure\n";
+    f << kExamplesColumns << '\n';
     CsvWriter csv(f, 6);
     for (const ExampleRow& r : s.rows)
         csv.row(r.scene, r.blocks, r.asked, r.simulated, r.cpu, r.perSimulated(),
@@ -62,11 +60,7 @@ bool writeExamplesCsv(const ExamplesStudy& s, const std::filesystem::path& path)
 
 bool writeStabilityCsv(const StabilityStudy& s, const std::filesystem::path& path) {
     std::ostringstream f;
-    f << "blocks,omega_max_engine,omega_max_reference,omega_hand_upper,omega_hand_airy,lanczos_steps,ritz_residual,"
-         "rk4_dt_limit_predicted,symplectic_euler_dt_limit_predicted,dormand_prince45_dt_limit_predicted,horizon_s,"
-         "rk4_seeded_stays,rk4_seeded_grows,rk4_hanging_runs,rk4_hanging_fails,rk4_turned_runs,rk4_turned_fails,"
-         "hanging_cost,turned_cost,hand_tension_factor,peak_tension_factor,peak_tension_time,rk4_dt_limit_at_peak,"
-         "dopri_steps,dopri_rejected,dopri_mean_step,dopri_cost\n";
+    f << kStabilityColumns << '\n';
     CsvWriter csv(f, 8);
     for (const StabilityRow& r : s.rows)
         csv.row(r.blocks, r.omegaMax, std::sqrt(r.referenceOmega2), r.handUpper, r.handAiry, r.engine.iterations,
@@ -181,8 +175,10 @@ bool runBench(const BenchRequest& request) {
     results.contacts = contactsStudy(plan, examplesDir);
     results.peers = peerVersions();
 
-    bool ok = writeCsv(results.pendulum, out / "pendulum.csv") && writeCsv(results.ladder, out / "ladder.csv") &&
-              writeCsv(results.scaling, out / "scaling.csv") && writeCsv(results.longLadder, out / "long_ladder.csv") &&
+    bool ok = writeCsv(results.pendulum, out / "pendulum.csv", kWorkPrecisionPendulumColumns) &&
+              writeCsv(results.ladder, out / "ladder.csv") &&
+              writeCsv(results.scaling, out / "scaling.csv", kScalingColumns) &&
+              writeCsv(results.longLadder, out / "long_ladder.csv") &&
               writeStabilityCsv(results.stability, out / "stability.csv") &&
               writeCsv(results.models, out / "models.csv") &&
               writeEventCostCsv(results.eventCost, out / "events.csv") &&

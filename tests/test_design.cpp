@@ -2,6 +2,7 @@
 // Design questions over many runs: the axes and the scene of one design, the
 // first ripple's reach on designs whose answer is known, and a map that is
 // the same whatever the number of threads.
+#include "jl/base/csv_reader.h"
 #include "jl/base/xml_text.h"
 #include "jl/design/design_axis.h"
 #include "jl/design/design_check.h"
@@ -143,7 +144,26 @@ private slots:
             firstRippleReach(withParameter(turnedLadder(8, 0.012), DesignParameter::Thickness, 0.006));
         QCOMPARE(one.at(2, 0).reached, alone.reached);
         QCOMPARE(one.at(2, 0).flipTimes, alone.flipTimes);
-        QVERIFY(rippleMapCsv(one).starts_with("blocks,thickness,hinges,reached,"));
+        // Each column names its unit, and each number reads back to the
+        // very double of the design and of its run.
+        const std::string csv = rippleMapCsv(one);
+        QVERIFY2(csv.starts_with("blocks,thickness [m],hinges,reached,mean_time_between_flips [s],flips_elsewhere,"
+                                 "events,quick_row,failure\n"),
+                 csv.c_str());
+        std::string error;
+        const auto rows = readCsv(csv, error);
+        QVERIFY2(rows && rows->size() == 7, error.c_str());
+        int timed = 0;
+        for (std::size_t k = 0; k < 6; ++k) {
+            const CsvRow& row = (*rows)[k + 1];
+            QCOMPARE(std::stod(row[0]), one.xs[k % 3]);
+            QCOMPARE(std::stod(row[1]), one.ys[k / 3]);
+            const double mean = one.cells[k].meanTimeBetweenFlips;
+            QCOMPARE(row[4].empty(), !std::isfinite(mean));
+            if (std::isfinite(mean)) QCOMPARE(std::stod(row[4]), mean);
+            timed += std::isfinite(mean);
+        }
+        QVERIFY(timed > 0);
     }
 
     // Shares of a map, joined, are the map: failure texts with commas,

@@ -8,6 +8,7 @@
 
 #include <QDir>
 #include <QFileInfo>
+#include <QPainter>
 #include <QProcess>
 #include <QSaveFile>
 #include <QStandardPaths>
@@ -22,6 +23,19 @@ namespace jl::ui {
 namespace {
 
 ExportResult failed(const QString& why) { return {false, why, {}}; }
+
+// A painter draws at its own size (the 3-D view at its size on screen):
+// its picture is scaled whole into the size asked for, centred, the margin
+// the colour of its corner (the room's), so no part of the view is lost.
+QImage fitted(const QImage& picture, const QSize& size) {
+    if (picture.isNull() || picture.size() == size) return picture;
+    const QImage scaled = picture.scaled(size, Qt::KeepAspectRatio, Qt::SmoothTransformation);
+    QImage out(size, QImage::Format_RGB32);
+    out.fill(picture.pixelColor(0, 0));
+    QPainter p(&out);
+    p.drawImage((size.width() - scaled.width()) / 2, (size.height() - scaled.height()) / 2, scaled);
+    return out;
+}
 
 // `picture` saved as PNG at `path`, or why not (a null picture: the 3-D
 // view, which draws only on screen, drew nothing).
@@ -105,7 +119,7 @@ ExportResult Exporter::imageSequence(const jl::Scene& scene, const SequenceReque
         if (drawn >= total) return true;
         QImage picture;
         if (r.painter) {
-            picture = r.painter(f);
+            picture = fitted(r.painter(f), r.size);
         } else {
             view.showFrame(f);
             picture = view.render(r.size);
@@ -223,13 +237,8 @@ ExportResult Exporter::video(const jl::Scene& scene, SequenceRequest request, co
     QTemporaryDir pictures;
     if (!pictures.isValid()) return failed(QObject::tr("Could not make a temporary folder for the pictures."));
     request.directory = pictures.path();
-    // H.264 wants even sizes.
+    // H.264 wants even sizes (a painter's pictures are fitted to it too).
     request.size = QSize(request.size.width() / 2 * 2, request.size.height() / 2 * 2);
-    if (request.painter)
-        request.painter = [paint = request.painter](const jl::Frame& f) {
-            const QImage picture = paint(f);
-            return picture.copy(0, 0, picture.width() / 2 * 2, picture.height() / 2 * 2);
-        };
     const ExportResult frames = imageSequence(scene, request);
     if (!frames.ok) return frames;
     QStringList args{"-y",

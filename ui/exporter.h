@@ -31,7 +31,7 @@ using FramePainter = std::function<QImage(const jl::Frame&)>;
 struct SequenceRequest {
     double from = 0, to = 1;                            // s, both ends included when on the grid
     double fps = 30;                                    // pictures per simulated second
-    QSize size{1280, 720};                              // of the side view's pictures; a painter draws its own size
+    QSize size{1280, 720};                              // of the pictures; a painter's are scaled whole into it
     QString directory;                                  // frame_00000.png, frame_00001.png, ...
     SideViewOptions look{};                             // for the side view, when no painter is given
     FramePainter painter;                               // optional: draws each frame instead of the side view

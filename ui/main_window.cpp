@@ -154,7 +154,9 @@ void MainWindow::createActions() {
     undoAct_ = doc_->undoStack()->createUndoAction(this, tr("&Undo"));
     undoAct_->setShortcuts(QKeySequence::Undo);
     redoAct_ = doc_->undoStack()->createRedoAction(this, tr("&Redo"));
-    redoAct_->setShortcuts(QKeySequence::Redo);
+    // The platform's own keys (Ctrl+Shift+Z here), and Ctrl+Y everywhere, as the Help says.
+    const QKeySequence ctrlY(Qt::CTRL | Qt::Key_Y);
+    redoAct_->setShortcuts(QKeySequence::keyBindings(QKeySequence::Redo) << ctrlY);
     // Icons on the toolbar: its buttons would otherwise carry the changing
     // text ("Undo Change blocks") and every button after them would shift.
     undoAct_->setIcon(QIcon::fromTheme("edit-undo", style()->standardIcon(QStyle::SP_ArrowBack)));
@@ -382,7 +384,8 @@ void MainWindow::createStatusBar() {
     timeLabel_ =
         label("time", tr("Simulated time of the frame on screen, and how far the run has been recorded."), 150);
     rateLabel_ = label("rate",
-                       tr("Real-time factor (simulated seconds per second) and solver steps per second; "
+                       tr("Real-time factor (simulated seconds per second of the clock, over the last 2 s of "
+                          "playing) and solver steps per second; "
                           "after an edit, how far the run back to the moment on screen has got."),
                        190);
     energyLabel_ =
@@ -415,11 +418,6 @@ void MainWindow::connectView() {
     });
 }
 
-void MainWindow::loadIntoSimulation() {
-    ++loadsPosted_;
-    sim_->load(doc_->scene());
-}
-
 void MainWindow::onSceneChanged(SceneChange change) {
     const jl::Scene& scene = doc_->scene();
     if (change == SceneChange::Text) return;  // words: the panels that show them follow the document
@@ -431,21 +429,17 @@ void MainWindow::onSceneChanged(SceneChange change) {
         return;
     }
     if (change == SceneChange::Drags) {
-        // Drags the running simulation recorded itself need no rebuild.
+        // Drags the running simulation recorded itself need no rebuild (a
+        // status from before a recall still on its way does not tell).
         const auto s = sim_->shown();
-        if (s && s->recorded && s->recorded->drags == scene.drags) return;
+        if (s && s->loadSerial == loadsPosted_ && s->recorded && s->recorded->drags == scene.drags) return;
     }
     view_->setScene(scene, change == SceneChange::Whole);
     timeline_->setDuration(scene.duration);
     ladderPanel_->refresh();
     simulationPanel_->refresh();
     scriptPanel_->refresh();
-    // An edit shows its effect at the moment on screen: the engine cannot
-    // change a parameter mid-run, so it runs again from the start up to there.
-    const auto now = sim_->status();
-    const double at = (change != SceneChange::Whole && now->frame) ? now->frame->time : 0.0;
-    loadIntoSimulation();
-    if (at > 0) sim_->seek(at);
+    simulateEdit(change);
 }
 
 void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {
@@ -478,8 +472,11 @@ void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {
         // Frames recorded earlier: nothing is simulated, so no rate to measure.
         rateLabel_->setText(tr("replaying recorded frames at %1×").arg(s->speed, 0, 'f', 2));
     else if (s->playing)
-        rateLabel_->setText(
-            tr("%1× real time · %2 steps/s").arg(s->realTimeFactor, 0, 'f', 2).arg(s->stepsPerSecond, 0, 'f', 0));
+        rateLabel_->setText(s->realTimeFactor < 0 ? tr("playing; measuring the rate")
+                                                  : tr("%1× real time over %2 s · %3 steps/s")
+                                                        .arg(s->realTimeFactor, 0, 'f', 2)
+                                                        .arg(s->rateSpan, 0, 'f', 1)
+                                                        .arg(s->stepsPerSecond, 0, 'f', 0));
     else if (atInstant(*s))
         rateLabel_->setText(tr("paused between frames %1 and %2").arg(s->frameIndex).arg(s->frameIndex + 1));
     else

@@ -93,7 +93,7 @@ private:
     void onSceneChanged(SceneChange change);
     void onStatus(std::shared_ptr<const SimStatus> s);
     void syncRecordedDrags(const SimStatus& s);
-    void loadIntoSimulation();
+    void simulateEdit(SceneChange change);
 
     Options options_;
     Document* doc_;

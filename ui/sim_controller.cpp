@@ -54,6 +54,7 @@ void SimController::showInstant(double time) { worker_->post(cmd::ShowInstant{ti
 void SimController::setSpeed(double factor) { worker_->post(cmd::Speed{factor}); }
 void SimController::setDuration(double seconds) { worker_->post(cmd::Duration{seconds}); }
 void SimController::setMemoryBudget(std::size_t bytes) { worker_->post(cmd::Budget{bytes}); }
+void SimController::recall(const jl::Scene& scene, double time) { worker_->post(cmd::Recall{scene, time}); }
 void SimController::beginDrag(const jl::Vec2& point, int block, const jl::Vec2& local, double shownTime) {
     worker_->post(cmd::DragBegin{point, block, local, shownTime});
 }

@@ -36,6 +36,9 @@ public:
     void setSpeed(double factor);      // 0.01 .. 4
     void setDuration(double seconds);  // the scene's length, where playing stops
     void setMemoryBudget(std::size_t bytes);
+    // Only the drags changed (Undo or Redo of a push): the run of `scene`,
+    // shown at `time`; a run kept since it was replaced comes back as it was.
+    void recall(const jl::Scene& scene, double time);
     // The mouse spring: `point` and `target` lie in the ladder's plane (m).
     // A push on `block` at `local` (its own frame), as the view found it in
     // the frame of time `shownTime` it showed (block -1: whatever block the

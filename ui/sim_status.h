@@ -27,8 +27,11 @@ struct SimStatus {
     double seekProgress = 0;  // how far along the way there, 0 .. 1
     bool dragging = false;
     double speed = 1.0;
-    double realTimeFactor = 0;   // simulated seconds per wall second, lately
-    double stepsPerSecond = 0;   // solver steps per wall second, lately
+    // Simulated seconds, and solver steps, per wall second over the last
+    // rateSpan s of playing (RateWindow); negative: none yet.
+    double realTimeFactor = -1;
+    double stepsPerSecond = -1;
+    double rateSpan = 0;
     std::uint64_t headHash = 0;  // Simulation::stateHash() at the head
     std::string failure;         // non-empty: the run stopped and says why
     // Every frame the run made that the window has not taken yet, in time

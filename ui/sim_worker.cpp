@@ -15,6 +15,9 @@ namespace jl::ui {
 
 namespace {
 constexpr double kMaxLag = 0.1;  // s of simulated time behind the clock before giving up catching up
+// How often the rates shown are read again: readable, and close to the
+// moment they are read at.
+constexpr auto kRateShownEvery = std::chrono::milliseconds(100);
 
 double secondsBetween(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b) {
     return std::chrono::duration<double>(b - a).count();
@@ -67,7 +70,7 @@ static void setNiceness(int nice) {
 
 void SimWorker::run() {
     setNiceness(8);
-    rateWall_ = paceWall_ = Clock::now();
+    paceWall_ = Clock::now();
     while (!quit_ && !abort_) {
         std::deque<SimCommand> batch;
         {
@@ -111,8 +114,14 @@ void SimWorker::apply(const SimCommand& c) {
                           !std::is_same_v<T, cmd::DragMove> && !std::is_same_v<T, cmd::DragEnd> &&
                           !std::is_same_v<T, cmd::DragBegin>)
                 framesWanted_ = 0;
+            // The frame on screen jumps (or playing starts): a new stretch to measure.
+            if constexpr (!std::is_same_v<T, cmd::Speed> && !std::is_same_v<T, cmd::Budget> &&
+                          !std::is_same_v<T, cmd::Duration> && !std::is_same_v<T, cmd::DragMove> &&
+                          !std::is_same_v<T, cmd::DragEnd>)
+                rate_.restart();
             if constexpr (std::is_same_v<T, cmd::Load> || std::is_same_v<T, cmd::Seek> ||
-                          std::is_same_v<T, cmd::ShowInstant> || std::is_same_v<T, cmd::DragBegin>) {
+                          std::is_same_v<T, cmd::ShowInstant> || std::is_same_v<T, cmd::DragBegin> ||
+                          std::is_same_v<T, cmd::Recall>) {
                 apply(v);
             } else if constexpr (std::is_same_v<T, cmd::Play>) {
                 play();
@@ -145,6 +154,7 @@ void SimWorker::apply(const SimCommand& c) {
             } else if constexpr (std::is_same_v<T, cmd::Budget>) {
                 budget_ = v.bytes;
                 history_.setBudget(v.bytes);
+                kept_.trim(v.bytes);
             } else if constexpr (std::is_same_v<T, cmd::DragMove>) {
                 if (!sim_ || !sim_->dragging()) return;
                 sim_->moveDrag(v.target);
@@ -164,6 +174,11 @@ void SimWorker::apply(const SimCommand& c) {
 }
 
 void SimWorker::apply(const cmd::Load& c) {
+    kept_.clear();  // runs of another scene
+    startRun(c.scene);
+}
+
+void SimWorker::startRun(const jl::Scene& scene) {
     failure_.clear();
     events_ = std::make_shared<std::vector<jl::Event>>();
     eventsChanged_ = true;
@@ -171,14 +186,14 @@ void SimWorker::apply(const cmd::Load& c) {
     feedFirst_ += feed_.size();  // the old run's frames: no longer anyone's
     feed_.clear();
     feedChanged_ = true;
-    history_.reset(c.scene.solver.frameInterval, budget_);
+    history_.reset(scene.solver.frameInterval, budget_);
     cursor_ = 0;
     midFrame_ = false;
     shown_.reset();
-    recorded_ = std::make_shared<const jl::Scene>(c.scene);
-    duration_ = c.scene.duration;
+    recorded_ = std::make_shared<const jl::Scene>(scene);
+    duration_ = scene.duration;
     stoppedAtEnd_ = false;
-    auto built = build(c.scene);
+    auto built = build(scene);
     sim_ = std::move(built.simulation);
     if (!sim_) {
         fail(joinLines(built.errors));
@@ -289,8 +304,10 @@ void SimWorker::apply(const cmd::DragBegin& c) {
     }
     // Pushing a block in the past rewrites what follows: simulate on from
     // the frame on screen (the view found a block there, in that frame).
-    // So does pushing it while the next frame was half done.
+    // So does pushing it while the next frame was half done. The run it
+    // replaces is kept, for Undo to bring back.
     if (cursor_ < history_.head() || midFrame_) {
+        if (cursor_ < history_.head()) keepRunBeforePush();
         discardFuture();
         if (!failure_.empty()) return;
     }
@@ -351,21 +368,25 @@ void SimWorker::fail(const std::string& why) {
     dirty_ = true;
 }
 
+// A sample of the time on screen at every turn of the loop; the rates the
+// status bar shows are read off them a few times a second.
 void SimWorker::measure() {
     const auto now = Clock::now();
-    const double dt = secondsBetween(rateWall_, now);
-    if (dt < 0.5) return;
-    const double simNow = cursor_ * history_.interval();
-    const auto head = history_.frame(history_.head());
-    const long long steps = head ? head->solver.steps : 0;
-    const double rtf = playing_ ? std::max(0.0, simNow - rateSim_) / dt : 0;
-    const double sps = playing_ ? double(std::max(0LL, steps - rateSteps_)) / dt : 0;
+    const bool replaying = cursor_ < history_.head();
+    if (!playing_ || replaying != rateReplaying_) rate_.restart();
+    rateReplaying_ = replaying;
+    if (playing_) {
+        const auto head = history_.frame(history_.head());
+        rate_.add(secondsBetween(started_, now), cursor_ * history_.interval(),
+                  head ? double(head->solver.steps) : 0.0);
+    }
+    if (now - rateShown_ < kRateShownEvery) return;
+    rateShown_ = now;
+    const double rtf = rate_.simulatedPerSecond().value_or(-1), sps = rate_.stepsPerSecond().value_or(-1);
     if (rtf != realTimeFactor_ || sps != stepsPerSecond_) dirty_ = true;
     realTimeFactor_ = rtf;
     stepsPerSecond_ = sps;
-    rateWall_ = now;
-    rateSim_ = simNow;
-    rateSteps_ = steps;
+    rateSpan_ = rate_.span();
 }
 
 void SimWorker::feed(std::shared_ptr<const jl::Frame> f) {
@@ -406,6 +427,7 @@ void SimWorker::publish() {
     s->speed = speed_;
     s->realTimeFactor = realTimeFactor_;
     s->stepsPerSecond = stepsPerSecond_;
+    s->rateSpan = rateSpan_;
     s->headHash = headHash_;
     s->failure = failure_;
     s->serial = ++serial_;

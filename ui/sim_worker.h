@@ -5,6 +5,8 @@
 #include "jl/scene/scene.h"
 #include "jl/sim/frame_history.h"
 #include "jl/sim/simulation.h"
+#include "ui/kept_runs.h"
+#include "ui/rate_window.h"
 #include "ui/sim_status.h"
 
 #include <atomic>
@@ -58,12 +60,19 @@ struct DragMove {
     jl::Vec2 target;
 };
 struct DragEnd {};
+// The scene's drags changed alone (Undo or Redo of a push): the run of
+// `scene` shown at `time`, brought back whole when it was kept, else run
+// again up to there. The run on record is kept in its turn.
+struct Recall {
+    jl::Scene scene;
+    double time;
+};
 struct Quit {};
 }  // namespace cmd
 
 using SimCommand = std::variant<cmd::Load, cmd::Play, cmd::Pause, cmd::StepForward, cmd::StepBack, cmd::Restart,
                                 cmd::Seek, cmd::ShowInstant, cmd::Speed, cmd::Budget, cmd::Duration, cmd::DragBegin,
-                                cmd::DragMove, cmd::DragEnd, cmd::Quit>;
+                                cmd::DragMove, cmd::DragEnd, cmd::Recall, cmd::Quit>;
 
 class SimWorker {
 public:
@@ -97,6 +106,8 @@ private:
     static std::string joinLines(const std::vector<std::string>& lines);
     void apply(const SimCommand& c);
     void apply(const cmd::Load& c);
+    void startRun(const jl::Scene& scene);
+    void apply(const cmd::Recall& c);
     void apply(const cmd::Seek& c);
     void apply(const cmd::ShowInstant& c);
     void apply(const cmd::DragBegin& c);
@@ -115,6 +126,9 @@ private:
     std::shared_ptr<const jl::Frame> instantFrame(double time, int before);
     bool showingInstant() const;
     void discardFuture();
+    void keepRunBeforePush();
+    void swapRun(KeptRun& other);
+    void feedWholeRun();
     void fail(const std::string& why);
     void rebasePace();
     void measure();
@@ -143,6 +157,8 @@ private:
     bool midFrame_ = false;
     int framesWanted_ = 0;  // Step forward pressed at the head, frames not yet made
     FrameHistory history_;
+    // Runs a push in the past replaced, and the runs Undo put aside.
+    KeptRuns kept_;
     int cursor_ = 0;
     bool playing_ = false;
     double seekingTo_ = -1;    // s, while simulateTo (or instantFrame) is on its way there
@@ -174,11 +190,12 @@ private:
     // Pacing: simulated time paceSim_ was on screen at wall time paceWall_.
     double paceSim_ = 0;
     Clock::time_point paceWall_;
-    // Rates over the last second.
-    Clock::time_point rateWall_;
-    double rateSim_ = 0;
-    long long rateSteps_ = 0;
-    double realTimeFactor_ = 0, stepsPerSecond_ = 0;
+    // Rates over the last seconds of playing, from the frame on screen;
+    // replaying recorded frames is a stretch apart from simulating them.
+    RateWindow rate_;
+    bool rateReplaying_ = false;
+    Clock::time_point started_ = Clock::now(), rateShown_;
+    double realTimeFactor_ = -1, stepsPerSecond_ = -1, rateSpan_ = 0;
 };
 
 }  // namespace jl::ui

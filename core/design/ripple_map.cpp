@@ -59,7 +59,7 @@ std::string fixed(double v, int digits) {
     return s;
 }
 
-// Values in the file: a count whole, else 6 significant digits (SI).
+// Values on the map's picture: a count whole, else 6 significant digits (SI).
 std::string value(DesignParameter p, double v) {
     if (p == DesignParameter::Blocks) return std::to_string(std::lround(v));
     char s[64];
@@ -91,21 +91,36 @@ std::string colour(double fraction) {
     return s;
 }
 
+// Each column names its SI unit as the other tables do ("thickness [m]"); a count has none.
+std::string columnOf(DesignParameter p) {
+    const DesignParameterWord& w = describe(p);
+    return std::string(w.word) + (w.unit.empty() ? "" : " [" + std::string(w.unit) + "]");
+}
+
+// A count whole; every other number the shortest text that reads back to
+// the same double (jl/base/csv_writer.h): the design simulated, exactly.
+void axisCell(CsvWriter& csv, DesignParameter p, double v) {
+    if (p == DesignParameter::Blocks)
+        csv.cell(std::lround(v));
+    else
+        csv.cell(v);
+}
+
 }  // namespace
 
 std::string rippleMapColumns(const RippleMap& m) {
-    return std::string(describe(m.x.parameter).word) + ',' + std::string(describe(m.y.parameter).word) +
-           ",hinges,reached,mean_time_between_flips_s,flips_elsewhere,events,quick_row,failure";
+    return columnOf(m.x.parameter) + ',' + columnOf(m.y.parameter) +
+           ",hinges,reached,mean_time_between_flips [s],flips_elsewhere,events,quick_row,failure";
 }
 
 void writeRippleMapCells(CsvWriter& csv, const RippleMap& m, std::size_t k) {
     const size_t i = k % m.xs.size(), j = k / m.xs.size();
     const RippleReach& r = m.cells[k];
-    csv.cell(value(m.x.parameter, m.xs[i]));
-    csv.cell(value(m.y.parameter, m.ys[j]));
+    axisCell(csv, m.x.parameter, m.xs[i]);
+    axisCell(csv, m.y.parameter, m.ys[j]);
     csv.cell(r.hinges);
     csv.cell(r.reached);
-    csv.cell(std::isfinite(r.meanTimeBetweenFlips) ? fixed(r.meanTimeBetweenFlips, 6) : std::string());
+    csv.cell(r.meanTimeBetweenFlips);  // not finite (no two flips): an empty field
     csv.cell(r.flipsElsewhere);
     csv.cell(r.events);
     csv.cell(r.quickRow);

@@ -11,7 +11,7 @@ for jobs in 1 2; do
 done
 cmp -s map1.csv map2.csv || fail "the CSV depends on --jobs"
 cmp -s map1.svg map2.svg || fail "the SVG depends on --jobs"
-[ "$(head -1 map1.csv)" = "blocks,thickness,hinges,reached,mean_time_between_flips_s,flips_elsewhere,events,quick_row,failure" ] ||
+[ "$(head -1 map1.csv)" = "blocks,thickness [m],hinges,reached,mean_time_between_flips [s],flips_elsewhere,events,quick_row,failure" ] ||
     fail "CSV header: $(head -1 map1.csv)"
 [ "$(wc -l <map1.csv)" = 7 ] || fail "6 designs wanted, got: $(cat map1.csv)"
 grep -q "^6,0.012,5,5," map1.csv || fail "the classic design (6 blocks, 12 mm) should ripple through its 5 hinges: $(cat map1.csv)"

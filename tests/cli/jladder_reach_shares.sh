@@ -21,7 +21,7 @@ else
         expect 0 "$jladder" reach "${axes[@]}" --jobs 1 --cells $k/4 --csv share$k.csv
     done
 fi
-[ "$(head -1 share1.csv)" = "map,share,cell,blocks,thickness,hinges,reached,mean_time_between_flips_s,flips_elsewhere,events,quick_row,failure" ] ||
+[ "$(head -1 share1.csv)" = "map,share,cell,blocks,thickness [m],hinges,reached,mean_time_between_flips [s],flips_elsewhere,events,quick_row,failure" ] ||
     fail "share header: $(head -1 share1.csv)"
 rows=0
 for k in 1 2 3 4; do rows=$((rows + $(wc -l <share$k.csv) - 1)); done
