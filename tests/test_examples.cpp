@@ -20,9 +20,10 @@ using namespace jl::test;
 namespace {
 
 // The examples whose claims a test below checks (a new example needs one).
-const std::set<std::string> kClaimsChecked = {"back-and-forth.yaml", "classic.yaml",     "falling-chain.yaml",
-                                              "heavy-middle.yaml",   "long-ladder.yaml", "particles-and-springs.yaml",
-                                              "pendulum.yaml",       "two-ripples.yaml", "wrong-way.yaml"};
+const std::set<std::string> kClaimsChecked = {
+    "back-and-forth.yaml", "classic.yaml",   "falling-chain.yaml",         "heavy-middle.yaml",
+    "long-ladder.yaml",    "one-hinge.yaml", "particles-and-springs.yaml", "pendulum.yaml",
+    "two-ripples.yaml",    "wrong-way.yaml"};
 
 // What "small" means for the energy books of a ladder: lifting all of it
 // through its own height, m g N L (1 J for the classic ladder).
@@ -153,6 +154,49 @@ private slots:
             QVERIFY2(std::abs(first.at(j + 1) - first.at(j) - 0.14) < 0.015, qPrintable(QString::number(j)));
         QVERIFY(std::abs(first.at(4) - first.at(3) - 0.4) < 0.05);
         QVERIFY(std::abs(first.at(5) - first.at(4) - 0.13) < 0.015);
+    }
+
+    // "The free upper block ... tilted 14 degrees, past the 11 degrees at which
+    // it would balance ... lands face to face on the held block at 0.32 s and
+    // at that instant flips over the far end ... knocks end to end against the
+    // held block at 0.56 s, parts again at once, and then hangs below it,
+    // swinging back and forth about every 0.4 s without flipping again ... at
+    // the flip their wrap moves from the upper end of the held block to its
+    // lower end."
+    void oneHingeFlipsOnceAndHangsBelow() {
+        auto sim = simulateFile("examples/one-hinge.yaml");
+        QVERIFY(sim);
+        const double L = 0.06, T = 0.012;
+        QVERIFY(std::atan(T / L) < 0.25);  // past the balance, 0.197 rad
+        const auto heldCentre = [](const Frame& f) { return f.poses[1].position; };
+        const double hingeAtStart = sim->frame().hinges[0].position.y() - heldCentre(sim->frame()).y();
+        std::vector<double> turns;                           // times block 0 stops at one end of its swing
+        double w0 = 0, highest = -INFINITY, hingeAtEnd = 0;  // block 0 from 0.6 s on
+        const Run r = runUntil(*sim, sim->scene().duration, [&](const Frame& f) {
+            if (f.time < 0.6) return;
+            const double w = sim->world().partVelocity(sim->blockPart(0)).angular;
+            if (w0 > 0 && w <= 0) turns.push_back(f.time);
+            w0 = w;
+            highest = std::max(highest, f.poses[0].position.y() - heldCentre(f).y());
+            hingeAtEnd = f.hinges[0].position.y() - heldCentre(f).y();
+        });
+        requireSoundRun(r, energyScale(*sim));
+        if (QTest::currentTestFailed()) return;
+        QCOMPARE(int(r.events.size()), 4);
+        const EventKind kinds[] = {EventKind::Fold, EventKind::FlipFlop, EventKind::Lock, EventKind::Unlock};
+        for (int i = 0; i < 4; ++i) QVERIFY2(r.events[i].kind == kinds[i], r.events[i].text.c_str());
+        QVERIFY2(std::abs(r.events[1].time - 0.32) < 0.005, qPrintable(QString::number(r.events[1].time)));
+        QCOMPARE(r.events[0].time, r.events[1].time);
+        QVERIFY2(std::abs(r.events[2].time - 0.56) < 0.005, qPrintable(QString::number(r.events[2].time)));
+        QCOMPARE(r.events[3].time, r.events[2].time);
+        QCOMPARE(r.events[1].corner, r.events[0].corner ^ 1);  // the hinge at the other end
+        qInfo("hinge %.4f m from the held block's centre, then %.4f m", hingeAtStart, hingeAtEnd);
+        QVERIFY(hingeAtStart > 0.025 && hingeAtEnd < -0.025);
+        QVERIFY2(highest < -0.05, qPrintable(QString::number(highest)));  // below the held block
+        QVERIFY(turns.size() >= 3);
+        const double period = (turns.back() - turns.front()) / double(turns.size() - 1);
+        qInfo("swinging below with a period of %.3f s", period);
+        QVERIFY2(std::abs(period - 0.4) < 0.03, qPrintable(QString::number(period)));
     }
 
     // "The second ripple runs down the same way as the first": hinges 1 to 5
