@@ -192,6 +192,16 @@ private slots:
         QCOMPARE(r.events[1].corner, r.events[0].corner ^ 1);  // the hinge at the other end
         qInfo("hinge %.4f m from the held block's centre, then %.4f m", hingeAtStart, hingeAtEnd);
         QVERIFY(hingeAtStart > 0.025 && hingeAtEnd < -0.025);
+        // The ribbons' wrap (where the outer pair crosses, docs/model.md
+        // section 8.8) a block's length away across the flip's instant.
+        const auto wrapAt = [](double t) {
+            auto s = simulateFile("examples/one-hinge.yaml");
+            s->advanceExactlyTo(t);
+            return s->frame().ribbons.front().points[2];
+        };
+        const Vec2 before = wrapAt(r.events[1].time - 1e-4), after = wrapAt(r.events[1].time + 1e-4);
+        QVERIFY2(before.y() > after.y() && std::abs((after - before).norm() - L) < 0.1 * L,
+                 qPrintable(QString::number((after - before).norm())));
         QVERIFY2(highest < -0.05, qPrintable(QString::number(highest)));  // below the held block
         QVERIFY(turns.size() >= 3);
         const double period = (turns.back() - turns.front()) / double(turns.size() - 1);
