@@ -2,6 +2,7 @@
 
 #include "jl/engine/energy.h"
 #include "jl/engine/world.h"
+#include "scratch.h"
 #include "turns.h"
 
 #include <algorithm>
@@ -119,7 +120,7 @@ double largestContactGap(const World& w) {
 ProjectionResult projectPositions(World& w, PinSolver& solver, double tolerance, int maxIterations, bool contacts) {
     ProjectionResult r = closePins(w, solver, tolerance, maxIterations);
     if (!contacts || w.contacts().empty() || !r.converged) return r;
-    thread_local ContactResponse response;
+    ContactResponse& response = w.scratch().contacts;
     for (int round = 0; round < maxIterations; ++round) {
         if (largestContactGap(w) <= tolerance) break;
         response.build(w, solver, solver.prepare(w));
@@ -156,7 +157,7 @@ void projectVelocities(World& w, PinSolver& solver, Eigen::VectorXd* impulses, C
     // much as keeps its gap from closing, G (v + sum s_j u_j) >= 0, and a
     // contact that would have to pull is left to part (docs/model.md
     // section 17.3). The impulses follow the pins' in `impulses`.
-    thread_local ContactResponse response;
+    ContactResponse& response = w.scratch().contacts;
     response.build(w, solver, false);
     const size_t k = w.contacts().size();
     Eigen::VectorXd rhs(Eigen::Index(k), 1);

@@ -100,16 +100,19 @@ std::optional<std::pair<int, EventKind>> Ladder::pullingContact(const World& w, 
 // The slow-release rule (docs/model.md section 8.6, "No chattering"): releasing hinge j at this impact would
 // part the pair slower than v_min while its free acceleration turns it back
 // into the limit, so it would only close again at once: it stays locked and
-// the force test decides afterwards. Tried on a copy of the world, kept per
-// thread so that its buffers are reused (grazing hinges ask at every impact);
-// the solvers are reset, so nothing but capacity carries from call to call.
+// the force test decides afterwards. Tried on a copy of the world, kept by
+// the ladder so that its buffers are reused (grazing hinges ask at every
+// impact); the solvers are reset, so nothing but capacity carries from call
+// to call.
+struct Ladder::ChatterTrial {
+    World world;
+    std::optional<Ladder> ladder;
+    Dynamics dynamics;
+};
+template class Fresh<Ladder::ChatterTrial>;
+
 bool Ladder::wouldChatter(const World& w, double t, int j, EventKind kind, const std::vector<Twist>& before) const {
-    struct Trial {
-        World world;
-        std::optional<Ladder> ladder;
-        Dynamics dynamics;
-    };
-    thread_local Trial scratch;
+    ChatterTrial& scratch = *chatterTrial_;
     World& trial = scratch.world;
     trial = w;
     if (scratch.ladder)

@@ -5,6 +5,7 @@
 #include "jl/base/geometry.h"
 #include "jl/engine/contact.h"
 #include "jl/engine/drive.h"
+#include "jl/engine/fresh.h"
 #include "jl/engine/pin_solver.h"
 
 #include <Eigen/Core>
@@ -288,11 +289,16 @@ public:
     // leaves no gap for the next step to see (docs/model.md section 3.4).
     double restructureTolerance = 1e-12;
 
+    // The buffers the engine's operations on this world reuse from call to
+    // call (core/engine/scratch.h): the world's own, shared with no other.
+    Scratch& scratch() const { return *scratch_; }
+
 private:
     static std::uint64_t freshRevision();
     void touch() { revision_ = freshRevision(); }
 
     ScratchPinSolver restructure_;  // the solver a restructure closes the pins with
+    Fresh<Scratch> scratch_;
 
     std::optional<WorldError> closePins(const char* operation);
     static std::optional<WorldError> pinsLeftOpen(const char* operation, const ProjectionResult& r);
