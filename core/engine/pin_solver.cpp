@@ -1,4 +1,4 @@
-#include "jl/engine/pin_solver.h"
+#include "pin_solver.h"
 
 #include "jl/engine/world.h"
 #include "turns.h"

@@ -7,8 +7,8 @@
 #pragma once
 
 #include "jl/engine/contact.h"
-#include "jl/engine/pin_solver.h"
 #include "jl/engine/world.h"
+#include "pin_solver.h"
 
 #include <cstdint>
 #include <utility>

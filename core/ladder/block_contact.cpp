@@ -312,7 +312,7 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
     // them): the hand's blocks have infinite mass.
     const std::vector<Twist> before = w.partVelocities();
     const double keBefore = energy(w).kinetic;
-    projectVelocities(w, d.solver());
+    projectVelocities(w, d);
     double dissipated = jumpEnergy(w, before);
     const HingeOptions& hinges = ladder.hingeOptions();
     const double e = hinges.restitution;
@@ -329,7 +329,7 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
                 events.push_back({t, EventKind::Bounce, -1, -1, words("bounces off", c)});
                 anyBounce = true;
             }
-        if (anyBounce) dissipated = bounce(w, d.solver(), before, e);
+        if (anyBounce) dissipated = bounce(w, d, before, e);
     }
     *loss += dissipated;
     *heldWork += energy(w).kinetic - keBefore + dissipated;

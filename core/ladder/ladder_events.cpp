@@ -121,10 +121,10 @@ bool Ladder::wouldChatter(const World& w, double t, int j, EventKind kind, const
         scratch.ladder.emplace(*this);
     Ladder& after = *scratch.ladder;
     Dynamics& d = scratch.dynamics;
-    d.solver().reset();
+    d.forgetStructure();
     after.release(trial, j, kind, t);
     trial.setPartVelocities(before);
-    projectVelocities(trial, d.solver());
+    projectVelocities(trial, d);
     d.evaluate(trial, t);
     // Away from the limit: phi grows from 0 after an unlock, falls from pi
     // after an unfold or a flip (measured at the new corner).
@@ -188,7 +188,7 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
     bool settled = false;
     for (int guard = 0; guard < 4 * blockCount() + 4 && !settled; ++guard) {
         w.setPartVelocities(before);
-        projectVelocities(w, d.solver(), &impulses);
+        projectVelocities(w, d, &impulses);
         updateAngles(w);
         if (auto pull = pullingContact(w, d, &im, kept, accumulating)) {
             if (wouldChatter(w, t, pull->first, pull->second, before)) {
@@ -233,7 +233,7 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
         anyBounce = true;
     }
     // Releases restructure only: the parts keep their plastic velocities.
-    if (anyBounce) dissipated = bounce(w, d.solver(), before, e);
+    if (anyBounce) dissipated = bounce(w, d, before, e);
     *loss += dissipated;
     *heldWork += energy(w).kinetic - keBefore + dissipated;
     return events;
@@ -261,7 +261,7 @@ std::vector<Event> Ladder::takeUp(World& w, Dynamics& d, double t, const std::ve
     bool settled = false;
     for (int guard = 0; guard < 4 * blockCount() + 4 && !settled; ++guard) {
         w.setPartVelocities(before);
-        projectVelocities(w, d.solver(), &impulses);
+        projectVelocities(w, d, &impulses);
         updateAngles(w);
         const auto pull = pullingContact(w, d, &im, kept);
         if ((settled = !pull)) break;
@@ -294,8 +294,8 @@ std::vector<Event> Ladder::resolve(World& w, Dynamics& d, double t, double* loss
         // its own error (1.1e-9 m there). Closed again here, so that every
         // event leaves the pins within tolerance (docs/model.md 14.3).
         if (!events.empty() && pinResidual(w) > gapTolerance_) {
-            if (auto e = w.closePinGaps("an event")) error_ = e->message;
-            projectVelocities(w, d.solver());
+            if (auto e = closePinGaps(w, "an event")) error_ = e->message;
+            projectVelocities(w, d);
         }
         settled_ = d.evaluate(w, t);
         updateAngles(w);

@@ -8,7 +8,6 @@
 #pragma once
 
 #include "jl/base/geometry.h"
-#include "jl/engine/pin_solver.h"
 
 #include <Eigen/Core>
 
@@ -16,6 +15,7 @@
 
 namespace jl {
 
+class PinSolver;
 class World;
 
 // Corner `corner` of part `cornerPart` (in that part's frame) against the
