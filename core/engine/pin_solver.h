@@ -95,6 +95,9 @@ public:
     Scratch scratch;
 
 private:
+    // A tiny diagonal shift for singular pivots (redundant pins): it picks
+    // one of the equal solutions instead of dividing by zero.
+    static constexpr double kRegularisation = 1e-12;
     struct PinRow {
         int bodyA, bodyB;
         bool dynA, dynB;  // has finite mass
