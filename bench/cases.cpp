@@ -121,6 +121,7 @@ std::vector<BenchRow> pendulumStudy(const BenchPlan& plan) {
                 World w;
                 const PartId block = w.addBox(mass, Vec2(L, T), W, Pose{-rotate(rest + theta0, corner), rest + theta0});
                 w.combine(w.anchor(Vec2::Zero()), w.addParticle(block, corner));
+                makeConsistentAfter(w, "combine");
                 if (!advanceFor(w, m.kind, p, period, 1e-12)) return false;
                 const double omegaScale = std::sqrt(mass * g * r / ip);
                 row.error =

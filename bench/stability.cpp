@@ -167,7 +167,6 @@ EngineMode engineOmega2(int blocks) {
     const Eigen::VectorXd q0 = w.q;
     w.v.setZero();
     Dynamics dynamics;
-    PinSolver pins;
     auto dot = [&](const Eigen::VectorXd& x, const Eigen::VectorXd& y) {
         return (x.array() * mass.array() * y.array()).sum();
     };
@@ -177,7 +176,7 @@ EngineMode engineOmega2(int blocks) {
         x = (mass.array() > 0).select(x, 0.0);
         w.q = q0;
         w.v = x;
-        projectVelocities(w, pins);
+        projectVelocities(w);
         x = (mass.array() > 0).select(w.v, 0.0);
         w.v.setZero();
     };

@@ -128,8 +128,8 @@ private slots:
             const StepOutcome o =
                 offPins.s.advance(offPins.w, offPins.d, offPins.t, onPins.t - offPins.t, offPins.ledger);
             QVERIFY(o.finite && !o.endEvaluated);
-            QVERIFY(projectPositions(offPins.w, offPins.d.solver(), 1e-12).converged);
-            projectVelocities(offPins.w, offPins.d.solver());
+            QVERIFY(projectPositions(offPins.w, offPins.d, 1e-12).converged);
+            projectVelocities(offPins.w, offPins.d);
             offPins.t += o.taken;
         }
         QVERIFY2((onPins.w.q - offPins.w.q).cwiseAbs().maxCoeff() < 1e-7,

@@ -20,6 +20,7 @@
 #include <random>
 
 using namespace jl;
+using namespace jl::test;
 
 namespace {
 
@@ -55,12 +56,12 @@ World branched() {
     const Vec2 corner(-L / 2, -T / 2);
     const double top = std::numbers::pi / 2 - std::atan2(corner.y(), corner.x()) + 0.8;
     const PartId a = w.addBox(mass, Vec2(L, T), W, Pose{-rotate(top, corner), top});
-    w.combine(w.anchor(Vec2::Zero()), w.addParticle(a, corner));
+    combineClosed(w, w.anchor(Vec2::Zero()), w.addParticle(a, corner));
     for (const Vec2& at : {Vec2(L / 2, -T / 2), Vec2(-L / 2, T / 2)}) {
         const Vec2 point = w.pointPosition(a, at);
         const double hang = std::numbers::pi / 2 - std::atan2(corner.y(), corner.x());
         const PartId b = w.addBox(mass, Vec2(L, T), W, Pose{point - rotate(hang, corner), hang});
-        w.combine(w.addParticle(a, at), w.addParticle(b, corner));
+        combineClosed(w, w.addParticle(a, at), w.addParticle(b, corner));
     }
     return w;
 }

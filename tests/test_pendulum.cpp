@@ -7,6 +7,7 @@
 #include "jl/reference/elliptic.h"
 #include "jl/scene/scene_io.h"
 #include "jl/sim/recording.h"
+#include "tests/restructure_closed.h"
 
 #include <QtTest>
 
@@ -15,6 +16,7 @@
 #include <vector>
 
 using namespace jl;
+using namespace jl::test;
 
 namespace {
 
@@ -34,7 +36,7 @@ struct Pendulum {
         const double angle = rest + theta0;
         const Vec2 centre = -rotate(angle, corner);  // corner at the origin
         block = world.addBox(mass, Vec2(L, T), W, Pose{centre, angle});
-        world.combine(world.anchor(Vec2::Zero()), world.addParticle(block, corner));
+        combineClosed(world, world.anchor(Vec2::Zero()), world.addParticle(block, corner));
     }
     double swing() const { return world.partPose(block).angle - rest; }
     double period(double theta0) const { return pendulumPeriod(inertiaAboutPin, mass, g, r, theta0); }
@@ -150,9 +152,9 @@ private slots:
         w.setWeldRigidPairs(weld);
         const PartId a = w.addBox(m, Vec2(L, T), W, Pose{centre + rotate(angle, Vec2(-L / 2, 0)), angle});
         const PartId b = w.addBox(m, Vec2(L, T), W, Pose{centre + rotate(angle, Vec2(L / 2, 0)), angle});
-        QVERIFY(!w.combine(w.anchor(Vec2::Zero()), w.addParticle(a, Vec2(-L / 2, -T / 2))));
+        QVERIFY(!combineClosed(w, w.anchor(Vec2::Zero()), w.addParticle(a, Vec2(-L / 2, -T / 2))));
         for (double y : {-T / 2, T / 2})
-            QVERIFY(!w.combine(w.addParticle(a, Vec2(L / 2, y)), w.addParticle(b, Vec2(-L / 2, y))));
+            QVERIFY(!combineClosed(w, w.addParticle(a, Vec2(L / 2, y)), w.addParticle(b, Vec2(-L / 2, y))));
         QCOMPARE(int(w.welds().size()), weld ? 1 : 0);
         QCOMPARE(w.part(a).body == w.part(b).body, !weld);
         const double period = pendulumPeriod(inertia, M, g, r, theta0);

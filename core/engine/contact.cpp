@@ -1,6 +1,7 @@
 #include "jl/engine/contact.h"
 
 #include "jl/engine/world.h"
+#include "scratch.h"
 
 #include <Eigen/Cholesky>
 
@@ -64,8 +65,9 @@ double rowBias(const World& w, const ContactRow& r) {
     return wb * perp(r.normal).dot(u + armBRate) - wa * wa * r.normal.dot(r.armA);
 }
 
-void ContactResponse::build(const World& w, PinSolver& solver, bool stale) {
-    const std::vector<Contact>& contacts = w.contacts();
+void ContactResponse::build(const World& w, PinSolver& solver, bool stale) { build(w, w.contacts(), solver, stale); }
+
+void ContactResponse::build(const World& w, const std::vector<Contact>& contacts, PinSolver& solver, bool stale) {
     const size_t k = contacts.size();
     rows.resize(k);
     response.resize(k);
@@ -95,6 +97,15 @@ void ContactResponse::build(const World& w, PinSolver& solver, bool stale) {
     matrix.resize(Eigen::Index(k), Eigen::Index(k));
     for (size_t i = 0; i < k; ++i)
         for (size_t j = 0; j < k; ++j) matrix(Eigen::Index(i), Eigen::Index(j)) = rowTimes(rows[i], response[j]);
+}
+
+const Eigen::MatrixXd& contactMatrixWith(const World& w, const Contact& trial) {
+    Scratch& s = w.scratch();
+    s.trialContacts = w.contacts();
+    s.trialContacts.push_back(trial);
+    s.pins.reset();
+    s.contacts.build(w, s.trialContacts, s.pins, s.pins.prepare(w));
+    return s.contacts.matrix;
 }
 
 Eigen::VectorXd ContactResponse::solve(const Eigen::VectorXd& rhs, const std::vector<char>& in) const {

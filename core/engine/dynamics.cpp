@@ -1,8 +1,15 @@
 #include "jl/engine/dynamics.h"
 
 #include "jl/engine/world.h"
+#include "pin_solver.h"
 
 namespace jl {
+
+Dynamics::Dynamics() : solver_(std::make_unique<PinSolver>()) {}
+Dynamics::~Dynamics() = default;
+
+void Dynamics::forgetStructure() { solver_->reset(); }
+void Dynamics::setForceSparse(bool on) { solver_->setForceSparse(on); }
 
 Powers Dynamics::evaluate(World& w, double t, double within) {
     ++evaluations_;
@@ -21,7 +28,7 @@ Powers Dynamics::evaluate(World& w, double t, double within) {
         weightsRevision_ = weightsOnly ? cw.revision() : 0;
         weightsGravity_ = cw.gravity;
     }
-    solver_.accelerations(w, force_, lambda_);
+    solver_->accelerations(w, force_, lambda_);
     if (!w.contacts().empty())
         addContacts(w, powers);
     else
@@ -48,10 +55,10 @@ Powers Dynamics::evaluate(World& w, double t, double within) {
         const bool ka = kinematic[size_t(p.bodyA)];
         const Vec2 l = lambda_.segment<2>(2 * Eigen::Index(i));
         if (ka) {
-            const Vec2 vp = w.v.segment<2>(3 * p.bodyA) + w.v[3 * p.bodyA + 2] * perp(solver_.armA(int(i)));
+            const Vec2 vp = w.v.segment<2>(3 * p.bodyA) + w.v[3 * p.bodyA + 2] * perp(solver_->armA(int(i)));
             powers.held += (-l).dot(vp);
         } else {
-            const Vec2 vp = w.v.segment<2>(3 * p.bodyB) + w.v[3 * p.bodyB + 2] * perp(solver_.armB(int(i)));
+            const Vec2 vp = w.v.segment<2>(3 * p.bodyB) + w.v[3 * p.bodyB + 2] * perp(solver_->armB(int(i)));
             powers.held += l.dot(vp);
         }
     }
@@ -88,7 +95,7 @@ Powers Dynamics::evaluate(World& w, double t, double within) {
 // Every contact is kept while it rests, even if it would pull: its force
 // crossing zero is an event (section 17.4).
 void Dynamics::addContacts(World& w, Powers& powers) {
-    contactResponse_.build(w, solver_, false);
+    contactResponse_.build(w, *solver_, false);
     const size_t k = w.contacts().size();
     Eigen::VectorXd rhs(Eigen::Index(k), 1);
     for (size_t i = 0; i < k; ++i) {

@@ -13,6 +13,7 @@
 // solves the dynamics: one factorisation per step, one solve per stage.
 #include "jl/engine/stepper.h"
 #include "jl/engine/world.h"
+#include "pin_solver.h"
 #include "stage_sums.h"
 
 #include <Eigen/LU>
@@ -88,7 +89,7 @@ void Stepper::stiffMass(const World& w, Dynamics& d, double s) {
         keep_.segment<3>(i) = mask_.segment<3>(i).cwiseProduct(Eigen::Vector3d(1, 1, 1 / raise));
     }
     for (Eigen::Index i = 3 * Eigen::Index(bodies); i < n; ++i) keep_[i] = 0;
-    stiff_.solver.assemble(w, stiffInverse_);
+    stiff_->assemble(w, stiffInverse_);
 }
 
 // A stage's increments. With R_q = v + sum_j c_ij u_q,j / h and R_v = a +
@@ -126,7 +127,7 @@ void Stepper::rosenbrockStage(World& w, int i, double h) {
         kept_[e] = keep[e] * z;
         rest_[e] = z - kept_[e];
     }
-    stiff_.solver.solveApplying(w, rest_, mu_, jmu_);
+    stiff_->solveApplying(w, rest_, mu_, jmu_);
     Eigen::VectorXd& uqi = uq_[size_t(i)];
     Eigen::VectorXd& uvi = uv_[size_t(i)];
     uqi.resize(n);

@@ -12,11 +12,11 @@ MotionStep advanceAndProject(World& w, Dynamics& d, Stepper& s, double t, double
     if (!m.step.finite) return m;
     // Dormand-Prince has projected its end already (its last stage).
     const bool projected = m.step.endEvaluated || !m.step.projection.converged;
-    m.projection = projected ? m.step.projection : projectPositions(w, d.solver(), tolerance);
+    m.projection = projected ? m.step.projection : projectPositions(w, d, tolerance);
     if (m.projection.converged) {
         // A projected end was checked by the stepper, after its projection.
         if (projected) return m;
-        projectVelocities(w, d.solver(), nullptr, ContactRule::Hold);
+        projectVelocities(w, d, nullptr, ContactRule::Hold);
         if (w.q.allFinite() && w.v.allFinite()) return m;
         m.step.finite = false;
         m.step.endEvaluated = false;

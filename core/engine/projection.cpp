@@ -1,7 +1,10 @@
 #include "jl/engine/projection.h"
 
+#include "jl/engine/dynamics.h"
 #include "jl/engine/energy.h"
 #include "jl/engine/world.h"
+#include "pin_solver.h"
+#include "scratch.h"
 #include "turns.h"
 
 #include <algorithm>
@@ -53,7 +56,8 @@ double pinResidual(const World& w) {
     return largestGap(w, gap);
 }
 
-double pinVelocityResidual(const World& w, PinSolver& solver) {
+double pinVelocityResidual(const World& w) {
+    PinSolver& solver = w.scratch().pins;
     solver.assemble(w);
     Eigen::VectorXd jv;
     solver.multiplyJ(w.v, jv);
@@ -110,8 +114,6 @@ double largestContactGap(const World& w) {
     return m;
 }
 
-}  // namespace
-
 // The pins first; then each resting contact's gap is closed by the least
 // move that keeps the pins (linearised: q += sum s_i u_i with K s = -gap,
 // the same Schur complement as the dynamics'), and the pins closed again,
@@ -119,7 +121,7 @@ double largestContactGap(const World& w) {
 ProjectionResult projectPositions(World& w, PinSolver& solver, double tolerance, int maxIterations, bool contacts) {
     ProjectionResult r = closePins(w, solver, tolerance, maxIterations);
     if (!contacts || w.contacts().empty() || !r.converged) return r;
-    thread_local ContactResponse response;
+    ContactResponse& response = w.scratch().contacts;
     for (int round = 0; round < maxIterations; ++round) {
         if (largestContactGap(w) <= tolerance) break;
         response.build(w, solver, solver.prepare(w));
@@ -156,7 +158,7 @@ void projectVelocities(World& w, PinSolver& solver, Eigen::VectorXd* impulses, C
     // much as keeps its gap from closing, G (v + sum s_j u_j) >= 0, and a
     // contact that would have to pull is left to part (docs/model.md
     // section 17.3). The impulses follow the pins' in `impulses`.
-    thread_local ContactResponse response;
+    ContactResponse& response = w.scratch().contacts;
     response.build(w, solver, false);
     const size_t k = w.contacts().size();
     Eigen::VectorXd rhs(Eigen::Index(k), 1);
@@ -174,19 +176,50 @@ void projectVelocities(World& w, PinSolver& solver, Eigen::VectorXd* impulses, C
     }
 }
 
-double bounce(World& w, PinSolver& solver, const std::vector<Twist>& before, double e) {
+// A gap left beyond this after a change of structure is a failed projection.
+std::optional<WorldError> pinsLeftOpen(const char* operation, const ProjectionResult& r) {
+    constexpr double kFailedGap = 1e-9;  // m
+    if (r.converged || r.residual <= kFailedGap) return std::nullopt;
+    return WorldError{std::string(operation) + ": the pins could not be closed after the change of structure (gap " +
+                      std::to_string(r.residual) + " m after " + std::to_string(r.iterations) + " iterations)"};
+}
+
+}  // namespace
+
+ProjectionResult projectPositions(World& w, Dynamics& d, double tolerance, int maxIterations, bool contacts) {
+    return projectPositions(w, d.solver(), tolerance, maxIterations, contacts);
+}
+
+void projectVelocities(World& w, Dynamics& d, Eigen::VectorXd* impulses, ContactRule rule) {
+    projectVelocities(w, d.solver(), impulses, rule);
+}
+
+void projectVelocities(World& w) { projectVelocities(w, w.scratch().pins, nullptr, ContactRule::PushOnly); }
+
+double bounce(World& w, Dynamics& d, const std::vector<Twist>& before, double e) {
     const double plasticJump = jumpEnergy(w, before);
     const std::vector<Twist> bouncing = bounced(before, w.partVelocities(), e);
     w.setPartVelocities(bouncing);
-    projectVelocities(w, solver);
+    projectVelocities(w, d);
     return (1 - e * e) * plasticJump + jumpEnergy(w, bouncing);
 }
 
-ProjectionResult makeConsistent(World& w, PinSolver& solver, double tolerance, bool contacts) {
+ProjectionResult makeConsistent(World& w, double tolerance, bool contacts) {
+    PinSolver& solver = w.scratch().pins;
     solver.reset();
     ProjectionResult r = projectPositions(w, solver, tolerance, 25, contacts);
-    projectVelocities(w, solver);
+    projectVelocities(w, solver, nullptr, ContactRule::PushOnly);
     return r;
+}
+
+std::optional<WorldError> makeConsistentAfter(World& w, const char* operation) {
+    return pinsLeftOpen(operation, makeConsistent(w, w.restructureTolerance, false));
+}
+
+std::optional<WorldError> closePinGaps(World& w, const char* operation) {
+    PinSolver& solver = w.scratch().pins;
+    solver.reset();
+    return pinsLeftOpen(operation, projectPositions(w, solver, w.restructureTolerance, 25, false));
 }
 
 }  // namespace jl

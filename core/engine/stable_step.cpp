@@ -1,5 +1,7 @@
 #include "jl/engine/stable_step.h"
 
+#include "scratch.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -10,8 +12,9 @@ double fastestVibration(const World& w, const Eigen::VectorXd& pinForces) {
     const std::vector<Pin>& pins = w.pins();
     if (pinForces.size() < 2 * Eigen::Index(pins.size())) return 0;
     // Sum of |F| |r| per body, then the largest ratio to the inertia.
-    thread_local std::vector<double> pull;
-    pull.assign(size_t(w.bodyCount()), 0.0);
+    std::vector<double>& sums = w.scratch().pull;
+    sums.assign(size_t(w.bodyCount()), 0.0);
+    double* pull = sums.data();  // not re-read through the world at every pin
     for (size_t i = 0; i < pins.size(); ++i) {
         const Pin& p = pins[i];
         const double f = pinForces.segment<2>(2 * Eigen::Index(i)).norm();

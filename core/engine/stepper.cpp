@@ -170,9 +170,9 @@ double Stepper::attempt(World& w, Dynamics& d, double t, double h, Ledger& ledge
         }
         const bool last = i + 1 == stages;
         if (last && projectLast) {
-            endProjection_ = projectPositions(w, d.solver(), projectionTolerance);
+            endProjection_ = projectPositions(w, d, projectionTolerance);
             if (!endProjection_.converged) return std::numeric_limits<double>::quiet_NaN();
-            projectVelocities(w, d.solver(), nullptr, ContactRule::Hold);
+            projectVelocities(w, d, nullptr, ContactRule::Hold);
         }
         const Powers p = d.evaluate(w, t + r.c[i] * h, t + h / 2);
         if (last && projectLast) endPowers_ = p;

@@ -1,7 +1,5 @@
 #include "jl/engine/world.h"
 
-#include "jl/engine/projection.h"
-
 #include <algorithm>
 #include <atomic>
 
@@ -125,13 +123,12 @@ void World::absorb(ParticleId p, ParticleId q, std::vector<int>& touched) {
     particles_[size_t(q)].mergedInto = p;
 }
 
-std::optional<WorldError> World::combine(ParticleId p, ParticleId q, bool consistent) {
+std::optional<WorldError> World::combine(ParticleId p, ParticleId q) {
     touch();
     if (auto e = checkCombine(p, q)) return e;
     std::vector<int> touched;
     absorb(p, q, touched);
     regroup(touched);
-    if (consistent) return closePins("combine");
     return std::nullopt;
 }
 
@@ -153,28 +150,6 @@ std::optional<WorldError> World::combine(const std::vector<std::pair<ParticleId,
     return std::nullopt;
 }
 
-// After a change of structure: the pins closed and the velocities made
-// consistent. The projection aims at restructureTolerance; a gap left beyond 1e-9 m (ten
-// times the default tolerance of a step's projection) is a projection that
-// failed, said in words. The structure has changed by then: a caller that
-// gets this error stops (the simulation keeps its last good frame).
-std::optional<WorldError> World::closePins(const char* operation) {
-    return pinsLeftOpen(operation, makeConsistent(*this, restructure_.solver, restructureTolerance, false));
-}
-
-std::optional<WorldError> World::closePinGaps(const char* operation) {
-    touch();
-    restructure_.solver.reset();
-    return pinsLeftOpen(operation, projectPositions(*this, restructure_.solver, restructureTolerance, 25, false));
-}
-
-std::optional<WorldError> World::pinsLeftOpen(const char* operation, const ProjectionResult& r) {
-    constexpr double kFailedGap = 1e-9;  // m
-    if (r.converged || r.residual <= kFailedGap) return std::nullopt;
-    return WorldError{std::string(operation) + ": the pins could not be closed after the change of structure (gap " +
-                      std::to_string(r.residual) + " m after " + std::to_string(r.iterations) + " iterations)"};
-}
-
 std::optional<WorldError> World::checkSeparate(ParticleId p) const {
     if (auto e = checkParticle(p)) return e;
     if (particles_[size_t(p)].absorbed.empty())
@@ -191,13 +166,12 @@ void World::unabsorb(ParticleId p, std::vector<int>& touched) {
     particles_[size_t(q)].mergedInto = -1;
 }
 
-std::optional<WorldError> World::separate(ParticleId p, bool consistent) {
+std::optional<WorldError> World::separate(ParticleId p) {
     touch();
     if (auto e = checkSeparate(p)) return e;
     std::vector<int> touched;
     unabsorb(p, touched);
     regroup(touched);
-    if (consistent) return closePins("separate");
     return std::nullopt;
 }
 
@@ -220,7 +194,6 @@ void World::hold(PartId part, const Drive& d) {
     touch();
     parts_[part].drive = d;
     regroup({parts_[part].body});
-    makeConsistent(*this, restructure_.solver, restructureTolerance, false);
 }
 
 void World::release(PartId part) {

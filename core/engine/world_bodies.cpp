@@ -1,6 +1,7 @@
 // World: which parts move as one body (union-find over combined particles), and
 // the bodies' flat arrays that every evaluation reads.
 #include "jl/engine/world.h"
+#include "scratch.h"
 
 #include <algorithm>
 #include <functional>
@@ -16,9 +17,8 @@ namespace jl {
 // the unions (hence of the groups, hence of the bodies) is the one the
 // operations have always had, so trajectories stay the same bit for bit.
 std::vector<std::vector<PartId>> World::rigidGroups(const std::vector<PartId>& parts) const {
-    // Scratch kept from call to call: a ladder regroups two bodies at every
-    // lock, fold and trial, and fresh vectors were most of what that cost.
-    thread_local std::vector<std::pair<PartId, int>> index;
+    Scratch& s = *scratch_;
+    std::vector<std::pair<PartId, int>>& index = s.partIndex;
     index.resize(parts.size());
     for (int i = 0; i < int(parts.size()); ++i) index[size_t(i)] = {parts[size_t(i)], i};
     std::sort(index.begin(), index.end());
@@ -26,7 +26,7 @@ std::vector<std::vector<PartId>> World::rigidGroups(const std::vector<PartId>& p
         const auto it = std::lower_bound(index.begin(), index.end(), std::pair<PartId, int>{p, -1});
         return it != index.end() && it->first == p ? it->second : -1;
     };
-    thread_local std::vector<int> root;
+    std::vector<int>& root = s.root;
     root.resize(parts.size());
     std::iota(root.begin(), root.end(), 0);
     auto find = [&](int i) {
@@ -37,7 +37,7 @@ std::vector<std::vector<PartId>> World::rigidGroups(const std::vector<PartId>& p
 
     // Two extended parts sharing two distinct particles are rigid together;
     // a point part is rigid with anything it shares a particle with.
-    thread_local std::vector<ParticleId> seen;
+    std::vector<ParticleId>& seen = s.seen;
     seen.clear();
     for (PartId part : parts)
         for (ParticleId id : particlesOfPart_[size_t(part)])
@@ -49,7 +49,7 @@ std::vector<std::vector<PartId>> World::rigidGroups(const std::vector<PartId>& p
     // the thousands of a still tail.
     constexpr size_t kFewParts = 16;
     const bool few = parts.size() <= kFewParts;
-    thread_local std::vector<std::pair<std::uint64_t, int>> sharedFew;
+    std::vector<std::pair<std::uint64_t, int>>& sharedFew = s.shared;
     sharedFew.clear();
     std::unordered_map<std::uint64_t, int> sharedMany;
     const auto sharedCount = [&](std::uint64_t key) -> int& {
@@ -58,7 +58,7 @@ std::vector<std::vector<PartId>> World::rigidGroups(const std::vector<PartId>& p
             if (k == key) return count;
         return sharedFew.emplace_back(key, 0).second;
     };
-    thread_local std::vector<int> members;
+    std::vector<int>& members = s.members;
     for (ParticleId id : seen) {
         members.clear();
         for (const Attachment& x : particles_[size_t(id)].at)
@@ -75,7 +75,7 @@ std::vector<std::vector<PartId>> World::rigidGroups(const std::vector<PartId>& p
                     unite(x, y);
             }
     }
-    thread_local std::vector<std::pair<int, PartId>> byRoot;
+    std::vector<std::pair<int, PartId>>& byRoot = s.byRoot;
     byRoot.resize(parts.size());
     for (int i = 0; i < int(parts.size()); ++i) byRoot[size_t(i)] = {find(i), parts[size_t(i)]};
     std::sort(byRoot.begin(), byRoot.end());

@@ -1,5 +1,6 @@
 // World: the pins and welds, derived from the particles after a change of structure.
 #include "jl/engine/world.h"
+#include "scratch.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,7 +15,7 @@ void World::rebuildPins() const {
     pins_.clear();
     // The bodies a particle already joins; one list for all of them (a list
     // per particle was an allocation each, at every change of structure).
-    thread_local std::vector<int> done;
+    std::vector<int>& done = scratch_->joined;
     for (ParticleId id = 0; id < particleCount(); ++id) {
         const Particle& p = particles_[id];
         if (p.mergedInto >= 0 || p.at.size() < 2) continue;

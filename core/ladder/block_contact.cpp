@@ -180,13 +180,7 @@ bool BlockContacts::atHingeOf(const World& w, const Ladder& ladder, const Vec2& 
 // other hinge) and touch a face there without the pins letting it press:
 // the push would be the pins' indeterminate share, not a contact.
 bool BlockContacts::heldAlready(const World& w, const Contact& c, const ContactRow& row) {
-    thread_local ContactResponse one;
-    thread_local World alone;
-    thread_local PinSolver solver;
-    alone = w;
-    alone.contacts().push_back(c);
-    solver.reset();
-    one.build(alone, solver, solver.prepare(alone));
+    const Eigen::MatrixXd& matrix = contactMatrixWith(w, c);
     double free = 0;
     for (int b : {row.bodyA, row.bodyB}) {
         const Vec2 arm = b == row.bodyA ? row.armA : row.armB;
@@ -194,11 +188,11 @@ bool BlockContacts::heldAlready(const World& w, const Contact& c, const ContactR
     }
     // What a push at the new contact moves with the others held as well:
     // the Schur complement of the contacts already resting.
-    const Eigen::Index n = one.matrix.rows() - 1;
-    double own = one.matrix(n, n);
+    const Eigen::Index n = matrix.rows() - 1;
+    double own = matrix(n, n);
     if (n > 0) {
-        const Eigen::MatrixXd held = one.matrix.topLeftCorner(n, n);
-        const Eigen::VectorXd across = one.matrix.topRightCorner(n, 1);
+        const Eigen::MatrixXd held = matrix.topLeftCorner(n, n);
+        const Eigen::VectorXd across = matrix.topRightCorner(n, 1);
         own -= across.dot(held.ldlt().solve(across));
     }
     return !(own > 1e-6 * free);
@@ -318,7 +312,7 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
     // them): the hand's blocks have infinite mass.
     const std::vector<Twist> before = w.partVelocities();
     const double keBefore = energy(w).kinetic;
-    projectVelocities(w, d.solver());
+    projectVelocities(w, d);
     double dissipated = jumpEnergy(w, before);
     const HingeOptions& hinges = ladder.hingeOptions();
     const double e = hinges.restitution;
@@ -335,7 +329,7 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
                 events.push_back({t, EventKind::Bounce, -1, -1, words("bounces off", c)});
                 anyBounce = true;
             }
-        if (anyBounce) dissipated = bounce(w, d.solver(), before, e);
+        if (anyBounce) dissipated = bounce(w, d, before, e);
     }
     *loss += dissipated;
     *heldWork += energy(w).kinetic - keBefore + dissipated;

@@ -80,13 +80,14 @@ Ladder::Ladder(World& w, const LadderSpec& spec) : spec_(spec), length_(spec.blo
             h.own[size_t(k)] = w.addParticle(blocks_[size_t(j - 1)], cornerLocal(j - 1, k));
             h.own[size_t(4 + k)] = w.addParticle(blocks_[size_t(j)], cornerLocal(j, k));
         }
-        w.combine(h.own[size_t(h.corner)], h.own[size_t(4 + h.corner)], false);
+        w.combine(h.own[size_t(h.corner)], h.own[size_t(4 + h.corner)]);
         if (spec.hinges.damping > 0)
             dampers_.push_back(w.addRotaryDamper({blocks_[size_t(j - 1)], blocks_[size_t(j)], spec.hinges.damping}));
     }
     for (int h : spec.held) {
         const PartId p = blocks_[size_t(h)];
         w.hold(p, Drive(w.partPose(p)));
+        makeConsistent(w, w.restructureTolerance, false);
     }
     updateAngles(w);
 }
@@ -421,8 +422,8 @@ void Ladder::snap(World& w, int j, double target) {
 // every velocity afterwards with the impact's own projection.
 void Ladder::join(World& w, int j, int k) {
     const Hinge& h = hinge(j);
-    auto e = w.combine(h.own[size_t(k)], h.own[size_t(4 + k)], false);
-    if (!e) e = w.closePinGaps("combine");
+    auto e = w.combine(h.own[size_t(k)], h.own[size_t(4 + k)]);
+    if (!e) e = closePinGaps(w, "combine");
     if (e) error_ = "hinge " + std::to_string(j) + " could not join corner " + std::to_string(k) + ": " + e->message;
 }
 
@@ -431,7 +432,7 @@ void Ladder::join(World& w, int j, int k) {
 // and still meet the fewer pins after, so there is nothing to project (it
 // would be a pass over the whole ladder at every flip and unlock).
 void Ladder::part(World& w, int j, int k) {
-    if (auto e = w.separate(hinge(j).own[size_t(k)], false))
+    if (auto e = w.separate(hinge(j).own[size_t(k)]))
         error_ = "hinge " + std::to_string(j) + " could not part corner " + std::to_string(k) + ": " + e->message;
 }
 

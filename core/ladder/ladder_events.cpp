@@ -101,16 +101,19 @@ std::optional<std::pair<int, EventKind>> Ladder::pullingContact(const World& w, 
 // The slow-release rule (docs/model.md section 8.6, "No chattering"): releasing hinge j at this impact would
 // part the pair slower than v_min while its free acceleration turns it back
 // into the limit, so it would only close again at once: it stays locked and
-// the force test decides afterwards. Tried on a copy of the world, kept per
-// thread so that its buffers are reused (grazing hinges ask at every impact);
-// the solvers are reset, so nothing but capacity carries from call to call.
+// the force test decides afterwards. Tried on a copy of the world, kept by
+// the ladder so that its buffers are reused (grazing hinges ask at every
+// impact); the solvers are reset, so nothing but capacity carries from call
+// to call.
+struct Ladder::ChatterTrial {
+    World world;
+    std::optional<Ladder> ladder;
+    Dynamics dynamics;
+};
+template class Fresh<Ladder::ChatterTrial>;
+
 bool Ladder::wouldChatter(const World& w, double t, int j, EventKind kind, const std::vector<Twist>& before) const {
-    struct Trial {
-        World world;
-        std::optional<Ladder> ladder;
-        Dynamics dynamics;
-    };
-    thread_local Trial scratch;
+    ChatterTrial& scratch = *chatterTrial_;
     World& trial = scratch.world;
     trial = w;
     if (scratch.ladder)
@@ -119,10 +122,10 @@ bool Ladder::wouldChatter(const World& w, double t, int j, EventKind kind, const
         scratch.ladder.emplace(*this);
     Ladder& after = *scratch.ladder;
     Dynamics& d = scratch.dynamics;
-    d.solver().reset();
+    d.forgetStructure();
     after.release(trial, j, kind, t);
     trial.setPartVelocities(before);
-    projectVelocities(trial, d.solver());
+    projectVelocities(trial, d);
     d.evaluate(trial, t);
     // Away from the limit: phi grows from 0 after an unlock, falls from pi
     // after an unfold or a flip (measured at the new corner).
@@ -186,7 +189,7 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
     bool settled = false;
     for (int guard = 0; guard < 4 * blockCount() + 4 && !settled; ++guard) {
         w.setPartVelocities(before);
-        projectVelocities(w, d.solver(), &impulses);
+        projectVelocities(w, d, &impulses);
         updateAngles(w);
         if (auto pull = pullingContact(w, d, &im, kept, accumulating)) {
             if (wouldChatter(w, t, pull->first, pull->second, before)) {
@@ -231,7 +234,7 @@ std::vector<Event> Ladder::impact(World& w, Dynamics& d, double t, const std::ve
         anyBounce = true;
     }
     // Releases restructure only: the parts keep their plastic velocities.
-    if (anyBounce) dissipated = bounce(w, d.solver(), before, e);
+    if (anyBounce) dissipated = bounce(w, d, before, e);
     *loss += dissipated;
     *heldWork += energy(w).kinetic - keBefore + dissipated;
     return events;
@@ -259,7 +262,7 @@ std::vector<Event> Ladder::takeUp(World& w, Dynamics& d, double t, const std::ve
     bool settled = false;
     for (int guard = 0; guard < 4 * blockCount() + 4 && !settled; ++guard) {
         w.setPartVelocities(before);
-        projectVelocities(w, d.solver(), &impulses);
+        projectVelocities(w, d, &impulses);
         updateAngles(w);
         const auto pull = pullingContact(w, d, &im, kept);
         if ((settled = !pull)) break;
@@ -292,8 +295,8 @@ std::vector<Event> Ladder::resolve(World& w, Dynamics& d, double t, double* loss
         // its own error (1.1e-9 m there). Closed again here, so that every
         // event leaves the pins within tolerance (docs/model.md 14.3).
         if (!events.empty() && pinResidual(w) > gapTolerance_) {
-            if (auto e = w.closePinGaps("an event")) error_ = e->message;
-            projectVelocities(w, d.solver());
+            if (auto e = closePinGaps(w, "an event")) error_ = e->message;
+            projectVelocities(w, d);
         }
         settled_ = d.evaluate(w, t);
         updateAngles(w);

@@ -16,12 +16,11 @@ std::vector<PartId> buildFallingChain(World& w, int n, const FallingChain& spec)
                                  Pose{Vec2((i + 0.5) * spec.length, 0), -std::numbers::pi / 2}));
     ParticleId previous = w.anchor(Vec2::Zero());
     for (int i = 0; i < n; ++i) {
-        w.combine(previous, w.addParticle(parts[size_t(i)], Vec2(0, -half)), false);
+        w.combine(previous, w.addParticle(parts[size_t(i)], Vec2(0, -half)));
         previous = w.addParticle(parts[size_t(i)], Vec2(0, half));
     }
     w.shrinkToFit();
-    PinSolver scratch;
-    makeConsistent(w, scratch, w.restructureTolerance);
+    makeConsistent(w, w.restructureTolerance);
     return parts;
 }
 

@@ -119,8 +119,9 @@ std::optional<std::string> Simulation::buildWorld() {
                           pin.a.on.c_str(), pin.b.on.c_str(), apart);
             return std::string(text);
         }
-        if (auto e = world_.combine(*a, *b))
-            return "pin between '" + pin.a.on + "' and '" + pin.b.on + "': " + e->message;
+        auto e = world_.combine(*a, *b);
+        if (!e) e = makeConsistentAfter(world_, "combine");
+        if (e) return "pin between '" + pin.a.on + "' and '" + pin.b.on + "': " + e->message;
     }
     for (const SpringSpec& s : scene_.springs) {
         const auto a = particleAt(s.a), b = particleAt(s.b);
@@ -129,16 +130,17 @@ std::optional<std::string> Simulation::buildWorld() {
         world_.addSpring({*a, *b, s.stiffness, rest, s.damping});
     }
     for (size_t i = 0; i < scene_.bodies.size(); ++i)
-        if (scene_.bodies[i].held)
+        if (scene_.bodies[i].held) {
             world_.hold(named[scene_.bodies[i].name], Drive(world_.partPose(named[scene_.bodies[i].name])));
+            makeConsistent(world_, world_.restructureTolerance, false);
+        }
     for (PartId p : blocks_) world_.setDamping(p, scene_.linearDamping, scene_.angularDamping);
 
     std::stable_sort(scene_.script.begin(), scene_.script.end(),
                      [](const ScriptAction& a, const ScriptAction& b) { return a.at < b.at; });
     nextDragSample_.assign(scene_.drags.size(), 0);
     world_.shrinkToFit();
-    PinSolver scratch;
-    makeConsistent(world_, scratch, scene_.solver.projectionTolerance);
+    makeConsistent(world_, scene_.solver.projectionTolerance);
     dynamics_.evaluate(world_, 0);
     // Force tests at t = 0 (docs/model.md section 8.7), then the books open.
     applyDueInputs();
@@ -249,6 +251,7 @@ std::vector<Event> Simulation::grab(PartId part) {
     const double before = energy(world_).total();
     const std::vector<Twist> velocities = world_.partVelocities();
     world_.hold(part, Drive(world_.partPose(part)));
+    makeConsistent(world_, world_.restructureTolerance, false);
     world_.updateKinematics(t_);
     // A neighbour locked or folded to the block that would move away from
     // it goes on: its contact would have to pull to stop it.
@@ -256,7 +259,7 @@ std::vector<Event> Simulation::grab(PartId part) {
     if (ladder_)
         released = ladder_->takeUp(world_, dynamics_, t_, velocities, "a grab's contacts");
     else
-        projectVelocities(world_, dynamics_.solver());
+        projectVelocities(world_, dynamics_);
     const double dissipated = jumpEnergy(world_, velocities);
     impactLoss_ += dissipated;
     impactHeldWork_ += energy(world_).total() - before + dissipated;
@@ -312,7 +315,7 @@ void Simulation::applyScriptAction(const ScriptAction& a) {
                 const Vec2 x = world_.pointPosition(part, local);
                 world_.v.segment<2>(3 * b) += world_.body(b).invMass * impulse;
                 world_.v[3 * b + 2] += world_.body(b).invInertia * cross(x - world_.q.segment<2>(3 * b), impulse);
-                projectVelocities(world_, dynamics_.solver());
+                projectVelocities(world_, dynamics_);
             }
             const double work = 0.5 * impulse.dot(v0 + world_.pointVelocity(part, local));
             ledger_.user += work;
@@ -369,15 +372,13 @@ std::optional<std::string> Simulation::join(const ScriptAction& a) {
     const World saved = world_;
     const Energy e0 = energy(world_);
     const std::vector<Twist> before = world_.partVelocities();
-    if (auto e = world_.combine(p, q, false)) return e->message;  // refused by the world: nothing changed
-    PinSolver solver;
+    if (auto e = world_.combine(p, q)) return e->message;  // refused by the world: nothing changed
     const double tolerance = scene_.solver.projectionTolerance;
-    const ProjectionResult pulled = projectPositions(world_, solver, tolerance);
-    projectVelocities(world_, solver);
+    const ProjectionResult pulled = makeConsistent(world_, tolerance);
     if (!pulled.converged || !(particleSpread(world_, p) <= tolerance) || !world_.q.allFinite() ||
         !world_.v.allFinite()) {
         world_ = saved;
-        dynamics_.solver().reset();
+        dynamics_.forgetStructure();
         return pulled.converged ? "the corners cannot be brought together (both blocks are held)"
                                 : "the pull onto the new pin did not converge";
     }

@@ -27,7 +27,7 @@ void Simulation::keepBeforeChange() {
 void Simulation::restore(const Snapshot& s) {
     stateOf(*this) = Snapshot::stateOf(s);
     nextDragSample_.resize(scene_.drags.size(), 0);
-    dynamics_.solver().reset();  // its caches belong to the structure it last saw
+    dynamics_.forgetStructure();  // its caches belong to the structure it last saw
     dynamics_.evaluate(world_, t_);
     liveDrag_ = -1;
     pending_.clear();

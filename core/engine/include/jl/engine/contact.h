@@ -8,7 +8,6 @@
 #pragma once
 
 #include "jl/base/geometry.h"
-#include "jl/engine/pin_solver.h"
 
 #include <Eigen/Core>
 
@@ -16,6 +15,7 @@
 
 namespace jl {
 
+class PinSolver;
 class World;
 
 // Corner `corner` of part `cornerPart` (in that part's frame) against the
@@ -64,6 +64,8 @@ struct ContactResponse {
     // `stale`: the solver's factorisation is not for w's positions yet
     // (PinSolver::prepare said so); it is after this.
     void build(const World& w, PinSolver& solver, bool stale);
+    // The same for other contacts than the world's, at its positions.
+    void build(const World& w, const std::vector<Contact>& contacts, PinSolver& solver, bool stale);
     // Solves K_S s_S = rhs_S on the subset S of contacts (mask), zero elsewhere.
     Eigen::VectorXd solve(const Eigen::VectorXd& rhs, const std::vector<char>& in) const;
     // A unilateral solve: the pushes s >= 0 with K s >= rhs, s (K s - rhs) = 0
@@ -71,5 +73,11 @@ struct ContactResponse {
     // negative first; the rest are kept).
     Eigen::VectorXd solvePushing(const Eigen::VectorXd& rhs) const;
 };
+
+// The contacts' matrix K of the world's resting contacts and `trial` after
+// them, at the world's positions: what a push at a contact not yet made
+// would move with every pin and the others active. Built in the world's
+// scratch (valid until the next use of it), the world left as it was.
+const Eigen::MatrixXd& contactMatrixWith(const World& w, const Contact& trial);
 
 }  // namespace jl

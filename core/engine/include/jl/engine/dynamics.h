@@ -4,15 +4,16 @@
 
 #include "jl/base/geometry.h"
 #include "jl/engine/contact.h"
-#include "jl/engine/pin_solver.h"
 
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace jl {
 
+class PinSolver;
 class World;
 
 // Rates of the energy ledger (W): work by held blocks and by the user's
@@ -23,6 +24,9 @@ struct Powers {
 
 class Dynamics {
 public:
+    Dynamics();
+    ~Dynamics();
+
     // Sets kinematic bodies to their path at time t, then computes w.a for
     // the dynamic bodies from w.q and w.v. Allocation-free once warmed up.
     Powers evaluate(World& w, double t) { return evaluate(w, t, t); }
@@ -39,7 +43,14 @@ public:
     const Eigen::VectorXd& contactForces() const { return contactForces_; }
     // Applied (non-constraint) forces of the last evaluation, 3 per body.
     const Eigen::VectorXd& appliedForces() const { return force_; }
-    PinSolver& solver() { return solver_; }
+    // The pin solver the evaluations and the projections share (private to
+    // the engine: core/engine/pin_solver.h).
+    PinSolver& solver() { return *solver_; }
+    // Forget what the pin solver keeps of the structure it last saw (the
+    // world was replaced, e.g. by a snapshot).
+    void forgetStructure();
+    // Every solve sparse (PinSolver::setForceSparse).
+    void setForceSparse(bool on);
     // What the last evaluation left (applied and pin forces), to put back
     // after evaluations that must leave no trace (frames read off a step).
     struct Last {
@@ -56,7 +67,7 @@ public:
 
 private:
     void addContacts(World& w, Powers& powers);
-    PinSolver solver_;
+    std::unique_ptr<PinSolver> solver_;
     Eigen::VectorXd force_, lambda_, contactForces_;
     ContactResponse contactResponse_;
     std::vector<size_t> heldPins_;        // pins with exactly one held side

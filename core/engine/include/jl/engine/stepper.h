@@ -5,6 +5,7 @@
 
 #include "jl/base/integrator.h"
 #include "jl/engine/dynamics.h"
+#include "jl/engine/fresh.h"
 #include "jl/engine/projection.h"
 
 #include <Eigen/Core>
@@ -117,7 +118,7 @@ private:
     std::uint64_t maskRevision_ = 0;             // the World::revision mask_ was made for
     std::vector<double> stiffness_;              // d(moment)/d(angle) per body, N m/rad
     std::vector<Eigen::Vector2d> stiffInverse_;  // (1/m', 1/I') per body
-    ScratchPinSolver stiff_;                     // assembled at the start of every step
+    Fresh<PinSolver> stiff_;                     // assembled at the start of every step
 };
 
 }  // namespace jl

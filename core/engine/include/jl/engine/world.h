@@ -5,7 +5,7 @@
 #include "jl/base/geometry.h"
 #include "jl/engine/contact.h"
 #include "jl/engine/drive.h"
-#include "jl/engine/pin_solver.h"
+#include "jl/engine/fresh.h"
 
 #include <Eigen/Core>
 
@@ -16,8 +16,6 @@
 #include <vector>
 
 namespace jl {
-
-struct ProjectionResult;
 
 using PartId = int;
 using ParticleId = int;
@@ -146,18 +144,19 @@ public:
     static constexpr PartId ground = 0;
 
     // ---- restructuring (the paper's combine and separate) ----
+    // They only restructure: every part keeps its pose and the momentum of
+    // its body (a merge is a plastic impact among the merged parts, a split
+    // changes no velocity). Closing the pins and making the velocities
+    // consistent is the caller's (projection.h: makeConsistentAfter, or
+    // closePinGaps before an impact's own projection), which knows what
+    // changed and how many changes come before one projection.
     // combine(p, q): q is absorbed into p. Two points of different bodies
     // become a hinge; a second shared point between the same two bodies
     // makes them one rigid body (at their current relative pose); a point
-    // part joins whatever it is combined with. Velocities are made
-    // consistent by a momentum-conserving impulse.
-    // `consistent = false` defers that (a builder joining many points calls
-    // makeConsistent once at the end instead of once per combine).
-    std::optional<WorldError> combine(ParticleId p, ParticleId q, bool consistent = true);
+    // part joins whatever it is combined with.
+    std::optional<WorldError> combine(ParticleId p, ParticleId q);
     // separate(p): undoes the last combine into p.
-    // Both also return an error, in words, if the projection after the
-    // change could not close the pins; the structure has changed then.
-    std::optional<WorldError> separate(ParticleId p, bool consistent = true);
+    std::optional<WorldError> separate(ParticleId p);
     // Many combines (or separates) as one change of structure: the parts
     // regroup once, in O(k log k) for the k parts of the bodies concerned,
     // rather than once per pair. Positions and velocities are left as they
@@ -166,10 +165,6 @@ public:
     // first: on an error nothing has changed.
     std::optional<WorldError> combine(const std::vector<std::pair<ParticleId, ParticleId>>& pairs);
     std::optional<WorldError> separate(const std::vector<ParticleId>& particles);
-    // After a combine with `consistent = false` by a caller that sets the
-    // velocities itself (an impact projects them with its own impulses):
-    // the pins closed by moving positions alone; the error as for combine.
-    std::optional<WorldError> closePinGaps(const char* operation);
     bool isLive(ParticleId p) const;
     bool validParticle(ParticleId p) const { return p >= 0 && p < int(particles_.size()); }
     bool validPart(PartId p) const { return p >= 0 && p < int(parts_.size()); }
@@ -180,7 +175,7 @@ public:
     const std::vector<PartId>& dampedParts() const { return dampedParts_; }
 
     // ---- holding ----
-    void hold(PartId part, const Drive& drive);  // the part follows the path
+    void hold(PartId part, const Drive& drive);  // the part follows the path (the caller projects)
     void release(PartId part);                   // keeps its current velocity
     // Poses, velocities and accelerations of kinematic bodies at time t
     // (right-continuous where a hand's move starts or stops), or at t along
@@ -283,19 +278,22 @@ public:
     // kept with its q, v and time still holds if they are equal.
     std::uint64_t revision() const { return revision_; }
 
-    // How closely combine, separate and hold close the pins (m): to
-    // rounding, tighter than a step's projection, so that a lock or a grab
-    // leaves no gap for the next step to see (docs/model.md section 3.4).
+    // How closely the projection after combine, separate and hold closes
+    // the pins (m): to rounding, tighter than a step's projection, so that a
+    // lock or a grab leaves no gap for the next step to see (docs/model.md
+    // section 3.4).
     double restructureTolerance = 1e-12;
+
+    // The buffers the engine's operations on this world reuse from call to
+    // call (core/engine/scratch.h): the world's own, shared with no other.
+    Scratch& scratch() const { return *scratch_; }
 
 private:
     static std::uint64_t freshRevision();
     void touch() { revision_ = freshRevision(); }
 
-    ScratchPinSolver restructure_;  // the solver a restructure closes the pins with
+    Fresh<Scratch> scratch_;
 
-    std::optional<WorldError> closePins(const char* operation);
-    static std::optional<WorldError> pinsLeftOpen(const char* operation, const ProjectionResult& r);
     std::optional<WorldError> checkParticle(ParticleId p) const;
     std::optional<WorldError> checkCombine(ParticleId p, ParticleId q) const;
     std::optional<WorldError> checkSeparate(ParticleId p) const;

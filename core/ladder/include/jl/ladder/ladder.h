@@ -4,6 +4,7 @@
 #pragma once
 
 #include "jl/engine/dynamics.h"
+#include "jl/engine/fresh.h"
 #include "jl/engine/world.h"
 #include "jl/ladder/block_contact.h"
 #include "jl/ladder/hinge_event.h"
@@ -232,6 +233,8 @@ private:
                                                             const std::vector<int>& keep = {},
                                                             bool spareHeld = false) const;
     bool wouldChatter(const World& w, double t, int j, EventKind kind, const std::vector<Twist>& before) const;
+    struct ChatterTrial;                // ladder_events.cpp
+    Fresh<ChatterTrial> chatterTrial_;  // wouldChatter's copy of the world, this ladder and dynamics
     void release(World& w, int j, EventKind kind, double t, double launchedBy = -1);
     bool noteClose(int j, double t);
     void capped(double t, const std::string& what);
@@ -275,6 +278,8 @@ private:
     // The hinges the event tests visit: 1 .. liveEnd() - 1.
     int liveEnd() const { return std::min(stillFrom_ + 1, blockCount()); }
 };
+
+extern template class Fresh<Ladder::ChatterTrial>;
 
 // The ribbons Ladder::ribbons gives, from a frame's record of the ladder
 // instead of the world: block i at poses[i], as blocks[i] (ladderBlocks)

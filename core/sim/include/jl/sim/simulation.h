@@ -108,7 +108,7 @@ public:
     // plain chain the O(N) elimination would take: so the benchmark can
     // compare the two models of a rigid pair (solver.rigid_pairs) on one solver.
     void useSparseSolver(bool on) {
-        dynamics_.solver().setForceSparse(on);
+        dynamics_.setForceSparse(on);
         keptEnd_.forget();  // the other solver may differ in the last bit
     }
 

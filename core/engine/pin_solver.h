@@ -1,5 +1,7 @@
 // The pins' equations (J W J^T) x = r: O(N) block-tridiagonal elimination
 // along chains of bodies, Eigen's sparse LDLT for branched or looped graphs.
+// Private to the engine: other parts reach it through Dynamics and the
+// projections (projection.h), which own or borrow one.
 #pragma once
 
 #include "jl/base/geometry.h"
@@ -93,6 +95,9 @@ public:
     Scratch scratch;
 
 private:
+    // A tiny diagonal shift for singular pivots (redundant pins): it picks
+    // one of the equal solutions instead of dividing by zero.
+    static constexpr double kRegularisation = 1e-12;
     struct PinRow {
         int bodyA, bodyB;
         bool dynA, dynB;  // has finite mass
@@ -153,16 +158,6 @@ private:
     Eigen::SparseMatrix<double> matrix_;
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
     bool analysed_ = false;
-};
-
-// A pin solver used as scratch (assembled afresh before each use): a copy
-// of its owner, as an event's trial run makes, starts with an empty one
-// instead of copying the factorisation (which Eigen's sparse one forbids).
-struct ScratchPinSolver {
-    PinSolver solver;
-    ScratchPinSolver() = default;
-    ScratchPinSolver(const ScratchPinSolver&) {}
-    ScratchPinSolver& operator=(const ScratchPinSolver&) { return *this; }
 };
 
 }  // namespace jl
