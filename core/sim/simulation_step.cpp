@@ -328,11 +328,13 @@ double Simulation::fixedStep() {
     // 16 x the fastest turn: a turn of at most 0.1 rad per RK4 step, where
     // RK4 loses (omega h)^6 / 72 = 1.4e-8 of a spin's energy per step
     // (docs/model.md section 6.3).
-    // Springs carry the scene's energy in their own vibration (the ladder's
-    // rocking mode holds only what rounding puts there): they are resolved
-    // like a turn, not just kept stable.
-    const double omega = std::max(fastestVibration(world_, dynamics_.pinForces()),
-                                  16 * std::max(fastestTurn(world_), fastestSpringVibration(world_)));
+    // Springs carry the scene's energy in their vibration: resolved like a
+    // turn, unless that asks for a step under the scene's floor of 1 us (then
+    // the books' check stops the run and names the spring, section 12.4).
+    const double springs = 16 * fastestSpringVibration(world_);
+    const bool resolvable = automaticStep(scene_.solver.integrator, springs, kLargestAutomaticStep) >= 1e-6;
+    const double omega = std::max(
+        {fastestVibration(world_, dynamics_.pinForces()), 16 * fastestTurn(world_), resolvable ? springs : 0.0});
     const double h = stepScale_ * automaticStep(scene_.solver.integrator, omega, kLargestAutomaticStep);
     // The adaptive methods' first try only: their steps are their own.
     if (!isAdaptive(scene_.solver.integrator)) {
