@@ -1,4 +1,4 @@
-// labels: ui
+// labels: ui;timing
 // The real-time factor in the status bar is simulated time gained per
 // second of the clock over the stretch it names (the last 2 s of playing):
 // the estimator fed known times, and the window's label against the time
