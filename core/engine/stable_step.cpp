@@ -38,7 +38,8 @@ double fastestSpringVibration(const World& w) {
     // |u|^2 = 1/m + |r|^2 / I the inverse mass a point at arm r moves with,
     // k the larger of the spring's stiffness and its tension over its
     // length (the stiffness across it), plus the tension's pull T |r| / I.
-    std::vector<double> row(size_t(w.bodyCount()), 0.0);
+    std::vector<double>& row = w.scratch().pull;  // the pins' sums are done with
+    row.assign(size_t(w.bodyCount()), 0.0);
     for (const Spring& s : springs) {
         const Vec2 xa = w.particlePosition(s.a), xb = w.particlePosition(s.b);
         const double length = (xb - xa).norm();
