@@ -47,4 +47,10 @@ inline void requireSoundRun(const Run& r, double scale) {
     QVERIFY2(c.longest <= 4, qPrintable(QString("%1 quick cycles of one hinge in a row").arg(c.longest)));
 }
 
+// An example's scene, to run at other settings than its own.
+inline Scene exampleScene(const char* name) {
+    SceneLoad load = loadScene(std::string(JL_SOURCE_DIR) + "/examples/" + name);
+    return load.scene ? *load.scene : Scene{};
+}
+
 }  // namespace jl::test

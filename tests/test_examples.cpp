@@ -2,7 +2,8 @@
 // Every example loads, has a title and a description, and runs for a second
 // without a failure, with its energy books balanced, its pins closed and no
 // hinge chattering. An example's description is a claim: each claim it makes
-// about what the engine does is checked here, at the scene's own settings.
+// about what the engine does is checked here (or in a lesson's own file,
+// tests/test_results_sequence.cpp), at the scene's own settings.
 #include "jl/reference/elliptic.h"
 #include "tests/example_claims.h"
 
@@ -19,11 +20,13 @@ using namespace jl::test;
 
 namespace {
 
-// The examples whose claims a test below checks (a new example needs one).
+// The examples whose claims a test checks (a new example needs one), below
+// or in a file of its own (pushed-down-pulled-up.yaml: test_results_sequence.cpp).
 const std::set<std::string> kClaimsChecked = {
-    "back-and-forth.yaml", "classic.yaml",   "falling-chain.yaml",         "heavy-middle.yaml",
-    "long-ladder.yaml",    "one-hinge.yaml", "particles-and-springs.yaml", "pendulum.yaml",
-    "two-ripples.yaml",    "wrong-way.yaml"};
+    "back-and-forth.yaml",        "classic.yaml",     "falling-chain.yaml",
+    "heavy-middle.yaml",          "long-ladder.yaml", "one-hinge.yaml",
+    "particles-and-springs.yaml", "pendulum.yaml",    "pushed-down-pulled-up.yaml",
+    "two-ripples.yaml",           "wrong-way.yaml"};
 
 // Runs an example to its own duration, every step.
 Run runExample(const char* name, double* scale) {
