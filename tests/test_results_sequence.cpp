@@ -225,7 +225,7 @@ private slots:
               held->lasts, s.flip2, s.flip1);
         QVERIFY(std::abs(held->at - 0.87) < 0.005 && std::abs(held->lasts - 0.37) < 0.005);
         QVERIFY(held->at + held->lasts < 1.4);  // the turn's end
-        QVERIFY(std::abs(s.flip2 - 1.60) < 0.005);
+        QVERIFY(std::abs(s.flip2 - 1.60) < 0.005 && s.flip2 > held->at + held->lasts);
     }
 };
 
