@@ -2,9 +2,10 @@
 // Every example loads, has a title and a description, and runs for a second
 // without a failure, with its energy books balanced, its pins closed and no
 // hinge chattering. An example's description is a claim: each claim it makes
-// about what the engine does is checked here, at the scene's own settings.
+// about what the engine does is checked here (or in a lesson's own file,
+// tests/test_results_sequence.cpp), at the scene's own settings.
 #include "jl/reference/elliptic.h"
-#include "tests/scene_run.h"
+#include "tests/example_claims.h"
 
 #include <QtTest>
 
@@ -19,20 +20,13 @@ using namespace jl::test;
 
 namespace {
 
-// The examples whose claims a test below checks (a new example needs one).
+// The examples whose claims a test checks (a new example needs one), below
+// or in a file of its own (pushed-down-pulled-up.yaml: test_results_sequence.cpp).
 const std::set<std::string> kClaimsChecked = {
-    "back-and-forth.yaml", "classic.yaml",   "falling-chain.yaml",         "heavy-middle.yaml",
-    "long-ladder.yaml",    "one-hinge.yaml", "particles-and-springs.yaml", "pendulum.yaml",
-    "two-ripples.yaml",    "wrong-way.yaml"};
-
-// What "small" means for the energy books of a ladder: lifting all of it
-// through its own height, m g N L (1 J for the classic ladder).
-double energyScale(const Simulation& sim) {
-    double mass = 0;
-    for (int i = 0; i < sim.blockCount(); ++i) mass += sim.world().part(sim.blockPart(i)).mass;
-    const LadderSpec* l = sim.scene().ladder ? &*sim.scene().ladder : nullptr;
-    return mass * 9.81 * (l ? l->blocks * l->block.length : 1.0);
-}
+    "back-and-forth.yaml",        "classic.yaml",     "falling-chain.yaml",
+    "heavy-middle.yaml",          "long-ladder.yaml", "one-hinge.yaml",
+    "particles-and-springs.yaml", "pendulum.yaml",    "pushed-down-pulled-up.yaml",
+    "two-ripples.yaml",           "wrong-way.yaml"};
 
 // Runs an example to its own duration, every step.
 Run runExample(const char* name, double* scale) {
@@ -42,37 +36,12 @@ Run runExample(const char* name, double* scale) {
     return runUntil(*sim, sim->scene().duration);
 }
 
-// First flip time of each hinge that flipped, by hinge; and the flips after `from`.
-std::map<int, double> firstFlips(const std::vector<Event>& events, double from = 0) {
-    std::map<int, double> first;
-    for (const Event& e : events)
-        if (e.kind == EventKind::FlipFlop && e.time >= from && !first.count(e.hinge)) first[e.hinge] = e.time;
-    return first;
-}
-
 // Hinges 1..k flipped, each after the one above: k (the ripple's reach).
 int reach(const std::map<int, double>& first) {
     int k = 0;
     double last = 0;
     while (first.count(k + 1) && first.at(k + 1) >= last) last = first.at(++k);
     return k;
-}
-
-// No failure, the books balanced to the integration error of the scene's
-// own step (RK4 at 1 ms loses up to 1.1e-4 of the scale while the heavy
-// block of heavy-middle.yaml swings near 1.82 s, no event in those steps;
-// 2.7e-7 J at 0.25 ms), the pins closed to the projection tolerance (the
-// examples keep the default, 1e-10 m) after every step and its events, and
-// no hinge chattering. At the bottom of long-ladder.yaml's 200 thin blocks
-// impacts come a fraction of a millisecond apart, and each may knock a
-// closed contact open (held ones too, docs/model.md section 8.6): a hinge
-// there goes through up to four quick cycles in a row, in two bursts.
-void requireSoundRun(const Run& r, double scale) {
-    QVERIFY2(r.failure.empty(), r.failure.c_str());
-    QVERIFY2(r.worstResidual <= 1e-10 * 1.0000001, qPrintable(QString("pin gap %1 m").arg(r.worstResidual)));
-    QVERIFY2(r.worstBalance < 2e-4 * scale, qPrintable(QString("%1 J of %2 J").arg(r.worstBalance).arg(scale)));
-    const Chatter c = chatter(r.events);
-    QVERIFY2(c.longest <= 4, qPrintable(QString("%1 quick cycles of one hinge in a row").arg(c.longest)));
 }
 
 // An example run to its own duration that must be sound; the caller returns

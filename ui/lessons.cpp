@@ -18,7 +18,7 @@ namespace {
 
 // The teaching order of docs/teaching.md; files not named here come after.
 const char* const kTeachingOrder[] = {
-    "classic",      "wrong-way",   "one-hinge", "back-and-forth",        "two-ripples",
+    "classic",      "wrong-way",   "one-hinge", "back-and-forth",        "two-ripples",  "pushed-down-pulled-up",
     "heavy-middle", "long-ladder", "pendulum",  "particles-and-springs", "falling-chain"};
 
 int rank(const QString& baseName) {
