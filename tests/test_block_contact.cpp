@@ -146,6 +146,20 @@ private slots:
         QVERIFY(p.minCoeff() > 0);
         QVERIFY(std::abs(p.sum() - m * kG) < 1e-9 * m * kG);
         QVERIFY(deepestOverlap(*sim) < 1e-9);
+        // The frame the views draw: both corners, on the faces they rest
+        // on, pushed up (block 0's corner) and down (block 2's), with the
+        // same pushes.
+        const std::vector<BlockContactFrame> marks = sim->frame().blockContacts;
+        QCOMPARE(int(marks.size()), 2);
+        for (size_t i = 0; i < marks.size(); ++i) {
+            const BlockContactFrame& c = marks[i];
+            QVERIFY((c.block == 0 && c.other == 2) || (c.block == 2 && c.other == 0));
+            const Vec2 corner = ladder.cornerWorld(sim->world(), c.block, c.corner);
+            QVERIFY((c.point - corner).norm() < 1e-12);
+            QVERIFY(std::abs(std::abs(c.normal.y()) - 1) < 1e-9);
+            QVERIFY(c.normal.y() * (c.block == 0 ? 1 : -1) > 0);
+            QVERIFY(std::abs(c.push - p[Eigen::Index(i)]) < 1e-12);
+        }
     }
 
     // A push at t = 0 sets block 0 spinning as it falls: one corner lands

@@ -5,6 +5,7 @@
 #include "jl/scene/ladder_blocks.h"
 #include "ui/events_panel.h"
 #include "ui/round_length.h"
+#include "ui/side_view_ink.h"
 
 #include <QKeyEvent>
 #include <QMouseEvent>
@@ -23,9 +24,9 @@ namespace {
 
 const QColor kBackground(252, 252, 249);
 const QColor kGrid(232, 232, 226);
-const QColor kInk(40, 40, 46);
-const QColor kCornerInk(90, 40, 120);  // corner numbers: apart from block numbers at a glance
-const QColor kEventRing(200, 30, 30);  // round the hinge of an event at the instant on screen
+const QColor kCornerInk(90, 40, 120);     // corner numbers: apart from block numbers at a glance
+const QColor kEventRing(200, 30, 30);     // round the hinge of an event at the instant on screen
+const QColor kContactMark(170, 20, 150);  // a corner resting on a face: none of the hinges' colours
 
 // Text with a pale halo, readable on wood, ribbon and background alike.
 void haloText(QPainter& p, const QPointF& centre, const QString& text, const QColor& ink) {
@@ -67,7 +68,7 @@ QColor hingeColor(jl::HingeMode mode) {
         case jl::HingeMode::Cut:
             return {150, 150, 150};
     }
-    return kInk;
+    return kSideInk;
 }
 
 // Plane (m, y up) to picture (pixels, y down): one scale for both axes, centred.
@@ -402,14 +403,14 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
             const QPolygonF poly({map(c[0]), map(c[1]), map(c[3]), map(c[2])});
             const QColor wood = shapes_[size_t(i)].color;
             const bool held = i < int(frame_->held.size()) && frame_->held[size_t(i)];
-            p.setPen(QPen(held ? kInk : wood.darker(170), (held ? 2.2 : 1.1) * ui, Qt::SolidLine, Qt::SquareCap,
+            p.setPen(QPen(held ? kSideInk : wood.darker(170), (held ? 2.2 : 1.1) * ui, Qt::SolidLine, Qt::SquareCap,
                           Qt::MiterJoin));
             p.setBrush(wood);
             p.drawPolygon(poly);
         }
     }
     for (int i = firstParticle_; i < n; ++i) {
-        p.setPen(QPen(kInk, 1 * ui));
+        p.setPen(QPen(kSideInk, 1 * ui));
         p.setBrush(shapes_[size_t(i)].color);
         p.drawEllipse(map(frame_->poses[size_t(i)].position), 4.5 * ui, 4.5 * ui);
     }
@@ -440,8 +441,8 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
     // Two corner numbers sit side by side across a block: their size follows the thickness.
     const double cornerFont = std::min(9.5 * ui, thicknessPixels * 0.42);
     if (options_.orientation && blockPixels > 24) {
-        p.setPen(QPen(kInk, 1.4 * ui));
-        p.setBrush(kInk);
+        p.setPen(QPen(kSideInk, 1.4 * ui));
+        p.setBrush(kSideInk);
         for (int i = 0; i < std::min(n, int(cornerLocal_.size())); ++i) {
             const auto c = corners(i);
             const jl::Vec2 centre = frame_->poses[size_t(i)].position;
@@ -480,7 +481,7 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
             const QPointF at = map(frame_->poses[size_t(i)].position);
             // Beside the arrow when both are asked for.
             const QPointF shift = options_.orientation ? QPointF(0, -bold.pixelSize() * 0.9) : QPointF();
-            haloText(p, at + shift, QString::number(i), kInk);
+            haloText(p, at + shift, QString::number(i), kSideInk);
         }
     }
 
@@ -498,6 +499,17 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
         p.setPen(QPen(kEventRing, 2.5 * ui));
         p.setBrush(Qt::NoBrush);
         p.drawEllipse(map(frame_->hinges[size_t(j - 1)].position), r + 5 * ui, r + 5 * ui);
+    }
+    // A corner resting on another block's face: a wedge on the face,
+    // pointing the way the face pushes, so that a class sees what holds a
+    // block up where no hinge does.
+    for (const jl::BlockContactFrame& c : frame_->blockContacts) {
+        const QPointF at = map(c.point);
+        const QPointF n(c.normal.x(), -c.normal.y()), t(-n.y(), n.x());
+        const double size = std::max(4.0, r * 1.2);
+        p.setPen(QPen(Qt::white, 1.2 * ui));
+        p.setBrush(kContactMark);
+        p.drawPolygon(QPolygonF({at, at - n * size + t * size * 0.6, at - n * size - t * size * 0.6}));
     }
     // Blocks too thin on screen for a number at each corner (a whole ladder
     // in a small view): each hinge says at which corner k its blocks meet.
@@ -520,7 +532,7 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
     const QFontMetricsF m(font);
     const double pad = 8 * ui;
     if (options_.clock) {
-        p.setPen(kInk);
+        p.setPen(kSideInk);
         p.drawText(QPointF(target.left() + pad, target.top() + pad + m.ascent()),
                    tr("t = %1 s").arg(frame_->time, 0, 'f', 3));
         // At an event's instant (N, or a click on it), what happened there:
@@ -536,60 +548,12 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
                               target.height() / 3);
             const QRectF used = p.boundingRect(room, Qt::TextWordWrap, happened.join('\n'));
             p.fillRect(used.adjusted(-3 * ui, -2 * ui, 3 * ui, 2 * ui), QColor(255, 255, 255, 140));
-            p.setPen(kInk);
+            p.setPen(kSideInk);
             p.drawText(room, Qt::TextWordWrap, happened.join('\n'));
             p.setFont(font);
         }
     }
-    // The scale bar: one grid cell, above the legend's row.
-    {
-        const bool legendRow = options_.legend && !frame_->hinges.empty();
-        const QPointF a(target.left() + pad, target.bottom() - pad - (legendRow ? m.height() * 1.4 : 0));
-        const QPointF b = a + QPointF(cell * map.scale, 0);
-        p.setPen(QPen(kInk, 1.5 * ui));
-        p.drawLine(a, b);
-        p.drawLine(a, a - QPointF(0, 4 * ui));
-        p.drawLine(b, b - QPointF(0, 4 * ui));
-        // Its length right of it, or above its left end where the view is too narrow for that.
-        const QString label = lengthText(cell);
-        const QPointF at = b.x() + 4 * ui + m.horizontalAdvance(label) <= target.right() - pad
-                               ? QPointF(b.x() + 4 * ui, a.y())
-                               : QPointF(a.x(), a.y() - 6 * ui);
-        p.drawText(at, label);
-        scaleLabel_ = QRectF(at.x(), at.y() - m.ascent(), m.horizontalAdvance(label), m.height());
-    }
-    // The legend: one row at the bottom right, clear of the ladder (the
-    // drawing keeps out of the top and bottom bands).
-    if (options_.legend && !frame_->hinges.empty()) {
-        const std::pair<jl::HingeMode, QString> items[] = {{jl::HingeMode::Free, tr("free")},
-                                                           {jl::HingeMode::OpenLocked, tr("locked open")},
-                                                           {jl::HingeMode::Folded, tr("folded")}};
-        // Narrower than the row: smaller type, never cut.
-        double fit = 1.0;
-        {
-            double width = 0;
-            for (const auto& [mode, text] : items) width += (12 + 4 + 10) * ui + m.horizontalAdvance(text);
-            fit = std::min(1.0, (target.width() - 2 * pad) / std::max(1.0, width - 10 * ui));
-        }
-        QFont small = font;
-        small.setPixelSize(std::max(6, int(std::lround(font.pixelSize() * fit))));
-        p.setFont(small);
-        const QFontMetricsF ms(small);
-        const double dot = 6 * ui * fit, gap = 10 * ui * fit, space = 4 * ui * fit;
-        double width = 0;
-        for (const auto& [mode, text] : items) width += 2 * dot + space + ms.horizontalAdvance(text) + gap;
-        double x = target.right() - pad - width + gap;
-        const double y = target.bottom() - pad - m.height() / 2;
-        for (const auto& [mode, text] : items) {
-            p.setPen(QPen(Qt::white, 1.2 * ui));
-            p.setBrush(hingeColor(mode));
-            p.drawEllipse(QPointF(x + dot, y), dot, dot);
-            p.setPen(kInk);
-            p.drawText(QPointF(x + 2 * dot + space, y + ms.ascent() / 2 - ms.descent() / 2), text);
-            x += 2 * dot + space + ms.horizontalAdvance(text) + gap;
-        }
-        p.setFont(font);
-    }
+    paintScaleAndLegend(p, target, cell * map.scale, cell, ui);
     p.restore();
 }
 

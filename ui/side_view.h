@@ -97,6 +97,9 @@ private:
     QRectF plotArea(const QRectF& target, double ui) const;
     double uiScale(const QRectF& target) const;
     double metresOf(double pixels) const;  // on screen now
+    // One grid cell as a bar at the bottom left (`cell` m, `cellPixels`
+    // long), and the hinge modes' legend at the bottom right.
+    void paintScaleAndLegend(QPainter& p, const QRectF& target, double cellPixels, double cell, double ui) const;
     void give(std::optional<GivenAction> given);
 
     std::vector<BlockShape> shapes_;

@@ -336,6 +336,19 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
     return events;
 }
 
+std::vector<BlockContactFrame> BlockContacts::frames(const World& w, const Dynamics& d) const {
+    std::vector<BlockContactFrame> out;
+    const Eigen::VectorXd& push = d.contactForces();
+    for (size_t i = 0; i < touches_.size() && i < w.contacts().size(); ++i) {
+        const Contact& c = w.contacts()[i];
+        const Touch& t = touches_[i];
+        const double s = Eigen::Index(i) < push.size() ? push[Eigen::Index(i)] : 0.0;
+        out.push_back(
+            {t.block, t.corner, t.other, w.pointPosition(c.cornerPart, c.corner), contactRow(w, c).normal, s});
+    }
+    return out;
+}
+
 bool BlockContacts::holdsAny() const {
     return std::any_of(touches_.begin(), touches_.end(), [](const Touch& c) { return c.held; });
 }

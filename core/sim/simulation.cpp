@@ -515,6 +515,7 @@ Frame Simulation::frame() {
     if (ladder_) {
         f.hinges = ladder_->hingeFrames(world_);
         if (ribbonsInFrames_) f.ribbons = ladder_->ribbons(world_);
+        f.blockContacts = ladder_->blockContacts().frames(world_, dynamics_);
     }
     const Energy e = energy(world_);
     f.energy.kinetic = e.kinetic;

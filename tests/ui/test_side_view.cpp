@@ -286,6 +286,42 @@ private slots:
         }
     }
 
+    // A corner resting on another block's face is marked there: the
+    // turned-the-wrong-way lesson with contact between blocks on, where
+    // block 3's corner rests on block 0's side from 0.851 s.
+    void aCornerRestingOnAFaceIsMarked() {
+        jl::Scene scene = loadExample("wrong-way.yaml");
+        scene.solver.blockContact = jl::BlockContact::On;
+        const Run run = runHeadless(scene, 0.88);
+        const jl::Frame& f = run.frames.back();
+        QVERIFY(!f.blockContacts.empty());
+        const jl::BlockContactFrame& c = f.blockContacts.front();
+        QVERIFY2(c.block == 3 && c.other == 0, qPrintable(QString("block %1 on block %2").arg(c.block).arg(c.other)));
+        SideView view;
+        view.setScene(scene);
+        view.showFrame(f);
+        const QSize size(600, 800);
+        const QRectF target(QPointF(0, 0), QSizeF(size));
+        const QImage marked = view.render(size);
+        jl::Frame bare = f;
+        bare.blockContacts.clear();
+        view.showFrame(bare);
+        const QImage plain = view.render(size);
+        // Pixels of the mark's colour within 12 px of the corner, with the
+        // mark and without.
+        const QPointF at = view.pixelOf(c.point, target);
+        const auto count = [&](const QImage& image) {
+            int n = 0;
+            for (int y = int(at.y()) - 12; y <= int(at.y()) + 12; ++y)
+                for (int x = int(at.x()) - 12; x <= int(at.x()) + 12; ++x)
+                    if (image.rect().contains(x, y) && near(image.pixelColor(x, y), QColor(170, 20, 150), 30)) ++n;
+            return n;
+        };
+        qInfo("mark pixels near the corner: %d with the contact, %d without", count(marked), count(plain));
+        QVERIFY(count(marked) >= 10);
+        QCOMPARE(count(plain), 0);
+    }
+
     void theSideViewLegendFitsANarrowView() {
         ClassicAtRest c;
         SideView& view = c.view;

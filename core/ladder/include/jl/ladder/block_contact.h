@@ -110,6 +110,9 @@ public:
         bool operator==(const Touch&) const = default;
     };
     const std::vector<Touch>& touches() const { return touches_; }
+    // The resting contacts as the views draw them (pushes from the last
+    // evaluation of the dynamics).
+    std::vector<BlockContactFrame> frames(const World& w, const Dynamics& d) const;
     // How many pairs and corners the broad phase passed on at the last refresh.
     int pairCount() const { return pairCount_; }
 

@@ -35,6 +35,16 @@ struct HingeFrame {
     Vec2 position = Vec2::Zero();  // m, the hinge point in the plane
 };
 
+// A corner of one block resting on a face of another that is not its
+// neighbour (docs/model.md section 17), for the views: where, which way the
+// face pushes the corner, and how hard.
+struct BlockContactFrame {
+    int block = 0, corner = 0, other = 0;  // corner `corner` of `block` on a face of `other`
+    Vec2 point = Vec2::Zero();             // m, the corner
+    Vec2 normal = Vec2::Zero();            // the face's outward normal: the push on the corner's block
+    double push = 0;                       // N
+};
+
 // A ribbon drawn over the block faces: a polyline in the ladder's plane,
 // drawn across the width at the outer pair's two places or at the middle.
 struct RibbonFrame {

@@ -55,6 +55,7 @@ struct Frame {
     std::vector<bool> held;   // per block
     std::vector<HingeFrame> hinges;  // ladder: hinges[j-1] is hinge j
     std::vector<RibbonFrame> ribbons;
+    std::vector<BlockContactFrame> blockContacts;  // ladder: corners resting on faces of other blocks
     EnergyFrame energy;
     SolverFrame solver;
     std::vector<Event> events;  // since the previous frame
