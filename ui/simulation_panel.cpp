@@ -31,35 +31,22 @@ SimulationPanel::SimulationPanel(Document* doc, QWidget* parent) : QWidget(paren
     form_ = new ValueForm(doc, solverNumberFields(), this);
     box->addWidget(form_);
 
-    integrator_ = new QComboBox(this);
-    integrator_->setObjectName("integrator");
-    addWords<jl::Integrator>(integrator_, jl::kIntegrators);
-    const QString integratorTip =
-        tr("How the motion is integrated between events; the adaptive one follows the tolerance.");
-    integrator_->setToolTip(integratorTip);
-    auto* il = new QLabel(tr("Integrator"));
-    il->setToolTip(integratorTip);
-    form_->layout()->insertRow(0, il, integrator_);
-    connect(integrator_, &QComboBox::activated, this, [this](int i) {
-        jl::SolverSpec s = doc_->scene().solver;
-        s.integrator = jl::Integrator(integrator_->itemData(i).toInt());
-        changeScene(doc_, solverField("integrator"), s, tr("Change integrator"));
-    });
-
-    events_ = new QComboBox(this);
+    integrator_ = addChoice<jl::Integrator>(
+        jl::kIntegrators, &jl::SolverSpec::integrator, "integrator", tr("Integrator"),
+        tr("How the motion is integrated between events; the adaptive one follows the tolerance."),
+        tr("Change integrator"), true);
+    events_ = addChoice<jl::EventPolicy>(
+        jl::kEventPolicies, &jl::SolverSpec::events, "events", tr("Events"),
+        tr("Where locks, folds and flips happen: at their exact time, or after the step that crossed "
+           "them."),
+        tr("Change event policy"));
     events_->setObjectName("eventPolicy");
-    addWords<jl::EventPolicy>(events_, jl::kEventPolicies);
-    const QString eventsTip =
-        tr("Where locks, folds and flips happen: at their exact time, or after the step that crossed them.");
-    events_->setToolTip(eventsTip);
-    auto* el = new QLabel(tr("Events"));
-    el->setToolTip(eventsTip);
-    form_->layout()->addRow(el, events_);
-    connect(events_, &QComboBox::activated, this, [this](int i) {
-        jl::SolverSpec s = doc_->scene().solver;
-        s.events = jl::EventPolicy(events_->itemData(i).toInt());
-        changeScene(doc_, solverField("events"), s, tr("Change event policy"));
-    });
+    blockContact_ = addChoice<jl::BlockContact>(
+        jl::kBlockContacts, &jl::SolverSpec::blockContact, "block_contact", tr("Blocks touch"),
+        tr("Whether blocks that are not neighbours push each other apart (a corner strikes "
+           "and rests on a face) or pass through one another, as in the paper's model."),
+        tr("Change block contact"));
+    blockContact_->setObjectName("blockContact");
     // Not part of the scene: how much of this computer's memory the timeline may use.
     history_ = new QSpinBox(this);
     history_->setObjectName("historyMegabytes");
@@ -79,6 +66,29 @@ SimulationPanel::SimulationPanel(Document* doc, QWidget* parent) : QWidget(paren
     refresh();
 }
 
+// A choice of the solver's (a row of the scene files' table), as a box in
+// the form: each change one undoable edit of the scene.
+template <class E>
+QComboBox* SimulationPanel::addChoice(std::span<const jl::Word<E>> words, E jl::SolverSpec::*member, const char* key,
+                                      const QString& label, const QString& tip, const QString& undo, bool first) {
+    auto* box = new QComboBox(this);
+    box->setObjectName(key);
+    addWords<E>(box, words);
+    box->setToolTip(tip);
+    auto* l = new QLabel(label);
+    l->setToolTip(tip);
+    if (first)
+        form_->layout()->insertRow(0, l, box);
+    else
+        form_->layout()->addRow(l, box);
+    connect(box, &QComboBox::activated, this, [this, box, member, key, undo](int i) {
+        jl::SolverSpec s = doc_->scene().solver;
+        s.*member = E(box->itemData(i).toInt());
+        changeScene(doc_, solverField(key), s, undo);
+    });
+    return box;
+}
+
 void SimulationPanel::setHistoryMegabytes(int mb) {
     const QSignalBlocker block(history_);
     history_->setValue(mb);
@@ -86,9 +96,11 @@ void SimulationPanel::setHistoryMegabytes(int mb) {
 
 void SimulationPanel::refresh() {
     form_->refresh();
-    const QSignalBlocker b1(integrator_), b2(events_);
-    integrator_->setCurrentIndex(integrator_->findData(int(doc_->scene().solver.integrator)));
-    events_->setCurrentIndex(events_->findData(int(doc_->scene().solver.events)));
+    const QSignalBlocker b1(integrator_), b2(events_), b3(blockContact_);
+    const jl::SolverSpec& s = doc_->scene().solver;
+    integrator_->setCurrentIndex(integrator_->findData(int(s.integrator)));
+    events_->setCurrentIndex(events_->findData(int(s.events)));
+    blockContact_->setCurrentIndex(blockContact_->findData(int(s.blockContact)));
 }
 
 }  // namespace jl::ui

@@ -1,6 +1,7 @@
 // The Simulation dock: integrator, steps, tolerances and the event policy.
 #pragma once
 
+#include "jl/scene/scene_fields.h"
 #include "ui/document.h"
 
 #include <QWidget>
@@ -24,10 +25,15 @@ signals:
     void historyMegabytesChanged(int mb);
 
 private:
+    template <class E>
+    QComboBox* addChoice(std::span<const jl::Word<E>> words, E jl::SolverSpec::*member, const char* key,
+                         const QString& label, const QString& tip, const QString& undo, bool first = false);
+
     Document* doc_;
     ValueForm* form_;
     QComboBox* integrator_;
     QComboBox* events_;
+    QComboBox* blockContact_;
     QSpinBox* history_;
 };
 
