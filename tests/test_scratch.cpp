@@ -2,47 +2,13 @@
 // The engine's scratch (core/engine/scratch.h) belongs to a world: a run
 // leaves none of it behind on its thread once the simulation is gone, and
 // steps at a steady state allocate no more as the run goes on. Counted by
-// replacing the global operator new and delete for this executable.
+// replacing the global operator new and delete (tests/counting_new.h).
+#include "tests/counting_new.h"
 #include "tests/scene_run.h"
 
 #include <QtTest>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
 #include <thread>
-
-namespace {
-
-std::atomic<long long> allocations{0}, releases{0};
-
-long long live() { return allocations.load() - releases.load(); }
-
-}  // namespace
-
-void* operator new(std::size_t size) {
-    ++allocations;
-    if (void* p = std::malloc(size ? size : 1)) return p;
-    throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) { return operator new(size); }
-void operator delete(void* p) noexcept {
-    if (!p) return;
-    ++releases;
-    std::free(p);
-}
-void operator delete[](void* p) noexcept { operator delete(p); }
-void operator delete(void* p, std::size_t) noexcept { operator delete(p); }
-void operator delete[](void* p, std::size_t) noexcept { operator delete(p); }
-// The nothrow forms too (std::stable_sort's buffer takes one): left to the
-// runtime, a sanitizer's own new would meet this file's free.
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-    ++allocations;
-    return std::malloc(size ? size : 1);
-}
-void* operator new[](std::size_t size, const std::nothrow_t& tag) noexcept { return operator new(size, tag); }
-void operator delete(void* p, const std::nothrow_t&) noexcept { operator delete(p); }
-void operator delete[](void* p, const std::nothrow_t&) noexcept { operator delete(p); }
 
 using namespace jl;
 using namespace jl::test;

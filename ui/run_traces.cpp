@@ -36,43 +36,50 @@ QString traceName(EnergyTrace t) {
 void RunTraces::clear() {
     time_.clear();
     for (auto& e : energy_) e.clear();
-    fold_.clear();
-    angle_.clear();
+    rows_.clear();
+    hinges_ = blocks_ = 0;
 }
 
 void RunTraces::truncateAfter(double t) {
     const auto keep = size_t(std::upper_bound(time_.begin(), time_.end(), t) - time_.begin());
     time_.resize(keep);
     for (auto& e : energy_) e.resize(keep);
-    for (auto& f : fold_) f.resize(keep);
-    for (auto& a : angle_) a.resize(keep);
+    rows_.resize(keep);
 }
 
 void RunTraces::append(const jl::Frame& frame) {
     // Another scene (a different number of blocks) starts afresh.
-    if (!time_.empty() && frame.poses.size() != angle_.size()) clear();
+    if (!time_.empty() && int(frame.poses.size()) != blocks_) clear();
     if (!time_.empty() && frame.time <= time_.back()) truncateAfter(std::nextafter(frame.time, -1e300));
     if (time_.empty()) {
-        fold_.assign(frame.hinges.size(), {});
-        angle_.assign(frame.poses.size(), {});
+        hinges_ = int(frame.hinges.size());
+        blocks_ = int(frame.poses.size());
     }
     time_.push_back(frame.time);
     const jl::EnergyFrame& e = frame.energy;
     const double values[] = {e.kinetic,     e.potential, e.total(),  e.impactLoss,
                              e.dampingLoss, e.heldWork,  e.userWork, e.balance()};
     for (size_t i = 0; i < energy_.size(); ++i) energy_[i].push_back(values[i]);
-    for (size_t j = 0; j < fold_.size(); ++j)
-        fold_[j].push_back(j < frame.hinges.size() ? frame.hinges[j].foldAngle
-                                                   : std::numeric_limits<double>::quiet_NaN());
-    for (size_t i = 0; i < angle_.size(); ++i) {
+    const auto hinges = size_t(hinges_);
+    const bool first = rows_.empty();
+    std::vector<double>& row = rows_.emplace_back(hinges + size_t(blocks_));
+    const double* before = first ? nullptr : rows_[rows_.size() - 2].data() + hinges;
+    for (size_t j = 0; j < hinges; ++j)
+        row[j] = j < frame.hinges.size() ? frame.hinges[j].foldAngle : std::numeric_limits<double>::quiet_NaN();
+    double* angle = row.data() + hinges;
+    for (size_t i = 0; i < size_t(blocks_); ++i) {
         double a = frame.poses[i].angle;
         // Keep the curve continuous: a block turning past pi is not a jump.
-        if (angle_[i].size() > 0) {
-            const double before = angle_[i].back();
-            a += 2 * std::numbers::pi * std::round((before - a) / (2 * std::numbers::pi));
-        }
-        angle_[i].push_back(a);
+        if (before) a += 2 * std::numbers::pi * std::round((before[i] - a) / (2 * std::numbers::pi));
+        angle[i] = a;
     }
+}
+
+std::vector<double> RunTraces::column(size_t k) const {
+    std::vector<double> out;
+    out.reserve(rows_.size());
+    for (const std::vector<double>& row : rows_) out.push_back(row[k]);
+    return out;
 }
 
 void RunTraces::setHistory(const std::vector<jl::Frame>& frames) {
@@ -81,7 +88,7 @@ void RunTraces::setHistory(const std::vector<jl::Frame>& frames) {
 }
 
 std::vector<double> RunTraces::angularSpeed(int block) const {
-    const std::vector<double>& a = angle_[size_t(block)];
+    const std::vector<double> a = angle(block);
     std::vector<double> w(a.size(), 0.0);
     for (size_t s = 1; s < a.size(); ++s) {
         const double dt = time_[s] - time_[s - 1];

@@ -30,12 +30,12 @@ public:
     double endTime() const { return time_.empty() ? 0 : time_.back(); }
     const std::vector<double>& time() const { return time_; }
     const std::vector<double>& energy(EnergyTrace t) const { return energy_[size_t(t)]; }
-    int hingeCount() const { return int(fold_.size()); }  // hinge j is fold(j)
-    int blockCount() const { return int(angle_.size()); }
-    // phi of hinge j (1..N-1), rad; NaN where the hinge did not exist yet.
-    const std::vector<double>& fold(int hinge) const { return fold_[size_t(hinge - 1)]; }
-    // Angle of block i, rad, unwrapped (continuous across +-pi).
-    const std::vector<double>& angle(int block) const { return angle_[size_t(block)]; }
+    int hingeCount() const { return hinges_; }  // hinge j is fold(j)
+    int blockCount() const { return blocks_; }
+    // phi of hinge j (1..N-1) at each sample, rad; NaN where the hinge did not exist yet.
+    std::vector<double> fold(int hinge) const { return column(size_t(hinge - 1)); }
+    // Angle of block i at each sample, rad, unwrapped (continuous across +-pi).
+    std::vector<double> angle(int block) const { return column(size_t(hinges_ + block)); }
     // d theta / dt of block i over the frame interval ending at each sample
     // (frames carry poses, not velocities; the first sample is 0).
     std::vector<double> angularSpeed(int block) const;
@@ -43,10 +43,17 @@ public:
     int sampleAt(double t) const;
 
 private:
+    // Entry k of every sample's row, in time order.
+    std::vector<double> column(size_t k) const;
+
     std::vector<double> time_;
     std::vector<std::vector<double>> energy_ = std::vector<std::vector<double>>(size_t(EnergyTrace::Count));
-    std::vector<std::vector<double>> fold_;
-    std::vector<std::vector<double>> angle_;
+    // One row a sample: the hinges' folds, then the blocks' angles. A
+    // curve a hinge or block took 20,000 appends a frame on a 10,000-block
+    // ladder, each vector growing on its own (a sixth of the UI thread's
+    // time while it played); the plots read a few of them a few times a second.
+    int hinges_ = 0, blocks_ = 0;
+    std::vector<std::vector<double>> rows_;
 };
 
 // At most 4 points per bucket: the first, the lowest, the highest and the

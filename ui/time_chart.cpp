@@ -10,10 +10,13 @@
 #include <QLegendMarker>
 #include <QLineSeries>
 #include <QMouseEvent>
+#include <QPaintEvent>
+#include <QPainter>
 #include <QValueAxis>
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace jl::ui {
 
@@ -137,7 +140,11 @@ void TimeChart::setCursorTime(double t) {
     const QRect view = viewport()->rect();
     const int pad = large_ ? 4 : 3;
     for (double x : {paintedCursorX_, viewPointOf(t, 0).x()})
-        if (std::isfinite(x)) viewport()->update(QRect(int(x) - pad, view.top(), 2 * pad + 1, view.height()));
+        if (std::isfinite(x)) {
+            const QRect strip(int(x) - pad, view.top(), 2 * pad + 1, view.height());
+            cursorStrips_ += strip;
+            viewport()->update(strip);
+        }
     cursor_ = t;
 }
 
@@ -236,9 +243,17 @@ void TimeChart::drawForeground(QPainter* painter, const QRectF& rect) {
             painter->fillRect(QRectF(x, plot.top(), large_ ? 2.0 : 1.0, plot.height()), c);
         }
     }
+    painter->restore();
+    if (!drawingPicture_) drawCursor(painter);
+}
+
+void TimeChart::drawCursor(QPainter* painter) {
+    const QRectF plot = chart()->mapToScene(chart()->plotArea()).boundingRect();
+    const double t0 = timeAxis_->min(), t1 = timeAxis_->max();
+    painter->save();
     painter->setRenderHint(QPainter::Antialiasing);
     if (cursor_ >= t0 && cursor_ <= t1) {
-        const double x = xOf(cursor_);
+        const double x = plot.left() + plot.width() * (cursor_ - t0) / (t1 - t0);
         paintedCursorX_ = mapFromScene(QPointF(x, plot.top())).x();
         painter->setPen(QPen(QColor(200, 30, 30), large_ ? 3.0 : 1.6));
         painter->drawLine(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
@@ -246,6 +261,29 @@ void TimeChart::drawForeground(QPainter* painter, const QRectF& rect) {
         paintedCursorX_ = std::numeric_limits<double>::quiet_NaN();
     }
     painter->restore();
+}
+
+void TimeChart::paintEvent(QPaintEvent* e) {
+    const QRegion strips = std::exchange(cursorStrips_, QRegion());
+    const qreal ratio = viewport()->devicePixelRatioF();
+    const QSize pixels = viewport()->size() * ratio;
+    // Anything but the cursor's strips (the curves, the axes, the marks, a
+    // resize, an expose) draws the picture again, whole.
+    if (picture_.size() != pixels || !e->region().subtracted(strips).isEmpty()) {
+        picture_ = QPixmap(pixels);
+        picture_.setDevicePixelRatio(ratio);
+        picture_.fill(viewport()->palette().color(viewport()->backgroundRole()));
+        QPainter p(&picture_);
+        p.setRenderHints(renderHints());
+        drawingPicture_ = true;
+        render(&p, QRectF(viewport()->rect()), viewport()->rect());
+        drawingPicture_ = false;
+    }
+    QPainter p(viewport());
+    p.setClipRegion(e->region());
+    p.drawPixmap(0, 0, picture_);
+    p.setTransform(viewportTransform());
+    drawCursor(&p);
 }
 
 void TimeChart::seekAt(const QPointF& viewPoint) {

@@ -6,7 +6,9 @@
 
 #include <QChartView>
 #include <QFont>
+#include <QPixmap>
 #include <QPointF>
+#include <QRegion>
 
 #include <limits>
 #include <memory>
@@ -57,6 +59,7 @@ signals:
 
 protected:
     void drawForeground(QPainter* painter, const QRectF& rect) override;
+    void paintEvent(QPaintEvent* e) override;
     void mousePressEvent(QMouseEvent* e) override;
     void mouseMoveEvent(QMouseEvent* e) override;
     void resizeEvent(QResizeEvent* e) override;
@@ -64,6 +67,8 @@ protected:
 private:
     static constexpr QSize kMinimumSize{0, 120};  // a chart still readable in a low dock
     void seekAt(const QPointF& viewPoint);
+    // The cursor, painted over the scene (painter in scene coordinates).
+    void drawCursor(QPainter* painter);
 
     QValueAxis* timeAxis_;
     QValueAxis* valueAxis_;
@@ -77,6 +82,14 @@ private:
         QFont title, legend, labels, axisTitle;
     } fonts_;  // the theme's, scaled in presentation mode
     std::shared_ptr<const std::vector<jl::Event>> events_;
+    // The chart as last drawn whole, without the cursor: a repaint of the
+    // strips the cursor left and entered alone is copied from it. Drawn
+    // again, the scene strokes every curve in full whatever the strip
+    // (clipping comes after the stroke): 60 times a second, that was a
+    // third of the UI thread's time while a 1,000-block ladder played.
+    QPixmap picture_;
+    QRegion cursorStrips_;  // asked for by setCursorTime since the last paint
+    bool drawingPicture_ = false;
 };
 
 }  // namespace jl::ui

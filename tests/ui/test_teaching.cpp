@@ -14,6 +14,7 @@
 
 #include <QApplication>
 #include <QDir>
+#include <QGraphicsRectItem>
 #include <QLineSeries>
 #include <QListWidget>
 #include <QMouseEvent>
@@ -135,6 +136,54 @@ private slots:
             ++compared;
         }
         QCOMPARE(compared, 30);
+    }
+
+    // The cursor moves at every frame a run plays; the curves change a few
+    // times a second. A move of the cursor alone must not draw the scene
+    // again (each curve is stroked whole whatever the strip repainted).
+    void movingTheCursorAloneDrawsNoCurveAgain() {
+        TimeChart chart("Angular speeds", "rad/s");
+        QLineSeries* curve = chart.addCurve("block 1", QColor(255, 127, 14));
+        chart.resize(480, 230);
+        chart.setTimeRange(0, 5);
+        std::vector<QPointF> points;
+        for (int i = 0; i <= 400; ++i) points.emplace_back(0.0125 * i, std::sin(0.5 * i));
+        chart.setPoints(curve, points);
+        chart.fitValues(1);
+        // An item of the scene over the whole chart, drawn whenever the scene
+        // under any part of it is (as the curves are).
+        struct Counted : QGraphicsRectItem {
+            using QGraphicsRectItem::QGraphicsRectItem;
+            int paints = 0;
+            void paint(QPainter*, const QStyleOptionGraphicsItem*, QWidget*) override { ++paints; }
+        };
+        auto* counted = new Counted(QRectF(-2000, -2000, 4000, 4000));
+        chart.scene()->addItem(counted);
+        chart.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&chart));
+        QTest::qWait(50);
+        const int before = counted->paints;
+        for (int i = 1; i <= 30; ++i) {
+            chart.setCursorTime(0.1 * i);
+            QTest::qWait(5);
+        }
+        QTest::qWait(50);
+        qInfo("the scene was drawn %d times for 30 moves of the cursor", counted->paints - before);
+        QCOMPARE(counted->paints, before);
+        // Where the cursor is now, red; where it was, the chart again.
+        const QImage shown = chart.viewport()->grab().toImage();
+        const QPointF at = chart.viewPointOf(3.0, 0);
+        QColor cursor = Qt::white;  // the reddest pixel across the line (antialiased)
+        for (int dx = -1; dx <= 1; ++dx) {
+            const QColor c = shown.pixelColor(int(at.x()) + dx, int(at.y()));
+            if (c.red() - c.green() > cursor.red() - cursor.green()) cursor = c;
+        }
+        QVERIFY2(cursor.red() > 150 && cursor.green() < 100, qPrintable(cursor.name()));
+        // A change of the curves draws the scene again.
+        points.back().setY(2);
+        chart.setPoints(curve, points);
+        QTest::qWait(50);
+        QVERIFY(counted->paints > before);
     }
 
     void decimationKeepsEveryPeakOfALongRun() {
