@@ -506,7 +506,7 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
     for (const jl::BlockContactFrame& c : frame_->blockContacts) {
         const QPointF at = map(c.point);
         const QPointF n(c.normal.x(), -c.normal.y()), t(-n.y(), n.x());
-        const double size = std::max(4.0, r * 1.2);
+        const double size = std::max(7.0 * ui, r * 2.0);  // larger than a hinge dot: seen beside one
         p.setPen(QPen(Qt::white, 1.2 * ui));
         p.setBrush(kContactMark);
         p.drawPolygon(QPolygonF({at, at - n * size + t * size * 0.6, at - n * size - t * size * 0.6}));
