@@ -40,13 +40,11 @@ SimulationPanel::SimulationPanel(Document* doc, QWidget* parent) : QWidget(paren
         tr("Where locks, folds and flips happen: at their exact time, or after the step that crossed "
            "them."),
         tr("Change event policy"));
-    events_->setObjectName("eventPolicy");
     blockContact_ = addChoice<jl::BlockContact>(
         jl::kBlockContacts, &jl::SolverSpec::blockContact, "block_contact", tr("Blocks touch"),
         tr("Whether blocks that are not neighbours push each other apart (a corner strikes "
            "and rests on a face) or pass through one another, as in the paper's model."),
         tr("Change block contact"));
-    blockContact_->setObjectName("blockContact");
     // Not part of the scene: how much of this computer's memory the timeline may use.
     history_ = new QSpinBox(this);
     history_->setObjectName("historyMegabytes");
@@ -67,7 +65,8 @@ SimulationPanel::SimulationPanel(Document* doc, QWidget* parent) : QWidget(paren
 }
 
 // A choice of the solver's (a row of the scene files' table), as a box in
-// the form: each change one undoable edit of the scene.
+// the form, named by its key in the scene file: each change one undoable
+// edit of the scene.
 template <class E>
 QComboBox* SimulationPanel::addChoice(std::span<const jl::Word<E>> words, E jl::SolverSpec::*member, const char* key,
                                       const QString& label, const QString& tip, const QString& undo, bool first) {

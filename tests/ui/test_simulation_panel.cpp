@@ -26,7 +26,7 @@ private slots:
         SimulationPanel panel(&doc);
         panel.show();
         QVERIFY(QTest::qWaitForWindowExposed(&panel));
-        auto* box = panel.findChild<QComboBox*>("blockContact");
+        auto* box = panel.findChild<QComboBox*>("block_contact");
         QVERIFY(box);
         QCOMPARE(doc.scene().solver.blockContact, jl::BlockContact::Off);
         QCOMPARE(box->currentData().toInt(), int(jl::BlockContact::Off));
