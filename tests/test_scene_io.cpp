@@ -71,6 +71,7 @@ Scene ladderScene() {
     s.script = {turn, turn2, move, hold, release, push, cut, join};
     s.drags = {{3, {0.001, -0.02}, {{0.5, {0.1, -0.2}}, {0.51, {0.11, -0.21}}, {0.75, {0.3, 1e-300}}}, 1.25}};
     s.view = {{0.01, -0.4}, 1.5, -30, 45};
+    s.floor = FloorSpec{-0.75};
     return s;
 }
 

@@ -27,11 +27,20 @@ constexpr double kRounding = 1e-12;
 // Of a block length: a contact that parted reads its gap from where it
 // parted until it is this far clear.
 constexpr double kClear = 1e-6;
+// m: the table top reaches this far either side of the ground's origin, so
+// a corner never slides off it.
+constexpr double kTableHalfLength = 1e6;
 
-// An event in the words of the log: "block 3 strikes block 0 (corner 2)".
+// An event in the words of the log: "block 3 strikes block 0 (corner 2)",
+// "block 5 strikes the floor (corner 1)".
 std::string contactWords(int block, const char* what, int other, int corner) {
-    return "block " + std::to_string(block) + " " + what + " block " + std::to_string(other) + " (corner " +
-           std::to_string(corner) + ")";
+    const std::string face = other == BlockContacts::kFloor ? "the floor" : "block " + std::to_string(other);
+    return "block " + std::to_string(block) + " " + what + " " + face + " (corner " + std::to_string(corner) + ")";
+}
+
+// The body a contact's face is on: the other block's, or the ground's.
+int faceBody(const World& w, const Ladder& ladder, int other) {
+    return w.part(other == BlockContacts::kFloor ? World::ground : ladder.block(other)).body;
 }
 
 Vec2 faceNormal(int face) {
@@ -60,6 +69,16 @@ CornerAgainstBox BlockContacts::cornerAgainst(const World& w, const Ladder& ladd
     return out;
 }
 
+CornerAgainstBox BlockContacts::against(const World& w, const Ladder& ladder, int block, int corner, int other) const {
+    if (other != kFloor) return cornerAgainst(w, ladder, block, corner, other);
+    return {ladder.cornerWorld(w, block, corner).y() - *floor_, 3};
+}
+
+bool BlockContacts::resting(int block, int corner, int other) const {
+    return std::any_of(touches_.begin(), touches_.end(),
+                       [&](const Touch& t) { return t.block == block && t.corner == corner && t.other == other; });
+}
+
 double BlockContacts::gapZero(int block, int corner, int other) const {
     for (const Parted& p : parted_)
         if (p.block == block && p.corner == corner && p.other == other) return std::min(0.0, p.gap);
@@ -68,23 +87,37 @@ double BlockContacts::gapZero(int block, int corner, int other) const {
 
 void BlockContacts::refresh(const World& w, const Ladder& ladder) {
     watched_.clear();
-    if (!enabled_) return;
-    broad_.find(w, ladder, pairs_);
-    pairCount_ = int(pairs_.size());
+    if (!active()) return;
     const double length = ladder.length();
     // A corner parted at some instant is back to the plain zero once clear
     // (the record stays, for the Zeno time, until the next parting).
     for (Parted& p : parted_)
-        if (cornerAgainst(w, ladder, p.block, p.corner, p.other).gap > kClear * length) p.gap = 0;
-    for (const auto& [i, j] : pairs_)
-        for (const auto& [a, b] : {std::pair{i, j}, std::pair{j, i}})
-            for (int k = 0; k < 4; ++k) {
-                const bool resting = std::any_of(touches_.begin(), touches_.end(), [&](const Touch& t) {
-                    return t.block == a && t.corner == k && t.other == b;
-                });
-                if (!resting && !atHingeOf(w, ladder, ladder.cornerWorld(w, a, k), b))
-                    watched_.push_back({a, k, b, gapZero(a, k, b)});
-            }
+        if (against(w, ladder, p.block, p.corner, p.other).gap > kClear * length) p.gap = 0;
+    if (enabled_) {
+        broad_.find(w, ladder, pairs_);
+        pairCount_ = int(pairs_.size());
+        for (const auto& [i, j] : pairs_)
+            for (const auto& [a, b] : {std::pair{i, j}, std::pair{j, i}})
+                for (int k = 0; k < 4; ++k)
+                    if (!resting(a, k, b) && !atHingeOf(w, ladder, ladder.cornerWorld(w, a, k), b))
+                        watched_.push_back({a, k, b, gapZero(a, k, b)});
+    }
+    if (floor_) watchFloor(w, ladder);
+}
+
+// Each moving block whose bounding circle reaches the table top has its
+// four corners watched against it: O(blocks) per call, and nothing for a
+// ladder hanging clear of the floor. A block the hand holds goes through
+// the table (two immovable things cannot push each other apart).
+void BlockContacts::watchFloor(const World& w, const Ladder& ladder) {
+    const double near = *floor_ + kTouchBand * ladder.length();
+    for (int i = 0; i < std::min(ladder.blockCount(), ladder.stillFrom()); ++i) {
+        const Pose pose = w.partPose(ladder.block(i));
+        if (pose.position.y() - ladder.cornerLocal(i, 3).norm() > near) continue;
+        if (w.body(w.part(ladder.block(i)).body).kinematic) continue;
+        for (int k = 0; k < 4; ++k)
+            if (!resting(i, k, kFloor)) watched_.push_back({i, k, kFloor, gapZero(i, k, kFloor)});
+    }
 }
 
 void BlockContacts::markLocated(const std::vector<int>& functions) {
@@ -96,7 +129,7 @@ void BlockContacts::markLocated(const std::vector<int>& functions) {
 }
 
 double BlockContacts::watchFunction(const World& w, const Ladder& ladder, const Watch& c) const {
-    const double gap = cornerAgainst(w, ladder, c.block, c.corner, c.other).gap - c.zero;
+    const double gap = against(w, ladder, c.block, c.corner, c.other).gap - c.zero;
     return gap + (locating_ ? kRounding * ladder.length() : std::max(kRounding * ladder.length(), allowance_));
 }
 
@@ -108,7 +141,7 @@ double BlockContacts::slideRoom(const World& w, size_t i) const {
 double BlockContacts::eventFunctions(const World& w, const Dynamics& d, const Ladder& ladder,
                                      std::vector<double>& out) const {
     double smallestForce = std::numeric_limits<double>::infinity();
-    if (!enabled_) return smallestForce;
+    if (!active()) return smallestForce;
     for (const Watch& c : watched_) {
         out.push_back(watchFunction(w, ladder, c));
     }
@@ -136,10 +169,10 @@ double BlockContacts::positionFunction(const World& w, const Ladder& ladder, int
 std::array<int, 2> BlockContacts::bodies(const World& w, const Ladder& ladder, int k) const {
     if (k < int(watched_.size())) {
         const Watch& c = watched_[size_t(k)];
-        return {w.part(ladder.block(c.block)).body, w.part(ladder.block(c.other)).body};
+        return {w.part(ladder.block(c.block)).body, faceBody(w, ladder, c.other)};
     }
     const Touch& t = touches_[size_t(k) - watched_.size() - touches_.size()];
-    return {w.part(ladder.block(t.block)).body, w.part(ladder.block(t.other)).body};
+    return {w.part(ladder.block(t.block)).body, faceBody(w, ladder, t.other)};
 }
 
 // Whether point p is where a pin joins the bodies of blocks a and b: a
@@ -149,7 +182,7 @@ std::array<int, 2> BlockContacts::bodies(const World& w, const Ladder& ladder, i
 // there, and a contact at the same point would be the pin's own equation
 // again, with a push the solve cannot tell from the pin's force.
 bool BlockContacts::onPin(const World& w, const Ladder& ladder, const Vec2& p, int a, int b) {
-    const int bodyA = w.part(ladder.block(a)).body, bodyB = w.part(ladder.block(b)).body;
+    const int bodyA = w.part(ladder.block(a)).body, bodyB = faceBody(w, ladder, b);
     const double near = kClear * ladder.length();
     for (const Pin& pin : w.pins())
         if ((pin.bodyA == bodyA && pin.bodyB == bodyB) || (pin.bodyA == bodyB && pin.bodyB == bodyA))
@@ -164,6 +197,7 @@ bool BlockContacts::onPin(const World& w, const Ladder& ladder, const Vec2& p, i
 // (the classic cascade does this at every flip). A corner there is the
 // hinges' business, not a contact's.
 bool BlockContacts::atHingeOf(const World& w, const Ladder& ladder, const Vec2& p, int b) {
+    if (b == kFloor) return false;
     const double near = kClear * ladder.length();
     for (int j : {b, b + 1})
         if (j >= 1 && j < ladder.blockCount() && ladder.hinge(j).mode != HingeMode::Cut &&
@@ -199,8 +233,18 @@ bool BlockContacts::heldAlready(const World& w, const Contact& c, const ContactR
 }
 
 // Corner `corner` of `block` against the face of `other` it is nearest to
-// crossing: a resting contact from now on.
-Contact BlockContacts::contactAt(const World& w, const Ladder& ladder, int block, int corner, int other) {
+// crossing (or the table top): a resting contact from now on.
+Contact BlockContacts::contactAt(const World& w, const Ladder& ladder, int block, int corner, int other) const {
+    if (other == kFloor) {
+        Contact c;
+        c.cornerPart = ladder.block(block);
+        c.corner = ladder.cornerLocal(block, corner);
+        c.facePart = World::ground;
+        c.normal = Vec2(0, 1);
+        c.offset = *floor_;
+        c.halfLength = kTableHalfLength;
+        return c;
+    }
     const int face = cornerAgainst(w, ladder, block, corner, other).face;
     const Vec2 half = ladder.cornerLocal(other, 3).cwiseAbs();
     Contact c;
@@ -227,7 +271,7 @@ void BlockContacts::part(World& w, size_t i, double t) {
 std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladder& ladder, double t, double* loss,
                                               double* heldWork) {
     std::vector<Event> events;
-    if (!enabled_) return events;
+    if (!active()) return events;
     const double length = ladder.length();
     const double band = kTouchBand * length;
     const double still = ladder.restingRate() * length;  // m/s: a gap changing slower rests
@@ -276,7 +320,7 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
         // A corner within the band that closes faster than v_min lands at
         // the same instant (a block landing flat lands on both ends at
         // once, whichever crossing rounding puts first).
-        const double gap = cornerAgainst(w, ladder, c.block, c.corner, c.other).gap - c.zero;
+        const double gap = against(w, ladder, c.block, c.corner, c.other).gap - c.zero;
         if (gap > band) continue;
         const bool located = std::find(located_.begin(), located_.end(), id) != located_.end();
         if (gap >= -allowance_ && !located) {
@@ -298,7 +342,7 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
                           (rate <= still && rowTimes(row, w.a) + rowBias(w, row) < -ladder.forceTolerance());
         if (!into || heldAlready(w, candidate, row)) continue;
         w.contacts().push_back(candidate);
-        Touch made{c.block, c.corner, c.other, cornerAgainst(w, ladder, c.block, c.corner, c.other).face, t};
+        Touch made{c.block, c.corner, c.other, against(w, ladder, c.block, c.corner, c.other).face, t};
         for (const Parted& p : parted_)
             made.held = made.held || (p.block == c.block && p.corner == c.corner && p.other == c.other &&
                                       t - p.at <= ladder.zenoTime());
@@ -380,7 +424,7 @@ std::vector<Event> BlockContacts::letGoExpired(World& w, const Dynamics& d, cons
 // there, until neither has anything to do.
 std::vector<Event> Ladder::settle(World& w, Dynamics& d, double t, double* impactLoss, double* heldWork) {
     std::vector<Event> events = resolve(w, d, t, impactLoss, heldWork);
-    if (!blockContacts_.enabled()) return events;
+    if (!blockContacts_.active()) return events;
     blockContacts_.newInstant();
     for (int guard = 0; guard < 8 * blockCount() + 8; ++guard) {
         std::vector<Event> more = blockContacts_.resolveOnce(w, d, *this, t, impactLoss, heldWork);

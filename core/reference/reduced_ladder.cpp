@@ -56,6 +56,7 @@ std::string ReducedLadder::readScene(const Scene& scene) {
         !scene.drags.empty())
         return "only a ladder is covered";
     if (scene.solver.blockContact != BlockContact::Off) return "contact between blocks not covered";
+    if (scene.floor) return "a floor not covered";
     for (const ScriptAction& a : scene.script) {
         if (a.kind != ScriptAction::Kind::Turn || a.block != 0) return "only turns of block 0 are covered";
         turns_.push_back({a.at, a.duration, a.angle});

@@ -60,12 +60,14 @@ void header(std::ostringstream& out) {
     out << "| key | type | unit | default | allowed | meaning |\n|---|---|---|---|---|---|\n";
 }
 
+// `required`: the section, when given, must give every one of them.
 template <class Section, std::size_t N>
-void numberRows(std::ostringstream& out, const NumberField<Section> (&numbers)[N]) {
+void numberRows(std::ostringstream& out, const NumberField<Section> (&numbers)[N], bool required = false) {
     const Section d{};
     for (const NumberField<Section>& n : numbers)
-        out << "| " << backticked(n.key) << " | number | " << n.unit << " | " << defaultOf(d.*n.member, n.range)
-            << " | " << allowed(n.range) << " | " << n.meaning << " |\n";
+        out << "| " << backticked(n.key) << " | number | " << n.unit << " | "
+            << (required ? "*required*" : defaultOf(d.*n.member, n.range)) << " | " << allowed(n.range) << " | "
+            << n.meaning << " |\n";
 }
 
 template <class E>
@@ -95,6 +97,8 @@ std::string fieldTable(std::string_view section) {
         numberRows(out, kDampingNumbers);
     else if (section == "view")
         numberRows(out, kViewNumbers);
+    else if (section == "floor")
+        numberRows(out, kFloorNumbers, true);
     else if (section == "solver") {
         const SolverSpec d;
         wordRow<Integrator>(out, "integrator", kIntegrators, d.integrator,

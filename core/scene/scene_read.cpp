@@ -166,13 +166,20 @@ void readView(const Fields& parent, ViewSpec& view) {
     readNumbers(f, kViewNumbers, view);
 }
 
+void readFloor(const Fields& parent, FloorSpec& floor) {
+    Fields f(parent.problems(), parent.value("floor"), keysOf(kFloorNumbers, {}));
+    if (!f.isMap()) return;
+    f.require("height");
+    readNumbers(f, kFloorNumbers, floor);
+}
+
 }  // namespace
 
 std::optional<Scene> readScene(const YAML::Node& root, const LoadLimits& limits, Problems& problems) {
     const std::size_t before = problems.size();
     Fields f(problems, locate(root, ""),
              {"format", "title", "description", "ladder", "bodies", "particles", "pins", "springs", "gravity",
-              "damping", "duration", "solver", "script", "drags", "view"});
+              "damping", "duration", "solver", "script", "drags", "floor", "view"});
     if (!f.isMap()) return std::nullopt;
     Scene scene;
     readFormat(f);
@@ -191,6 +198,7 @@ std::optional<Scene> readScene(const YAML::Node& root, const LoadLimits& limits,
     if (f.has("solver")) readSolver(f, scene.solver);
     if (f.has("script")) readScript(f.value("script"), problems, blocks, scene.script);
     if (f.has("drags")) readDrags(f.value("drags"), problems, blocks, scene.drags);
+    if (f.has("floor")) readFloor(f, scene.floor.emplace());
     if (f.has("view")) readView(f, scene.view);
     if (!scene.ladder && scene.bodies.empty() && scene.particles.empty() && problems.size() == before)
         report(problems, f.mark(), "the scene has nothing to simulate: give 'ladder', 'bodies' or 'particles'");

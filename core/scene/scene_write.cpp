@@ -329,6 +329,15 @@ void writeTimeline(Writer& w, const Scene& scene) {
     }
 }
 
+// Written whole: the height has no default to leave out.
+void writeFloor(Writer& w, const std::optional<FloorSpec>& floor) {
+    if (!floor) return;
+    w.keyed("floor");
+    w.beginMap(true);
+    for (const NumberField<FloorSpec>& n : kFloorNumbers) w.number(n.key, (*floor).*n.member);
+    w.endMap();
+}
+
 void writeView(Writer& w, const ViewSpec& view) {
     const ViewSpec d;
     if (view == d) return;
@@ -373,6 +382,7 @@ std::string sceneToYaml(const Scene& scene) {
     w.numberIf("duration", scene.duration, d.duration);
     writeSolver(w, scene.solver);
     writeTimeline(w, scene);
+    writeFloor(w, scene.floor);
     writeView(w, scene.view);
     w.endMap();
     if (!out.good()) return {};

@@ -3,6 +3,7 @@
 #include "jl/engine/energy.h"
 #include "jl/engine/motion.h"
 #include "jl/engine/projection.h"
+#include "jl/scene/scalar_text.h"
 #include "snapshot.h"
 
 #include <algorithm>
@@ -72,6 +73,7 @@ std::optional<std::string> Simulation::buildWorld() {
         if (auto e = Ladder::validate(*scene_.ladder)) return e;
         ladder_.emplace(world_, *scene_.ladder);
         ladder_->blockContacts().setEnabled(scene_.solver.blockContact == BlockContact::On);
+        if (scene_.floor) ladder_->blockContacts().setFloor(scene_.floor->height);
         ladder_->setGapTolerance(scene_.solver.projectionTolerance);
         ladder_->blockContacts().setAllowance(scene_.solver.projectionTolerance);
         for (int i = 0; i < ladder_->blockCount(); ++i) {
@@ -149,6 +151,7 @@ std::optional<std::string> Simulation::buildWorld() {
     // A start the ladder cannot settle (hinges whose corners cannot be
     // joined) is a scene that cannot be built, not a run that fails later.
     if (ladder_ && !ladder_->error().empty()) return "at t = 0: " + ladder_->error();
+    if (auto below = belowTheFloor()) return below;
     // E(0) is the energy before the inputs at t = 0: what they did (pushes,
     // joins, impacts) is on the books already.
     const Energy e0 = energy(world_);
@@ -169,6 +172,21 @@ std::optional<std::string> Simulation::buildWorld() {
     return std::nullopt;
 }
 
+// A block corner under the table top at the start (by more than the pins'
+// tolerance): a scene that cannot be built, said with the block and how far.
+std::optional<std::string> Simulation::belowTheFloor() const {
+    if (!ladder_ || !scene_.floor) return std::nullopt;
+    for (int i = 0; i < ladder_->blockCount(); ++i)
+        for (int k = 0; k < 4; ++k) {
+            const double gap = ladder_->cornerWorld(world_, i, k).y() - scene_.floor->height;
+            if (gap < -scene_.solver.projectionTolerance)
+                return "corner " + std::to_string(k) + " of block " + std::to_string(i) + " starts " +
+                       formatNumber(-gap) + " m below the floor (floor.height " + formatNumber(scene_.floor->height) +
+                       " m): raise the ladder or lower the floor";
+        }
+    return std::nullopt;
+}
+
 // The blocks of a ladder that the motion has not reached hang still as one
 // body until it comes near them (docs/model.md section 3.7): below every
 // block that moves or accelerates at the start, below every block the hand
@@ -177,7 +195,7 @@ std::optional<std::string> Simulation::buildWorld() {
 // falls as one would not be the ladder's motion: not with drag.
 void Simulation::hangStillTail() {
     if (!ladder_ || scene_.solver.stillTail != StillTail::Joined || scene_.linearDamping > 0 ||
-        scene_.angularDamping > 0 || !(world_.gravity.norm() > 0))
+        scene_.angularDamping > 0 || !(world_.gravity.norm() > 0) || scene_.floor)
         return;
     const int n = ladder_->blockCount();
     int deepest = 0;

@@ -9,6 +9,7 @@
 #include "jl/ladder/hinge_event.h"
 
 #include <array>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -52,6 +53,14 @@ public:
     // Off: the paper's model, blocks pass through one another.
     void setEnabled(bool on) { enabled_ = on; }
     bool enabled() const { return enabled_; }
+    // A level table top at `height` (m), or none: block corners meet it as
+    // they meet a block's face (docs/model.md section 17.8), whether or not
+    // blocks meet each other. `other` is kFloor for it.
+    void setFloor(std::optional<double> height) { floor_ = height; }
+    const std::optional<double>& floor() const { return floor_; }
+    static constexpr int kFloor = -1;
+    // Anything to watch at all: contact between blocks, or a floor.
+    bool active() const { return enabled_ || floor_.has_value(); }
 
     // After a step, at its end: the corners of blocks near each other, each
     // watched against the other block, and the contacts that rest. The
@@ -117,6 +126,9 @@ public:
     int pairCount() const { return pairCount_; }
 
     static CornerAgainstBox cornerAgainst(const World& w, const Ladder& ladder, int block, int corner, int other);
+    // The same against `other` or the floor (other == kFloor: the gap above
+    // the table top, face 3).
+    CornerAgainstBox against(const World& w, const Ladder& ladder, int block, int corner, int other) const;
 
 private:
     struct Watch {
@@ -131,13 +143,17 @@ private:
     }
     double slideRoom(const World& w, size_t i) const;
     static bool heldAlready(const World& w, const Contact& c, const ContactRow& row);
-    static Contact contactAt(const World& w, const Ladder& ladder, int block, int corner, int other);
+    Contact contactAt(const World& w, const Ladder& ladder, int block, int corner, int other) const;
+    // The corners of moving blocks near the floor, watched against it.
+    void watchFloor(const World& w, const Ladder& ladder);
+    bool resting(int block, int corner, int other) const;
     static bool atHingeOf(const World& w, const Ladder& ladder, const Vec2& p, int b);
     static bool onPin(const World& w, const Ladder& ladder, const Vec2& p, int a, int b);
     double gapZero(int block, int corner, int other) const;
     void part(World& w, size_t i, double t);
 
     bool enabled_ = true;
+    std::optional<double> floor_;  // m, the table top's height
     bool locating_ = false;
     double allowance_ = 1e-10;  // m
     std::vector<Watch> watched_;

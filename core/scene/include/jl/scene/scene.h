@@ -196,6 +196,13 @@ struct SolverSpec {
     bool operator==(const SolverSpec&) const = default;
 };
 
+// A table top under the ladder (docs/model.md section 17.8): block
+// corners rest on it, frictionless, and strike it as they strike a block.
+struct FloorSpec {
+    double height = 0;  // m, the table top's height in the ladder's plane
+    bool operator==(const FloorSpec&) const = default;
+};
+
 struct ViewSpec {
     Point2 target{0, -0.15};  // m, where the camera looks (in the ladder plane)
     double distance = 0.8;    // m
@@ -220,6 +227,7 @@ struct Scene {
     SolverSpec solver{};
     std::vector<ScriptAction> script;
     std::vector<DragRecord> drags;
+    std::optional<FloorSpec> floor;
     ViewSpec view{};
     bool operator==(const Scene&) const = default;
 };

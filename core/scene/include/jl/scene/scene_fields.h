@@ -78,6 +78,11 @@ inline constexpr NumberField<SolverSpec> kSolverNumbers[] = {
     {"frame_interval", &SolverSpec::frameInterval, "s", range::frameInterval, "output frames (1/60 s)"},
 };
 
+inline constexpr NumberField<FloorSpec> kFloorNumbers[] = {
+    {"height", &FloorSpec::height, "m", range::coordinate,
+     "the table top's height; every block corner starts on or above it"},
+};
+
 inline constexpr NumberField<ViewSpec> kViewNumbers[] = {
     {"distance", &ViewSpec::distance, "m", range::viewDistance, "from the camera to its target"},
     {"yaw", &ViewSpec::yaw, "°", range::yaw, "turn about the vertical; 0 looks at the ladder edge-on"},
@@ -146,8 +151,8 @@ inline std::string_view integratorWord(Integrator i) { return wordOf<Integrator>
 // Markdown table of one (key, type, unit, default, allowed, meaning). The
 // page holds each between `<!-- fields: SECTION -->` and
 // `<!-- end fields -->`; a test checks that it is current.
-inline constexpr std::string_view kDocumentedSections[] = {"ladder.block", "ladder.ribbons", "ladder.hinges",
-                                                           "damping",      "solver",         "view"};
+inline constexpr std::string_view kDocumentedSections[] = {"ladder.block", "ladder.ribbons", "ladder.hinges", "damping",
+                                                           "solver",       "floor",          "view"};
 std::string fieldTable(std::string_view section);
 // `page` with every generated table replaced by the current one.
 std::string withCurrentFieldTables(const std::string& page);

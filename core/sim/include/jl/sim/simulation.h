@@ -122,6 +122,7 @@ private:
     explicit Simulation(const Scene& scene);
     std::optional<std::string> buildWorld();
     void hangStillTail();
+    std::optional<std::string> belowTheFloor() const;
     void wakeThrough(int block);
     double nextScheduledTime() const;
     void applyDueInputs();
