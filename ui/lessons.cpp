@@ -17,9 +17,18 @@ namespace jl::ui {
 namespace {
 
 // The teaching order of docs/teaching.md; files not named here come after.
-const char* const kTeachingOrder[] = {
-    "classic",      "wrong-way",   "one-hinge", "back-and-forth",        "two-ripples",  "pushed-down-pulled-up",
-    "heavy-middle", "long-ladder", "pendulum",  "particles-and-springs", "falling-chain"};
+const char* const kTeachingOrder[] = {"classic",
+                                      "wrong-way",
+                                      "one-hinge",
+                                      "back-and-forth",
+                                      "two-ripples",
+                                      "pushed-down-pulled-up",
+                                      "heavy-middle",
+                                      "long-ladder",
+                                      "dropped-on-a-table",
+                                      "pendulum",
+                                      "particles-and-springs",
+                                      "falling-chain"};
 
 int rank(const QString& baseName) {
     const auto it = std::find(std::begin(kTeachingOrder), std::end(kTeachingOrder), baseName.toStdString());
