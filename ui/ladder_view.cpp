@@ -84,7 +84,7 @@ void LadderView::setScene(const jl::Scene& scene, bool resetCamera) {
     shapes_ = shapes;
     blocks_->setShapes(std::move(shapes));
     extent_ = extent;
-    room_->fitTo(extent_);
+    room_->fitTo(extent_, scene.floor ? std::optional<double>(scene.floor->height) : std::nullopt);
     ladder_ = scene.ladder;
     blockSpecs_ = scene.ladder ? jl::ladderBlocks(*scene.ladder) : std::vector<jl::BlockSpec>{};
     if (scene.ladder) {

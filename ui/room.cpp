@@ -54,10 +54,10 @@ Room::Room(Qt3DCore::QNode* parent) : Qt3DCore::QEntity(parent) {
     fitTo(0.36);
 }
 
-void Room::fitTo(double extent) {
+void Room::fitTo(double extent, std::optional<double> tableTop) {
     const float scale = std::max(1.0f, float(extent) / 1.2f);
     transform_->setScale(scale);
-    transform_->setTranslation({0, -float(extent) - kTableTopBelowLadder * scale, 0});
+    transform_->setTranslation({0, tableTop ? float(*tableTop) : -float(extent) - kTableTopBelowLadder * scale, 0});
 }
 
 }  // namespace jl::ui

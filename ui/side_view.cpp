@@ -24,6 +24,7 @@ namespace {
 
 const QColor kBackground(252, 252, 249);
 const QColor kGrid(232, 232, 226);
+const QColor kTable(214, 218, 224);       // the table top, slate as in the 3-D room
 const QColor kCornerInk(90, 40, 120);     // corner numbers: apart from block numbers at a glance
 const QColor kEventRing(200, 30, 30);     // round the hinge of an event at the instant on screen
 const QColor kContactMark(170, 20, 150);  // a corner resting on a face: none of the hinges' colours
@@ -229,6 +230,7 @@ void SideView::mouseDoubleClickEvent(QMouseEvent*) {
 
 void SideView::setScene(const jl::Scene& scene) {
     shapes_ = blockShapes(scene);
+    floor_ = scene.floor ? std::optional<double>(scene.floor->height) : std::nullopt;
     restructure_.setScene(scene);
     cornerLocal_.clear();
     ladder_.reset();
@@ -367,6 +369,17 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
         const double py = map(jl::Vec2(0, y)).y();
         if (py >= target.top() && py <= target.bottom())
             p.drawLine(QPointF(target.left(), py), QPointF(target.right(), py));
+    }
+
+    if (floor_) {
+        // The table top: its edge a line across the view, shaded under it.
+        const double py = map(jl::Vec2(0, *floor_)).y();
+        if (py <= target.bottom()) {
+            const double top = std::max(py, target.top());
+            p.fillRect(QRectF(target.left(), top, target.width(), target.bottom() - top), kTable);
+            p.setPen(QPen(kSideInk, 1.5 * ui));
+            if (py >= target.top()) p.drawLine(QPointF(target.left(), py), QPointF(target.right(), py));
+        }
     }
 
     const int n = int(std::min(frame_->poses.size(), shapes_.size()));

@@ -109,6 +109,7 @@ private:
     QColor centralRibbonColor_;
     double ribbonThickness_ = 0.0005;
     std::optional<jl::LadderSpec> ladder_;   // whose ribbons to draw
+    std::optional<double> floor_;            // m, the table top's height
     std::vector<jl::BlockSpec> blockSpecs_;  // its blocks, as built
     std::shared_ptr<const jl::Frame> frame_ = std::make_shared<const jl::Frame>();
     QRectF framing_;
