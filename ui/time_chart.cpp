@@ -100,6 +100,8 @@ void TimeChart::setCurveShown(QLineSeries* curve, bool shown) {
 
 void TimeChart::setPoints(QLineSeries* curve, const std::vector<QPointF>& points) {
     curve->replace(QList<QPointF>(points.begin(), points.end()));
+    pictureStale_ = true;
+    viewport()->update();
 }
 
 void TimeChart::setTimeRange(double t0, double t1) { setNiceRange(timeAxis_, t0, std::max(t1, t0 + 1e-3)); }
@@ -269,7 +271,8 @@ void TimeChart::paintEvent(QPaintEvent* e) {
     const QSize pixels = viewport()->size() * ratio;
     // Anything but the cursor's strips (the curves, the axes, the marks, a
     // resize, an expose) draws the picture again, whole.
-    if (picture_.size() != pixels || !e->region().subtracted(strips).isEmpty()) {
+    if (pictureStale_ || picture_.size() != pixels || !e->region().subtracted(strips).isEmpty()) {
+        pictureStale_ = false;
         picture_ = QPixmap(pixels);
         picture_.setDevicePixelRatio(ratio);
         picture_.fill(viewport()->palette().color(viewport()->backgroundRole()));

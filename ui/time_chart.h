@@ -88,6 +88,10 @@ private:
     // (clipping comes after the stroke): 60 times a second, that was a
     // third of the UI thread's time while a 1,000-block ladder played.
     QPixmap picture_;
+    // New points: the picture is out of date whatever region the scene
+    // asks to repaint (a curve grown under the cursor's strips alone was
+    // never drawn).
+    bool pictureStale_ = true;
     QRegion cursorStrips_;  // asked for by setCursorTime since the last paint
     bool drawingPicture_ = false;
 };

@@ -6,11 +6,14 @@
 #include "example_runs.h"
 #include "playback_fixture.h"
 #include "ui/run_plots.h"
+#include "ui/time_chart.h"
 #include "ui/timeline.h"
 
 #include <QLabel>
+#include <QLineSeries>
 #include <QMessageBox>
 #include <QRegularExpression>
+#include <QScreen>
 #include <QTimer>
 #include <QToolBar>
 #include <QUndoStack>
@@ -379,6 +382,35 @@ private slots:
         QVERIFY2(std::abs(end->frame->time - 0.5) <= end->interval, qPrintable(QString::number(end->frame->time)));
         f.sim->play();
         QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.frame && s.frame->time > 0.6; }));
+    }
+
+    // A run with no events at all (the pendulum) is plotted to its end:
+    // the curves followed the frames only while events came (a new event
+    // redrew the charts), and stopped a few tenths of a second in.
+    void thePlotsFollowARunWithoutEventsToItsEnd() {
+        jl::SceneLoad load = jl::loadScene(JL_SOURCE_DIR "/examples/pendulum.yaml");
+        QVERIFY(load.scene);
+        load.scene->duration = 1.0;
+        Fixture f(*load.scene);
+        f.sim->play();  // at 1x, as a class watches it
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.frame && s.frame->time > 0.1; }));
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return !s.playing; }));
+        QVERIFY(f.sim->status()->events->empty());
+        auto* plots = f.window.findChild<RunPlots*>();
+        QVERIFY(plots);
+        const double end = f.sim->status()->headTime, dt = f.sim->status()->interval;
+        QTRY_VERIFY(plots->traces().endTime() >= end - dt / 2);
+        const auto* kinetic = qobject_cast<const QLineSeries*>(plots->energyChart()->chart()->series().value(0));
+        QVERIFY(kinetic);
+        QTRY_VERIFY2(!kinetic->points().isEmpty() && kinetic->points().back().x() >= end - dt / 2,
+                     qPrintable(QString("the curve ends at %1 s, the run at %2 s")
+                                    .arg(kinetic->points().isEmpty() ? 0.0 : kinetic->points().back().x())
+                                    .arg(end)));
+        // What the screen shows is what a fresh drawing of the chart shows.
+        TimeChart* chart = plots->energyChart();
+        QTest::qWait(300);  // past the plots' refresh
+        const int differing = jl::test::pixelsOffAFreshDrawing(chart);
+        QVERIFY2(differing == 0, qPrintable(QString("%1 pixels on screen differ from a fresh drawing").arg(differing)));
     }
 
     // The timeline of a 0.5 s lesson ends at 0.5 s (it was drawn to 0.75 s,

@@ -115,21 +115,7 @@ private slots:
             QTest::qWait(1);
             if (i % 8 != 7) continue;
             QTest::qWait(20);  // painted and flushed what it was asked to
-            const QPoint at = chart.mapToGlobal(QPoint(0, 0));
-            const QImage shown = chart.screen()
-                                     ->grabWindow(0, at.x(), at.y(), chart.width(), chart.height())
-                                     .toImage()
-                                     .convertToFormat(QImage::Format_RGB32);
-            const QImage drawn = chart.grab().toImage().convertToFormat(QImage::Format_RGB32);
-            QCOMPARE(shown.size(), drawn.size());
-            int differing = 0;
-            for (int y = 0; y < drawn.height(); ++y)
-                for (int x = 0; x < drawn.width(); ++x) {
-                    const QColor a = shown.pixelColor(x, y), b = drawn.pixelColor(x, y);
-                    differing +=
-                        std::abs(a.red() - b.red()) + std::abs(a.green() - b.green()) + std::abs(a.blue() - b.blue()) >
-                        60;
-                }
+            const int differing = jl::test::pixelsOffAFreshDrawing(&chart);
             QVERIFY2(differing == 0,
                      qPrintable(
                          QString("%1 pixels on screen at t = %2 s differ from a fresh drawing").arg(differing).arg(t)));

@@ -14,6 +14,7 @@
 #include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QGraphicsTextItem>
+#include <QScreen>
 #include <QStandardPaths>
 #include <QTest>
 #include <QTimer>
@@ -169,6 +170,27 @@ inline int cutLabels(jl::ui::TimeChart* chart) {
                 (text->toPlainText().contains("...") || text->toPlainText().contains(QChar(0x2026))))
                 ++cut;
     return cut;
+}
+
+// How many pixels of `w` as the screen shows it differ (by more than 60
+// in the sum of channels) from a fresh drawing of it: a picture kept too
+// long, or a repaint missed.
+inline int pixelsOffAFreshDrawing(QWidget* w) {
+    const QPoint at = w->mapToGlobal(QPoint(0, 0));
+    const QImage shown = w->screen()
+                             ->grabWindow(0, at.x(), at.y(), w->width(), w->height())
+                             .toImage()
+                             .convertToFormat(QImage::Format_RGB32);
+    const QImage drawn = w->grab().toImage().convertToFormat(QImage::Format_RGB32);
+    if (shown.size() != drawn.size()) return w->width() * w->height();
+    int differing = 0;
+    for (int y = 0; y < drawn.height(); ++y)
+        for (int x = 0; x < drawn.width(); ++x) {
+            const QColor a = shown.pixelColor(x, y), b = drawn.pixelColor(x, y);
+            differing +=
+                std::abs(a.red() - b.red()) + std::abs(a.green() - b.green()) + std::abs(a.blue() - b.blue()) > 60;
+        }
+    return differing;
 }
 
 }  // namespace jl::test
