@@ -33,6 +33,15 @@ private slots:
         QCOMPARE(int(t.size()), 10);
         QCOMPARE(t.front(), 0.0015);
         QVERIFY(std::abs(t.back() - 0.015) < 1e-15);
+        // Each value the double a scene file holding it as text reads: 9, 10,
+        // 13 and 14 mm were 0.009000000000000001 m and so on as from + i step
+        // in doubles.
+        const std::vector<double> mm = axisValues({DesignParameter::Thickness, 0.001, 0.015, 0.001});
+        QCOMPARE(int(mm.size()), 15);
+        for (int i = 0; i < 15; ++i)  // exactly: QCOMPARE takes doubles within 1e-12 of each other
+            QVERIFY2(mm[size_t(i)] == std::strtod((std::to_string(i + 1) + "e-3").c_str(), nullptr),
+                     qPrintable(QString::number(mm[size_t(i)], 'g', 17)));
+        QCOMPARE(axisValues({DesignParameter::Blocks, 5, 100, 5}).back(), 100.0);
         QCOMPARE(axisValues({DesignParameter::Density, 600, 600, 1}), std::vector<double>{600});  // one value
         QVERIFY(axisValues({DesignParameter::Blocks, 6, 5, 1}).empty());                          // backwards
         QVERIFY(axisValues({DesignParameter::Blocks, 6, 50, 0}).empty());                         // no step

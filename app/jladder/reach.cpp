@@ -5,6 +5,7 @@
 #include "app/jladder/commands.h"
 #include "app/jladder/options.h"
 #include "app/jladder/progress.h"
+#include "jl/base/decimal.h"
 #include "jl/base/output_file.h"
 #include "jl/base/xml_text.h"
 #include "jl/design/design_check.h"
@@ -112,29 +113,32 @@ int table(const std::optional<std::string>& out) {
 }
 
 // "12mm" -> 0.012: a number, then the unit the parameter allows (none: SI).
+// The unit shifts the number's decimal point (jl/base/decimal.h): 9mm is
+// the 0.009 a scene file holds, where 9 * 0.001 is 0.009000000000000001.
 std::optional<double> quantity(const std::string& text, DesignParameter p, std::string& error) {
     char* end = nullptr;
     const double v = std::strtod(text.c_str(), &end);
     const std::string unit(end);
-    double scale = 0;
+    std::optional<int> power;  // of ten
     const bool length = p == DesignParameter::Thickness || p == DesignParameter::Length || p == DesignParameter::Width;
     if (unit.empty())
-        scale = 1;
+        power = 0;
     else if (length && unit == "mm")
-        scale = 1e-3;
+        power = -3;
     else if (length && unit == "cm")
-        scale = 1e-2;
+        power = -2;
     else if (length && unit == "m")
-        scale = 1;
+        power = 0;
     else if (p == DesignParameter::TurnDuration && unit == "ms")
-        scale = 1e-3;
+        power = -3;
     else if (p == DesignParameter::TurnDuration && unit == "s")
-        scale = 1;
-    if (end == text.c_str() || !(scale > 0) || !std::isfinite(v)) {
+        power = 0;
+    const std::optional<Decimal> typed = shortestDecimal(v);
+    if (end == text.c_str() || !power || !typed) {
         error = "'" + text + "' is not a value of " + std::string(describe(p).word);
         return std::nullopt;
     }
-    return v * scale;
+    return nearestDouble({typed->digits, typed->exponent + *power});
 }
 
 // "6:50:2" -> an axis, as written; its values are checked against the

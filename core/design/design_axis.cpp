@@ -1,5 +1,6 @@
 #include "jl/design/design_axis.h"
 
+#include "jl/base/decimal.h"
 #include "jl/scene/scene_ranges.h"
 
 #include <algorithm>
@@ -18,7 +19,14 @@ std::vector<double> axisValues(const DesignAxis& a) {
     if (!(a.step > 0) || !(a.to >= a.from) || !std::isfinite(a.from) || !std::isfinite(a.to)) return v;
     const double count = std::floor((a.to - a.from) / a.step + 1e-9) + 1;
     if (count > 1e6) return v;
-    for (int i = 0; i < int(count); ++i) v.push_back(a.from + i * a.step);
+    // Each value is from + i step in decimals, rounded once: the number a
+    // scene file holding that text reads (1 + 8 x 1 mm is 0.009 m, where
+    // doubles give 0.009000000000000001).
+    const auto from = shortestDecimal(a.from), step = shortestDecimal(a.step);
+    for (int i = 0; i < int(count); ++i) {
+        const auto exact = from && step ? steppedDecimal(*from, *step, i) : std::nullopt;
+        v.push_back(exact ? nearestDouble(*exact) : a.from + i * a.step);
+    }
     return v;
 }
 

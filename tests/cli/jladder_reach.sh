@@ -17,6 +17,13 @@ cmp -s map1.svg map2.svg || fail "the SVG depends on --jobs"
 grep -q "^6,0.012,5,5," map1.csv || fail "the classic design (6 blocks, 12 mm) should ripple through its 5 hinges: $(cat map1.csv)"
 grep -q "<svg" map1.svg && grep -q "block thickness (mm)" map1.svg || fail "the SVG has no map or no axis title"
 
+# Each value of an axis is the number a scene file holding it as text reads:
+# 9 mm is 0.009 m, not 9 x 0.001 or 1 mm + 8 x 1 mm in doubles
+# (0.009000000000000001).
+"$jladder" reach --blocks 4:4:1 --thickness 8mm:10mm:1mm --csv units.csv 2>err.txt || fail "8 to 10 mm: exit $?"
+[ "$(cut -d, -f2 units.csv | tr '\n' ' ')" = "thickness [m] 0.008 0.009 0.01 " ] ||
+    fail "thickness values not as a scene file holds them: $(cut -d, -f2 units.csv | tr '\n' ' ')"
+
 # Bad axes: refused with a message, nothing written.
 bad() {
     "$jladder" reach "$@" --csv bad.csv >out.txt 2>err.txt

@@ -37,7 +37,9 @@ struct DesignAxis {
 };
 
 // from, from + step, ... up to `to` (within rounding), each computed from
-// its index so that long axes do not drift; empty for a bad axis.
+// its index so that long axes do not drift, in decimals (jl/base/decimal.h):
+// the value a scene file holding from + i step as text has. Empty for a bad
+// axis.
 std::vector<double> axisValues(const DesignAxis& a);
 
 // The scene with one parameter set (the blocks count rounded and kept within
