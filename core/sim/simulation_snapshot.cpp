@@ -3,6 +3,8 @@
 #include "snapshot.h"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 
 namespace jl {
 
@@ -35,25 +37,29 @@ void Simulation::restore(const Snapshot& s) {
     failure_.clear();
 }
 
+// A word at a time: the window hashes the head after every frame it
+// records, and byte by byte that was 5 % of its simulation thread's
+// instructions on a 10,000-block ladder. Each word is folded in by FNV-1a's
+// step, then its high half into its low (a product alone carries a change
+// of a high bit no lower).
 std::uint64_t Simulation::stateHash() const {
     std::uint64_t h = 1469598103934665603ull;
-    auto mix = [&](const void* data, size_t n) {
-        const auto* p = static_cast<const unsigned char*>(data);
-        for (size_t i = 0; i < n; ++i) h = (h ^ p[i]) * 1099511628211ull;
+    const auto mix = [&](std::uint64_t w) {
+        h = (h ^ w) * 1099511628211ull;
+        h ^= h >> 32;
     };
-    mix(&t_, sizeof t_);
+    const auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };
+    mix(bits(t_));
     for (PartId p : blocks_) {
         const Pose pose = world_.partPose(p);
         const Twist vel = world_.partVelocity(p);
-        const double x[6] = {pose.position.x(), pose.position.y(), pose.angle,
-                             vel.linear.x(),    vel.linear.y(),    vel.angular};
-        mix(x, sizeof x);
+        for (const double x :
+             {pose.position.x(), pose.position.y(), pose.angle, vel.linear.x(), vel.linear.y(), vel.angular})
+            mix(bits(x));
     }
     if (ladder_)
-        for (int j = 1; j < ladder_->blockCount(); ++j) {
-            const int state[2] = {int(ladder_->hinge(j).mode), ladder_->hinge(j).corner};
-            mix(state, sizeof state);
-        }
+        for (int j = 1; j < ladder_->blockCount(); ++j)
+            mix(std::uint64_t(std::uint32_t(ladder_->hinge(j).mode)) << 32 | std::uint32_t(ladder_->hinge(j).corner));
     return h;
 }
 

@@ -3,6 +3,7 @@
 // without sleeping, since each frame it has not made yet is overdue, and
 // the UI thread's requests are still answered at once.
 #include "jl/scene/scene_io.h"
+#include "ui/catch_up.h"
 #include "ui/sim_controller.h"
 #include "ui_test_support.h"
 
@@ -80,6 +81,18 @@ private slots:
         // at every catch-up given up (before: 26 and 27 times in these 2 s,
         // playing at 0.64x and 0.66x; after: 0 times, at 1.08x).
         QVERIFY2(sleeps <= 5, qPrintable(QString("the worker slept %1 times while behind").arg(sleeps)));
+    }
+
+    void aStallBehindTheClockIsMadeGoodUpToATenthOfASecond() {
+        // Within the allowance, nothing is given up: the run catches up.
+        QCOMPARE(lagGivenUp(0.05), 0.0);
+        QCOMPARE(lagGivenUp(kCatchUp), 0.0);
+        // Beyond it, only the excess: the tenth stays to be made good. (All
+        // of it was given up once, at every stall past a tenth: a
+        // 1,000-block ladder that the engine runs at twice real time played
+        // at 0.95x to 0.98x in the window.)
+        QVERIFY(std::abs(lagGivenUp(0.15) - 0.05) < 1e-12);
+        QVERIFY(std::abs(lagGivenUp(1.0) - (1.0 - kCatchUp)) < 1e-12);
     }
 };
 

@@ -115,7 +115,8 @@ public:
     std::shared_ptr<const Snapshot> snapshot() const;
     void restore(const Snapshot& s);
     ~Simulation();
-    // FNV-1a over the bits of every block pose and velocity and the hinge modes.
+    // A hash of the bits of every block pose and velocity and the hinge modes
+    // (FNV-1a over whole words): equal states give equal hashes.
     std::uint64_t stateHash() const;
 
 private:
