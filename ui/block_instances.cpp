@@ -1,5 +1,6 @@
 #include "ui/block_instances.h"
 
+#include "ui/instance_upload.h"
 #include "ui/shader_material.h"
 
 #include <QVector4D>
@@ -143,12 +144,7 @@ void BlockInstances::upload() {
         if (at) last = at;
         drawnData_.insert(drawnData_.end(), f, f + kInstanceFloats);
     }
-    const auto drawn = uint(drawnData_.size() / kInstanceFloats);
-    instances_->setData(
-        QByteArray(reinterpret_cast<const char*>(drawnData_.data()), qsizetype(drawnData_.size() * sizeof(float))));
-    for (auto* a : instanceAttributes_) a->setCount(drawn);
-    renderer_->setInstanceCount(int(drawn));
-    drawn_ = int(drawn);
+    drawn_ = uploadInstances(instances_, instanceAttributes_, renderer_, drawnData_, kInstanceFloats);
 }
 
 }  // namespace jl::ui

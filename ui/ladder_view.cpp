@@ -5,6 +5,7 @@
 #include "ui/block_instances.h"
 #include "ui/block_shapes.h"
 #include "ui/events_panel.h"
+#include "ui/ribbon_instances.h"
 #include "ui/room.h"
 #include "ui/scale_mark.h"
 #include "ui/strip_entity.h"
@@ -58,8 +59,8 @@ LadderView::LadderView() : Qt3DExtras::Qt3DWindow(nullptr, Qt3DRender::API::Open
     root_ = new Qt3DCore::QEntity;
     room_ = new Room(root_);
     blocks_ = new BlockInstances(root_);
-    ribbons_ = new StripEntity(root_, false);
-    centralRibbons_ = new StripEntity(root_, false);
+    ribbons_ = new RibbonInstances(root_, false);
+    centralRibbons_ = new RibbonInstances(root_, true);
     dragLine_ = new StripEntity(root_, true);
     scale_ = new ScaleMark(root_);
     dragLine_->setColor(QColor(225, 40, 40));
@@ -91,11 +92,10 @@ void LadderView::setScene(const jl::Scene& scene, bool resetCamera) {
         blockWidth_ = scene.ladder->block.width;
         blockLength_ = scene.ladder->block.length;
         ribbonSpec_ = scene.ladder->ribbons;
-        const jl::Color c = ribbonSpec_.color, m = ribbonSpec_.centralColor;
-        ribbons_->setColor(QColor(c.r, c.g, c.b));
-        centralRibbons_->setColor(QColor(m.r, m.g, m.b));
+        for (RibbonInstances* r : {ribbons_, centralRibbons_}) r->setSpec(ribbonSpec_, blockWidth_);
     }
     view_ = scene.view;
+    ribbonsStale_ = true;
     restructure_.setScene(scene);
     if (resetCamera) {
         shownPoses_.clear();  // the old scene's blocks say nothing of the new one's
@@ -150,20 +150,9 @@ void LadderView::showFrame(std::shared_ptr<const jl::Frame> shared) {
     pointedAt_.clear();
     for (const int j : hingesAtInstant(frame)) pointedAt_.insert(pointedAt_.end(), {j - 1, j});
     blocks_->showFrame(frame, frame.dragging ? grabbed_ : -1, highlighted());
-    // Ribbons are a few pixels wide at best when the whole of a long ladder is
-    // in view, yet they cost more to draw than all the blocks: show them close up.
-    const bool ribbonsShow = ribbonSpec_.visible && camera_.distance() < kRibbonDistanceInBlocks * blockLength_;
-    if (ribbonsShow || ribbonsShown_) {
-        // The simulation's frames leave the ribbons to the views that draw them.
-        std::vector<jl::RibbonFrame> ribbons;
-        if (ribbonsShow)
-            ribbons = !frame.ribbons.empty() || !ladder_
-                          ? frame.ribbons
-                          : jl::ladderRibbons(*ladder_, blockSpecs_, frame.poses, frame.hinges);
-        for (const bool central : {false, true})
-            buildRibbons(central ? *centralRibbons_ : *ribbons_, ribbons, blockWidth_, ribbonSpec_, central);
-    }
-    ribbonsShown_ = ribbonsShow;
+    shownFrame_ = shared;
+    ribbonsStale_ = true;
+    showRibbons();
     // The spring is drawn in front of the blocks, on the face toward the viewer.
     buildDragLine(*dragLine_, frame, float(blockWidth_ / 2 + 0.002),
                   float(std::max(0.0015, camera_.distance() * 0.003)));
@@ -293,6 +282,46 @@ void LadderView::updateCamera() {
     camera_.apply(camera());
     blocks_->setView(camera()->projectionMatrix() * camera()->viewMatrix(), QSize(width(), height()));
     scale_->place(camera_, height(), height() > 0 ? float(width()) / float(height()) : 1.6f);
+    showRibbons();
+}
+
+// Ribbons are a few pixels wide at best when the whole of a long ladder is
+// in view, yet they cost more to draw than all the blocks: they show close
+// up, and then only those of the blocks near the view (close to the top of
+// 10,000 blocks, a few dozen of them). So a turn of the camera may need
+// others, and a new frame always does.
+void LadderView::showRibbons() {
+    const jl::Frame* frame = shownFrame_.get();
+    BlockSpan near;
+    if (frame && (ladder_ || !frame->ribbons.empty()) && ribbonSpec_.visible &&
+        camera_.distance() < kRibbonDistanceInBlocks * blockLength_) {
+        const size_t n = std::min(frame->poses.size(), blockSpecs_.size());
+        near = blocksNearView(camera()->projectionMatrix() * camera()->viewMatrix(), std::span(frame->poses).first(n),
+                              float(blockLength_));
+    }
+    if (!ribbonsStale_ && near == ribbonsNear_) return;
+    ribbonsStale_ = false;
+    ribbonsNear_ = near;
+    std::vector<jl::RibbonFrame> ribbons;
+    if (near.first <= near.last) {
+        // From the block above the first (its hinge's ribbons reach down), at
+        // an even number: a hinge's faces alternate with its number, so a
+        // stretch made from an odd block would put them on the other faces.
+        const int first = std::max(near.first - 1, 0) & ~1;
+        if (!frame->ribbons.empty()) {
+            // Two a hinge, hinge j's (below block j - 1) from 2 (j - 1).
+            const size_t from = std::min(2 * size_t(first), frame->ribbons.size());
+            const size_t to = std::min(2 * size_t(near.last + 1), frame->ribbons.size());
+            ribbons.assign(frame->ribbons.begin() + long(from), frame->ribbons.begin() + long(to));
+        } else if (ladder_) {
+            const size_t n = std::min({frame->poses.size(), blockSpecs_.size(), frame->hinges.size() + 1});
+            const size_t count = std::min(size_t(near.last + 2), n) - size_t(first);
+            ribbons = jl::ladderRibbons(*ladder_, std::span(blockSpecs_).subspan(size_t(first), count),
+                                        std::span(frame->poses).subspan(size_t(first), count),
+                                        std::span(frame->hinges).subspan(size_t(first), count - 1));
+        }
+    }
+    for (RibbonInstances* r : {ribbons_, centralRibbons_}) r->showRibbons(ribbons);
 }
 
 std::optional<jl::Vec2> LadderView::planePoint(const QPointF& pixel) const {

@@ -6,6 +6,7 @@
 #include "jl/sim/frame.h"
 #include "ui/block_shapes.h"
 #include "ui/restructure_gesture.h"
+#include "ui/ribbon_instances.h"
 #include "ui/turn_gesture.h"
 #include "ui/view_camera.h"
 
@@ -113,6 +114,7 @@ protected:
 
 private:
     void updateCamera();
+    void showRibbons();  // those near the view, of the frame shown
     void walkTick();
     // The corners of every block as last shown, and of the ladder as built
     // (for before the first frame): what framing must keep in view.
@@ -137,8 +139,8 @@ private:
 
     Qt3DCore::QEntity* root_;
     BlockInstances* blocks_;
-    StripEntity* ribbons_;         // the outer pairs
-    StripEntity* centralRibbons_;  // the middle ribbons (a colour of their own)
+    RibbonInstances* ribbons_;         // the outer pairs
+    RibbonInstances* centralRibbons_;  // the middle ribbons (a colour of their own)
     StripEntity* dragLine_;
     Room* room_;
     ScaleMark* scale_;  // how long a length on screen is
@@ -159,7 +161,9 @@ private:
     std::optional<jl::LadderSpec> ladder_;   // whose ribbons to draw
     std::vector<jl::BlockSpec> blockSpecs_;  // its blocks, as built
     double blockLength_ = 0.06;
-    bool ribbonsShown_ = false;
+    std::shared_ptr<const jl::Frame> shownFrame_;  // whose ribbons are drawn
+    BlockSpan ribbonsNear_;                        // the blocks whose ribbons are drawn
+    bool ribbonsStale_ = false;                    // a new frame, or ribbons of another kind
     bool walk_ = false;
     bool follow_ = false;
     std::optional<jl::Vec2> followedCentre_;  // the blocks' centre at the last frame followed

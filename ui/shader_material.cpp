@@ -20,7 +20,8 @@ void ensureResources() {
     (void)once;
 }
 
-Qt3DRender::QMaterial* shaderMaterial(const QString& name, Qt3DCore::QNode* parent, ShaderOptions options) {
+Qt3DRender::QMaterial* shaderMaterial(const QString& name, Qt3DCore::QNode* parent, ShaderOptions options,
+                                      const QString& fragment) {
     ensureResources();
     auto* material = new Qt3DRender::QMaterial(parent);
     auto* effect = new Qt3DRender::QEffect(material);
@@ -39,7 +40,8 @@ Qt3DRender::QMaterial* shaderMaterial(const QString& name, Qt3DCore::QNode* pare
     auto* pass = new Qt3DRender::QRenderPass(technique);
     auto* program = new Qt3DRender::QShaderProgram(pass);
     program->setVertexShaderCode(Qt3DRender::QShaderProgram::loadSource(QUrl("qrc:/shaders/" + name + ".vert")));
-    program->setFragmentShaderCode(Qt3DRender::QShaderProgram::loadSource(QUrl("qrc:/shaders/" + name + ".frag")));
+    program->setFragmentShaderCode(Qt3DRender::QShaderProgram::loadSource(
+        QUrl("qrc:/shaders/" + (fragment.isEmpty() ? name : fragment) + ".frag")));
     pass->setShaderProgram(program);
     if (options != ShaderOptions::Solid) {
         auto* cull = new Qt3DRender::QCullFace(pass);

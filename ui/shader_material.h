@@ -23,8 +23,8 @@ enum class ShaderOptions {
     TwoSidedOnAFace,  // and drawn with a depth offset toward the eye, lying on a face without z-fighting
 };
 
-// Loads qrc:/shaders/<name>.vert and .frag.
+// Loads qrc:/shaders/<name>.vert and .frag (or <fragment>.frag, when given).
 Qt3DRender::QMaterial* shaderMaterial(const QString& name, Qt3DCore::QNode* parent,
-                                      ShaderOptions options = ShaderOptions::Solid);
+                                      ShaderOptions options = ShaderOptions::Solid, const QString& fragment = {});
 
 }  // namespace jl::ui

@@ -9,8 +9,6 @@
 #include <Qt3DRender/QMaterial>
 #include <Qt3DRender/QParameter>
 
-#include <algorithm>
-
 namespace jl::ui {
 
 StripEntity::StripEntity(Qt3DCore::QNode* parent, bool unlit) : Qt3DCore::QEntity(parent) {
@@ -48,36 +46,6 @@ void StripEntity::commit() {
     buffer_->setData(QByteArray(reinterpret_cast<const char*>(data_.data()), int(data_.size() * sizeof(float))));
     for (auto* a : attributes_) a->setCount(vertices);
     renderer_->setVertexCount(int(vertices));
-}
-
-// The toy's three ribbons per hinge (docs/model.md section 8.8): the frame
-// gives each one's path in the plane; the outer pair is drawn at
-// |z| = half width - inset - half ribbon width, the middle one at z = 0.
-void buildRibbons(StripEntity& strips, const std::vector<jl::RibbonFrame>& ribbons, double blockWidth,
-                  const jl::RibbonSpec& spec, bool central) {
-    strips.clear();
-    const double width = central ? spec.centralWidth : spec.width;
-    const float half = float(width / 2);
-    std::vector<float> lanes{0.0f};
-    if (!central) {
-        const float zc = float(std::max(blockWidth / 2 - spec.inset - width / 2, width / 2));
-        lanes = {-zc, zc};
-    }
-    for (const jl::RibbonFrame& r : ribbons) {
-        if (!r.visible || r.central != central) continue;
-        for (size_t i = 1; i < r.points.size(); ++i) {
-            const jl::Vec2 p = r.points[i - 1], q = r.points[i];
-            const jl::Vec2 d = q - p;
-            if (d.squaredNorm() == 0) continue;
-            const jl::Vec2 nn = jl::perp(d).normalized();
-            const QVector3D n(float(nn.x()), float(nn.y()), 0);
-            for (float z : lanes) {
-                strips.addQuad({float(p.x()), float(p.y()), z - half}, {float(q.x()), float(q.y()), z - half},
-                               {float(q.x()), float(q.y()), z + half}, {float(p.x()), float(p.y()), z + half}, n);
-            }
-        }
-    }
-    strips.commit();
 }
 
 void buildDragLine(StripEntity& strip, const jl::Frame& frame, float z, float width) {

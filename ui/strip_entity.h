@@ -1,8 +1,7 @@
-// Thin flat strips of one colour, rebuilt every frame: the ribbons over the
-// block faces, and the line of the mouse spring.
+// Thin flat strips of one colour, rebuilt every frame: the line of the mouse
+// spring, the scale bar (the ribbons, many more, are instanced: ribbon_instances.h).
 #pragma once
 
-#include "jl/scene/scene.h"
 #include "jl/sim/frame.h"
 
 #include <QColor>
@@ -42,10 +41,6 @@ private:
     Qt3DRender::QParameter* color_;
 };
 
-// The outer pairs (or the middle ribbons) as strips over the ladder's faces
-// (z is the blocks' width direction).
-void buildRibbons(StripEntity& strips, const std::vector<jl::RibbonFrame>& ribbons, double blockWidth,
-                  const jl::RibbonSpec& spec, bool central);
 // The mouse spring from the grabbed point to the hand, as a bar facing the viewer.
 void buildDragLine(StripEntity& strip, const jl::Frame& frame, float z, float width);
 

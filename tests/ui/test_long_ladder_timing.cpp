@@ -6,51 +6,23 @@
 // It also prints where each thread's processor time went and the real-time
 // factor, for docs/desktop-performance.md (speed is measured, not asserted).
 #include "jl/scene/scene_io.h"
+#include "thread_seconds.h"
 #include "ui/main_window.h"
 #include "ui/sim_controller.h"
 #include "ui_test_support.h"
 
-#include <QDir>
 #include <QElapsedTimer>
 #include <QThread>
 #include <QtTest>
 
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <string>
-#include <unistd.h>
 
 using namespace jl::ui;
 
 namespace {
 
 constexpr qint64 kLongestStallMs = 100;  // the requirement: no click waits longer
-
-// CPU seconds of every thread of this process, by name (/proc/self/task).
-std::map<std::string, double> threadSeconds() {
-    std::map<std::string, double> out;
-    const double tick = double(sysconf(_SC_CLK_TCK));
-    for (const QString& tid : QDir("/proc/self/task").entryList(QDir::Dirs | QDir::NoDotAndDotDot)) {
-        std::ifstream in(("/proc/self/task/" + tid + "/stat").toStdString());
-        std::string line;
-        std::getline(in, line);
-        const auto open = line.find('('), close = line.rfind(')');
-        if (open == std::string::npos || close == std::string::npos) continue;
-        std::string name = line.substr(open + 1, close - open - 1);
-        // Fields after the name: state is field 3, utime 14 and stime 15.
-        std::istringstream rest(line.substr(close + 2));
-        std::string field;
-        double utime = 0, stime = 0;
-        for (int i = 3; i <= 15 && rest >> field; ++i) {
-            if (i == 14) utime = std::stod(field);
-            if (i == 15) stime = std::stod(field);
-        }
-        if (name.rfind("llvmpipe", 0) == 0) name = "llvmpipe";
-        out[name] += (utime + stime) / tick;
-    }
-    return out;
-}
 
 // The classic cascade's design with `blocks` blocks, as a user makes it.
 jl::Scene classicWith(int blocks) {
@@ -88,7 +60,7 @@ private slots:
         QVERIFY(jl::test::waitForStatus(sim, [](const SimStatus& s) { return s.playing && s.frameIndex > 0; }));
 
         jl::test::EventLoopProbe probe;
-        const auto cpuBefore = threadSeconds();
+        const auto cpuBefore = jl::test::threadSeconds();
         const double simBefore = sim->status()->frame->time;
         probe.start();
         // The last 2 s on their own too: the span the status bar's factor covers.
@@ -98,7 +70,7 @@ private slots:
         QTest::qWait(2000);
         probe.stop();
         const double wall = double(probe.clock.elapsed()) / 1000;
-        const auto cpuAfter = threadSeconds();
+        const auto cpuAfter = jl::test::threadSeconds();
         const auto s = sim->status();
 
         // A click on Pause while it plays: from the click's event to the
