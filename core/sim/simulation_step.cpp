@@ -34,66 +34,6 @@ Ledger ledgerBetween(const Ledger& l0, const Powers& p0, const Ledger& l1, const
 
 }  // namespace
 
-// An unstable integrator makes energy from nothing long before a NaN or a
-// failed projection shows it: compare E with E0 + work - losses, against the
-// size of every term of the books.
-bool Simulation::booksDiverged() const {
-    // RK4 and Dormand-Prince keep the books to 1e-5 of this scale or better
-    // wherever their step is stable (the heavy-middle example at 1 ms: 3e-5);
-    // a thousandth is a motion running away. The Euler methods drift by O(h)
-    // even when stable: for them only a twentieth is.
-    const Integrator method = scene_.solver.integrator;
-    const bool euler = method == Integrator::ExplicitEuler || method == Integrator::SymplecticEuler;
-    const double kDivergence = euler ? 0.05 : 1e-3;
-    const double held = ledger_.held + impactHeldWork_;
-    const Energy e = energy(world_);
-    // What "large" means: the energy that has flowed, none of it measured
-    // from the arbitrary zero of the potential (a 10,000-block ladder has
-    // -5.8e5 J of it, which would hide any blow-up).
-    const double scale = energyFloor_ + initialKinetic_ + std::abs(e.potential - initialPotential_) + std::abs(held) +
-                         std::abs(ledger_.user) + impactLoss_ + ledger_.damping + 1e-9;
-    return !(std::abs(booksImbalance(e.total()) - imbalanceBase_) <= kDivergence * scale);
-}
-
-// E - (E0 + W_held + W_user - D_impacts - D_damping), E = `total`: zero when the books balance.
-double Simulation::booksImbalance(double total) const {
-    return total - (initialEnergy_ + ledger_.held + impactHeldWork_ + ledger_.user - impactLoss_ - ledger_.damping);
-}
-
-void Simulation::fail(const std::string& why) { failure_ = "at t = " + std::to_string(t_) + " s: " + why; }
-
-void Simulation::restoreStepStart() {
-    world_.q = stepStartQ_;
-    world_.v = stepStartV_;
-    ledger_ = stepStartLedger_;
-}
-
-// A ladder error raised anywhere in the step (an event's settling, a script
-// action, a grab or push taking up its contacts, a held contact let go, a
-// wake of the still tail) stops the run in this step, and what is kept is
-// the step's start: the structure from before the step's first change, the
-// motion from before the step, and none of its frames or events
-// (docs/model.md section 12.4). Nothing half-restructured is left to show.
-bool Simulation::stopOnLadderError(double stepStart) {
-    if (!ladder_ || ladder_->error().empty()) return true;
-    const std::string why = ladder_->error();
-    std::vector<Event> earlier;
-    for (const Event& e : pending_)
-        if (e.time <= stepStart) earlier.push_back(e);
-    if (changeKept_) restore(*beforeChange_);  // the structure, the ladder's state, no error
-    restoreStepStart();
-    t_ = stepStart;
-    world_.updateKinematics(t_);
-    dynamics_.evaluate(world_, t_);
-    keptStart_.forget();
-    keptEnd_.forget();
-    std::erase_if(gridFrames_, [&](const Frame& f) { return f.time > stepStart; });
-    gridDoneUpTo_ = std::min(gridDoneUpTo_, stepStart);
-    pending_ = std::move(earlier);
-    fail(why);
-    return false;
-}
-
 // The frames of the grid strictly inside the step just taken (from t_, of
 // length `taken`, not yet resolved: the world holds its end, in the same
 // structure as its start), read off the quintic Hermite interpolant of the
@@ -373,64 +313,6 @@ std::string gapText(double metres) { return shortNumber(metres) + " m"; }
 
 }  // namespace
 
-StiffMode Simulation::stiffestMode() const { return jl::stiffestMode(world_, dynamics_.pinForces()); }
-
-namespace {
-
-// Why a projection tolerance cannot be met where the bodies are: below the
-// rounding of their coordinates (a few units in the last place of the
-// largest), or "".
-std::string roundingNote(const World& w, double tolerance) {
-    double largest = 0;
-    for (int b = 0; b < w.bodyCount(); ++b)
-        if (w.body(b).alive) largest = std::max(largest, w.bodyPose(b).position.cwiseAbs().maxCoeff());
-    const double rounding = 8 * std::numeric_limits<double>::epsilon() * largest;
-    if (tolerance >= rounding) return {};
-    return "the projection tolerance " + shortNumber(tolerance) + " m is below the rounding of coordinates near " +
-           shortNumber(largest) + " m (about " + shortNumber(rounding) + " m): give a larger projection_tolerance";
-}
-
-}  // namespace
-
-// What to try after a step blew up, from what sets the step: the stiffest
-// mode of the motion (a stiff spring, heavy damping on a light body, a taut
-// pin on a small inertia), which an explicit step must resolve and the
-// linearly implicit rosenbrock_w need not. A user's step or tolerance may be
-// too coarse; at their floors, or with the engine's own step halved ten
-// times, the advice names the mode, and held blocks only in a scene that
-// holds some.
-std::string Simulation::blowUpAdvice(double h) const {
-    if (std::string note = roundingNote(world_, scene_.solver.projectionTolerance); !note.empty()) return note;
-    const SolverSpec& solver = scene_.solver;
-    const StiffMode mode = stiffestMode();
-    const bool unresolved = mode.rate * h > 1;  // more than a radian (or a decay time) per step
-    const std::string stiff = "the stiffest mode is " + describe(mode);
-    const std::string cope =
-        solver.integrator == Integrator::RosenbrockW
-            ? "; it is faster than the engine can follow: make the scene less stiff"
-            : "; the linearly implicit rosenbrock_w is not held to a step under such a mode's time scale: try it";
-    if (isAdaptive(solver.integrator)) {
-        const std::string tolerance = "the adaptive integrator's tolerance " + shortNumber(solver.tolerance);
-        if (solver.tolerance > range::tolerance.lo)
-            return tolerance + " lets too much error through here; try a tighter tolerance" +
-                   (unresolved ? " (" + stiff + ")" : "");
-        return tolerance + " is at its floor and still lets too much error through: " + stiff + cope;
-    }
-    const std::string step = shortNumber(h) + " s";
-    if (solver.step > 0 && solver.step > range::step.lo)
-        return "the step " + step + " is too large for this integrator here (" +
-               (unresolved ? stiff : "a fast vibration grows at every step") +
-               "); try a smaller step, or leave the step to the engine, or the adaptive integrator";
-    if (solver.step > 0) return "the step " + step + " is at its floor and still too large here: " + stiff + cope;
-    std::string text =
-        "it still does at a step of " + step + ", halved " + std::to_string(stats_.stepHalvings) + " times";
-    if (unresolved) return text + ": " + stiff + cope;
-    bool held = false;  // part 0 is the ground, held still, not a block
-    for (PartId p = 1; p < PartId(world_.partCount()); ++p) held = held || world_.part(p).drive.has_value();
-    return text + ", so the step is not the cause: it resolves the stiffest mode, " + describe(mode) + ". Look for " +
-           (held ? "held blocks driven against each other or " : "") + "forces the bodies cannot follow";
-}
-
 bool Simulation::takeStep(double limit) {
     if (!failure_.empty()) return false;
     const SolverSpec& solver = scene_.solver;
@@ -504,6 +386,7 @@ bool Simulation::takeStep(double limit) {
             }
             emitGridFrames(taken);
             keepBeforeChange();
+            const double heldBefore = impactHeldWork_;
             std::vector<Event> happened =
                 ladder_->settle(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
             if (happened.empty() && taken < m.step.taken) {
@@ -520,6 +403,7 @@ bool Simulation::takeStep(double limit) {
             }
             for (Event& e : happened) record(e);
             if (!stopOnLadderError(stepStart)) return false;
+            if (const auto why = squeezedByTheHand(heldBefore)) return stopAt(stepStart, *why);
             if (!world_.q.allFinite() || !world_.v.allFinite()) {
                 restoreStepStart();
                 fail("an impact produced a non-finite state");

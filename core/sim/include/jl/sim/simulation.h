@@ -141,6 +141,8 @@ private:
     void restoreStepStart();
     void keepBeforeChange();
     bool stopOnLadderError(double stepStart);
+    bool stopAt(double stepStart, std::string why);  // a copy: restoring clears the ladder's error
+    std::optional<std::string> squeezedByTheHand(double heldBefore) const;
     void emitGridFrames(double taken);
     Powers stepEndAsTaken(double taken);
     void record(const Event& e);
