@@ -4,11 +4,11 @@
 
 namespace jl::ui {
 
-enum class SceneChange { Whole, Ladder, Solver, Script, Drags, Text, Duration };
+enum class SceneChange { Whole, Ladder, Solver, Script, Drags, Text, Duration, Floor };
 
 // Commands with the same id and the same field key merge (a spin-box drag is
 // one undo step). Apart (-1, QUndoStack's "no merging") never does: a row
 // added by a gesture of the hand is a step of its own, however soon the next.
-enum class UndoId { Apart = -1, LadderValue = 1, SolverValue, ScriptTable, RecordDrag, Description, Duration };
+enum class UndoId { Apart = -1, LadderValue = 1, SolverValue, ScriptTable, RecordDrag, Description, Duration, Floor };
 
 }  // namespace jl::ui

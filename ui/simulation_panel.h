@@ -1,4 +1,5 @@
-// The Simulation dock: integrator, steps, tolerances and the event policy.
+// The Simulation dock: integrator, steps, tolerances, the event policy,
+// whether blocks touch, and the table top.
 #pragma once
 
 #include "jl/scene/scene_fields.h"
@@ -6,7 +7,9 @@
 
 #include <QWidget>
 
+class QCheckBox;
 class QComboBox;
+class QDoubleSpinBox;
 class QSpinBox;
 
 namespace jl::ui {
@@ -29,11 +32,15 @@ private:
     QComboBox* addChoice(std::span<const jl::Word<E>> words, E jl::SolverSpec::*member, const char* key,
                          const QString& label, const QString& tip, const QString& undo, bool first = false);
 
+    void addTableTop();
+
     Document* doc_;
     ValueForm* form_;
     QComboBox* integrator_;
     QComboBox* events_;
     QComboBox* blockContact_;
+    QCheckBox* table_;             // a table top under the ladder, or none
+    QDoubleSpinBox* tableHeight_;  // mm
     QSpinBox* history_;
 };
 

@@ -1,13 +1,18 @@
 // labels: ui
 // The Simulation dock's choices: each one a box that edits the scene as one
 // undoable step, and shows the scene's value again after undo. Block contact
-// (docs/model.md section 17) is chosen here, not only in the scene file.
+// (docs/model.md section 17) and the table top (17.8) are chosen here, not
+// only in the scene file.
 #include "jl/scene/scene_io.h"
+#include "jl/sim/simulation.h"
 #include "ui/document.h"
 #include "ui/simulation_panel.h"
 #include "ui_test_support.h"
 
+#include <QCheckBox>
 #include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QLineEdit>
 #include <QUndoStack>
 #include <QtTest>
 
@@ -41,6 +46,61 @@ private slots:
         QCOMPARE(doc.scene().solver.blockContact, jl::BlockContact::Off);
         panel.refresh();  // as the main window does on every change of the scene
         QCOMPARE(box->currentData().toInt(), int(jl::BlockContact::Off));
+    }
+
+    // A click puts a table top just under the ladder as it starts; its
+    // height is then typed; each is one step of undo.
+    void aTableTopIsPutUnderTheLadderTypedAndUndone() {
+        Document doc;
+        const jl::SceneLoad load = jl::loadScene(JL_SOURCE_DIR "/examples/classic.yaml");
+        QVERIFY(load.scene && !load.scene->floor);
+        doc.reset(*load.scene, QString());
+        SimulationPanel panel(&doc);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        auto* table = panel.findChild<QCheckBox*>("floor");
+        auto* height = panel.findChild<QDoubleSpinBox*>("floor.height");
+        QVERIFY(table && height);
+        QVERIFY(!table->isChecked() && table->isEnabled() && !height->isEnabled());
+        QCOMPARE(height->text(), QString("none"));
+        // The ladder's lowest corner as it starts.
+        const auto built = jl::Simulation::build(doc.scene());
+        QVERIFY(built.simulation);
+        const jl::Ladder& ladder = *built.simulation->ladder();
+        double lowest = 1e300;
+        for (int i = 0; i < ladder.blockCount(); ++i)
+            for (int k = 0; k < 4; ++k)
+                lowest = std::min(lowest, ladder.cornerWorld(built.simulation->world(), i, k).y());
+
+        QTest::mouseClick(table, Qt::LeftButton, {}, QPoint(4, table->height() / 2));
+        QVERIFY(doc.scene().floor);
+        const double under = lowest - doc.scene().floor->height;
+        qInfo("lowest corner %.6f m, table top %.6f m", lowest, doc.scene().floor->height);
+        QVERIFY(under >= 0.01 && under < 0.011);
+        QCOMPARE(doc.undoStack()->undoText(), QString("Add table top"));
+        panel.refresh();
+        QVERIFY(table->isChecked() && height->isEnabled());
+        QCOMPARE(height->value(), doc.scene().floor->height * 1000);
+        // The scene builds with it, and it is written to the file.
+        QVERIFY(jl::Simulation::build(doc.scene()).simulation);
+        QVERIFY(jl::sceneToYaml(doc.scene()).find("floor:") != std::string::npos);
+
+        // Typed: -250 mm.
+        height->setFocus();
+        height->findChild<QLineEdit*>()->selectAll();
+        QTest::keyClicks(height, "-250");
+        QTest::keyClick(height, Qt::Key_Return);
+        QVERIFY(doc.scene().floor);
+        QCOMPARE(doc.scene().floor->height, -0.25);
+        QCOMPARE(doc.undoStack()->undoText(), QString("Change table top"));
+
+        doc.undoStack()->undo();
+        QVERIFY(std::abs(lowest - doc.scene().floor->height - under) < 1e-15);
+        doc.undoStack()->undo();
+        QVERIFY(!doc.scene().floor);
+        panel.refresh();
+        QVERIFY(!table->isChecked() && !height->isEnabled());
+        QCOMPARE(height->text(), QString("none"));
     }
 };
 
