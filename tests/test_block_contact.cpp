@@ -209,6 +209,45 @@ private slots:
         QVERIFY(std::abs(sim->frame().energy.impactLoss - lossByHand) < 1e-9 * lossByHand);
     }
 
+    // With restitution e = 0.5 the flat drop bounces: landed at t0 =
+    // sqrt(2 h / g) at v0 = g t0, it leaves at e^k v0 after the k-th close
+    // and is in the air for r_k = 2 e^k v0 / g = t0 / 2^(k-1). The rebounds
+    // shrink, and the first close that ends one shorter than the Zeno time
+    // t_Z = 0.0125 sqrt(L / g) (0.978 ms) and than the one before is the
+    // sequence's limit (docs/model.md section 8.6): r_8 = 0.796 ms, at
+    // t0 (3 - 2^-7). Held there, it does not bounce: it rests on block 2.
+    void aBounceIsHeldAtItsZenoLimit() {
+        std::string yaml = dropScene("", "{block_contact: on, event_tolerance: 1e-12}");
+        yaml.replace(yaml.find("  held: [1, 2]\n"), 15, "  held: [1, 2]\n  hinges: {restitution: 0.5}\n");
+        auto sim = simulate(yaml);
+        QVERIFY(sim);
+        const double h = 0.050911688245431419, t0 = std::sqrt(2 * h / kG);
+        const double zeno = 0.0125 * std::sqrt(0.06 / kG);
+        int k = 1;
+        while (t0 / std::pow(2.0, k - 1) >= zeno) ++k;
+        QCOMPARE(k, 8);
+        const double heldAt = t0 * (3 - std::pow(2.0, 1 - k));
+        std::vector<double> bounces, touches;
+        const Run run = runUntil(*sim, 0.6, [&](const Frame& f) {
+            for (const Event& e : f.events) {
+                if (e.kind == EventKind::Bounce) bounces.push_back(e.time);
+                if (e.kind == EventKind::Touch) touches.push_back(e.time);
+            }
+        });
+        QVERIFY2(run.failure.empty(), run.failure.c_str());
+        qInfo("%zu bounces, %zu touches, the last at %.12f s; by hand 16 and 18, held at %.12f s", bounces.size(),
+              touches.size(), touches.back(), heldAt);
+        QCOMPARE(int(bounces.size()), 2 * k);  // both landing corners, at closes 0 to 7
+        QCOMPARE(int(touches.size()), 2 * (k + 1));
+        QVERIFY(std::abs(touches.back() - heldAt) < 1e-10);
+        QVERIFY(bounces.back() < heldAt - 1e-4);
+        const World& w = sim->world();
+        const double m = w.part(sim->ladder()->block(0)).mass;
+        QVERIFY(w.partVelocity(sim->ladder()->block(0)).linear.norm() < 1e-9);
+        QVERIFY(std::abs(sim->frame().energy.impactLoss - m * kG * h) < 1e-9 * m * kG * h);
+        QVERIFY(run.worstBalance < 1e-9);
+    }
+
     // Gravity tilted by 10 degrees: block 0 lands flat on block 2's face,
     // then slides down it without friction until a corner reaches the
     // face's end. While it slides nothing dissipates: the total energy

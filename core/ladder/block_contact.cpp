@@ -147,9 +147,7 @@ double BlockContacts::eventFunctions(const World& w, const Dynamics& d, const La
     }
     const Eigen::VectorXd& push = d.contactForces();
     for (size_t i = 0; i < touches_.size(); ++i) {
-        const double f = touches_[i].held
-                             ? 1.0
-                             : (Eigen::Index(i) < push.size() ? push[Eigen::Index(i)] : 0.0) + ladder.forceTolerance();
+        const double f = (Eigen::Index(i) < push.size() ? push[Eigen::Index(i)] : 0.0) + ladder.forceTolerance();
         out.push_back(f);
         smallestForce = std::min(smallestForce, f);
     }
@@ -257,12 +255,12 @@ Contact BlockContacts::contactAt(const World& w, const Ladder& ladder, int block
     return c;
 }
 
-void BlockContacts::part(World& w, size_t i, double t) {
+void BlockContacts::part(World& w, size_t i, double t, bool byImpact) {
     const Touch& c = touches_[i];
     const double gap = contactGap(w, w.contacts()[i]);
     std::erase_if(parted_,
                   [&](const Parted& p) { return p.block == c.block && p.corner == c.corner && p.other == c.other; });
-    parted_.push_back({c.block, c.corner, c.other, gap, t});
+    parted_.push_back({c.block, c.corner, c.other, gap, t, byImpact, c.rebound});
     partedNow_.push_back({c.block, c.corner, c.other});
     w.contacts().erase(w.contacts().begin() + std::ptrdiff_t(i));
     touches_.erase(touches_.begin() + std::ptrdiff_t(i));
@@ -286,9 +284,10 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
     for (size_t i = 0; i < touches_.size(); ++i) {
         const ContactRow row = contactRow(w, w.contacts()[i]);
         const bool off = slideRoom(w, i) < -band;
-        if (off || (!touches_[i].held && rowTimes(row, w.v) > parting)) {
+        const bool away = !(touches_[i].held && heldNow_) && rowTimes(row, w.v) > parting;
+        if (off || away) {
             const Touch c = touches_[i];
-            part(w, i, t);
+            part(w, i, t, !off);
             events.push_back({t, EventKind::Part, -1, -1, words(off ? "slides off" : "leaves", c)});
             return events;
         }
@@ -297,10 +296,10 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
     Eigen::Index worst = -1;
     double most = -ladder.forceTolerance();
     for (Eigen::Index i = 0; i < push.size() && i < Eigen::Index(touches_.size()); ++i)
-        if (!touches_[size_t(i)].held && push[i] < most) most = push[i], worst = i;
+        if (push[i] < most) most = push[i], worst = i;
     if (worst >= 0) {
         const Touch c = touches_[size_t(worst)];
-        part(w, size_t(worst), t);
+        part(w, size_t(worst), t, false);
         events.push_back({t, EventKind::Part, -1, -1, words("leaves", c)});
         return events;
     }
@@ -344,8 +343,11 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
         w.contacts().push_back(candidate);
         Touch made{c.block, c.corner, c.other, against(w, ladder, c.block, c.corner, c.other).face, t};
         for (const Parted& p : parted_)
-            made.held = made.held || (p.block == c.block && p.corner == c.corner && p.other == c.other &&
-                                      t - p.at <= ladder.zenoTime());
+            if (p.block == c.block && p.corner == c.corner && p.other == c.other && p.byImpact) {
+                made.rebound = t - p.at;
+                made.held = made.rebound < ladder.zenoTime() && made.rebound < p.rebound;
+            }
+        heldNow_ = heldNow_ || made.held;
         touches_.push_back(made);
         approach.push_back(-rate);
         events.push_back({t, EventKind::Touch, -1, -1, words("strikes", touches_.back())});
@@ -365,11 +367,9 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
         // times the speed it closed at (for one contact with nothing else).
         bool anyBounce = false;
         for (size_t i = touches_.size(); i-- > first;)
-            if (e * approach[i - first] > hinges.minReboundSpeed * length) {
+            if (!touches_[i].held && e * approach[i - first] > hinges.minReboundSpeed * length) {
                 const Touch c = touches_[i];
-                w.contacts().erase(w.contacts().begin() + std::ptrdiff_t(i));
-                touches_.erase(touches_.begin() + std::ptrdiff_t(i));
-                partedNow_.push_back({c.block, c.corner, c.other});
+                part(w, i, t, true);
                 events.push_back({t, EventKind::Bounce, -1, -1, words("bounces off", c)});
                 anyBounce = true;
             }
@@ -391,31 +391,6 @@ std::vector<BlockContactFrame> BlockContacts::frames(const World& w, const Dynam
             {t.block, t.corner, t.other, w.pointPosition(c.cornerPart, c.corner), contactRow(w, c).normal, s});
     }
     return out;
-}
-
-bool BlockContacts::holdsAny() const {
-    return std::any_of(touches_.begin(), touches_.end(), [](const Touch& c) { return c.held; });
-}
-
-std::vector<Event> BlockContacts::letGoExpired(World& w, const Dynamics& d, const Ladder& ladder, double t) {
-    std::vector<Event> events;
-    const Eigen::VectorXd& push = d.contactForces();
-    for (size_t i = 0; i < touches_.size() && Eigen::Index(i) < push.size(); ++i) {
-        Touch& c = touches_[i];
-        if (!c.held) continue;
-        if (push[Eigen::Index(i)] >= -ladder.forceTolerance()) {
-            c.pullingSince = -1;
-            continue;
-        }
-        if (c.pullingSince < 0) c.pullingSince = t;
-        if (t - c.pullingSince < ladder.zenoTime()) continue;
-        const Touch gone = c;
-        part(w, i, t);
-        events.push_back({t, EventKind::Part, -1, -1,
-                          contactWords(gone.block, "leaves", gone.other, gone.corner) + ", held for a Zeno time"});
-        return events;  // one at a time: the rest are tested again after the instant is settled
-    }
-    return events;
 }
 
 // An instant settled with the contacts between blocks too: the hinges

@@ -445,17 +445,6 @@ bool Simulation::takeStep(double limit) {
     lastResidual_ = m.projection.residual;
     if (nextAction_ < scene_.script.size() && scene_.script[nextAction_].at <= t_ + 1e-12) keepBeforeChange();
     applyDueInputs();
-    if (ladder_) {
-        // A block contact held at its Zeno limit that has pulled for a
-        // Zeno time parts at the step's end (docs/model.md section 17.6).
-        if (ladder_->blockContacts().holdsAny()) keepBeforeChange();
-        std::vector<Event> parted = ladder_->blockContacts().letGoExpired(world_, dynamics_, *ladder_, t_);
-        if (!parted.empty()) {
-            for (Event& e : parted) record(e);
-            for (Event& e : ladder_->settle(world_, dynamics_, t_, &impactLoss_, &impactHeldWork_)) record(e);
-            keptEnd_.keep(world_, dynamics_, t_, ladder_->settledPowers());
-        }
-    }
     return stopOnLadderError(stepStart);
 }
 

@@ -9,6 +9,7 @@
 #include "jl/ladder/hinge_event.h"
 
 #include <array>
+#include <limits>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -66,11 +67,6 @@ public:
     // watched against the other block, and the contacts that rest. The
     // event functions of the next location are these, at any state.
     void refresh(const World& w, const Ladder& ladder);
-    // After a step (the dynamics evaluated at its end, time t): the held
-    // contacts that have pulled for a Zeno time part. What happened.
-    std::vector<Event> letGoExpired(World& w, const Dynamics& d, const Ladder& ladder, double t);
-    // Whether any contact is held at its Zeno limit (letGoExpired may act).
-    bool holdsAny() const;
     // Appends the functions (>= 0 while nothing happens): each watched
     // corner's gap, and each resting contact's push and how far its corner
     // is from sliding off the face. Returns the smallest push (+inf if none).
@@ -90,7 +86,10 @@ public:
     std::vector<Event> resolveOnce(World& w, Dynamics& d, const Ladder& ladder, double t, double* loss,
                                    double* heldWork);
     // A new instant: the contacts parted in the last one may touch again.
-    void newInstant() { partedNow_.clear(); }
+    void newInstant() {
+        partedNow_.clear();
+        heldNow_ = false;
+    }
     // While an event is located, the corners' functions cross where the
     // gap does (the rounding of a pose aside); at a step's end a corner
     // must be past the face by more than the pins' own tolerance (`gap`,
@@ -111,11 +110,14 @@ public:
     struct Touch {
         int block = 0, corner = 0, other = 0, face = 0;
         double since = 0;  // s, when it closed
-        // Closed again within the Zeno time of its parting: held closed
-        // (docs/model.md section 8.6, held contacts) until it has pulled for a
-        // Zeno time; its push raises no event meanwhile.
+        // s: how long it was apart before this close, if an impact parted
+        // it (a rebound); infinite when it last parted by its push or never.
+        double rebound = std::numeric_limits<double>::infinity();
+        // Closed at the end of a rebound shorter than the Zeno time and than
+        // the one before: the limit of a shrinking sequence (docs/model.md
+        // section 8.6, held contacts). It does not bounce, and an impact
+        // elsewhere in the instant it became held does not part it.
         bool held = false;
-        double pullingSince = -1;  // s; -1: it pushes
         bool operator==(const Touch&) const = default;
     };
     const std::vector<Touch>& touches() const { return touches_; }
@@ -150,7 +152,9 @@ private:
     static bool atHingeOf(const World& w, const Ladder& ladder, const Vec2& p, int b);
     static bool onPin(const World& w, const Ladder& ladder, const Vec2& p, int a, int b);
     double gapZero(int block, int corner, int other) const;
-    void part(World& w, size_t i, double t);
+    // `byImpact`: it moves away after an impact (a rebound starts), not
+    // parted by its push or off its face's end.
+    void part(World& w, size_t i, double t, bool byImpact);
 
     bool enabled_ = true;
     std::optional<double> floor_;  // m, the table top's height
@@ -162,11 +166,14 @@ private:
     // noise): their zero, until they are clear by kClear.
     struct Parted {
         int block = 0, corner = 0, other = 0;
-        double gap = 0;  // m; 0 once clear
-        double at = 0;   // s, when it parted
+        double gap = 0;                                            // m; 0 once clear
+        double at = 0;                                             // s, when it parted
+        bool byImpact = false;                                     // a rebound started then
+        double rebound = std::numeric_limits<double>::infinity();  // s, the one that ended before it
     };
     std::vector<Parted> parted_;
     std::vector<std::array<int, 3>> partedNow_;
+    bool heldNow_ = false;                     // a contact became held in this instant
     std::vector<std::array<int, 3>> located_;  // in this instant: they stay apart in it
     std::vector<std::pair<int, int>> pairs_;
     int pairCount_ = 0;
