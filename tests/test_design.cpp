@@ -15,6 +15,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 using namespace jl;
@@ -109,11 +110,14 @@ private slots:
         QCOMPARE(firstRippleReach(turnedLadder(25, 0.003)).reached, 23);
     }
 
-    // Without a turn, nothing flips: the ladder hangs at rest.
+    // Without a turn, nothing flips: the ladder hangs at rest for its
+    // whole run (which a run that stops when settled does not wait for:
+    // tests/test_design_settled.cpp).
     void noTurnNoRipple() {
         Scene s = turnedLadder(8, 0.012);
         s.script.clear();
-        const RippleReach r = firstRippleReach(s);
+        const RippleReach r =
+            firstRippleReach(s, nullptr, std::numeric_limits<double>::infinity(), RippleStop::WholeRun);
         QVERIFY(r.failure.empty());
         QCOMPARE(r.reached, 0);
         QCOMPARE(r.events, 0);
@@ -156,8 +160,9 @@ private slots:
         // Each column names its unit, and each number reads back to the
         // very double of the design and of its run.
         const std::string csv = rippleMapCsv(one);
-        QVERIFY2(csv.starts_with("blocks,thickness [m],hinges,reached,mean_time_between_flips [s],flips_elsewhere,"
-                                 "events,quick_row,failure\n"),
+        QVERIFY2(csv.starts_with("blocks,thickness [m],hinges,reached,mean_time_between_flips [s],"
+                                 "flips_elsewhere_until_stop,events_until_stop,quick_row_until_stop,stopped_at [s],"
+                                 "stopped_by,failure\n"),
                  csv.c_str());
         std::string error;
         const auto rows = readCsv(csv, error);
@@ -170,6 +175,8 @@ private slots:
             const double mean = one.cells[k].meanTimeBetweenFlips;
             QCOMPARE(row[4].empty(), !std::isfinite(mean));
             if (std::isfinite(mean)) QCOMPARE(std::stod(row[4]), mean);
+            QCOMPARE(std::stod(row[8]), one.cells[k].until);
+            QCOMPARE(row[9], std::string(rippleEndWord(one.cells[k].end)));
             timed += std::isfinite(mean);
         }
         QVERIFY(timed > 0);
@@ -186,6 +193,8 @@ private slots:
             m.cells[k].reached = int(k);
             m.cells[k].meanTimeBetweenFlips = 0.125 * double(k);
             m.cells[k].events = 10 * int(k);
+            m.cells[k].until = 0.5 + 0.001 * double(k);
+            m.cells[k].end = k % 2 ? RippleEnd::Energy : RippleEnd::Order;
         }
         m.cells[1].failure = "the run failed at t = 0.5 s: a, \"b\"\nand c";
         m.cells[4].meanTimeBetweenFlips = std::nan("");
@@ -197,6 +206,8 @@ private slots:
         QCOMPARE(rippleMapCsv(*joined.map), rippleMapCsv(m));
         QCOMPARE(rippleMapSvg(*joined.map, "t"), rippleMapSvg(m, "t"));
         QCOMPARE(joined.map->cells[1].failure, m.cells[1].failure);
+        QCOMPARE(joined.map->cells[3].until, m.cells[3].until);
+        QCOMPARE(joined.map->cells[3].end, RippleEnd::Energy);
 
         const auto refusal = [](std::vector<std::pair<std::string, std::string>> s) {
             return joinRippleShares(s).error;
@@ -206,6 +217,10 @@ private slots:
                 std::string::npos);
         const std::string other = mapName(turnedLadder(7, 0.012), x, y);
         QVERIFY(refusal({shares[0], shares[1], {"o", rippleShareCsv(m, other, 2, 3)}}).find("of one map") !=
+                std::string::npos);
+        // Whole runs count other events: their shares are another map's.
+        const std::string whole = mapName(turnedLadder(6, 0.012), x, y, RippleStop::WholeRun);
+        QVERIFY(refusal({shares[0], shares[1], {"w", rippleShareCsv(m, whole, 2, 3)}}).find("of one map") !=
                 std::string::npos);
         QCOMPARE(shareCells(6, 1, 4), (std::pair<std::size_t, std::size_t>{0, 1}));
         QCOMPARE(shareCells(6, 4, 4), (std::pair<std::size_t, std::size_t>{4, 6}));

@@ -48,6 +48,9 @@ ReachEstimate::ReachEstimate(QWidget* parent) : QLabel(parent) {
     connect(&watcher_, &QFutureWatcher<jl::RippleReach>::finished, this, [this] {
         const jl::RippleReach r = watcher_.result();
         ReachCache::shared().keep(runKey_, r);
+        // A first look that stopped because its reach was settled is the
+        // design's answer, the one the design map computes for it too.
+        if (r.whole && !r.cancelled && runKey_ != runDesignKey_) ReachCache::shared().keep(runDesignKey_, r);
         if (runKey_ != key_ || r.cancelled) return;  // stale: a newer design is on its way
         computing_ = false;
         show(r);
@@ -104,6 +107,7 @@ void ReachEstimate::estimate(const jl::Scene& scene) {
 
 void ReachEstimate::start() {
     runKey_ = key_;
+    runDesignKey_ = ReachCache::designKey(design_);
     stop_ = std::make_shared<std::atomic<bool>>(false);
     watcher_.setFuture(QtConcurrent::run(&pool_, [design = design_, stop = stop_, longest = longest_] {
         // Only on a core nobody else wants: the simulation the user

@@ -46,9 +46,10 @@ private:
     void show(const jl::RippleReach& r);
 
     jl::Scene design_;
-    double longest_ = 0;  // s of simulated time the run may take (the design's whole run, or less)
-    QByteArray key_;      // of the design asked for last (and of its run: see estimate)
-    QByteArray runKey_;   // of the design being run
+    double longest_ = 0;       // s of simulated time the run may take (the design's whole run, or less)
+    QByteArray key_;           // of the design asked for last (and of its run: see estimate)
+    QByteArray runKey_;        // of the design being run
+    QByteArray runDesignKey_;  // of that design's whole run, which a first look that settles is
     bool computing_ = false;
     QTimer* settle_;  // a burst of edits (typing 1000) starts one run
     std::shared_ptr<std::atomic<bool>> stop_;

@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -51,9 +52,10 @@ bool save(const std::string& path, const std::string& text) {
 }
 
 const char* kHelp =
-    "usage: jladder reach [--out FILE]\n"
+    "usage: jladder reach [--out FILE] [--whole-runs]\n"
     "       jladder reach --PARAMETER FROM:TO:STEP [--PARAMETER FROM:TO:STEP] [--scene BASE.yaml]\n"
     "                     [--jobs N] [--cells K/N] [--csv FILE] [--svg FILE] [--title TEXT] [--quiet]\n"
+    "                     [--whole-runs]\n"
     "       jladder reach --merge SHARE.csv... [--csv FILE] [--svg FILE] [--title TEXT]\n"
     "Without axes: turns the top block of ladders of 6, 8, 12, 25 and 50 blocks (60 x 12 mm)\n"
     "and of the thinner designs docs/model.md section 15 quotes, and tabulates how many\n"
@@ -65,9 +67,12 @@ const char* kHelp =
     "(s, or ms); one axis gives a line, two a map. An axis has at most 200 values, each\n"
     "within the range a scene file allows for it (docs/scene-format.md; blocks: a whole\n"
     "number from 2 to 100000; turn_duration: 1 ms to 1e5 s), and each design must be a\n"
-    "valid scene; else nothing runs (exit 2). Every cell is a full simulation of the\n"
-    "first ripple on BASE (default: 6 blocks of 60 x 12 x 45 mm, density 600, block 0 held\n"
-    "and turned half a turn from 0.2 s over 0.3 s), run on N threads (default: every core).\n"
+    "valid scene; else nothing runs (exit 2). Every cell is a simulation of the first\n"
+    "ripple on BASE (default: 6 blocks of 60 x 12 x 45 mm, density 600, block 0 held and\n"
+    "turned half a turn from 0.2 s over 0.3 s), run on N threads (default: every core).\n"
+    "A run stops as soon as its reach is settled (docs/ripple-reach.md): its other counts\n"
+    "(flips elsewhere, events, chatter) count up to that instant, which the CSV gives\n"
+    "with why it stopped. --whole-runs runs every design for its whole time instead.\n"
     "Writes CSV (stdout, or --csv FILE) and an SVG heat map (--svg FILE); the same command\n"
     "gives the same bytes whatever N. Files are replaced only once both are written whole;\n"
     "neither may be the --scene file. When stderr is a terminal, a line there shows the\n"
@@ -86,7 +91,7 @@ bool print(const std::string& text) {
 }
 
 // The fixed table of the designs docs/model.md section 15 quotes.
-int table(const std::optional<std::string>& out) {
+int table(const std::optional<std::string>& out, RippleStop stop) {
     struct Case {
         int n;
         double t;
@@ -98,7 +103,8 @@ int table(const std::optional<std::string>& out) {
         "hinge events | most quick cycles of one hinge in a row | failure |\n"
         "|---:|---:|---|---:|---:|---:|---:|---|\n";
     for (const Case& c : cases) {
-        const RippleReach r = firstRippleReach(turnedLadder(c.n, c.t));
+        const RippleReach r =
+            firstRippleReach(turnedLadder(c.n, c.t), nullptr, std::numeric_limits<double>::infinity(), stop);
         std::ostringstream s;
         s.precision(3);
         s << "| " << c.n << " | " << c.t * 1000 << " | " << r.reached << " of " << r.hinges << " | ";
@@ -215,7 +221,7 @@ std::optional<Scene> baseScene(const Options& o) {
 }
 
 // A map (or with --cells K/N, its K-th share) over one or two axes.
-int designMap(const Options& o, std::vector<DesignAxis> axes, int jobs) {
+int designMap(const Options& o, std::vector<DesignAxis> axes, int jobs, RippleStop stop) {
     const auto base = baseScene(o);
     if (!base) return 1;
     // The axes' values as a scene file would have to hold them.
@@ -243,10 +249,11 @@ int designMap(const Options& o, std::vector<DesignAxis> axes, int jobs) {
     ProgressLine progress(!o.has("--quiet"));
     const RippleMap map = computeRippleMap(
         *base, axes[0], axes[1], jobs, nullptr, [&](int done, int all) { progress.cells(done, all); },
-        shareCells(total, share->first, share->second));
+        shareCells(total, share->first, share->second), stop);
     progress.clear();
     if (o.get("--cells"))
-        return writeMap(o, rippleShareCsv(map, mapName(*base, axes[0], axes[1]), share->first, share->second), nullptr);
+        return writeMap(o, rippleShareCsv(map, mapName(*base, axes[0], axes[1], stop), share->first, share->second),
+                        nullptr);
     return writeMap(o, rippleMapCsv(map), &map);
 }
 
@@ -274,7 +281,8 @@ int mergeShares(const Options& o) {
 // The arguments' error as a map or a merge sees them, or "".
 std::string argumentsProblem(const Options& o, const std::vector<DesignAxis>& axes) {
     const bool merge = o.has("--merge");
-    if (merge && (!axes.empty() || o.get("--scene") || o.get("--jobs") || o.get("--cells") || o.get("--out")))
+    if (merge && (!axes.empty() || o.get("--scene") || o.get("--jobs") || o.get("--cells") || o.get("--out") ||
+                  o.has("--whole-runs")))
         return "--merge joins shares already computed: give it the share files, --csv, --svg and --title only";
     if (merge && o.positional.empty()) return "--merge needs the share files (reach --cells K/N wrote them)";
     if (!merge && !o.positional.empty()) return "unexpected argument '" + o.positional.front() + "'";
@@ -296,7 +304,7 @@ std::string argumentsProblem(const Options& o, const std::vector<DesignAxis>& ax
 int reach(const std::vector<std::string>& args) {
     std::vector<std::string> valued{"--out", "--scene", "--jobs", "--csv", "--svg", "--title", "--cells"};
     for (const DesignParameterWord& w : kDesignParameters) valued.push_back("--" + std::string(w.word));
-    Options o = parse(args, valued, {"--help", "--quiet", "--merge"});
+    Options o = parse(args, valued, {"--help", "--quiet", "--merge", "--whole-runs"});
     if (o.has("--help")) return printHelp(kHelp);
     std::vector<DesignAxis> axes;
     for (const DesignParameterWord& w : kDesignParameters)
@@ -309,8 +317,9 @@ int reach(const std::vector<std::string>& args) {
         return 2;
     }
     if (o.has("--merge")) return mergeShares(o);
-    if (axes.empty()) return table(o.get("--out"));
-    return designMap(o, axes, jobs);
+    const RippleStop stop = o.has("--whole-runs") ? RippleStop::WholeRun : RippleStop::WhenSettled;
+    if (axes.empty()) return table(o.get("--out"), stop);
+    return designMap(o, axes, jobs, stop);
 }
 
 }  // namespace jl::cli

@@ -81,8 +81,9 @@ std::optional<std::pair<int, int>> shareOf(const std::string& text) {
 
 }  // namespace
 
-std::string mapName(const Scene& base, const DesignAxis& x, const DesignAxis& y) {
-    return axisName(x) + ";" + axisName(y) + ";scene=" + digest(base);
+std::string mapName(const Scene& base, const DesignAxis& x, const DesignAxis& y, RippleStop stop) {
+    return axisName(x) + ";" + axisName(y) + ";scene=" + digest(base) +
+           (stop == RippleStop::WholeRun ? ";whole-runs" : "");
 }
 
 std::string rippleShareCsv(const RippleMap& m, const std::string& name, int index, int count) {
@@ -102,6 +103,16 @@ std::string rippleShareCsv(const RippleMap& m, const std::string& name, int inde
 
 namespace {
 
+// map, share, cell, then the map's own 11 columns.
+constexpr std::size_t kShareColumns = 14;
+
+// Why a cell stopped, from its word.
+std::optional<RippleEnd> endNamed(const std::string& word) {
+    for (const RippleEnd e : {RippleEnd::RunEnd, RippleEnd::Bottom, RippleEnd::Order, RippleEnd::Energy})
+        if (word == rippleEndWord(e)) return e;
+    return std::nullopt;
+}
+
 // One share read: its map's name, K and N, and its rows' cells (the map's
 // own columns), or `error` set.
 struct ShareRead {
@@ -116,15 +127,15 @@ std::optional<ShareRead> readShare(const std::string& file, const std::string& t
         error = file + ": " + error;
         return std::nullopt;
     }
-    if (rows->size() < 2 || rows->front().size() != 12 || rows->front()[0] != "map") {
+    if (rows->size() < 2 || rows->front().size() != kShareColumns || rows->front()[0] != "map") {
         error = file + " is not a share of a map (jladder reach --cells K/N writes them)";
         return std::nullopt;
     }
     ShareRead s;
     for (std::size_t r = 1; r < rows->size(); ++r) {
         const CsvRow& row = (*rows)[r];
-        const auto share = row.size() == 12 ? shareOf(row[1]) : std::nullopt;
-        const auto cell = row.size() == 12 ? whole(row[2]) : std::nullopt;
+        const auto share = row.size() == kShareColumns ? shareOf(row[1]) : std::nullopt;
+        const auto cell = row.size() == kShareColumns ? whole(row[2]) : std::nullopt;
         if (!share || !cell || (r > 1 && (row[0] != s.name || *share != std::pair{s.index, s.count}))) {
             error = file + ": row " + std::to_string(r + 1) + " is not a row of the share the first row names";
             return std::nullopt;
@@ -150,8 +161,10 @@ std::optional<RippleReach> cellOf(const RippleMap& m, std::size_t k, const CsvRo
     const auto h = whole(row[2]), reached = whole(row[3]), elsewhere = whole(row[5]), events = whole(row[6]),
                quick = whole(row[7]);
     const auto mean = row[4].empty() ? std::optional<double>(std::nan("")) : parseNumber(row[4]);
+    const auto until = parseNumber(row[8]);
+    const auto end = endNamed(row[9]);
     if (!own || own->front()[0] != row[0] || own->front()[1] != row[1] || !h || !reached || !elsewhere || !events ||
-        !quick || !mean)
+        !quick || !mean || !until || !end)
         return std::nullopt;
     RippleReach r;
     r.hinges = *h;
@@ -160,7 +173,9 @@ std::optional<RippleReach> cellOf(const RippleMap& m, std::size_t k, const CsvRo
     r.flipsElsewhere = *elsewhere;
     r.events = *events;
     r.quickRow = *quick;
-    r.failure = row[8];
+    r.until = *until;
+    r.end = *end;
+    r.failure = row[10];
     return r;
 }
 

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <limits>
 #include <sstream>
 #include <thread>
 
@@ -14,7 +15,7 @@ namespace jl {
 
 RippleMap computeRippleMap(const Scene& base, const DesignAxis& x, const DesignAxis& y, int jobs,
                            const std::atomic<bool>* cancel, const std::function<void(int, int)>& progress,
-                           std::pair<std::size_t, std::size_t> cells) {
+                           std::pair<std::size_t, std::size_t> cells, RippleStop stop) {
     RippleMap m{x, y, axisValues(x), axisValues(y), {}, false};
     m.cells.resize(m.xs.size() * m.ys.size());
     // A cell never started says so: cancelled until its run has written it.
@@ -31,7 +32,7 @@ RippleMap computeRippleMap(const Scene& base, const DesignAxis& x, const DesignA
             // A design the engine cannot hold (memory for a huge ladder) is
             // that cell's failure, not the end of the program.
             try {
-                m.cells[k] = firstRippleReach(s, cancel);
+                m.cells[k] = firstRippleReach(s, cancel, std::numeric_limits<double>::infinity(), stop);
             } catch (const std::exception& e) {
                 m.cells[k] = RippleReach{};
                 m.cells[k].hinges = s.ladder ? s.ladder->blocks - 1 : 0;
@@ -108,9 +109,11 @@ void axisCell(CsvWriter& csv, DesignParameter p, double v) {
 
 }  // namespace
 
+// The counts of the run say how long they counted: until the cell stopped.
 std::string rippleMapColumns(const RippleMap& m) {
     return columnOf(m.x.parameter) + ',' + columnOf(m.y.parameter) +
-           ",hinges,reached,mean_time_between_flips [s],flips_elsewhere,events,quick_row,failure";
+           ",hinges,reached,mean_time_between_flips [s],flips_elsewhere_until_stop,events_until_stop,"
+           "quick_row_until_stop,stopped_at [s],stopped_by,failure";
 }
 
 void writeRippleMapCells(CsvWriter& csv, const RippleMap& m, std::size_t k) {
@@ -124,6 +127,8 @@ void writeRippleMapCells(CsvWriter& csv, const RippleMap& m, std::size_t k) {
     csv.cell(r.flipsElsewhere);
     csv.cell(r.events);
     csv.cell(r.quickRow);
+    csv.cell(r.until);
+    csv.cell(rippleEndWord(r.end));
     csv.cell(r.cancelled ? "cancelled" : r.failure);
 }
 

@@ -54,7 +54,33 @@ int longestQuickRow(const std::vector<Event>& events) {
     return longest;
 }
 
-RippleReach firstRippleReach(const Scene& scene, const std::atomic<bool>* cancel, double longest) {
+namespace {
+
+// The first ripple as the flips come: first[j] the first flip of hinge j
+// (-1: none yet), reached and last the hinges 1..reached flipped in order
+// and the last of those flips.
+struct RippleSoFar {
+    std::vector<double> first;
+    int reached = 0;
+    double last = 0;
+    void extend() {
+        for (int j = reached + 1; j < int(first.size()) && first[size_t(j)] >= last; ++j) {
+            last = first[size_t(j)];
+            ++reached;
+        }
+    }
+    // Why the reach can no longer change, or RunEnd while it still can.
+    RippleEnd settled(const Simulation& sim, ReachBarrier& barrier) const {
+        const int next = reached + 1;
+        if (next >= int(first.size())) return RippleEnd::Bottom;
+        if (first[size_t(next)] >= 0) return RippleEnd::Order;  // flipped before hinge `reached`
+        return barrier.cannotFold(sim, next) ? RippleEnd::Energy : RippleEnd::RunEnd;
+    }
+};
+
+}  // namespace
+
+RippleReach firstRippleReach(const Scene& scene, const std::atomic<bool>* cancel, double longest, RippleStop stop) {
     RippleReach r;
     if (!scene.ladder) {
         r.failure = "the scene has no ladder";
@@ -62,20 +88,23 @@ RippleReach firstRippleReach(const Scene& scene, const std::atomic<bool>* cancel
     }
     const int n = scene.ladder->blocks;
     r.hinges = n - 1;
-    r.until = rippleRunTime(scene);
-    if (longest < r.until) {
-        r.until = longest;
-        r.whole = false;
-    }
+    r.until = std::min(rippleRunTime(scene), longest);
     Simulation::Built built = Simulation::build(scene);
     if (!built.simulation) {
         r.failure = built.errors.empty() ? "the scene does not build" : built.errors.front();
         return r;
     }
     Simulation& sim = *built.simulation;
-    std::vector<double> first(size_t(n), -1);
+    ReachBarrier barrier(scene, sim);
+    RippleSoFar ripple{std::vector<double>(size_t(n), -1)};
     std::vector<Event> events;
-    while (sim.time() < r.until && sim.stepOnce()) {
+    // Settled already (nothing to turn, a ladder at rest) or after a step.
+    auto settled = [&] {
+        if (stop == RippleStop::WholeRun) return false;
+        r.end = ripple.settled(sim, barrier);
+        return r.end != RippleEnd::RunEnd;
+    };
+    while (!settled() && sim.time() < r.until && sim.stepOnce()) {
         if (cancel && cancel->load(std::memory_order_relaxed)) {
             r.cancelled = true;
             return r;
@@ -83,19 +112,21 @@ RippleReach firstRippleReach(const Scene& scene, const std::atomic<bool>* cancel
         for (const Event& e : sim.takeEvents()) {
             if (e.hinge <= 0) continue;  // the script's own entries
             events.push_back(e);
-            if (e.kind == EventKind::FlipFlop && first[size_t(e.hinge)] < 0) first[size_t(e.hinge)] = e.time;
+            if (e.kind == EventKind::FlipFlop && ripple.first[size_t(e.hinge)] < 0)
+                ripple.first[size_t(e.hinge)] = e.time;
         }
+        ripple.extend();
     }
+    if (r.end != RippleEnd::RunEnd)
+        r.until = sim.time();
+    else
+        r.whole = r.until >= rippleRunTime(scene);
     r.failure = sim.failure();
     r.events = int(events.size());
     r.quickRow = longestQuickRow(events);
-    double last = 0;
-    for (int j = 1; j < n && first[size_t(j)] >= last; ++j) {
-        r.flipTimes.push_back(first[size_t(j)]);
-        last = first[size_t(j)];
-        ++r.reached;
-    }
-    for (int j = r.reached + 2; j < n; ++j) r.flipsElsewhere += first[size_t(j)] >= 0 ? 1 : 0;
+    r.reached = ripple.reached;
+    for (int j = 1; j <= r.reached; ++j) r.flipTimes.push_back(ripple.first[size_t(j)]);
+    for (int j = r.reached + 2; j < n; ++j) r.flipsElsewhere += ripple.first[size_t(j)] >= 0 ? 1 : 0;
     if (r.flipTimes.size() >= 2)
         r.meanTimeBetweenFlips = (r.flipTimes.back() - r.flipTimes.front()) / double(r.flipTimes.size() - 1);
     return r;

@@ -11,10 +11,18 @@ for jobs in 1 2; do
 done
 cmp -s map1.csv map2.csv || fail "the CSV depends on --jobs"
 cmp -s map1.svg map2.svg || fail "the SVG depends on --jobs"
-[ "$(head -1 map1.csv)" = "blocks,thickness [m],hinges,reached,mean_time_between_flips [s],flips_elsewhere,events,quick_row,failure" ] ||
+[ "$(head -1 map1.csv)" = "blocks,thickness [m],hinges,reached,mean_time_between_flips [s],flips_elsewhere_until_stop,events_until_stop,quick_row_until_stop,stopped_at [s],stopped_by,failure" ] ||
     fail "CSV header: $(head -1 map1.csv)"
 [ "$(wc -l <map1.csv)" = 7 ] || fail "6 designs wanted, got: $(cat map1.csv)"
 grep -q "^6,0.012,5,5," map1.csv || fail "the classic design (6 blocks, 12 mm) should ripple through its 5 hinges: $(cat map1.csv)"
+# It stops once its ripple is at the bottom; run whole, every design runs
+# its 1 + 0.2 N s, with the same reach and mean time between flips.
+grep -q "^6,0.012,5,5,.*,bottom,$" map1.csv || fail "the classic design should stop at the bottom: $(cat map1.csv)"
+"$jladder" reach --blocks 4:8:2 --thickness 6mm:12mm:6mm --whole-runs --csv whole.csv 2>err.txt ||
+    fail "reach --whole-runs: exit $? ($(head -c 300 err.txt))"
+[ "$(cut -d, -f9,10 whole.csv | sort -u | tr '\n' ' ')" = "1.8,end 2.2,end 2.6,end stopped_at [s],stopped_by " ] ||
+    fail "whole runs should all run to their end: $(cut -d, -f1,9,10 whole.csv | tr '\n' ' ')"
+[ "$(cut -d, -f1-5 whole.csv)" = "$(cut -d, -f1-5 map1.csv)" ] || fail "whole runs reach otherwise: $(cat whole.csv)"
 grep -q "<svg" map1.svg && grep -q "block thickness (mm)" map1.svg || fail "the SVG has no map or no axis title"
 
 # Each value of an axis is the number a scene file holding it as text reads:

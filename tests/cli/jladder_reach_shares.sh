@@ -21,7 +21,7 @@ else
         expect 0 "$jladder" reach "${axes[@]}" --jobs 1 --cells $k/4 --csv share$k.csv
     done
 fi
-[ "$(head -1 share1.csv)" = "map,share,cell,blocks,thickness [m],hinges,reached,mean_time_between_flips [s],flips_elsewhere,events,quick_row,failure" ] ||
+[ "$(head -1 share1.csv)" = "map,share,cell,blocks,thickness [m],hinges,reached,mean_time_between_flips [s],flips_elsewhere_until_stop,events_until_stop,quick_row_until_stop,stopped_at [s],stopped_by,failure" ] ||
     fail "share header: $(head -1 share1.csv)"
 rows=0
 for k in 1 2 3 4; do rows=$((rows + $(wc -l <share$k.csv) - 1)); done
@@ -53,6 +53,9 @@ refused "give the shares of one map" share1.csv share2.csv share3.csv share4.csv
 printf "format: jacobs-ladder/1\nladder: {blocks: 4, block: {density: 500}}\nscript:\n  - {at: 0.2, turn: {block: 0, by: 180deg}}\n" >light.yaml
 expect 0 "$jladder" reach "${axes[@]}" --scene light.yaml --jobs 1 --cells 4/4 --csv light4.csv
 refused "give the shares of one map" share1.csv share2.csv share3.csv light4.csv
+# Whole runs count other events: a share of them is another map's.
+expect 0 "$jladder" reach "${axes[@]}" --whole-runs --jobs 1 --cells 4/4 --csv whole4.csv
+refused "give the shares of one map" share1.csv share2.csv share3.csv whole4.csv
 refused "is not a share of a map" whole.csv
 head -2 share2.csv >short2.csv
 refused "short2.csv has 1 cells; share 2 of 4 has 2" share1.csv short2.csv share3.csv share4.csv

@@ -319,8 +319,12 @@ private slots:
         auto* estimate = w.findChild<ReachEstimate*>("reachEstimate");
         QVERIFY(estimate);
         QSignalSpy shown(estimate, &ReachEstimate::estimated);
-        // A long ladder first: its run starts, and is outdated by the next edit.
-        setBlocks(w, 300);
+        // A long ladder of thin blocks first (3 CPU s before its reach is
+        // settled): its run starts, and is outdated by the next edit.
+        jl::LadderSpec thin = *w.document()->scene().ladder;
+        setBlockCount(thin, 300);
+        thin.block.thickness = 0.001;
+        changeScene(w.document(), ladderField("blocks"), thin, "blocks");
         QVERIFY(estimate->computing());
         QVERIFY(estimate->text().contains("computing"));
         QTest::qWait(600);
@@ -339,34 +343,49 @@ private slots:
     }
 
     // The estimate runs beside the simulation: a long design is run for its
-    // first seconds only (a whole run of 1,000 blocks is 200 s simulated,
-    // a hundred CPU seconds; of 10,000 blocks, hours), and says so; that
-    // first look is not what the design map shows for the design. A ladder
-    // too long to see even the turn in that budget is not estimated.
+    // first seconds only (a whole run of 5,000 blocks is 1,001 s simulated;
+    // of 10,000 blocks, hours), and says so; that first look is not what
+    // the design map shows for the design, unless the run stopped because
+    // its reach was settled (jl/design/reach_settled.h): then it is the
+    // design's answer. A ladder too long to see even the turn in that
+    // budget is not estimated.
     void aLongDesignIsEstimatedFromItsFirstSeconds() {
         MainWindow w(jl::test::quietWindow());
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         auto* estimate = w.findChild<ReachEstimate*>("reachEstimate");
         QSignalSpy shown(estimate, &ReachEstimate::estimated);
-        setBlocks(w, 1000);
+        // 5,000 blocks 12 mm thick: 2 s, and the reach is not settled yet.
+        setBlocks(w, 5000);
         QVERIFY(shown.wait(120000));
         const jl::Scene design = w.document()->scene();
         const double whole = jl::rippleRunTime(design);
-        QVERIFY(whole > 200);
-        const jl::RippleReach first = jl::firstRippleReach(design, nullptr, 10.0);
+        QVERIFY(whole > 1000);
+        const jl::RippleReach first = jl::firstRippleReach(design, nullptr, 2.0);
         QVERIFY(!first.whole);
-        QCOMPARE(first.until, 10.0);
+        QCOMPARE(first.until, 2.0);
         const QString expected = QString(
-                                     "In the first 10 s (a whole run of this design is %1 s), the first ripple "
-                                     "reaches hinge %2 of 999")
+                                     "In the first 2 s (a whole run of this design is %1 s), the first ripple "
+                                     "reaches hinge %2 of 4999")
                                      .arg(whole, 0, 'f', 0)
                                      .arg(first.reached);
         QVERIFY2(estimate->text().startsWith(expected), qPrintable(estimate->text()));
         QVERIFY(!ReachCache::shared().find(ReachCache::designKey(design)));
 
+        // 1,000 blocks: too little energy is left to fold hinge 2 at 4.6 s,
+        // within the first 10 s, so that answer is the design's, kept for the map.
+        setBlocks(w, 1000);
+        QVERIFY(shown.wait(120000));
+        const jl::Scene settled = w.document()->scene();
+        const jl::RippleReach r = jl::firstRippleReach(settled, nullptr, 10.0);
+        QVERIFY(r.whole && r.end == jl::RippleEnd::Energy && r.until < 10.0);
+        QVERIFY2(estimate->text().startsWith(QString("The first ripple reaches hinge %1 of 999").arg(r.reached)),
+                 qPrintable(estimate->text()));
+        const auto kept = ReachCache::shared().find(ReachCache::designKey(settled));
+        QVERIFY(kept && kept->reached == r.reached && kept->until == r.until);
+
         setBlocks(w, 20000);
-        QTRY_COMPARE(shown.count(), 2);
+        QTRY_COMPARE(shown.count(), 3);
         QVERIFY(!estimate->computing());
         QVERIFY2(estimate->text().contains("not estimated for a ladder of 20000 blocks"), qPrintable(estimate->text()));
     }

@@ -20,8 +20,10 @@ namespace jl {
 std::pair<std::size_t, std::size_t> shareCells(std::size_t total, int index, int count);
 
 // The map's name, as each share carries it: "blocks=4:8:2;thickness=
-// 0.006:0.012:0.006;scene=<digest>", its numbers as they read back exactly.
-std::string mapName(const Scene& base, const DesignAxis& x, const DesignAxis& y);
+// 0.006:0.012:0.006;scene=<digest>", its numbers as they read back exactly,
+// and ";whole-runs" when every cell runs its whole time (other counts).
+std::string mapName(const Scene& base, const DesignAxis& x, const DesignAxis& y,
+                    RippleStop stop = RippleStop::WhenSettled);
 
 // Share `index` of `count` of `m` (whose cells of that share are computed):
 // "map,share,cell," then the columns of rippleMapCsv, one row per cell.

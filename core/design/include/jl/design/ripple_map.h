@@ -1,7 +1,7 @@
 // The design map: the first ripple's reach over two design parameters, one
-// full simulation per cell, the cells shared among worker threads (each run
-// on one thread). The map is the same whatever the number of threads: each
-// cell depends on its own design only and is written at its own index.
+// simulation per cell (stopped once its reach is settled, or run whole), the cells shared among worker threads (each
+// run on one thread). The map is the same whatever the number of threads: each cell depends on its own design only and
+// is written at its own index.
 #pragma once
 
 #include "jl/design/design_axis.h"
@@ -35,11 +35,13 @@ struct RippleMap {
 RippleMap computeRippleMap(const Scene& base, const DesignAxis& x, const DesignAxis& y, int jobs,
                            const std::atomic<bool>* cancel = nullptr,
                            const std::function<void(int done, int total)>& progress = {},
-                           std::pair<std::size_t, std::size_t> cells = {0, SIZE_MAX});
+                           std::pair<std::size_t, std::size_t> cells = {0, SIZE_MAX},
+                           RippleStop stop = RippleStop::WhenSettled);
 
 // One row per cell: the two values (SI), the hinges, how many the first ripple
-// flipped, the mean time between flips, events, chatter, failure. Numbers
-// with fixed precision: the same map gives the same bytes.
+// flipped, the mean time between flips, then up to the cell's stop the flips
+// elsewhere, events and chatter, the stop's time and why, failure. Each
+// number the shortest text that reads back to it: the same map gives the same bytes.
 std::string rippleMapCsv(const RippleMap& m);
 // Its header line's columns, and the columns of cell k's row (no line end).
 std::string rippleMapColumns(const RippleMap& m);
