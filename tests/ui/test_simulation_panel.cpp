@@ -3,8 +3,8 @@
 // undoable step, and shows the scene's value again after undo. Block contact
 // (docs/model.md section 17) is chosen here, not only in the scene file.
 #include "jl/scene/scene_io.h"
-#include "ui/document.h"
-#include "ui/simulation_panel.h"
+#include "ui/edit/document.h"
+#include "ui/edit/simulation_panel.h"
 #include "ui_test_support.h"
 
 #include <QComboBox>

@@ -1,9 +1,9 @@
-#include "ui/design_map.h"
+#include "ui/design/design_map.h"
 
 #include "jl/base/csv_writer.h"
 #include "jl/design/design_check.h"
-#include "ui/design_map_cache.h"
-#include "ui/design_map_grid.h"
+#include "ui/design/design_map_cache.h"
+#include "ui/design/design_map_grid.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

@@ -6,7 +6,7 @@
 
 #include "jl/design/design_axis.h"
 #include "jl/design/ripple_reach.h"
-#include "ui/document.h"
+#include "ui/edit/document.h"
 
 #include <QDialog>
 #include <QFutureWatcher>

@@ -1,4 +1,4 @@
-#include "ui/design_map_cache.h"
+#include "ui/design/design_map_cache.h"
 
 #include "jl/scene/scene_io.h"
 

@@ -1,4 +1,4 @@
-#include "ui/design_map_grid.h"
+#include "ui/design/design_map_grid.h"
 
 #include <QHelpEvent>
 #include <QMouseEvent>

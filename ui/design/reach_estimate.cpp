@@ -1,6 +1,6 @@
-#include "ui/reach_estimate.h"
+#include "ui/design/reach_estimate.h"
 
-#include "ui/design_map_cache.h"
+#include "ui/design/design_map_cache.h"
 
 #include <QPainter>
 #include <QThread>

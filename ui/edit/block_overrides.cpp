@@ -1,7 +1,7 @@
-#include "ui/block_overrides.h"
+#include "ui/edit/block_overrides.h"
 
-#include "ui/scene_fields.h"
-#include "ui/table_cells.h"
+#include "ui/edit/scene_fields.h"
+#include "ui/edit/table_cells.h"
 
 #include <QHBoxLayout>
 #include <QHeaderView>

@@ -2,7 +2,7 @@
 // mass and colour that differ from the ladder's; an empty cell keeps the ladder's value.
 #pragma once
 
-#include "ui/document.h"
+#include "ui/edit/document.h"
 
 #include <QWidget>
 

@@ -2,7 +2,7 @@
 // merge id, and a command that drops itself when the net change is zero.
 #pragma once
 
-#include "ui/document.h"
+#include "ui/edit/document.h"
 
 #include <QUndoCommand>
 

@@ -1,4 +1,4 @@
-#include "ui/document.h"
+#include "ui/edit/document.h"
 
 #include "jl/scene/scene_io.h"
 

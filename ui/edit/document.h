@@ -4,7 +4,7 @@
 
 #include "jl/base/diagnostic.h"
 #include "jl/scene/scene.h"
-#include "ui/scene_change.h"
+#include "ui/edit/scene_change.h"
 
 #include <QObject>
 #include <QString>

@@ -1,9 +1,9 @@
-#include "ui/ladder_panel.h"
+#include "ui/edit/ladder_panel.h"
 
-#include "ui/block_overrides.h"
-#include "ui/reach_estimate.h"
-#include "ui/scene_fields.h"
-#include "ui/value_form.h"
+#include "ui/design/reach_estimate.h"
+#include "ui/edit/block_overrides.h"
+#include "ui/edit/scene_fields.h"
+#include "ui/edit/value_form.h"
 
 #include <QCheckBox>
 #include <QColorDialog>

@@ -2,7 +2,7 @@
 // undoable; beside the block count, how far the first ripple travels.
 #pragma once
 
-#include "ui/document.h"
+#include "ui/edit/document.h"
 
 #include <QWidget>
 

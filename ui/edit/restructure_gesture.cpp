@@ -1,8 +1,8 @@
-#include "ui/restructure_gesture.h"
+#include "ui/edit/restructure_gesture.h"
 
 #include "jl/ladder/block_corners.h"
 #include "jl/ladder/ladder.h"
-#include "ui/block_shapes.h"
+#include "ui/view3d/block_shapes.h"
 
 #include <QMenu>
 #include <QObject>

@@ -1,4 +1,4 @@
-#include "ui/scene_fields.h"
+#include "ui/edit/scene_fields.h"
 
 #include "jl/scene/ladder_blocks.h"
 #include "jl/scene/scene_ranges.h"

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "jl/scene/scene.h"
-#include "ui/change_value.h"
+#include "ui/edit/change_value.h"
 
 #include <QString>
 

@@ -1,6 +1,6 @@
-#include "ui/scene_text_dialog.h"
+#include "ui/edit/scene_text_dialog.h"
 
-#include "ui/document.h"
+#include "ui/edit/document.h"
 
 #include <QDialogButtonBox>
 #include <QFormLayout>

@@ -1,7 +1,7 @@
-#include "ui/script_panel.h"
+#include "ui/edit/script_panel.h"
 
-#include "ui/change_value.h"
-#include "ui/table_cells.h"
+#include "ui/edit/change_value.h"
+#include "ui/edit/table_cells.h"
 
 #include <QComboBox>
 #include <QHBoxLayout>

@@ -1,7 +1,7 @@
 // The Script dock: the scene's timed actions as an editable table.
 #pragma once
 
-#include "ui/document.h"
+#include "ui/edit/document.h"
 
 #include <QWidget>
 

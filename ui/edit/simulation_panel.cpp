@@ -1,8 +1,8 @@
-#include "ui/simulation_panel.h"
+#include "ui/edit/simulation_panel.h"
 
 #include "jl/scene/scene_fields.h"
-#include "ui/scene_fields.h"
-#include "ui/value_form.h"
+#include "ui/edit/scene_fields.h"
+#include "ui/edit/value_form.h"
 
 #include <QComboBox>
 #include <QCoreApplication>

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "jl/scene/scene_fields.h"
-#include "ui/document.h"
+#include "ui/edit/document.h"
 
 #include <QWidget>
 

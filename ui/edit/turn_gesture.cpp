@@ -1,4 +1,4 @@
-#include "ui/turn_gesture.h"
+#include "ui/edit/turn_gesture.h"
 
 #include <algorithm>
 #include <cmath>

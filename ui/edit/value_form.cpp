@@ -1,4 +1,4 @@
-#include "ui/value_form.h"
+#include "ui/edit/value_form.h"
 
 #include <QDoubleSpinBox>
 #include <QDoubleValidator>

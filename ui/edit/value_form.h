@@ -2,7 +2,7 @@
 // shown, a tooltip on every row, each edit pushed as one (merging) undo step.
 #pragma once
 
-#include "ui/scene_fields.h"
+#include "ui/edit/scene_fields.h"
 
 #include <QWidget>
 

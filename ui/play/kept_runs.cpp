@@ -1,4 +1,4 @@
-#include "ui/kept_runs.h"
+#include "ui/play/kept_runs.h"
 
 #include <algorithm>
 

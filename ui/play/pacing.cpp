@@ -1,6 +1,6 @@
-#include "ui/pacing.h"
+#include "ui/play/pacing.h"
 
-#include "ui/sim_controller.h"
+#include "ui/play/sim_controller.h"
 
 #include <algorithm>
 

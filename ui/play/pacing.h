@@ -1,7 +1,7 @@
 // Pacing a run for a class: run until the next event, and loop a time range.
 #pragma once
 
-#include "ui/sim_status.h"
+#include "ui/play/sim_status.h"
 
 #include <QObject>
 

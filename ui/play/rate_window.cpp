@@ -1,4 +1,4 @@
-#include "ui/rate_window.h"
+#include "ui/play/rate_window.h"
 
 #include <algorithm>
 

@@ -1,6 +1,6 @@
-#include "ui/sim_controller.h"
+#include "ui/play/sim_controller.h"
 
-#include "ui/sim_worker.h"
+#include "ui/play/sim_worker.h"
 
 #include <QThread>
 

@@ -4,7 +4,7 @@
 
 #include "jl/base/geometry.h"
 #include "jl/scene/scene.h"
-#include "ui/sim_status.h"
+#include "ui/play/sim_status.h"
 
 #include <QObject>
 #include <QTimer>

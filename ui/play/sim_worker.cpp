@@ -1,6 +1,6 @@
-#include "ui/sim_worker.h"
+#include "ui/play/sim_worker.h"
 
-#include "ui/catch_up.h"
+#include "ui/play/catch_up.h"
 
 #include <algorithm>
 #include <cmath>

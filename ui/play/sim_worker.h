@@ -5,9 +5,9 @@
 #include "jl/scene/scene.h"
 #include "jl/sim/frame_history.h"
 #include "jl/sim/simulation.h"
-#include "ui/kept_runs.h"
-#include "ui/rate_window.h"
-#include "ui/sim_status.h"
+#include "ui/play/kept_runs.h"
+#include "ui/play/rate_window.h"
+#include "ui/play/sim_status.h"
 
 #include <atomic>
 #include <chrono>

@@ -1,7 +1,7 @@
 // SimWorker: making frames. The engine steps until it has given a frame;
 // frames already made are shown from the history (or made again from its
 // nearest keyframe), and an edit or a push discards the future.
-#include "ui/sim_worker.h"
+#include "ui/play/sim_worker.h"
 
 #include <algorithm>
 #include <cmath>

@@ -2,7 +2,7 @@
 // replaces; Undo and Redo of a push bring back the run of the drags they
 // restore as it was kept (its frames, events and head simulation, nothing
 // computed again), the run on record being kept in its turn.
-#include "ui/sim_worker.h"
+#include "ui/play/sim_worker.h"
 
 #include <algorithm>
 #include <cmath>

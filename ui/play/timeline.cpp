@@ -1,6 +1,6 @@
-#include "ui/timeline.h"
+#include "ui/play/timeline.h"
 
-#include "ui/events_panel.h"
+#include "ui/teaching/events_panel.h"
 
 #include <QFontMetricsF>
 #include <QHelpEvent>

@@ -1,4 +1,4 @@
-#include "ui/events_panel.h"
+#include "ui/teaching/events_panel.h"
 
 #include <QListWidget>
 #include <QVBoxLayout>

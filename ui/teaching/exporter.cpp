@@ -1,10 +1,10 @@
-#include "ui/exporter.h"
+#include "ui/teaching/exporter.h"
 
 #include "jl/sim/event_csv.h"
 #include "jl/sim/frame_csv.h"
 #include "jl/sim/recording.h"
 #include "jl/sim/simulation.h"
-#include "ui/view_capture.h"
+#include "ui/view3d/view_capture.h"
 
 #include <QDir>
 #include <QFileInfo>

@@ -5,7 +5,7 @@
 
 #include "jl/scene/scene.h"
 #include "jl/sim/frame.h"
-#include "ui/side_view.h"
+#include "ui/teaching/side_view.h"
 
 #include <QImage>
 #include <QSize>
@@ -25,7 +25,7 @@ struct ExportResult {
     QStringList files;  // what was written
 };
 
-// Turns a frame into a picture (the 3-D view's: viewPainter, ui/view_capture.h).
+// Turns a frame into a picture (the 3-D view's: viewPainter, ui/view3d/view_capture.h).
 using FramePainter = std::function<QImage(const jl::Frame&)>;
 
 struct SequenceRequest {
@@ -40,7 +40,7 @@ struct SequenceRequest {
 
 class Exporter {
 public:
-    // The 3-D view as it is on screen, at its size (ui/view_capture.h).
+    // The 3-D view as it is on screen, at its size (ui/view3d/view_capture.h).
     static ExportResult viewPicture(LadderView* view, const QString& path);
     // The side view of one frame.
     static ExportResult sideViewPicture(const jl::Scene& scene, const jl::Frame& frame, const QSize& size,

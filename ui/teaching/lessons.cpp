@@ -1,7 +1,7 @@
-#include "ui/lessons.h"
+#include "ui/teaching/lessons.h"
 
 #include "jl/scene/scene_io.h"
-#include "ui/presentation_mode.h"
+#include "ui/window/presentation_mode.h"
 
 #include <QCoreApplication>
 #include <QDir>

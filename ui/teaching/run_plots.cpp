@@ -1,6 +1,6 @@
-#include "ui/run_plots.h"
+#include "ui/teaching/run_plots.h"
 
-#include "ui/time_chart.h"
+#include "ui/teaching/time_chart.h"
 
 #include <QBoxLayout>
 #include <QChart>

@@ -3,8 +3,8 @@
 // timeline (cursor, event marks, click to seek); export as PNG or SVG.
 #pragma once
 
-#include "ui/run_traces.h"
-#include "ui/sim_status.h"
+#include "ui/play/sim_status.h"
+#include "ui/teaching/run_traces.h"
 
 #include <QTimer>
 #include <QWidget>

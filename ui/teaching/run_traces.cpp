@@ -1,4 +1,4 @@
-#include "ui/run_traces.h"
+#include "ui/teaching/run_traces.h"
 
 #include <QObject>
 

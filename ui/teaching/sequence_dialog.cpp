@@ -1,4 +1,4 @@
-#include "ui/sequence_dialog.h"
+#include "ui/teaching/sequence_dialog.h"
 
 #include <QDialogButtonBox>
 #include <QDir>

@@ -2,7 +2,7 @@
 // second, the picture size and where to put them.
 #pragma once
 
-#include "ui/exporter.h"
+#include "ui/teaching/exporter.h"
 
 #include <QDialog>
 

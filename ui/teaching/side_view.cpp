@@ -1,11 +1,11 @@
-#include "ui/side_view.h"
+#include "ui/teaching/side_view.h"
 
 #include "jl/ladder/block_corners.h"
 #include "jl/ladder/ladder.h"
 #include "jl/scene/ladder_blocks.h"
-#include "ui/events_panel.h"
-#include "ui/round_length.h"
-#include "ui/side_view_ink.h"
+#include "ui/teaching/events_panel.h"
+#include "ui/teaching/side_view_ink.h"
+#include "ui/view3d/round_length.h"
 
 #include <QKeyEvent>
 #include <QMouseEvent>

@@ -5,9 +5,9 @@
 
 #include "jl/scene/scene.h"
 #include "jl/sim/frame.h"
-#include "ui/block_shapes.h"
-#include "ui/restructure_gesture.h"
-#include "ui/turn_gesture.h"
+#include "ui/edit/restructure_gesture.h"
+#include "ui/edit/turn_gesture.h"
+#include "ui/view3d/block_shapes.h"
 
 #include <QElapsedTimer>
 #include <QImage>

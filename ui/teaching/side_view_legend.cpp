@@ -1,8 +1,8 @@
 // The side view's scale bar and its legend of hinge modes, drawn last, in
 // the bands the ladder's framing keeps clear.
-#include "ui/round_length.h"
-#include "ui/side_view.h"
-#include "ui/side_view_ink.h"
+#include "ui/teaching/side_view.h"
+#include "ui/teaching/side_view_ink.h"
+#include "ui/view3d/round_length.h"
 
 #include <QPainter>
 

@@ -1,16 +1,16 @@
-#include "ui/teaching_docks.h"
+#include "ui/teaching/teaching_docks.h"
 
-#include "ui/document.h"
-#include "ui/exporter.h"
-#include "ui/ladder_view.h"
-#include "ui/lessons.h"
-#include "ui/pacing.h"
-#include "ui/presentation_mode.h"
-#include "ui/run_plots.h"
-#include "ui/sequence_dialog.h"
-#include "ui/side_view.h"
-#include "ui/sim_controller.h"
-#include "ui/view_capture.h"
+#include "ui/edit/document.h"
+#include "ui/play/pacing.h"
+#include "ui/play/sim_controller.h"
+#include "ui/teaching/exporter.h"
+#include "ui/teaching/lessons.h"
+#include "ui/teaching/run_plots.h"
+#include "ui/teaching/sequence_dialog.h"
+#include "ui/teaching/side_view.h"
+#include "ui/view3d/ladder_view.h"
+#include "ui/view3d/view_capture.h"
+#include "ui/window/presentation_mode.h"
 
 #include <QAction>
 #include <QApplication>

@@ -4,8 +4,8 @@
 // window: the window places the docks and menus they make.
 #pragma once
 
-#include "ui/scene_change.h"
-#include "ui/sim_status.h"
+#include "ui/edit/scene_change.h"
+#include "ui/play/sim_status.h"
 
 #include <QObject>
 

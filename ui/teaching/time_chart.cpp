@@ -1,7 +1,7 @@
-#include "ui/time_chart.h"
+#include "ui/teaching/time_chart.h"
 
-#include "ui/event_colors.h"
-#include "ui/presentation_mode.h"
+#include "ui/teaching/event_colors.h"
+#include "ui/window/presentation_mode.h"
 
 #include <QChart>
 #include <QFontMetricsF>

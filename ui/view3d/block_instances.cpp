@@ -1,7 +1,7 @@
-#include "ui/block_instances.h"
+#include "ui/view3d/block_instances.h"
 
-#include "ui/instance_upload.h"
-#include "ui/shader_material.h"
+#include "ui/view3d/instance_upload.h"
+#include "ui/view3d/shader_material.h"
 
 #include <QVector4D>
 #include <Qt3DCore/QAttribute>

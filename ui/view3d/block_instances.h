@@ -8,7 +8,7 @@
 #pragma once
 
 #include "jl/sim/frame.h"
-#include "ui/block_shapes.h"
+#include "ui/view3d/block_shapes.h"
 
 #include <QMatrix4x4>
 #include <QSize>

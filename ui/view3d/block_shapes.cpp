@@ -1,4 +1,4 @@
-#include "ui/block_shapes.h"
+#include "ui/view3d/block_shapes.h"
 
 #include "jl/scene/ladder_blocks.h"
 

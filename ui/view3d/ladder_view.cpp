@@ -1,14 +1,14 @@
-#include "ui/ladder_view.h"
+#include "ui/view3d/ladder_view.h"
 
 #include "jl/ladder/ladder.h"
 #include "jl/scene/ladder_blocks.h"
-#include "ui/block_instances.h"
-#include "ui/block_shapes.h"
-#include "ui/events_panel.h"
-#include "ui/ribbon_instances.h"
-#include "ui/room.h"
-#include "ui/scale_mark.h"
-#include "ui/strip_entity.h"
+#include "ui/teaching/events_panel.h"
+#include "ui/view3d/block_instances.h"
+#include "ui/view3d/block_shapes.h"
+#include "ui/view3d/ribbon_instances.h"
+#include "ui/view3d/room.h"
+#include "ui/view3d/scale_mark.h"
+#include "ui/view3d/strip_entity.h"
 
 #include <QKeyEvent>
 #include <QMenu>

@@ -4,11 +4,11 @@
 
 #include "jl/scene/scene.h"
 #include "jl/sim/frame.h"
-#include "ui/block_shapes.h"
-#include "ui/restructure_gesture.h"
-#include "ui/ribbon_instances.h"
-#include "ui/turn_gesture.h"
-#include "ui/view_camera.h"
+#include "ui/edit/restructure_gesture.h"
+#include "ui/edit/turn_gesture.h"
+#include "ui/view3d/block_shapes.h"
+#include "ui/view3d/ribbon_instances.h"
+#include "ui/view3d/view_camera.h"
 
 #include <QElapsedTimer>
 #include <QKeySequence>

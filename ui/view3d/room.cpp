@@ -1,6 +1,6 @@
-#include "ui/room.h"
+#include "ui/view3d/room.h"
 
-#include "ui/shader_material.h"
+#include "ui/view3d/shader_material.h"
 
 #include <QColor>
 #include <QVector3D>

@@ -1,4 +1,4 @@
-#include "ui/round_length.h"
+#include "ui/view3d/round_length.h"
 
 #include <QObject>
 

@@ -1,8 +1,8 @@
-#include "ui/scale_mark.h"
+#include "ui/view3d/scale_mark.h"
 
-#include "ui/round_length.h"
-#include "ui/strip_entity.h"
-#include "ui/view_camera.h"
+#include "ui/view3d/round_length.h"
+#include "ui/view3d/strip_entity.h"
+#include "ui/view3d/view_camera.h"
 
 #include <QFont>
 #include <QQuaternion>

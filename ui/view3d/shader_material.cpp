@@ -1,4 +1,4 @@
-#include "ui/shader_material.h"
+#include "ui/view3d/shader_material.h"
 
 #include <QUrl>
 #include <Qt3DRender/QCullFace>

@@ -1,6 +1,6 @@
-#include "ui/strip_entity.h"
+#include "ui/view3d/strip_entity.h"
 
-#include "ui/shader_material.h"
+#include "ui/view3d/shader_material.h"
 
 #include <Qt3DCore/QAttribute>
 #include <Qt3DCore/QBuffer>

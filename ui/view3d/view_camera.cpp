@@ -1,4 +1,4 @@
-#include "ui/view_camera.h"
+#include "ui/view3d/view_camera.h"
 
 #include <Qt3DRender/QCamera>
 

@@ -1,6 +1,6 @@
-#include "ui/view_capture.h"
+#include "ui/view3d/view_capture.h"
 
-#include "ui/ladder_view.h"
+#include "ui/view3d/ladder_view.h"
 
 #include <QEventLoop>
 #include <QTimer>

@@ -3,7 +3,7 @@
 // the top of the view's frame graph.
 #pragma once
 
-#include "ui/exporter.h"
+#include "ui/teaching/exporter.h"
 
 #include <QImage>
 

@@ -1,4 +1,4 @@
-#include "ui/controls_sheet.h"
+#include "ui/window/controls_sheet.h"
 
 #include <QAction>
 #include <QMessageBox>

@@ -1,4 +1,4 @@
-#include "ui/file_errors_dialog.h"
+#include "ui/window/file_errors_dialog.h"
 
 #include <QClipboard>
 #include <QDialogButtonBox>

@@ -1,4 +1,4 @@
-#include "ui/help_pages.h"
+#include "ui/window/help_pages.h"
 
 #include <QDialog>
 #include <QEvent>

@@ -2,8 +2,8 @@
 // Ladder, Simulation, Script and Events docks, transport controls, files.
 #pragma once
 
-#include "ui/document.h"
-#include "ui/sim_status.h"
+#include "ui/edit/document.h"
+#include "ui/play/sim_status.h"
 
 #include <QMainWindow>
 

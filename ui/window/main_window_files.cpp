@@ -2,10 +2,10 @@
 // save, recent files, revert, the unsaved-changes prompt and crash recovery.
 #include "jl/scene/scene_io.h"
 #include "jl/scene/yaml_comments.h"
-#include "ui/file_errors_dialog.h"
-#include "ui/lessons.h"
-#include "ui/main_window.h"
-#include "ui/sim_controller.h"
+#include "ui/play/sim_controller.h"
+#include "ui/teaching/lessons.h"
+#include "ui/window/file_errors_dialog.h"
+#include "ui/window/main_window.h"
 
 #include <QCloseEvent>
 #include <QDragEnterEvent>

@@ -1,7 +1,7 @@
 // The main window's edits into the simulation: what runs again after an
 // edit, and from where.
-#include "ui/main_window.h"
-#include "ui/sim_controller.h"
+#include "ui/play/sim_controller.h"
+#include "ui/window/main_window.h"
 
 namespace jl::ui {
 

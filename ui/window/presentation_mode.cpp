@@ -1,6 +1,6 @@
-#include "ui/presentation_mode.h"
+#include "ui/window/presentation_mode.h"
 
-#include "ui/screen_fit.h"
+#include "ui/window/screen_fit.h"
 
 #include <QAction>
 #include <QApplication>

@@ -1,4 +1,4 @@
-#include "ui/screen_fit.h"
+#include "ui/window/screen_fit.h"
 
 #include <QLayout>
 #include <QScreen>
