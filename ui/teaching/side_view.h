@@ -91,12 +91,28 @@ protected:
     void contextMenuEvent(QContextMenuEvent* e) override;
 
 private:
-    struct Mapping;
+    struct Mapping;  // side_view_sheet.h
+    struct Sheet;
     std::array<jl::Vec2, 4> corners(int block) const;  // in the plane, numbered as the engine numbers them
     void growFraming(const QRectF& need);
     QRectF plotArea(const QRectF& target, double ui) const;
     double uiScale(const QRectF& target) const;
     double metresOf(double pixels) const;  // on screen now
+    // The layers of a picture, bottom to top (side_view_paint.cpp).
+    void paintGrid(const Sheet& s, double cell) const;
+    void paintTable(const Sheet& s) const;
+    void paintThread(const Sheet& s) const;
+    void paintBlockFaces(const Sheet& s) const;
+    void paintParticles(const Sheet& s) const;
+    void paintRibbons(const Sheet& s) const;
+    void paintOrientation(const Sheet& s) const;
+    void paintCornerNumbers(const Sheet& s) const;
+    void paintBlockNumbers(const Sheet& s) const;
+    void paintHinges(const Sheet& s) const;
+    void paintContacts(const Sheet& s) const;
+    void paintHingeCorners(const Sheet& s) const;
+    void paintDrag(const Sheet& s) const;
+    void paintClock(const Sheet& s) const;
     // One grid cell as a bar at the bottom left (`cell` m, `cellPixels`
     // long), and the hinge modes' legend at the bottom right.
     void paintScaleAndLegend(QPainter& p, const QRectF& target, double cellPixels, double cell, double ui) const;
