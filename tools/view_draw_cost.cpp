@@ -12,7 +12,7 @@
 #include "jl/scene/scene_io.h"
 #include "jl/sim/simulation.h"
 #include "tests/ui/thread_seconds.h"
-#include "ui/ladder_view.h"
+#include "ui/view3d/ladder_view.h"
 
 #include <QCommandLineParser>
 #include <QElapsedTimer>

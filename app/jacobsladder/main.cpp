@@ -1,10 +1,10 @@
 // The desktop program: jacobsladder [scene.yaml]
-#include "ui/design_map.h"
-#include "ui/ladder_view.h"
-#include "ui/lessons.h"
-#include "ui/main_window.h"
-#include "ui/presentation_mode.h"
-#include "ui/sim_controller.h"
+#include "ui/design/design_map.h"
+#include "ui/play/sim_controller.h"
+#include "ui/teaching/lessons.h"
+#include "ui/view3d/ladder_view.h"
+#include "ui/window/main_window.h"
+#include "ui/window/presentation_mode.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

@@ -5,7 +5,7 @@
 
 #include "jl/sim/recording.h"
 #include "jl/sim/simulation.h"
-#include "ui/ladder_view.h"
+#include "ui/view3d/ladder_view.h"
 #include "ui_test_support.h"
 
 #include <QDoubleSpinBox>

@@ -6,10 +6,10 @@
 // plots choose hinges and blocks over the whole ladder.
 #include "example_runs.h"
 #include "playback_fixture.h"
-#include "ui/lessons.h"
-#include "ui/run_plots.h"
-#include "ui/side_view.h"
-#include "ui/timeline.h"
+#include "ui/play/timeline.h"
+#include "ui/teaching/lessons.h"
+#include "ui/teaching/run_plots.h"
+#include "ui/teaching/side_view.h"
 
 #include <QApplication>
 #include <QDialog>

@@ -4,12 +4,12 @@
 // the same designs, Cancel stops the runs, a click opens a design that one
 // Undo takes back, a map opened again comes from the cache without a run, and
 // the estimate beside the block count follows an edit.
-#include "ui/design_map.h"
-#include "ui/design_map_cache.h"
-#include "ui/design_map_grid.h"
-#include "ui/ladder_panel.h"
-#include "ui/reach_estimate.h"
-#include "ui/scene_fields.h"
+#include "ui/design/design_map.h"
+#include "ui/design/design_map_cache.h"
+#include "ui/design/design_map_grid.h"
+#include "ui/design/reach_estimate.h"
+#include "ui/edit/ladder_panel.h"
+#include "ui/edit/scene_fields.h"
 #include "ui_test_support.h"
 
 #include <QAction>

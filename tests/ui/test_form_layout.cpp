@@ -6,10 +6,10 @@
 // is never cut mid-line, a bad file's problems wrap under the file named
 // once, and the hinge damping reads in significant digits.
 #include "jl/scene/scene_io.h"
-#include "ui/file_errors_dialog.h"
-#include "ui/ladder_panel.h"
-#include "ui/main_window.h"
-#include "ui/reach_estimate.h"
+#include "ui/design/reach_estimate.h"
+#include "ui/edit/ladder_panel.h"
+#include "ui/window/file_errors_dialog.h"
+#include "ui/window/main_window.h"
 #include "ui_test_support.h"
 
 #include <QAbstractScrollArea>

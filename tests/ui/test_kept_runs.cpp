@@ -2,7 +2,7 @@
 // The runs a push in the past replaced, kept for Undo: found by their
 // drags, one per list of drags, and the oldest let go when they hold more
 // history than the budget allows (the newest always kept).
-#include "ui/kept_runs.h"
+#include "ui/play/kept_runs.h"
 #include "ui_test_support.h"
 
 #include <QtTest>

@@ -7,8 +7,8 @@
 // factor, for docs/desktop-performance.md (speed is measured, not asserted).
 #include "jl/scene/scene_io.h"
 #include "thread_seconds.h"
-#include "ui/main_window.h"
-#include "ui/sim_controller.h"
+#include "ui/play/sim_controller.h"
+#include "ui/window/main_window.h"
 #include "ui_test_support.h"
 
 #include <QElapsedTimer>

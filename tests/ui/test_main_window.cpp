@@ -3,8 +3,8 @@
 // saves and opens, refuses a bad file without touching the open scene, and
 // stays within the screen (restored, and after presentation mode).
 #include "jl/scene/scene_io.h"
-#include "ui/file_errors_dialog.h"
-#include "ui/ladder_view.h"
+#include "ui/view3d/ladder_view.h"
+#include "ui/window/file_errors_dialog.h"
 #include "ui_test_support.h"
 
 #include <QCheckBox>

@@ -5,9 +5,9 @@
 // mouse drags: test_drag_replay.cpp).
 #include "example_runs.h"
 #include "playback_fixture.h"
-#include "ui/run_plots.h"
-#include "ui/time_chart.h"
-#include "ui/timeline.h"
+#include "ui/play/timeline.h"
+#include "ui/teaching/run_plots.h"
+#include "ui/teaching/time_chart.h"
 
 #include <QLabel>
 #include <QLineSeries>

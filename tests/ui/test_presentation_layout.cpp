@@ -6,14 +6,14 @@
 // side view's scale label lies inside it; the 3-D view keeps a useful share
 // of the screen; the plots get more height, and their own back afterwards.
 // A picture of each screen is left in JL_SHOT_DIR.
-#include "ui/lessons.h"
-#include "ui/main_window.h"
-#include "ui/presentation_mode.h"
-#include "ui/run_plots.h"
-#include "ui/side_view.h"
-#include "ui/sim_controller.h"
-#include "ui/teaching_docks.h"
-#include "ui/time_chart.h"
+#include "ui/play/sim_controller.h"
+#include "ui/teaching/lessons.h"
+#include "ui/teaching/run_plots.h"
+#include "ui/teaching/side_view.h"
+#include "ui/teaching/teaching_docks.h"
+#include "ui/teaching/time_chart.h"
+#include "ui/window/main_window.h"
+#include "ui/window/presentation_mode.h"
 #include "ui_test_support.h"
 
 #include <QDir>

@@ -6,7 +6,7 @@
 // one computed before (not computed again), and Ctrl+Y or Ctrl+Shift+Z the
 // pushed run, the same way.
 #include "playback_fixture.h"
-#include "ui/timeline.h"
+#include "ui/play/timeline.h"
 
 using namespace jl::test;
 

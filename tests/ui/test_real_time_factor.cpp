@@ -4,7 +4,7 @@
 // the estimator fed known times, and the window's label against the time
 // on screen as this test sees it go by.
 #include "playback_fixture.h"
-#include "ui/rate_window.h"
+#include "ui/play/rate_window.h"
 
 #include <QLabel>
 #include <QRegularExpression>

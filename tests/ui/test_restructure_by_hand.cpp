@@ -6,9 +6,9 @@
 // bit for bit.
 #include "jl/ladder/block_corners.h"
 #include "playback_fixture.h"
-#include "ui/document.h"
-#include "ui/side_view.h"
-#include "ui/teaching_docks.h"
+#include "ui/edit/document.h"
+#include "ui/teaching/side_view.h"
+#include "ui/teaching/teaching_docks.h"
 
 #include <QApplication>
 #include <QDockWidget>

@@ -9,8 +9,8 @@
 // leave it out (ctest -LE timing).
 #include "jl/scene/scene_io.h"
 #include "jl/sim/simulation.h"
-#include "ui/ladder_view.h"
-#include "ui/view_capture.h"
+#include "ui/view3d/ladder_view.h"
+#include "ui/view3d/view_capture.h"
 
 #include <QElapsedTimer>
 #include <QtTest>

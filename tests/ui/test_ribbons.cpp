@@ -7,10 +7,10 @@
 // flip-flop's instant the ribbons' wrap moves to the blocks' other end.
 #include "jl/scene/scene_io.h"
 #include "jl/sim/simulation.h"
-#include "ui/block_shapes.h"
-#include "ui/ladder_view.h"
-#include "ui/main_window.h"
-#include "ui/sim_controller.h"
+#include "ui/play/sim_controller.h"
+#include "ui/view3d/block_shapes.h"
+#include "ui/view3d/ladder_view.h"
+#include "ui/window/main_window.h"
 #include "ui_test_support.h"
 
 #include <QMatrix4x4>

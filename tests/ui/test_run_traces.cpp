@@ -1,10 +1,10 @@
 // labels: ui
-// The plots' samples (ui/run_traces.h): each hinge's fold and each block's
+// The plots' samples (ui/teaching/run_traces.h): each hinge's fold and each block's
 // unwrapped angle read back as the frames gave them, a rewound run cut
 // back; and a frame of a 10,000-block ladder taken without an allocation
 // per block (the UI thread takes one at every frame the run plays).
 #include "tests/counting_new.h"
-#include "ui/run_traces.h"
+#include "ui/teaching/run_traces.h"
 
 #include <QtTest>
 

@@ -3,8 +3,8 @@
 // follow, the engine's corner numbers (at every size the view has), and a
 // legend that stays whole in a narrow view.
 #include "example_runs.h"
-#include "ui/round_length.h"
-#include "ui/side_view.h"
+#include "ui/teaching/side_view.h"
+#include "ui/view3d/round_length.h"
 #include "ui_test_support.h"
 
 #include <QApplication>

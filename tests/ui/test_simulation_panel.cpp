@@ -5,8 +5,8 @@
 // only in the scene file.
 #include "jl/scene/scene_io.h"
 #include "jl/sim/simulation.h"
-#include "ui/document.h"
-#include "ui/simulation_panel.h"
+#include "ui/edit/document.h"
+#include "ui/edit/simulation_panel.h"
 #include "ui_test_support.h"
 
 #include <QCheckBox>

@@ -4,12 +4,12 @@
 // the examples (the side view has tests/ui/test_side_view.cpp).
 #include "example_runs.h"
 #include "jl/sim/simulation.h"
-#include "ui/events_panel.h"
-#include "ui/exporter.h"
-#include "ui/lessons.h"
-#include "ui/pacing.h"
-#include "ui/run_plots.h"
-#include "ui/time_chart.h"
+#include "ui/play/pacing.h"
+#include "ui/teaching/events_panel.h"
+#include "ui/teaching/exporter.h"
+#include "ui/teaching/lessons.h"
+#include "ui/teaching/run_plots.h"
+#include "ui/teaching/time_chart.h"
 #include "ui_test_support.h"
 
 #include <QApplication>

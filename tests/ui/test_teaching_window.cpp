@@ -2,15 +2,15 @@
 // The teaching tools in the main window (MainWindow makes its TeachingDocks): the side view and plots follow the
 // running simulation, a click in a plot moves the timeline, the Lessons and
 // Teach menus sit before Help, presentation mode hides the chrome and comes back.
-#include "ui/lessons.h"
-#include "ui/pacing.h"
-#include "ui/presentation_mode.h"
-#include "ui/run_plots.h"
-#include "ui/scene_text_dialog.h"
-#include "ui/side_view.h"
-#include "ui/teaching_docks.h"
-#include "ui/time_chart.h"
-#include "ui/timeline.h"
+#include "ui/edit/scene_text_dialog.h"
+#include "ui/play/pacing.h"
+#include "ui/play/timeline.h"
+#include "ui/teaching/lessons.h"
+#include "ui/teaching/run_plots.h"
+#include "ui/teaching/side_view.h"
+#include "ui/teaching/teaching_docks.h"
+#include "ui/teaching/time_chart.h"
+#include "ui/window/presentation_mode.h"
 #include "ui_test_support.h"
 
 #include <QApplication>

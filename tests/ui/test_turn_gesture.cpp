@@ -3,10 +3,10 @@
 // it. The angle snaps to a quarter turn, the turn takes as long as the hand
 // took, and it is a script row: undoable, and replayed bit for bit.
 #include "playback_fixture.h"
-#include "ui/document.h"
-#include "ui/side_view.h"
-#include "ui/teaching_docks.h"
-#include "ui/turn_gesture.h"
+#include "ui/edit/document.h"
+#include "ui/edit/turn_gesture.h"
+#include "ui/teaching/side_view.h"
+#include "ui/teaching/teaching_docks.h"
 
 #include <QDockWidget>
 #include <QUndoStack>

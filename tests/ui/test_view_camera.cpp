@@ -3,9 +3,9 @@
 // walking (eye and target together) and looking around from the eye; in the
 // window, a three-quarter view that frames the whole ladder on load, after
 // an edit that makes it longer and on F.
-#include "ui/block_shapes.h"
-#include "ui/scale_mark.h"
-#include "ui/view_camera.h"
+#include "ui/view3d/block_shapes.h"
+#include "ui/view3d/scale_mark.h"
+#include "ui/view3d/view_camera.h"
 #include "ui_test_support.h"
 
 #include <QMouseEvent>

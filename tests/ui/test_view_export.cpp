@@ -4,9 +4,9 @@
 // made from, one per frame of the run at the times asked for, at the size
 // the dialog asks for.
 #include "jl/sim/simulation.h"
-#include "ui/exporter.h"
-#include "ui/teaching_docks.h"
-#include "ui/view_capture.h"
+#include "ui/teaching/exporter.h"
+#include "ui/teaching/teaching_docks.h"
+#include "ui/view3d/view_capture.h"
 #include "ui_test_support.h"
 
 #include <QFileDialog>

@@ -3,7 +3,7 @@
 // under ThreadSanitizer: the UI thread posts a storm of commands while reading
 // the published status; it never waits on a step, and what it reads is whole.
 #include "jl/scene/scene_io.h"
-#include "ui/sim_controller.h"
+#include "ui/play/sim_controller.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

@@ -3,8 +3,8 @@
 // without sleeping, since each frame it has not made yet is overdue, and
 // the UI thread's requests are still answered at once.
 #include "jl/scene/scene_io.h"
-#include "ui/catch_up.h"
-#include "ui/sim_controller.h"
+#include "ui/play/catch_up.h"
+#include "ui/play/sim_controller.h"
 #include "ui_test_support.h"
 
 #include <QDir>

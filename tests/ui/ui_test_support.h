@@ -3,11 +3,11 @@
 #pragma once
 
 #include "jl/scene/scene_io.h"
-#include "ui/ladder_view.h"
-#include "ui/main_window.h"
-#include "ui/sim_controller.h"
-#include "ui/time_chart.h"
-#include "ui/view_capture.h"
+#include "ui/play/sim_controller.h"
+#include "ui/teaching/time_chart.h"
+#include "ui/view3d/ladder_view.h"
+#include "ui/view3d/view_capture.h"
+#include "ui/window/main_window.h"
 
 #include <QAction>
 #include <QApplication>

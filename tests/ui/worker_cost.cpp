@@ -8,7 +8,7 @@
 // With a SPEED of 1 it plays paced, as a user watches it, and says the
 // real-time factor it kept.
 #include "jl/scene/scene_io.h"
-#include "ui/sim_worker.h"
+#include "ui/play/sim_worker.h"
 
 #include <chrono>
 #include <cstdio>

@@ -1,0 +1,47 @@
+// The Simulation dock: integrator, steps, tolerances, the event policy,
+// whether blocks touch, and the table top.
+#pragma once
+
+#include "jl/scene/scene_fields.h"
+#include "ui/edit/document.h"
+
+#include <QWidget>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QSpinBox;
+
+namespace jl::ui {
+
+class ValueForm;
+
+class SimulationPanel : public QWidget {
+    Q_OBJECT
+public:
+    SimulationPanel(Document* doc, QWidget* parent = nullptr);
+    void refresh();
+    // The program's own setting (not the scene's): memory for the recorded frames.
+    void setHistoryMegabytes(int mb);
+
+signals:
+    void historyMegabytesChanged(int mb);
+
+private:
+    template <class E>
+    QComboBox* addChoice(std::span<const jl::Word<E>> words, E jl::SolverSpec::*member, const char* key,
+                         const QString& label, const QString& tip, const QString& undo, bool first = false);
+
+    void addTableTop();
+
+    Document* doc_;
+    ValueForm* form_;
+    QComboBox* integrator_;
+    QComboBox* events_;
+    QComboBox* blockContact_;
+    QCheckBox* table_;             // a table top under the ladder, or none
+    QDoubleSpinBox* tableHeight_;  // mm
+    QSpinBox* history_;
+};
+
+}  // namespace jl::ui
