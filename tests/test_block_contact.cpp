@@ -290,6 +290,43 @@ private slots:
         QVERIFY(deepestOverlap(*sim) > 1e-3);
     }
 
+    // Where no block strikes another, turning contact on changes nothing:
+    // the same events at the same instants and the same final state, to
+    // the last bit (a corner grazing a face at a hinge's instant leaves
+    // that instant as it is, docs/model.md section 17.4).
+    void contactChangesNothingWhereNoBlockStrikes_data() {
+        QTest::addColumn<QString>("file");
+        for (const char* f : {"classic.yaml", "back-and-forth.yaml", "heavy-middle.yaml", "two-ripples.yaml"})
+            QTest::newRow(f) << QString(f);
+    }
+    void contactChangesNothingWhereNoBlockStrikes() {
+        QFETCH(QString, file);
+        std::vector<Event> events[2];
+        Eigen::VectorXd q[2];
+        for (int on = 0; on < 2; ++on) {
+            SceneLoad load = loadScene(std::string(JL_SOURCE_DIR) + "/examples/" + file.toStdString());
+            QVERIFY(load.scene);
+            load.scene->solver.blockContact = on ? BlockContact::On : BlockContact::Off;
+            auto sim = std::move(Simulation::build(*load.scene).simulation);
+            QVERIFY(sim);
+            const Run r = runUntil(*sim, 3.0, [&](const Frame& f) {
+                for (const Event& e : f.events) events[on].push_back(e);
+            });
+            QVERIFY2(r.failure.empty(), r.failure.c_str());
+            q[on] = sim->world().q;
+        }
+        QCOMPARE(events[1].size(), events[0].size());
+        double apart = 0;
+        for (size_t i = 0; i < events[0].size(); ++i) {
+            QCOMPARE(events[1][i].text, events[0][i].text);
+            apart = std::max(apart, std::abs(events[1][i].time - events[0][i].time));
+        }
+        qInfo("%zu events, at most %.3g s apart; final state %.3g apart", events[0].size(), apart,
+              (q[1] - q[0]).cwiseAbs().maxCoeff());
+        QCOMPARE(apart, 0.0);
+        QVERIFY(q[1] == q[0]);
+    }
+
     // Every example: no two blocks that are not neighbours inside each
     // other by more than 0.05 mm after any step, with the books balanced.
     void noExampleHasBlocksInsideEachOther_data() {

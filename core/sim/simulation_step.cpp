@@ -230,9 +230,15 @@ bool Simulation::locateEvent(double& taken, double fEnd, double forcesAtEnd) {
         // The corners' functions where the hinges' event is (or the end).
         double atHi = contactsEnd;
         if (!hingesCrossed.empty()) {
+            // Crossed by the hinges' instant as the step's end counts it:
+            // past the face by more than the pins' tolerance. A corner
+            // that grazes a face there (the hinge's event turns it away)
+            // leaves the hinges' instant as it is without contact.
             interpolant_.at(b.hi, world_.q, world_.v);
             crossed_ = contactsCrossed;
+            ladder_->blockContacts().setLocating(false);
             smallestEventFunction(t_ + b.hi, nullptr);
+            ladder_->blockContacts().setLocating(true);
             atHi = 1.0;
             for (int k : contactsCrossed) atHi = std::min(atHi, eventValues_[size_t(k)]);
         }
