@@ -6,6 +6,7 @@
 // sliding down a tilted face without friction (energy kept), and every
 // example (no two blocks inside each other).
 #include "jl/engine/energy.h"
+#include "tests/example_claims.h"
 #include "tests/scene_run.h"
 
 #include <QtTest>
@@ -328,7 +329,13 @@ private slots:
     }
 
     // Every example: no two blocks that are not neighbours inside each
-    // other by more than 0.05 mm after any step, with the books balanced.
+    // other by more than 0.05 mm after any step, and the books balanced as
+    // the examples' own tests ask with contact off. The wrong-way
+    // turn wedges blocks 0 and 3 against the hand near 0.90 s, each block's
+    // corner on the other's plane with their ends flush: until a corner
+    // was judged by the face it came through, it sank into block 0 with a
+    // gap of zero all the way in (0.3 mm after a step) and the books missed
+    // 2.5e-4 J.
     void noExampleHasBlocksInsideEachOther_data() {
         QTest::addColumn<QString>("file");
         for (const auto& entry : std::filesystem::directory_iterator(std::string(JL_SOURCE_DIR) + "/examples"))
@@ -351,13 +358,11 @@ private slots:
             const double d = deepestOverlap(*sim);
             if (d > deepest) deepest = d, when = sim->time();
         });
-        qInfo("%s: deepest overlap %.3g mm at %.4f s", qPrintable(file), deepest * 1e3, when);
+        const double scale = energyScale(*sim);
+        qInfo("%s: deepest overlap %.3g mm at %.4f s; books %.3g J of %.3g J; pins %.3g m", qPrintable(file),
+              deepest * 1e3, when, r.worstBalance, scale, r.worstResidual);
         QVERIFY2(r.failure.empty(), r.failure.c_str());
-        if (file == "wrong-way.yaml")
-            QEXPECT_FAIL("wrong-way.yaml",
-                         "blocks 0 and 3 wedged against the hand near 0.90 s overlap by 0.3 mm for a few steps "
-                         "(12 mm without contact): not yet found why",
-                         Continue);
+        QVERIFY(r.worstBalance < 2e-4 * scale);
         QVERIFY(deepest <= 0.05e-3);
     }
 };

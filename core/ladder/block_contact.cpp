@@ -24,6 +24,10 @@ constexpr double kTouchBand = 1e-7;
 // Of a block length: the rounding of a gap computed from poses (kept out
 // of the event functions, as kAngleTolerance is for the fold angle).
 constexpr double kRounding = 1e-12;
+// Of a block length: a corner this far outside a face's plane stands
+// clearly outside it (cornerAgainst); below it, two planes a corner lies on
+// at once are told apart by the face it came through.
+constexpr double kFlush = kTouchBand;
 // Of a block length: a contact that parted reads its gap from where it
 // parted until it is this far clear.
 constexpr double kClear = 1e-6;
@@ -58,20 +62,37 @@ Vec2 faceNormal(int face) {
 
 }  // namespace
 
-CornerAgainstBox BlockContacts::cornerAgainst(const World& w, const Ladder& ladder, int block, int corner, int other) {
+CornerAgainstBox BlockContacts::cornerAgainst(const World& w, const Ladder& ladder, int block, int corner, int other,
+                                              int through) {
     const Pose box = w.partPose(ladder.block(other));
     const Vec2 half = ladder.cornerLocal(other, 3).cwiseAbs();
     const Vec2 local = rotate(-box.angle, ladder.cornerWorld(w, block, corner) - box.position);
     const double d[4] = {-local.x() - half.x(), local.x() - half.x(), -local.y() - half.y(), local.y() - half.y()};
-    CornerAgainstBox out{d[0], 0};
-    for (int f = 1; f < 4; ++f)
-        if (d[f] > out.gap) out = {d[f], f};
+    if (through < 0) {
+        CornerAgainstBox out{d[0], 0};
+        for (int f = 1; f < 4; ++f)
+            if (d[f] > out.gap) out = {d[f], f};
+        return out;
+    }
+    const double flush = kFlush * ladder.length();
+    CornerAgainstBox out{d[through], through};
+    for (int f = 0; f < 4; ++f)
+        if (f != through && d[f] - flush > out.gap) out = {d[f] - flush, f};
     return out;
 }
 
-CornerAgainstBox BlockContacts::against(const World& w, const Ladder& ladder, int block, int corner, int other) const {
-    if (other != kFloor) return cornerAgainst(w, ladder, block, corner, other);
+CornerAgainstBox BlockContacts::against(const World& w, const Ladder& ladder, int block, int corner, int other,
+                                        int through) const {
+    if (other != kFloor) return cornerAgainst(w, ladder, block, corner, other, through);
     return {ladder.cornerWorld(w, block, corner).y() - *floor_, 3};
+}
+
+int BlockContacts::throughFace(const World& w, const Ladder& ladder, int block, int corner, int other) const {
+    if (other == kFloor) return 3;
+    const CornerAgainstBox plain = cornerAgainst(w, ladder, block, corner, other);
+    if (plain.gap > kFlush * ladder.length()) return plain.face;
+    const auto seen = through_.find({block, corner, other});
+    return seen != through_.end() ? seen->second : plain.face;
 }
 
 bool BlockContacts::resting(int block, int corner, int other) const {
@@ -100,9 +121,11 @@ void BlockContacts::refresh(const World& w, const Ladder& ladder) {
             for (const auto& [a, b] : {std::pair{i, j}, std::pair{j, i}})
                 for (int k = 0; k < 4; ++k)
                     if (!resting(a, k, b) && !atHingeOf(w, ladder, ladder.cornerWorld(w, a, k), b))
-                        watched_.push_back({a, k, b, gapZero(a, k, b)});
+                        watched_.push_back({a, k, b, gapZero(a, k, b), throughFace(w, ladder, a, k, b)});
     }
     if (floor_) watchFloor(w, ladder);
+    through_.clear();
+    for (const Watch& c : watched_) through_[{c.block, c.corner, c.other}] = c.through;
 }
 
 // Each moving block whose bounding circle reaches the table top has its
@@ -116,7 +139,7 @@ void BlockContacts::watchFloor(const World& w, const Ladder& ladder) {
         if (pose.position.y() - ladder.cornerLocal(i, 3).norm() > near) continue;
         if (w.body(w.part(ladder.block(i)).body).kinematic) continue;
         for (int k = 0; k < 4; ++k)
-            if (!resting(i, k, kFloor)) watched_.push_back({i, k, kFloor, gapZero(i, k, kFloor)});
+            if (!resting(i, k, kFloor)) watched_.push_back({i, k, kFloor, gapZero(i, k, kFloor), 3});
     }
 }
 
@@ -129,7 +152,7 @@ void BlockContacts::markLocated(const std::vector<int>& functions) {
 }
 
 double BlockContacts::watchFunction(const World& w, const Ladder& ladder, const Watch& c) const {
-    const double gap = against(w, ladder, c.block, c.corner, c.other).gap - c.zero;
+    const double gap = against(w, ladder, c.block, c.corner, c.other, c.through).gap - c.zero;
     return gap + (locating_ ? kRounding * ladder.length() : std::max(kRounding * ladder.length(), allowance_));
 }
 
@@ -230,9 +253,11 @@ bool BlockContacts::heldAlready(const World& w, const Contact& c, const ContactR
     return !(own > 1e-6 * free);
 }
 
-// Corner `corner` of `block` against the face of `other` it is nearest to
-// crossing (or the table top): a resting contact from now on.
-Contact BlockContacts::contactAt(const World& w, const Ladder& ladder, int block, int corner, int other) const {
+// Corner `corner` of `block` against the face of `other` it is crossing
+// (cornerAgainst, with the face it came through), or the table top: a
+// resting contact from now on.
+Contact BlockContacts::contactAt(const World& w, const Ladder& ladder, int block, int corner, int other,
+                                 int through) const {
     if (other == kFloor) {
         Contact c;
         c.cornerPart = ladder.block(block);
@@ -243,7 +268,7 @@ Contact BlockContacts::contactAt(const World& w, const Ladder& ladder, int block
         c.halfLength = kTableHalfLength;
         return c;
     }
-    const int face = cornerAgainst(w, ladder, block, corner, other).face;
+    const int face = cornerAgainst(w, ladder, block, corner, other, through).face;
     const Vec2 half = ladder.cornerLocal(other, 3).cwiseAbs();
     Contact c;
     c.cornerPart = ladder.block(block);
@@ -319,11 +344,11 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
         // A corner within the band that closes faster than v_min lands at
         // the same instant (a block landing flat lands on both ends at
         // once, whichever crossing rounding puts first).
-        const double gap = against(w, ladder, c.block, c.corner, c.other).gap - c.zero;
+        const double gap = against(w, ladder, c.block, c.corner, c.other, c.through).gap - c.zero;
         if (gap > band) continue;
         const bool located = std::find(located_.begin(), located_.end(), id) != located_.end();
         if (gap >= -allowance_ && !located) {
-            const Contact candidate = contactAt(w, ladder, c.block, c.corner, c.other);
+            const Contact candidate = contactAt(w, ladder, c.block, c.corner, c.other, c.through);
             if (!(rowTimes(contactRow(w, candidate), w.v) < -parting)) continue;
         }
         // At a corner against a corner each touches the other's face: the
@@ -334,14 +359,14 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
         if (onPin(w, ladder, p, c.block, c.other)) continue;
         // Tried without touching the world: a corner that does not close
         // leaves every cache of the engine as it was.
-        const Contact candidate = contactAt(w, ladder, c.block, c.corner, c.other);
+        const Contact candidate = contactAt(w, ladder, c.block, c.corner, c.other, c.through);
         const ContactRow row = contactRow(w, candidate);
         const double rate = rowTimes(row, w.v);
         const bool into = rate < -still || (gap < -band) ||
                           (rate <= still && rowTimes(row, w.a) + rowBias(w, row) < -ladder.forceTolerance());
         if (!into || heldAlready(w, candidate, row)) continue;
         w.contacts().push_back(candidate);
-        Touch made{c.block, c.corner, c.other, against(w, ladder, c.block, c.corner, c.other).face, t};
+        Touch made{c.block, c.corner, c.other, against(w, ladder, c.block, c.corner, c.other, c.through).face, t};
         for (const Parted& p : parted_)
             if (p.block == c.block && p.corner == c.corner && p.other == c.other && p.byImpact) {
                 made.rebound = t - p.at;

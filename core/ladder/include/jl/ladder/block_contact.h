@@ -10,6 +10,7 @@
 
 #include <array>
 #include <limits>
+#include <map>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -127,16 +128,29 @@ public:
     // How many pairs and corners the broad phase passed on at the last refresh.
     int pairCount() const { return pairCount_; }
 
-    static CornerAgainstBox cornerAgainst(const World& w, const Ladder& ladder, int block, int corner, int other);
+    // `through`: the face the corner last stood clearly outside of, or -1.
+    // A corner that slides along the plane of one face while it crosses
+    // another (blocks side by side with their ends flush, as the hinges
+    // stack them) stands on both planes at once: the plain maximum would
+    // read 0, a rounding's width from either face, all the way in. So the
+    // face it comes through counts as is, and the others only once they
+    // are `kFlush` beyond it.
+    static CornerAgainstBox cornerAgainst(const World& w, const Ladder& ladder, int block, int corner, int other,
+                                          int through = -1);
     // The same against `other` or the floor (other == kFloor: the gap above
     // the table top, face 3).
-    CornerAgainstBox against(const World& w, const Ladder& ladder, int block, int corner, int other) const;
+    CornerAgainstBox against(const World& w, const Ladder& ladder, int block, int corner, int other,
+                             int through = -1) const;
 
 private:
     struct Watch {
         int block = 0, corner = 0, other = 0;
-        double zero = 0;  // m, <= 0: where the gap counts as zero (a contact just parted reads a hair inside)
+        double zero = 0;   // m, <= 0: where the gap counts as zero (a contact just parted reads a hair inside)
+        int through = -1;  // the face it last stood clearly outside of (cornerAgainst)
     };
+    // The face each watched corner last stood clearly outside of, kept from
+    // one refresh to the next.
+    int throughFace(const World& w, const Ladder& ladder, int block, int corner, int other) const;
     // The watched corners' functions: the gap past its zero, less the
     // allowance (below).
     double watchFunction(const World& w, const Ladder& ladder, const Watch& c) const;
@@ -145,7 +159,7 @@ private:
     }
     double slideRoom(const World& w, size_t i) const;
     static bool heldAlready(const World& w, const Contact& c, const ContactRow& row);
-    Contact contactAt(const World& w, const Ladder& ladder, int block, int corner, int other) const;
+    Contact contactAt(const World& w, const Ladder& ladder, int block, int corner, int other, int through) const;
     // The corners of moving blocks near the floor, watched against it.
     void watchFloor(const World& w, const Ladder& ladder);
     bool resting(int block, int corner, int other) const;
@@ -161,7 +175,8 @@ private:
     bool locating_ = false;
     double allowance_ = 1e-10;  // m
     std::vector<Watch> watched_;
-    std::vector<Touch> touches_;  // parallel to World::contacts()
+    std::map<std::array<int, 3>, int> through_;  // (block, corner, other) -> face, for watched_
+    std::vector<Touch> touches_;                 // parallel to World::contacts()
     // Parted at some instant, and the gap they parted at (the projection's
     // noise): their zero, until they are clear by kClear.
     struct Parted {
