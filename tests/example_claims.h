@@ -7,6 +7,8 @@
 
 #include <QtTest>
 
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <string>
 #include <vector>
@@ -45,6 +47,17 @@ inline void requireSoundRun(const Run& r, double scale) {
     QVERIFY2(r.worstBalance < 2e-4 * scale, qPrintable(QString("%1 J of %2 J").arg(r.worstBalance).arg(scale)));
     const Chatter c = chatter(r.events);
     QVERIFY2(c.longest <= 4, qPrintable(QString("%1 quick cycles of one hinge in a row").arg(c.longest)));
+}
+
+// The scene of docs/scene-format.md's "A complete example", as loaded (its
+// errors, if any, in `errors`).
+inline SceneLoad formatPageExample() {
+    std::ifstream page(std::string(JL_SOURCE_DIR) + "/docs/scene-format.md");
+    const std::string text((std::istreambuf_iterator<char>(page)), std::istreambuf_iterator<char>());
+    const std::size_t section = text.find("## A complete example");
+    const std::size_t start = text.find("```yaml\n", section), end = text.find("```", start + 8);
+    if (section == std::string::npos || start == std::string::npos || end == std::string::npos) return {};
+    return parseScene(text.substr(start + 8, end - start - 8), "docs/scene-format.md");
 }
 
 // An example's scene, to run at other settings than its own.

@@ -11,7 +11,6 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <numbers>
 #include <set>
 
@@ -95,13 +94,7 @@ private slots:
     // it loads, runs its whole duration through every scripted action (the
     // hold at 3 s included) with books that balance and pins that hold.
     void theFormatPagesCompleteExampleRuns() {
-        std::ifstream page(std::string(JL_SOURCE_DIR) + "/docs/scene-format.md");
-        const std::string text((std::istreambuf_iterator<char>(page)), std::istreambuf_iterator<char>());
-        const std::size_t section = text.find("## A complete example");
-        QVERIFY(section != std::string::npos);
-        const std::size_t start = text.find("```yaml\n", section), end = text.find("```", start + 8);
-        QVERIFY(start != std::string::npos && end != std::string::npos);
-        const SceneLoad load = parseScene(text.substr(start + 8, end - start - 8), "docs/scene-format.md");
+        const SceneLoad load = formatPageExample();
         for (const Diagnostic& d : load.errors) qWarning("%s", d.format().c_str());
         QVERIFY(load.scene);
         auto built = Simulation::build(*load.scene);

@@ -362,7 +362,12 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
         const Contact candidate = contactAt(w, ladder, c.block, c.corner, c.other, c.through);
         const ContactRow row = contactRow(w, candidate);
         const double rate = rowTimes(row, w.v);
-        const bool into = rate < -still || (gap < -band) ||
+        // Closing slower than v_min L (the speed below which nothing
+        // bounces and an impact elsewhere parts nothing) with an
+        // acceleration that takes it away, the corner grazes the face: no
+        // impact. Struck there, its push would pull at once, and the next
+        // step would find it a hair closer again.
+        const bool into = rate < -parting || (gap < -band) ||
                           (rate <= still && rowTimes(row, w.a) + rowBias(w, row) < -ladder.forceTolerance());
         if (!into || heldAlready(w, candidate, row)) continue;
         w.contacts().push_back(candidate);
