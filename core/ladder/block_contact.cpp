@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 namespace jl {
 
@@ -93,6 +94,32 @@ int BlockContacts::throughFace(const World& w, const Ladder& ladder, int block, 
     if (plain.gap > kFlush * ladder.length()) return plain.face;
     const auto seen = through_.find({block, corner, other});
     return seen != through_.end() ? seen->second : plain.face;
+}
+
+std::optional<std::string> BlockContacts::inside(const World& w, const Ladder& ladder) const {
+    const double band = kTouchBand * ladder.length();
+    auto words = [](int block, int corner, const std::string& where, double depth) {
+        return "corner " + std::to_string(corner) + " of block " + std::to_string(block) + " would be " +
+               std::to_string(depth * 1e3) + " mm " + where;
+    };
+    if (enabled_) {
+        BlockPairs broad;
+        std::vector<std::pair<int, int>> pairs;
+        broad.find(w, ladder, pairs);
+        for (const auto& [i, j] : pairs)
+            for (const auto& [a, b] : {std::pair{i, j}, std::pair{j, i}})
+                for (int k = 0; k < 4; ++k)
+                    if (const double gap = cornerAgainst(w, ladder, a, k, b).gap; gap < -band)
+                        return words(a, k, "inside block " + std::to_string(b), -gap);
+    }
+    if (floor_)
+        for (int i = 0; i < ladder.blockCount(); ++i) {
+            if (w.body(w.part(ladder.block(i)).body).kinematic) continue;
+            for (int k = 0; k < 4; ++k)
+                if (const double gap = ladder.cornerWorld(w, i, k).y() - *floor_; gap < -band)
+                    return words(i, k, "under the table top", -gap);
+        }
+    return std::nullopt;
 }
 
 bool BlockContacts::resting(int block, int corner, int other) const {

@@ -375,7 +375,8 @@ void Simulation::applyScriptAction(const ScriptAction& a) {
 // world's combine would make them one rigid body at their current pose, a
 // gap between the corners locked inside it for a later cut to close; in weld
 // mode it would turn one about the other, through it if need be), or when
-// the corners do not end up together (two held blocks, a failed projection).
+// the corners do not end up together (two held blocks, a failed projection),
+// or when the pull leaves a corner inside a block it meets by contact.
 std::optional<std::string> Simulation::join(const ScriptAction& a) {
     const PartId first = blockPart(a.block), second = blockPart(a.otherBlock);
     if (world_.part(first).body == world_.part(second).body || shareAPoint(world_, first, second))
@@ -399,6 +400,14 @@ std::optional<std::string> Simulation::join(const ScriptAction& a) {
         dynamics_.forgetStructure();
         return pulled.converged ? "the corners cannot be brought together (both blocks are held)"
                                 : "the pull onto the new pin did not converge";
+    }
+    // Contacts meet a corner as it arrives at a face, never one that starts
+    // inside: a pull through another block (or the table) is not a motion
+    // they can answer.
+    if (auto through = ladder_->blockContacts().inside(world_, *ladder_)) {
+        world_ = saved;
+        dynamics_.forgetStructure();
+        return "the pull would pass through: " + *through;
     }
     const Energy e1 = energy(world_);
     // The merge's loss is the energy of its velocity jump in the mass

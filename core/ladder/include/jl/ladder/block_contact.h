@@ -12,6 +12,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -135,6 +136,13 @@ public:
     // read 0, a rounding's width from either face, all the way in. So the
     // face it comes through counts as is, and the others only once they
     // are `kFlush` beyond it.
+    // Where a corner of one block is inside another that is not its
+    // neighbour (with contact between blocks on), or under the table top,
+    // by more than the touch band: the words of the first such corner, or
+    // nothing. The contacts meet corners only as they arrive at a face; a
+    // scripted pull that puts one inside a block is refused with this.
+    std::optional<std::string> inside(const World& w, const Ladder& ladder) const;
+
     static CornerAgainstBox cornerAgainst(const World& w, const Ladder& ladder, int block, int corner, int other,
                                           int through = -1);
     // The same against `other` or the floor (other == kFloor: the gap above
