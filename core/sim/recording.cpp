@@ -42,6 +42,7 @@ Recording record(Simulation& sim, double until, const FrameGrid& grid, RecordTar
         if (!sim.stepOnceUpTo(until)) break;  // the run ends at exactly `until`
         handOn(sim.takeEvents());
         r.worstResidual = std::max(r.worstResidual, sim.lastResidual());
+        r.targetFailed = r.targetFailed || (target && !target->step(sim));
         for (const Frame& f : sim.takeGridFrames()) {
             account(r, f);
             r.targetFailed = r.targetFailed || (target && !target->frame(f));

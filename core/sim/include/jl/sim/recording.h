@@ -14,13 +14,17 @@
 
 namespace jl {
 
-// Where a recording's frames and events go as they come; false from either
-// stops the run (an output could not be written).
+// Where a recording's frames and events go as they come; false from any of
+// these stops the run (an output could not be written, or the target has
+// seen what it wanted).
 class RecordTarget {
 public:
     virtual ~RecordTarget() = default;
     virtual bool frame(const Frame& f) = 0;
     virtual bool event(const Event& e) = 0;
+    // After every step, its events handed on: a target that checks each
+    // step (the pins on the world, the books of sim.frame()) looks here.
+    virtual bool step(Simulation& /*sim*/) { return true; }
     // A target that draws the frames (a video of the 3-D view) wants the
     // ribbons in them; one that keeps numbers does not pay for them.
     virtual bool drawsRibbons() const { return false; }
@@ -33,7 +37,7 @@ struct Recording {
     SolverFrame solver;         // the last frame's statistics (the step the engine chose among them)
     std::string failure;        // the engine's
     int interrupted = 0;        // what `interruption` returned when it ended the run early, or 0
-    bool targetFailed = false;  // the target refused a frame or an event
+    bool targetFailed = false;  // the target refused a frame, an event or a step
     bool complete() const { return failure.empty() && interrupted == 0 && !targetFailed; }
 };
 
@@ -42,9 +46,9 @@ struct Recording {
 // target draws them) at t = 0
 // and then at exactly each instant of `grid` up to `until` (energy books
 // checked on each; the frame times never change the steps), and keeping the
-// largest pin gap after every step. Ends early on a failure, a refusal of
-// the target or when `interruption` (asked between two steps) returns
-// non-zero.
+// largest pin gap after every step; the target sees the simulation after
+// each step. Ends early on a failure, a refusal of the target or when
+// `interruption` (asked between two steps) returns non-zero.
 Recording record(Simulation& sim, double until, const FrameGrid& grid, RecordTarget* target,
                  const std::function<int()>& interruption = {});
 
