@@ -1,5 +1,5 @@
-// The JSON the command line writes (run summaries, events, bench's last
-// line), built with nlohmann-json, keys in the order they are given. JSON
+// The JSON the command line writes (run summaries, bench's last line; the
+// events are jl/sim/event_json.h's), built with nlohmann-json, keys in the order they are given. JSON
 // text is UTF-8: bytes of a string that are not (a file name in another
 // encoding) are written as U+FFFD rather than break every reader; a number
 // that is not finite is null, as JSON has no NaN or infinity.

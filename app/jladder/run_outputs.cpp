@@ -1,21 +1,13 @@
 #include "app/jladder/run_outputs.h"
 
-#include "app/jladder/json_text.h"
 #include "app/jladder/options.h"
+#include "jl/sim/event_json.h"
 #include "jl/sim/frame_csv.h"
 
 #include <cstdio>
 #include <filesystem>
 
 namespace jl::cli {
-
-namespace {
-
-Json eventJson(const Event& e) {
-    return Json{{"t", e.time}, {"hinge", e.hinge}, {"event", toString(e.kind)}, {"corner", e.corner}, {"text", e.text}};
-}
-
-}  // namespace
 
 void RunOutputs::add(Table table, const std::string& option, const std::string& path) {
     outputs_.push_back({table, option, path, {}, true});
@@ -53,7 +45,7 @@ bool RunOutputs::open() {
                 writeEnergyCsvHeader(text_);
                 break;
             case Table::Events:
-                text_ << "[";
+                writeEventsJsonStart(text_);
                 break;
         }
         if (!put(o, text_.str())) return false;
@@ -107,7 +99,9 @@ bool RunOutputs::event(const Event& e) {
     bool ok = true;
     for (Output& o : outputs_) {
         if (o.table != Table::Events) continue;
-        ok = put(o, (o.first ? "\n " : ",\n ") + jsonText(eventJson(e))) && ok;
+        text_.str({});
+        writeEventJson(text_, e, o.first);
+        ok = put(o, text_.str()) && ok;
         o.first = false;
     }
     return ok;
@@ -119,7 +113,11 @@ bool RunOutputs::finish(bool complete, const char* command) {
     // before the first is renamed into place, so that a failure in the last
     // (a full disk) does not leave the others replaced.
     for (Output& o : outputs_) {
-        if (o.table == Table::Events && !o.file.failed()) put(o, "\n]\n");
+        if (o.table == Table::Events && !o.file.failed()) {
+            text_.str({});
+            writeEventsJsonEnd(text_);
+            put(o, text_.str());
+        }
         if (complete && !o.file.flush()) {
             if (error_.empty()) error_ = o.path + ": " + o.file.error();
             ok = complete = false;
