@@ -4,7 +4,7 @@
 #include "jl/ladder/block_contact.h"
 #include "jl/ladder/ladder.h"
 #include "jl/scene/scene_io.h"
-#include "jl/sim/simulation.h"
+#include "jl/sim/recording.h"
 
 #include <algorithm>
 #include <cmath>
@@ -31,17 +31,22 @@ Run runOnce(Scene scene, BlockContact contact, double horizon) {
         r.failure = built.errors.empty() ? "not built" : built.errors.front();
         return r;
     }
-    Simulation& sim = *built.simulation;
-    const double asked = std::min(horizon, scene.duration);
-    for (double t = std::min(0.1, asked);; t = std::min(t + 0.1, asked)) {
-        const bool ok = sim.advanceTo(t);
-        for (Event& e : sim.takeEvents()) r.events.push_back(std::move(e));
-        r.balance = std::max(r.balance, std::abs(sim.frame().energy.balance()));
-        if (!ok || t >= asked) break;
-    }
+    // Every event, and the books on a frame every tenth of a second
+    // (jl/sim/recording.h).
+    struct Events : RecordTarget {
+        std::vector<Event>& events;
+        explicit Events(std::vector<Event>& e) : events(e) {}
+        bool frame(const Frame&) override { return true; }
+        bool event(const Event& e) override {
+            events.push_back(e);
+            return true;
+        }
+    } target(r.events);
+    const Recording recorded = record(*built.simulation, std::min(horizon, scene.duration), FrameGrid{0, 0.1}, &target);
     r.cpu = threadSeconds() - t0;
-    r.steps = sim.frame().solver.steps;
-    r.failure = sim.failure();
+    r.balance = recorded.worstBalance;
+    r.steps = recorded.steps;
+    r.failure = recorded.failure;
     return r;
 }
 

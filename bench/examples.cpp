@@ -3,7 +3,7 @@
 #include "bench/clock.h"
 #include "jl/scene/scene_fields.h"
 #include "jl/scene/scene_io.h"
-#include "jl/sim/simulation.h"
+#include "jl/sim/recording.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,27 +32,26 @@ ExampleRow runScene(const std::string& name, Scene scene, double horizon) {
         row.failure = built.errors.empty() ? "not built" : built.errors.front();
         return row;
     }
-    Simulation& sim = *built.simulation;
-    // The hinge events counted every tenth of a simulated second, so that
-    // a long run does not keep them all (advanceTo never cuts a step).
-    int events = 0;
-    const double slice = 0.1;  // s, how often the pending events are counted
-    for (double t = std::min(slice, row.asked);; t = std::min(t + slice, row.asked)) {
-        const bool ok = sim.advanceTo(t);
-        for (const Event& e : sim.takeEvents())
-            if (e.hinge > 0) ++events;
-        if (!ok || t >= row.asked) break;
-    }
+    // The hinge events counted as they come, so that a long run does not
+    // keep them all; no frames (jl/sim/recording.h).
+    struct HingeEvents : RecordTarget {
+        int count = 0;
+        bool frame(const Frame&) override { return true; }
+        bool event(const Event& e) override {
+            count += e.hinge > 0;
+            return true;
+        }
+    } events;
+    const Recording r = record(*built.simulation, row.asked, FrameGrid{}, &events);
     row.cpu = threadSeconds() - t0;
-    row.simulated = sim.time();
-    row.hingeEvents = events;
-    row.failure = sim.failure();
-    const SolverFrame f = sim.frame().solver;
-    row.steps = f.steps;
-    row.automaticStep = f.automaticStep;
-    row.smallestStep = f.smallestStep;
-    row.largestStep = f.largestStep;
-    row.stepHalvings = f.stepHalvings;
+    row.simulated = r.time;
+    row.hingeEvents = events.count;
+    row.failure = r.failure;
+    row.steps = r.solver.steps;
+    row.automaticStep = r.solver.automaticStep;
+    row.smallestStep = r.solver.smallestStep;
+    row.largestStep = r.solver.largestStep;
+    row.stepHalvings = r.solver.stepHalvings;
     std::fprintf(stderr,
                  "  example %-34s %5d blocks: %.2f of %.2f s in %.3f CPU s (%.3f per simulated s), %lld steps%s\n",
                  row.scene.c_str(), row.blocks, row.simulated, row.asked, row.cpu, row.perSimulated(), row.steps,
