@@ -1,5 +1,5 @@
 // Test support for the hard cases (docs/model.md section 16.3): ladders
-// and scripts built in code, a run recorded frame by frame, and the two
+// and scripts built in code, a run recorded and checked step by step, and the two
 // pass criteria (a run that must complete; a run allowed to stop with a
 // diagnostic, keeping a sound state).
 #pragma once
@@ -7,6 +7,7 @@
 #include "jl/engine/motion.h"
 #include "jl/engine/projection.h"
 #include "jl/reference/falling_chain.h"
+#include "jl/sim/recording.h"
 #include "jl/sim/simulation.h"
 
 #include <QtTest>
@@ -36,9 +37,9 @@ inline ScriptAction turn(double at, double angle, double duration) {
     return a;
 }
 
-// What a run did, frame by frame.
+// What a run did, step by step.
 struct Outcome {
-    bool finite = true;        // every pose and energy of every frame
+    bool finite = true;        // every pose and energy after every step
     double worstBalance = 0;   // J, |E - (E0 + W_held + W_user - D)|
     double worstResidual = 0;  // m, pin gap after a step
     double energyScale = 0;    // J, m_total g (ladder height): what "small" is measured against
@@ -49,8 +50,26 @@ struct Outcome {
     double until = 0;  // s, the time asked for
 };
 
-inline Outcome run(const Scene& scene, double until, double frameInterval = 0.01) {
-    Outcome o;
+// Records the run to `until` (jl/sim/recording.h), checking the state after
+// every step (the last good one, when it stops on a failure).
+inline Outcome run(const Scene& scene, double until) {
+    struct EveryStep : RecordTarget {
+        Outcome o;
+        bool frame(const Frame&) override { return true; }
+        bool event(const Event&) override { return true; }
+        bool step(Simulation& sim) override {
+            const Frame f = sim.frame();
+            for (const Pose& p : f.poses)
+                if (!p.position.allFinite() || !std::isfinite(p.angle)) o.finite = false;
+            if (!std::isfinite(f.energy.balance())) o.finite = false;
+            o.worstBalance = std::max(o.worstBalance, std::abs(f.energy.balance()));
+            o.flowed = std::max(o.flowed, std::abs(f.energy.heldWork) + std::abs(f.energy.userWork) +
+                                              f.energy.impactLoss + f.energy.dampingLoss + f.energy.kinetic);
+            o.worstResidual = std::max(o.worstResidual, pinResidual(sim.world()));  // measured, not reported
+            return true;
+        }
+    } target;
+    Outcome& o = target.o;
     o.until = until;
     Simulation::Built built = Simulation::build(scene);
     if (!built.simulation) {
@@ -63,23 +82,10 @@ inline Outcome run(const Scene& scene, double until, double frameInterval = 0.01
     for (int i = 0; i < sim.blockCount(); ++i) mass += sim.world().part(sim.blockPart(i)).mass;
     const double height = scene.ladder ? scene.ladder->blocks * scene.ladder->block.length : 1.0;
     o.energyScale = mass * 9.81 * height;
-    for (double t = frameInterval; t <= until + 1e-12; t += frameInterval) {
-        sim.advanceTo(t);
-        const Frame f = sim.frame();
-        for (const Pose& p : f.poses)
-            if (!p.position.allFinite() || !std::isfinite(p.angle)) o.finite = false;
-        if (!std::isfinite(f.energy.balance())) o.finite = false;
-        o.worstBalance = std::max(o.worstBalance, std::abs(f.energy.balance()));
-        o.flowed = std::max(o.flowed, std::abs(f.energy.heldWork) + std::abs(f.energy.userWork) + f.energy.impactLoss +
-                                          f.energy.dampingLoss + f.energy.kinetic);
-        o.worstResidual = std::max(o.worstResidual, pinResidual(sim.world()));  // measured, not reported
-        o.events += (long long)f.events.size();
-        o.time = f.time;
-        if (!f.failure.empty()) {
-            o.failure = f.failure;
-            break;
-        }
-    }
+    const Recording r = record(sim, until, FrameGrid{}, &target);
+    o.failure = r.failure;
+    o.events = r.events;
+    o.time = r.time;
     qInfo("t = %.3f s, %lld events, balance %.2e J (scale %.2e J), residual %.2e m%s%s", o.time, o.events,
           o.worstBalance, o.energyScale, o.worstResidual, o.failure.empty() ? "" : ", stopped: ", o.failure.c_str());
     return o;

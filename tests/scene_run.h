@@ -1,8 +1,10 @@
-// Test support: build a scene from YAML text, run it, collect events and contacts.
+// Test support: build a scene from YAML text, record its run (jl/sim/recording.h),
+// collect events and contacts.
 #pragma once
 
 #include "jl/engine/projection.h"
 #include "jl/scene/scene_io.h"
+#include "jl/sim/recording.h"
 #include "jl/sim/simulation.h"
 
 #include <QtTest>
@@ -11,6 +13,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace jl::test {
@@ -40,24 +43,63 @@ struct Run {
     std::string failure;
 };
 
-// Steps to `until`, calling `each` after every step (for contacts and angles).
+// Records the run to exactly `until` (jl/sim/recording.h), checking every
+// step and calling `each` after it with its frame (for contacts and angles)
+// and the step's events.
 inline Run runUntil(Simulation& sim, double until, const std::function<void(const Frame&)>& each = {}) {
-    Run r;
-    while (sim.time() < until) {
-        if (!sim.stepOnce()) break;
-        Frame f = sim.frame();
-        for (const Event& e : f.events)
+    struct EveryStep : RecordTarget {
+        Run r;
+        std::vector<Event> stepEvents;
+        const std::function<void(const Frame&)>& each;
+        explicit EveryStep(const std::function<void(const Frame&)>& e) : each(e) {}
+        bool frame(const Frame&) override { return true; }
+        bool event(const Event& e) override {
+            stepEvents.push_back(e);
             if (e.hinge > 0) r.events.push_back(e);
-        r.worstBalance = std::max(r.worstBalance, std::abs(f.energy.balance()));
-        // Measured on the world itself after the step and its events, not
-        // read from the projection (which reports what it aimed at).
-        r.worstResidual = std::max(r.worstResidual, pinResidual(sim.world()));
-        if (f.energy.impactLoss < r.lastImpactLoss - 1e-15) r.impactLossNeverFell = false;
-        r.lastImpactLoss = f.energy.impactLoss;
-        if (each) each(f);
-    }
-    r.failure = sim.failure();
-    return r;
+            return true;
+        }
+        bool step(Simulation& s) override {
+            Frame f = s.frame();
+            f.events = std::exchange(stepEvents, {});
+            r.worstBalance = std::max(r.worstBalance, std::abs(f.energy.balance()));
+            // Measured on the world itself after the step and its events, not
+            // read from the projection (which reports what it aimed at).
+            r.worstResidual = std::max(r.worstResidual, pinResidual(s.world()));
+            if (f.energy.impactLoss < r.lastImpactLoss - 1e-15) r.impactLossNeverFell = false;
+            r.lastImpactLoss = f.energy.impactLoss;
+            if (each) each(f);
+            return true;
+        }
+    } target(each);
+    target.r.failure = record(sim, until, FrameGrid{}, &target).failure;
+    return target.r;
+}
+
+// Records the run until the step of the first event of `kind`; false if
+// none by `until`. The events of that step go to `instant`.
+inline bool stepUntil(Simulation& sim, EventKind kind, double until, Event* found,
+                      std::vector<Event>* instant = nullptr) {
+    struct FirstOfKind : RecordTarget {
+        EventKind kind;
+        Event* found;
+        std::vector<Event> stepEvents;
+        bool seen = false;
+        FirstOfKind(EventKind k, Event* f) : kind(k), found(f) {}
+        bool frame(const Frame&) override { return true; }
+        bool event(const Event& e) override {
+            stepEvents.push_back(e);
+            if (!seen && e.kind == kind) *found = e, seen = true;
+            return true;
+        }
+        bool step(Simulation&) override {
+            if (!seen) stepEvents.clear();
+            return !seen;  // stops the run after the step of the event
+        }
+    } target(kind, found);
+    record(sim, until, FrameGrid{}, &target);
+    if (!sim.failure().empty()) qWarning("%s", sim.failure().c_str());
+    if (target.seen && instant) *instant = target.stepEvents;
+    return target.seen;
 }
 
 inline std::vector<int> firstFlipOrder(const std::vector<Event>& events) {

@@ -79,22 +79,6 @@ double deepestOverlap(const Simulation& sim) {
     return deepest;
 }
 
-// Steps until the first event of `kind`; false if none by `until`. The
-// events of that instant go to `instant`.
-bool stepUntil(Simulation& sim, EventKind kind, double until, Event* found, std::vector<Event>* instant = nullptr) {
-    while (sim.time() < until && sim.stepOnce()) {
-        const std::vector<Event> events = sim.frame().events;
-        for (const Event& e : events)
-            if (e.kind == kind) {
-                *found = e;
-                if (instant) *instant = events;
-                return true;
-            }
-    }
-    if (!sim.failure().empty()) qWarning("%s", sim.failure().c_str());
-    return false;
-}
-
 // The pushes of the resting contacts in the state the simulation holds.
 Eigen::VectorXd pushes(const Simulation& sim) {
     World w = sim.world();

@@ -39,22 +39,6 @@ std::string dropScene(double table = kTable, const std::string& solver = "{event
     return yaml.str();
 }
 
-// Steps until the first event of `kind`; false if none by `until`. The
-// events of that instant go to `instant`.
-bool stepUntil(Simulation& sim, EventKind kind, double until, Event* found, std::vector<Event>* instant) {
-    while (sim.time() < until && sim.stepOnce()) {
-        const std::vector<Event> events = sim.frame().events;
-        for (const Event& e : events)
-            if (e.kind == kind) {
-                *found = e;
-                *instant = events;
-                return true;
-            }
-    }
-    if (!sim.failure().empty()) qWarning("%s", sim.failure().c_str());
-    return false;
-}
-
 // The lowest block corner and its height.
 Vec2 lowestCorner(const Simulation& sim) {
     const Ladder& ladder = *sim.ladder();

@@ -43,7 +43,7 @@ private slots:
         s.solver.step = 5e-4;
         s.script.push_back(turn(0.0, kPi, 0.3));
         if (!soak()) {
-            requireSound(run(s, 0.02, 0.002));
+            requireSound(run(s, 0.02));
             return;
         }
         // At 0.305 s block 1, flipped and loaded by 1,900 N of blocks hung
@@ -51,7 +51,7 @@ private slots:
         // 0.5 ms, with no event. No fixed step of 0.125 ms or more follows
         // that; RK4 must then stop with a diagnostic that names the step and
         // keep a sound state, and the adaptive method must carry on through.
-        const Outcome fixed = run(s, 0.5, 0.002);
+        const Outcome fixed = run(s, 0.5);
         if (!fixed.failure.empty()) {
             QVERIFY2(fixed.failure.find("step") != std::string::npos, fixed.failure.c_str());
             QVERIFY(fixed.finite);
@@ -60,7 +60,7 @@ private slots:
         }
         s.solver.integrator = Integrator::DormandPrince45;
         s.solver.tolerance = 1e-7;
-        requireSound(run(s, 0.5, 0.002));
+        requireSound(run(s, 0.5));
     }
 
     void tenThousandBlocksAtOneMillisecondStopsWithADiagnostic() {
@@ -71,7 +71,7 @@ private slots:
         Scene s = ladderScene(10000);
         s.solver.step = 1e-3;  // the user's own step: the engine keeps it and says when it fails
         s.script.push_back(turn(0.0, kPi, 0.3));
-        const Outcome o = run(s, 0.1, 0.002);
+        const Outcome o = run(s, 0.1);
         QVERIFY(o.finite);
         QVERIFY2(!o.failure.empty(), "RK4 at 1 ms ran 10,000 blocks past its stability limit without a word");
         QVERIFY2(o.failure.find("step") != std::string::npos, o.failure.c_str());
@@ -106,7 +106,7 @@ private slots:
         s.ladder->held = {0};
         s.script.push_back(turn(0.0, kPi, 0.3));
         QCOMPARE(s.solver.step, 0.0);  // the default: the engine chooses
-        const Outcome o = run(s, until, std::min(0.01, until / 2));
+        const Outcome o = run(s, until);
         requireSound(o);
         Simulation::Built built = Simulation::build(s);
         built.simulation->stepOnce();
@@ -219,7 +219,7 @@ private slots:
         s.ladder->initial.kind = InitialState::Kind::FoldAngles;
         s.ladder->initial.foldAngles = {0.5, 1.0, 1.5, 1.0, 0.5};
         const double until = soak() ? 3600.0 : 60.0;
-        requireSound(run(s, until, 1.0), 1e-5);
+        requireSound(run(s, until), 1e-5);
     }
 
     void heldBlockTurnedAtOneHundredTurnsPerSecond() {

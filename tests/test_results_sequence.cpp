@@ -62,16 +62,20 @@ std::vector<Lock> locksOf(const std::vector<Event>& events, int hinge, double fr
 }
 
 // A run's hinge events up to hinge 2's first flip (or `until`), taken as
-// they come: no frames, so that many ladders can be run.
+// they come (a recording with no frame grid), so that many ladders can be
+// run.
 std::vector<Event> firstFlipsOfTwoHinges(const Scene& scene, double until) {
-    std::vector<Event> events;
-    auto sim = Simulation::build(scene).simulation;
-    while (sim && sim->time() < until && sim->stepOnce())
-        for (const Event& e : sim->takeEvents()) {
+    struct UpToHingeTwosFlip : RecordTarget {
+        std::vector<Event> events;
+        bool frame(const Frame&) override { return true; }
+        bool event(const Event& e) override {
             if (e.hinge > 0) events.push_back(e);
-            if (e.hinge == 2 && e.kind == EventKind::FlipFlop) return events;
+            return !(e.hinge == 2 && e.kind == EventKind::FlipFlop);  // false: the run stops there
         }
-    return events;
+    } target;
+    auto sim = Simulation::build(scene).simulation;
+    if (sim) record(*sim, until, FrameGrid{}, &target);
+    return target.events;
 }
 
 }  // namespace
