@@ -31,7 +31,10 @@ private slots:
         requireSound(run(s, soak() ? 5.0 : 1.0));
         s.solver.integrator = Integrator::RK4;
         s.solver.step = 1e-3;
-        requireSoundOrDiagnosed(run(s, 1.0));
+        const Outcome rk4 = run(s, 1.0);
+        requireSoundOrDiagnosed(rk4);
+        QVERIFY2(!rk4.failure.empty(), "RK4 at 1 ms ran past its stability limit without a word");
+        QVERIFY2(rk4.failure.find("step") != std::string::npos, rk4.failure.c_str());
     }
 
     void longLadderTurnedOver() {
