@@ -79,15 +79,28 @@ void eachNumberIsChecked(std::string_view section, const NumberField<Section> (&
     }
 }
 
-template <class E>
-void eachWordRoundTrips(std::span<const Word<E>> words, E SolverSpec::*member) {
+// Every word of one choice: its value set (`at` the field it sets, after
+// `ready` gives the scene what that value needs), saved, loaded back, and
+// the word and the value found from each other.
+template <class E, std::size_t N, class At>
+void eachWordRoundTrips(const Word<E> (&words)[N], At at, void (*ready)(Scene&, E) = nullptr) {
     for (const Word<E>& w : words) {
         Scene s = ladderScene();
-        s.solver.*member = w.value;
-        QCOMPARE(reloaded(s).solver.*member, w.value);
-        QVERIFY(valueOf(words, w.word) == w.value);
-        QCOMPARE(wordOf(words, w.value), w.word);
+        if (ready) ready(s, w.value);
+        at(s) = w.value;
+        const Scene back = reloaded(s);
+        QVERIFY2(back.ladder, w.word.data());
+        QVERIFY2(at(const_cast<Scene&>(back)) == w.value, w.word.data());
+        QVERIFY(valueOf<E>(words, w.word) == w.value);
+        QCOMPARE(wordOf<E>(words, w.value), w.word);
     }
+}
+
+// What a ladder's start of each kind needs: a pose per block, an angle per hinge.
+void startOfKind(Scene& s, InitialState::Kind kind) {
+    if (kind == InitialState::Kind::Poses)
+        for (int b = 0; b < s.ladder->blocks; ++b) s.ladder->initial.poses.push_back(BlockState{.block = b});
+    if (kind == InitialState::Kind::FoldAngles) s.ladder->initial.foldAngles.assign(size_t(s.ladder->blocks - 1), 0.3);
 }
 
 }  // namespace
@@ -114,9 +127,13 @@ private slots:
     }
 
     void everyWordOfEveryChoiceIsReadAndWritten() {
-        eachWordRoundTrips<Integrator>(kIntegrators, &SolverSpec::integrator);
-        eachWordRoundTrips<EventPolicy>(kEventPolicies, &SolverSpec::events);
-        eachWordRoundTrips<RigidPairs>(kRigidPairs, &SolverSpec::rigidPairs);
+        eachWordRoundTrips(kIntegrators, [](Scene& s) -> Integrator& { return s.solver.integrator; });
+        eachWordRoundTrips(kEventPolicies, [](Scene& s) -> EventPolicy& { return s.solver.events; });
+        eachWordRoundTrips(kRigidPairs, [](Scene& s) -> RigidPairs& { return s.solver.rigidPairs; });
+        eachWordRoundTrips(kStillTails, [](Scene& s) -> StillTail& { return s.solver.stillTail; });
+        eachWordRoundTrips(kBlockContacts, [](Scene& s) -> BlockContact& { return s.solver.blockContact; });
+        eachWordRoundTrips(
+            kInitialKinds, [](Scene& s) -> InitialState::Kind& { return s.ladder->initial.kind; }, &startOfKind);
         QVERIFY(!valueOf<Integrator>(kIntegrators, "rk5"));
     }
 
