@@ -2,13 +2,10 @@
 #include "app/jladder/commands.h"
 #include "app/jladder/interruption.h"
 #include "app/jladder/options.h"
-#include "app/jladder/progress.h"
-#include "app/jladder/run_outputs.h"
+#include "app/jladder/recorded_run.h"
 #include "jl/scene/scene_io.h"
 #include "jl/scene/scene_ranges.h"
-#include "jl/sim/recording.h"
 
-#include <cmath>
 #include <cstdio>
 
 namespace jl::cli {
@@ -53,20 +50,10 @@ int exportFrames(const std::vector<std::string>& args) {
         std::fprintf(stderr, "jladder export: %s\n", o.error.c_str());
         return 2;
     }
-    Simulation::Built built = Simulation::build(*load.scene);
-    for (const std::string& e : built.errors) std::fprintf(stderr, "%s: %s\n", path.c_str(), e.c_str());
-    if (!built.simulation) return 1;
-    if (!outputs.open()) {
-        std::fprintf(stderr, "jladder export: %s\n", outputs.error().c_str());
-        return 1;
-    }
-    catchInterruptions();
-    if (outputs.wantsFrames()) outputs.expectFrames(std::floor(until / every) + 1, "jladder export");
-    ProgressLine progress(!o.has("--quiet"));
-    const Recording r = record(*built.simulation, until, FrameGrid{0, every}, &outputs,
-                               watchedRun(progress, *built.simulation, until, "jladder export"));
-    progress.clear();
-    const bool written = outputs.finish(r.complete(), "jladder export");
+    const auto recorded = recordRun(*load.scene, path, until, every, outputs, o.has("--quiet"), "jladder export");
+    if (!recorded) return 1;
+    const Recording& r = recorded->recording;
+    const bool written = recorded->written;
     if (!r.failure.empty()) std::fprintf(stderr, "%s: the run failed %s\n", path.c_str(), r.failure.c_str());
     if (r.interrupted) endByInterruption();
     return r.complete() && written ? 0 : 1;

@@ -2,14 +2,12 @@
 #include "app/jladder/commands.h"
 #include "app/jladder/interruption.h"
 #include "app/jladder/options.h"
-#include "app/jladder/progress.h"
-#include "app/jladder/run_outputs.h"
+#include "app/jladder/recorded_run.h"
 #include "app/jladder/summary.h"
 #include "jl/scene/scene_io.h"
 #include "jl/scene/scene_ranges.h"
 
 #include <cerrno>
-#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
@@ -83,21 +81,10 @@ int run(const std::vector<std::string>& args) {
         std::fprintf(stderr, "jladder run: %s\n", o.error.c_str());
         return 2;
     }
-    Simulation::Built built = Simulation::build(*load.scene);
-    for (const std::string& e : built.errors) std::fprintf(stderr, "%s: %s\n", path.c_str(), e.c_str());
-    if (!built.simulation) return 1;
-
-    if (!outputs.open()) {
-        std::fprintf(stderr, "jladder run: %s\n", outputs.error().c_str());
-        return 1;
-    }
-    catchInterruptions();
-    if (outputs.wantsFrames()) outputs.expectFrames(std::floor(*until / every) + 1, "jladder run");
-    ProgressLine progress(!o.has("--quiet"));
-    const Recording r = record(*built.simulation, *until, FrameGrid{0, every}, &outputs,
-                               watchedRun(progress, *built.simulation, *until, "jladder run"));
-    progress.clear();
-    const bool written = outputs.finish(r.complete(), "jladder run");
+    const auto recorded = recordRun(*load.scene, path, *until, every, outputs, o.has("--quiet"), "jladder run");
+    if (!recorded) return 1;
+    const Recording& r = recorded->recording;
+    const bool written = recorded->written;
     std::cout << summaryJson(r, path) << '\n';
     std::cout.flush();
     const bool summaryWritten = std::cout.good() && std::fflush(stdout) == 0;
