@@ -14,15 +14,12 @@
 
 #include <QAction>
 #include <QDoubleSpinBox>
-#include <QElapsedTimer>
 #include <QImage>
 #include <QLabel>
 #include <QPainter>
-#include <QProgressBar>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTemporaryDir>
-#include <QThreadPool>
 #include <QtTest>
 
 using namespace jl::ui;
@@ -195,61 +192,6 @@ private slots:
                 QVERIFY(!map.grid()->cell(c, r).has_value());
                 QVERIFY(!ReachCache::shared().find(ReachCache::designKey(map.cellDesign(c, r))));
             }
-    }
-
-    // While a map of 50 cells (runs of seconds to minutes) computes, the window still paints and
-    // Cancel still answers: painting in Qt uses the global thread pool (the
-    // raster engine scales and converts large images there, and waits), so
-    // the map's runs must never fill it.
-    void aRunningMapNeverFreezesTheWindow() {
-        Document doc;
-        DesignMap map(&doc);
-        map.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&map));
-        map.setAxes({P::Blocks, 20, 200, 20}, {P::Thickness, 0.010, 0.030, 0.005});
-        QSignalSpy done(&map, &DesignMap::mapFinished);
-        map.compute();
-        QTest::qWait(1500);
-        QVERIFY(map.running());
-        // The map's runs are in a pool of their own; Qt's stays free.
-        QCOMPARE(QThreadPool::globalInstance()->activeThreadCount(), 0);
-        QVERIFY(designPool()->activeThreadCount() > 0);
-
-        // A smooth scale of a large picture, as the raster engine does in a paint.
-        QImage big(2400, 1600, QImage::Format_ARGB32_Premultiplied);
-        big.fill(Qt::darkCyan);
-        QElapsedTimer clock;
-        clock.start();
-        const QImage small = big.scaled(1200, 800, Qt::IgnoreAspectRatio, Qt::SmoothTransformation);
-        QVERIFY(!small.isNull());
-        QVERIFY2(clock.elapsed() < 200, qPrintable(QString("a smooth scale took %1 ms").arg(clock.elapsed())));
-
-        // A repaint of the map's own progress bar.
-        auto* bar = map.findChild<QProgressBar*>();
-        QVERIFY(bar);
-        struct PaintCount : QObject {
-            int paints = 0;
-            bool eventFilter(QObject*, QEvent* e) override {
-                if (e->type() == QEvent::Paint) ++paints;
-                return false;
-            }
-        } count;
-        bar->installEventFilter(&count);
-        clock.restart();
-        bar->update();
-        while (count.paints == 0 && clock.elapsed() < 2000) QTest::qWait(5);
-        QVERIFY2(count.paints > 0 && clock.elapsed() < 200,
-                 qPrintable(QString("a repaint took %1 ms").arg(clock.elapsed())));
-
-        // Cancel: the map stops and says so within 200 ms.
-        auto* cancel = map.findChild<QPushButton*>("cancelMap");
-        QVERIFY(cancel && cancel->isEnabled());
-        clock.restart();
-        QTest::mouseClick(cancel, Qt::LeftButton);
-        QVERIFY(!map.running());
-        QVERIFY(done.wait(200) || done.count() == 1);
-        QVERIFY2(clock.elapsed() < 200, qPrintable(QString("Cancel took %1 ms").arg(clock.elapsed())));
-        QVERIFY(designPool()->waitForDone(10000));
     }
 
     void clickingACellOpensItAndUndoRestores() {

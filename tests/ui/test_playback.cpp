@@ -1,8 +1,8 @@
 // labels: ui
 // The simulation behind the window: play, pause, step, scrub, edits at the
-// moment on screen, events shown at their instants, a failed solve, and a
-// window that stays responsive while a long ladder simulates flat out (the
-// mouse drags: test_drag_replay.cpp).
+// moment on screen, events shown at their instants, a failed solve (the
+// mouse drags: test_drag_replay.cpp; what the wall clock measures:
+// test_answer_times.cpp).
 #include "example_runs.h"
 #include "playback_fixture.h"
 #include "ui/play/timeline.h"
@@ -156,36 +156,6 @@ private slots:
         Fixture shortLadder(jl::test::swingingLadder());
         QVERIFY(shortLadder.goTo(3));
         QVERIFY(!shortLadder.window.findChild<QLabel*>("still")->isVisible());
-    }
-
-    // A run that takes more than a few seconds to get back to the moment of
-    // an edit also says about how long it still needs (here 10,000 blocks to
-    // 0.9 s, then blocks of 3 mm: the run again takes well over the two
-    // seconds after which the estimate shows, even on a fast machine).
-    void aLongRunToAnEditSaysAboutHowLongIsLeft() {
-        Fixture f(slowHangingLadder(10000));
-        auto* rate = f.window.findChild<QLabel*>("rate");
-        QVERIFY(f.goTo(54, 240000));  // a few seconds alone; much longer beside other tests
-        const auto before = f.editThickness(3.0);
-        const QRegularExpression left(R"(^running to t = 0\.900 s \(\d+ %, about \d+ (s|min) left\)$)");
-        QVERIFY(jl::test::waitForStatus(
-            f.sim, [before](const SimStatus& s) { return s.loadSerial > before && s.seekingTo > 0; }));
-        QTRY_VERIFY(rate->text().startsWith("running to t = 0.900 s (") && !rate->text().contains("left"));
-        QTRY_VERIFY2_WITH_TIMEOUT(left.match(rate->text()).hasMatch(), qPrintable(rate->text()), 60000);
-        const QRegularExpressionMatch said = left.match(rate->text());
-        const QString amount = said.captured(0).section("about ", 1).section(' ', 0, 0);
-        const double predicted = amount.toDouble() * (said.captured(1) == "min" ? 60 : 1);
-        QElapsedTimer clock;
-        clock.start();
-        QVERIFY(jl::test::waitForStatus(
-            f.sim,
-            [before](const SimStatus& s) { return s.loadSerial > before && s.frameIndex == 54 && s.seekingTo < 0; },
-            240000));
-        // An estimate, from the run's own pace: right to within a few seconds here.
-        const double took = clock.elapsed() / 1000.0;
-        qInfo("said \"%s\"; it took %.1f s more", qPrintable(said.captured(0)), took);
-        QVERIFY2(std::abs(took - predicted) < std::max(3.0, predicted), qPrintable(QString::number(took)));
-        QTRY_COMPARE(rate->text(), QString("paused at frame 54 of 54"));
     }
 
     // A frame of a very long ladder takes seconds: a pause comes between two
@@ -523,36 +493,6 @@ private slots:
         QTest::qWait(200);
         QVERIFY(!f.sim->status()->playing);
         QCOMPARE(f.sim->status()->frameCount, s->frameCount);
-    }
-
-    void theWindowStaysResponsiveWhileALongLadderSimulatesFlatOut() {
-        jl::Scene scene;
-        scene.title = "a thousand blocks";
-        scene.ladder = jl::LadderSpec{};
-        scene.ladder->blocks = 1000;
-        Fixture f(scene);
-        f.window.setSpeed(4.0);
-        f.sim->play();
-        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.frameIndex > 0; }));
-        // Not counted: the first frames of a new scene upload its buffers and shaders once.
-        QTest::qWait(500);
-
-        jl::test::EventLoopProbe probe;
-        const auto startSerial = f.sim->status()->serial;
-        const double startTime = f.sim->status()->frame->time;
-        probe.start();
-        QTest::qWait(3000);
-        probe.stop();
-        f.sim->pause();
-        const auto s = f.sim->status();
-        qInfo(
-            "longest stall %lld ms over %d ticks (%.0f ms waiting for a processor not counted); simulated %.3f s at "
-            "%.2fx real time, %0.f steps/s",
-            probe.worst, probe.ticks, probe.queued, s->frame->time - startTime, s->realTimeFactor, s->stepsPerSecond);
-        for (const auto& [at, gap] : probe.gaps) qInfo("gap of %lld ms ending at %lld ms", gap, at);
-        QVERIFY2(s->serial > startSerial + 10, "the view was not fed new frames");
-        QVERIFY(s->frame->time > startTime);
-        QVERIFY2(probe.worst < 50, qPrintable(QString("the event loop stalled for %1 ms").arg(probe.worst)));
     }
 };
 

@@ -1,4 +1,4 @@
-// labels: ui
+// labels: ui;timing
 // A run the engine cannot keep pace with: the simulation thread works on
 // without sleeping, since each frame it has not made yet is overdue, and
 // the UI thread's requests are still answered at once.
