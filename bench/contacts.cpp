@@ -33,16 +33,9 @@ Run runOnce(Scene scene, BlockContact contact, double horizon) {
     }
     // Every event, and the books on a frame every tenth of a second
     // (jl/sim/recording.h).
-    struct Events : RecordTarget {
-        std::vector<Event>& events;
-        explicit Events(std::vector<Event>& e) : events(e) {}
-        bool frame(const Frame&) override { return true; }
-        bool event(const Event& e) override {
-            events.push_back(e);
-            return true;
-        }
-    } target(r.events);
-    const Recording recorded = record(*built.simulation, std::min(horizon, scene.duration), FrameGrid{0, 0.1}, &target);
+    WholeRun whole;
+    const Recording recorded = record(*built.simulation, std::min(horizon, scene.duration), FrameGrid{0, 0.1}, &whole);
+    r.events = std::move(whole.events);
     r.cpu = threadSeconds() - t0;
     r.balance = recorded.worstBalance;
     r.steps = recorded.steps;

@@ -3,11 +3,12 @@
 #pragma once
 
 #include "jl/scene/scene_io.h"
-#include "jl/sim/simulation.h"
+#include "jl/sim/recording.h"
 
 #include <QString>
 #include <QtGlobal>
 
+#include <utility>
 #include <vector>
 
 inline QString example(const char* name) { return QString(JL_SOURCE_DIR) + "/examples/" + name; }
@@ -18,7 +19,8 @@ inline jl::Scene loadExample(const char* name) {
     return *load.scene;
 }
 
-// The engine's frames at the scene's frame interval, as the timeline records them.
+// The engine's frames at exactly each multiple of the scene's frame
+// interval, ribbons in them, as the timeline records them, and every event.
 struct Run {
     std::vector<jl::Frame> frames;
     std::vector<jl::Event> events;
@@ -27,12 +29,8 @@ struct Run {
 inline Run runHeadless(const jl::Scene& scene, double until) {
     auto built = jl::Simulation::build(scene);
     if (!built.simulation) qFatal("the scene does not build");
-    Run r;
-    const double dt = scene.solver.frameInterval;
-    for (int i = 0; i * dt <= until + 1e-12; ++i) {
-        built.simulation->advanceTo(i * dt);
-        r.frames.push_back(built.simulation->frame());
-        for (const jl::Event& e : r.frames.back().events) r.events.push_back(e);
-    }
-    return r;
+    jl::WholeRun whole;
+    whole.ribbons = true;
+    jl::record(*built.simulation, until, jl::FrameGrid{0, scene.solver.frameInterval}, &whole);
+    return {std::move(whole.frames), std::move(whole.events)};
 }

@@ -11,6 +11,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace jl {
 
@@ -28,6 +29,23 @@ public:
     // A target that draws the frames (a video of the 3-D view) wants the
     // ribbons in them; one that keeps numbers does not pay for them.
     virtual bool drawsRibbons() const { return false; }
+};
+
+// A target that keeps every frame and every event of a run: for a run short
+// enough to hold (a test's, a picture's); `ribbons` for frames to draw.
+struct WholeRun : RecordTarget {
+    std::vector<Frame> frames;
+    std::vector<Event> events;
+    bool ribbons = false;
+    bool frame(const Frame& f) override {
+        frames.push_back(f);
+        return true;
+    }
+    bool event(const Event& e) override {
+        events.push_back(e);
+        return true;
+    }
+    bool drawsRibbons() const override { return ribbons; }
 };
 
 struct Recording {
