@@ -513,36 +513,6 @@ private slots:
         sim.pause();
         QVERIFY(latest < 0.3 + 0.2);
     }
-
-    // Not a check: with JL_DOCS_DIR set, writes the pictures of docs/.
-    void writesTheDocumentationPictures() {
-        const QString out = qEnvironmentVariable("JL_DOCS_DIR");
-        if (out.isEmpty()) QSKIP("JL_DOCS_DIR not set");
-        const jl::Scene scene = loadExample("classic.yaml");
-        const Run whole = runHeadless(scene, scene.duration);
-        // Near 0.7 s, the frame with the most hinges locked or folded: the picture shows every colour it can.
-        int at = int(std::lround(0.7 / scene.solver.frameInterval)), most = -1;
-        for (int i = int(0.62 / scene.solver.frameInterval); i <= int(0.78 / scene.solver.frameInterval); ++i) {
-            int held = 0;
-            for (const jl::HingeFrame& h : whole.frames[size_t(i)].hinges) held += h.mode != jl::HingeMode::Free;
-            if (held > most) most = held, at = i;
-        }
-        SideViewOptions look;
-        look.cornerNumbers = look.orientation = true;
-        QVERIFY(
-            Exporter::sideViewPicture(scene, whole.frames[size_t(at)], QSize(900, 1000), look, out + "/side-view.png")
-                .ok);
-        RunPlots plots;
-        plots.resize(1000, 900);
-        plots.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&plots));
-        plots.setDuration(scene.duration);
-        plots.setHistory(whole.frames);
-        plots.setEvents(std::make_shared<const std::vector<jl::Event>>(whole.events));
-        plots.setCursorTime(0.7);
-        QString error;
-        QVERIFY2(plots.savePng(out + "/plots.png", QSize(1000, 900), &error), qPrintable(error));
-    }
 };
 
 QTEST_MAIN(TeachingTest)

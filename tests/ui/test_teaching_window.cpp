@@ -23,7 +23,6 @@
 #include <QLineEdit>
 #include <QMenuBar>
 #include <QPlainTextEdit>
-#include <QScreen>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStatusBar>
@@ -348,25 +347,6 @@ private slots:
         QTest::mouseClick(timeline, Qt::LeftButton, {}, QPoint(int(quiet), y));
         QVERIFY(jl::test::waitForStatus(
             f.sim, [&](const SimStatus& s) { return s.frame->time != chosen->time && grid.on(s.frame->time); }));
-    }
-
-    // Not a check: with JL_DOCS_DIR set, a picture of the window with the teaching docks.
-    void writesTheWindowPicture() {
-        const QString out = qEnvironmentVariable("JL_DOCS_DIR");
-        if (out.isEmpty()) QSKIP("JL_DOCS_DIR not set");
-        Fixture f;
-        // Frame by frame, so the plots get every frame up to 0.75 s.
-        for (int i = 1; i <= 45; ++i) {
-            f.sim->seek((i + 0.25) * f.sim->status()->interval);
-            QVERIFY(jl::test::waitForStatus(f.sim, [i](const SimStatus& s) { return s.frameIndex == i; }));
-            QTest::qWait(20);
-        }
-        f.teaching.plots()->refresh();
-        QTest::qWait(1500);
-        QCOMPARE(f.window.size(), QSize(1400, 950));  // the docks fit: showing them did not grow the window
-        const QRect g = f.window.frameGeometry();
-        QVERIFY(
-            f.window.screen()->grabWindow(0, g.x(), g.y(), g.width(), g.height()).save(out + "/teaching-window.png"));
     }
 };
 
