@@ -371,12 +371,12 @@ private slots:
         QVERIFY(sim);
         std::vector<double> turns;  // times the angular velocity crosses 0 from above
         double t0 = sim->time(), w0 = 0;
-        while (sim->time() < 2.0 && sim->stepOnce()) {
-            const double w = sim->world().partVelocity(sim->blockPart(0)).angular, t = sim->time();
+        const Run run = runUntil(*sim, 2.0, [&](const Frame& f) {
+            const double w = sim->world().partVelocity(sim->blockPart(0)).angular, t = f.time;
             if (w0 > 0 && w <= 0) turns.push_back(t0 + (t - t0) * w0 / (w0 - w));
             t0 = t, w0 = w;
-        }
-        QVERIFY(sim->failure().empty());
+        });
+        QVERIFY2(run.failure.empty(), run.failure.c_str());
         QVERIFY(turns.size() >= 3);
         const double r = std::hypot(0.06, 0.012) / 2;
         const double exact = 4 * std::sqrt(4 * r / (3 * 9.81)) * ellipticK(std::sin(15 * std::numbers::pi / 180));
@@ -392,13 +392,12 @@ private slots:
         auto sim = simulateFile("examples/falling-chain.yaml");
         QVERIFY(sim);
         double ahead = -1;
-        while (sim->time() < 1.0 && sim->stepOnce()) {
-            const Frame f = sim->frame();
+        const Run r = runUntil(*sim, 1.0, [&](const Frame& f) {
             const Pose& last = f.poses.back();
             const Vec2 tip = last.position + rotate(last.angle, Vec2(0, 0.03));
             ahead = std::max(ahead, -0.5 * 9.81 * f.time * f.time - tip.y());
-        }
-        QVERIFY(sim->failure().empty());
+        });
+        QVERIFY2(r.failure.empty(), r.failure.c_str());
         qInfo("the tip ran up to %.3f m ahead of free fall", ahead);
         QVERIFY(ahead > 0.01);
     }
@@ -422,12 +421,12 @@ private slots:
         double peak = 0, lastSecond = 0;
         Frame f = sim->frame();
         QCOMPARE(f.energy.kinetic, 0.0);
-        while (sim->time() < sim->scene().duration && sim->stepOnce()) {
-            f = sim->frame();
+        const Run r = runUntil(*sim, sim->scene().duration, [&](const Frame& each) {
+            f = each;
             peak = std::max(peak, f.energy.kinetic);
             if (f.time > sim->scene().duration - 1) lastSecond = std::max(lastSecond, f.energy.kinetic);
-        }
-        QVERIFY(sim->failure().empty());
+        });
+        QVERIFY2(r.failure.empty(), r.failure.c_str());
         qInfo("kinetic energy: peak %.3e J, last second %.3e J; damping took %.3e J", peak, lastSecond,
               f.energy.dampingLoss);
         QVERIFY(peak > 1e-3);
