@@ -5,6 +5,7 @@
 #include "jl/base/csv_reader.h"
 #include "jl/sim/event_csv.h"
 #include "jl/sim/frame_csv.h"
+#include "jl/sim/recording.h"
 #include "tests/scene_run.h"
 
 #include <QtTest>
@@ -14,6 +15,7 @@
 #include <cstdint>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 using namespace jl;
 
@@ -41,11 +43,9 @@ std::vector<CsvRow> rowsOf(const std::string& text) {
 std::vector<Frame> framesToWrite() {
     auto sim = test::simulateFile("examples/classic.yaml");
     if (!sim) qFatal("examples/classic.yaml does not build");
-    std::vector<Frame> frames;
-    for (int k = 0; k <= 10; ++k) {
-        sim->advanceTo(0.1 * k);
-        frames.push_back(sim->frame());
-    }
+    WholeRun whole;
+    record(*sim, 1.0, FrameGrid{0, 0.1}, &whole);
+    std::vector<Frame> frames = std::move(whole.frames);
     Frame awkward = frames.back();
     awkward.time = 0.1 + 0.2;
     awkward.poses[0].position = Vec2(std::numeric_limits<double>::denorm_min(), -0.0);
@@ -107,11 +107,9 @@ private slots:
     void eventTimesReadBackBitForBit() {
         auto sim = test::simulateFile("examples/classic.yaml");
         QVERIFY(sim);
-        std::vector<Event> events;
-        for (int k = 1; k <= 150; ++k) {
-            sim->advanceTo(k / 60.0);
-            for (const Event& e : sim->frame().events) events.push_back(e);
-        }
+        WholeRun whole;
+        record(*sim, 2.5, FrameGrid{}, &whole);
+        const std::vector<Event>& events = whole.events;
         QVERIFY(events.size() >= 5);  // the five hinges flip within 2.5 s
         std::ostringstream text;
         writeEventsCsv(text, events);
