@@ -19,56 +19,31 @@ namespace {
 
 Vec2 vec(const Point2& p) { return {p[0], p[1]}; }
 
-}  // namespace
+using Names = std::map<std::string, PartId>;
 
-std::optional<std::string> Simulation::buildWorld() {
-    world_.gravity = vec(scene_.gravity);
-    world_.setWeldRigidPairs(scene_.solver.rigidPairs == RigidPairs::Weld);
-    std::map<std::string, PartId> named;
-    if (scene_.ladder) {
-        if (auto e = Ladder::validate(*scene_.ladder)) return e;
-        ladder_.emplace(world_, *scene_.ladder);
-        ladder_->blockContacts().setEnabled(scene_.solver.blockContact == BlockContact::On);
-        if (scene_.floor) ladder_->blockContacts().setFloor(scene_.floor->height);
-        ladder_->setGapTolerance(scene_.solver.projectionTolerance);
-        ladder_->blockContacts().setAllowance(scene_.solver.projectionTolerance);
-        for (int i = 0; i < ladder_->blockCount(); ++i) {
-            blocks_.push_back(ladder_->block(i));
-            named["block:" + std::to_string(i)] = ladder_->block(i);
-        }
+// A point reference becomes a particle: on the ground, on a part, or a free
+// particle's own.
+std::optional<ParticleId> particleAt(World& w, const Names& named, const PointRef& r) {
+    if (r.on == "world") return w.anchor(vec(r.local));
+    auto it = named.find(r.on);
+    if (it == named.end()) return std::nullopt;
+    if (w.part(it->second).isPoint) {
+        for (ParticleId id = 0; id < w.particleCount(); ++id)
+            if (w.particle(id).at.front().part == it->second) return id;
     }
-    for (const BodySpec& b : scene_.bodies) {
-        const double mass = b.mass.value_or(b.density * b.length * b.thickness * b.width);
-        const PartId p = world_.addBox(mass, Vec2(b.thickness, b.length), b.width, Pose{vec(b.position), b.angle},
-                                       Twist{vec(b.velocity), b.angularVelocity}, b.inertia);
-        named[b.name] = p;
-        blocks_.push_back(p);
-    }
-    for (const ParticleSpec& s : scene_.particles) {
-        const PartId p = world_.addPoint(s.mass, vec(s.position), vec(s.velocity));
-        named[s.name] = p;
-        blocks_.push_back(p);
-    }
-    // A point reference becomes a particle: on the ground, on a part, or a
-    // free particle's own.
-    auto particleAt = [&](const PointRef& r) -> std::optional<ParticleId> {
-        if (r.on == "world") return world_.anchor(vec(r.local));
-        auto it = named.find(r.on);
-        if (it == named.end()) return std::nullopt;
-        if (world_.part(it->second).isPoint) {
-            for (ParticleId id = 0; id < world_.particleCount(); ++id)
-                if (world_.particle(id).at.front().part == it->second) return id;
-        }
-        return world_.addParticle(it->second, vec(r.local));
-    };
-    for (const PinSpec& pin : scene_.pins) {
-        const auto a = particleAt(pin.a), b = particleAt(pin.b);
+    return w.addParticle(it->second, vec(r.local));
+}
+
+// The scene's pins, each made one particle of the two points it joins.
+std::optional<std::string> addPins(World& w, const Names& named, const std::vector<PinSpec>& pins) {
+    for (const PinSpec& pin : pins) {
+        const auto a = particleAt(w, named, pin.a), b = particleAt(w, named, pin.b);
         if (!a || !b) return "a pin refers to '" + (a ? pin.b.on : pin.a.on) + "', which does not exist";
         // A pin joins two points that coincide. Points apart at the start would
         // be frozen where they stand (combine makes a rigid joint of what it
         // finds), with no gap left to measure: refuse, and say how far apart.
         constexpr double kAssembled = 1e-6;  // m: coordinates written to the micrometre
-        const double apart = (world_.particlePosition(*a) - world_.particlePosition(*b)).norm();
+        const double apart = (w.particlePosition(*a) - w.particlePosition(*b)).norm();
         if (!(apart <= kAssembled)) {
             char text[160];
             std::snprintf(text, sizeof text,
@@ -77,16 +52,34 @@ std::optional<std::string> Simulation::buildWorld() {
                           pin.a.on.c_str(), pin.b.on.c_str(), apart);
             return std::string(text);
         }
-        auto e = world_.combine(*a, *b);
-        if (!e) e = makeConsistentAfter(world_, "combine");
+        auto e = w.combine(*a, *b);
+        if (!e) e = makeConsistentAfter(w, "combine");
         if (e) return "pin between '" + pin.a.on + "' and '" + pin.b.on + "': " + e->message;
     }
-    for (const SpringSpec& s : scene_.springs) {
-        const auto a = particleAt(s.a), b = particleAt(s.b);
+    return std::nullopt;
+}
+
+// The scene's springs; one without a rest length rests as it starts.
+std::optional<std::string> addSprings(World& w, const Names& named, const std::vector<SpringSpec>& springs) {
+    for (const SpringSpec& s : springs) {
+        const auto a = particleAt(w, named, s.a), b = particleAt(w, named, s.b);
         if (!a || !b) return "a spring refers to '" + (a ? s.b.on : s.a.on) + "', which does not exist";
-        const double rest = s.restLength.value_or((world_.particlePosition(*b) - world_.particlePosition(*a)).norm());
-        world_.addSpring({*a, *b, s.stiffness, rest, s.damping});
+        const double rest = s.restLength.value_or((w.particlePosition(*b) - w.particlePosition(*a)).norm());
+        w.addSpring({*a, *b, s.stiffness, rest, s.damping});
     }
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::string> Simulation::buildWorld() {
+    world_.gravity = vec(scene_.gravity);
+    world_.setWeldRigidPairs(scene_.solver.rigidPairs == RigidPairs::Weld);
+    std::map<std::string, PartId> named;
+    if (auto e = addLadder(named)) return e;
+    addBodies(named);
+    if (auto e = addPins(world_, named, scene_.pins)) return e;
+    if (auto e = addSprings(world_, named, scene_.springs)) return e;
     for (size_t i = 0; i < scene_.bodies.size(); ++i)
         if (scene_.bodies[i].held) {
             world_.hold(named[scene_.bodies[i].name], Drive(world_.partPose(named[scene_.bodies[i].name])));
@@ -108,8 +101,47 @@ std::optional<std::string> Simulation::buildWorld() {
     // joined) is a scene that cannot be built, not a run that fails later.
     if (ladder_ && !ladder_->error().empty()) return "at t = 0: " + ladder_->error();
     if (auto below = belowTheFloor()) return below;
-    // E(0) is the energy before the inputs at t = 0: what they did (pushes,
-    // joins, impacts) is on the books already.
+    openBooks();
+    lastResidual_ = pinResidual(world_);
+    hangStillTail();
+    return std::nullopt;
+}
+
+// The ladder of the scene, its blocks named "block:0", "block:1", ...
+std::optional<std::string> Simulation::addLadder(std::map<std::string, PartId>& named) {
+    if (!scene_.ladder) return std::nullopt;
+    if (auto e = Ladder::validate(*scene_.ladder)) return e;
+    ladder_.emplace(world_, *scene_.ladder);
+    ladder_->blockContacts().setEnabled(scene_.solver.blockContact == BlockContact::On);
+    if (scene_.floor) ladder_->blockContacts().setFloor(scene_.floor->height);
+    ladder_->setGapTolerance(scene_.solver.projectionTolerance);
+    ladder_->blockContacts().setAllowance(scene_.solver.projectionTolerance);
+    for (int i = 0; i < ladder_->blockCount(); ++i) {
+        blocks_.push_back(ladder_->block(i));
+        named["block:" + std::to_string(i)] = ladder_->block(i);
+    }
+    return std::nullopt;
+}
+
+// The scene's own bodies and particles, after the ladder's blocks.
+void Simulation::addBodies(std::map<std::string, PartId>& named) {
+    for (const BodySpec& b : scene_.bodies) {
+        const double mass = b.mass.value_or(b.density * b.length * b.thickness * b.width);
+        const PartId p = world_.addBox(mass, Vec2(b.thickness, b.length), b.width, Pose{vec(b.position), b.angle},
+                                       Twist{vec(b.velocity), b.angularVelocity}, b.inertia);
+        named[b.name] = p;
+        blocks_.push_back(p);
+    }
+    for (const ParticleSpec& s : scene_.particles) {
+        const PartId p = world_.addPoint(s.mass, vec(s.position), vec(s.velocity));
+        named[s.name] = p;
+        blocks_.push_back(p);
+    }
+}
+
+// The books open after the inputs at t = 0. E(0) is the energy before them:
+// what they did (pushes, joins, impacts) is on the books already.
+void Simulation::openBooks() {
     const Energy e0 = energy(world_);
     initialEnergy_ = e0.total() + impactLoss_ - impactHeldWork_ - ledger_.user - ledger_.held + ledger_.damping;
     initialKinetic_ = e0.kinetic;
@@ -123,9 +155,6 @@ std::optional<std::string> Simulation::buildWorld() {
     for (PartId p = 1; p < world_.partCount(); ++p)
         energyFloor_ += world_.part(p).mass * world_.gravity.norm() * (world_.part(p).halfSize.norm() + 1e-3);
     for (const Spring& s : world_.springs()) energyFloor_ += elasticEnergy(world_, s);
-    lastResidual_ = pinResidual(world_);
-    hangStillTail();
-    return std::nullopt;
 }
 
 // A block corner under the table top at the start (by more than the pins'

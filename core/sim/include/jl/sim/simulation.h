@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -121,7 +122,11 @@ public:
 
 private:
     explicit Simulation(const Scene& scene);
+    // Building (simulation_build.cpp).
     std::optional<std::string> buildWorld();
+    std::optional<std::string> addLadder(std::map<std::string, PartId>& named);
+    void addBodies(std::map<std::string, PartId>& named);
+    void openBooks();
     void hangStillTail();
     std::optional<std::string> belowTheFloor() const;
     void wakeThrough(int block);
