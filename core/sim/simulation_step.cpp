@@ -85,19 +85,6 @@ void Simulation::emitGridFrames(double taken) {
     dynamics_.restoreLast(dynamicsAtEnd);
 }
 
-// The end of the step just taken (from t_, of length `taken`; the world
-// holds it) evaluated as the step itself saw it, for the interpolant and the
-// books between its ends. Where a move of the hand starts or stops, the
-// hand's acceleration jumps: the step's own side of the jump is that of its
-// stages, and the end's evaluation for the event functions and the next
-// step (kept) is the other side.
-Powers Simulation::stepEndAsTaken(double taken) {
-    const double t1 = t_ + taken, mid = t_ + taken / 2;
-    if (world_.pathsOnOnePiece(mid, t1))
-        if (const Powers* kept = keptEnd_.recall(world_, dynamics_, t1)) return *kept;
-    return dynamics_.evaluate(world_, t1, mid);
-}
-
 // The smallest event function in the state the world holds, at time t (an
 // event function is negative when its event has happened); `forces` gets
 // the smallest of the contact-force ones.
@@ -319,45 +306,22 @@ std::string gapText(double metres) { return shortNumber(metres) + " m"; }
 
 }  // namespace
 
+// One step, as its stages: chosen, taken from a start kept for a retry,
+// checked for a blow-up and for books that run away, then (a ladder) its
+// end read for events and settled; time moves on to its end and the inputs
+// due there are applied.
 bool Simulation::takeStep(double limit) {
     if (!failure_.empty()) return false;
-    const SolverSpec& solver = scene_.solver;
-    const bool adaptive = isAdaptive(solver.integrator);
-    double h = adaptive && stepper_.nextStep() > 0 ? stepper_.nextStep() : fixedStep();
-    const double chosen = h;
-    const double scheduled = std::min(nextScheduledTime(), limit);
-    const bool lands = t_ + h >= scheduled - 1e-12;
-    if (lands) h = scheduled - t_;
-    if (h <= 0) return true;
-
-    const double stepStart = t_;
-    changeKept_ = false;
-    stepStartQ_ = world_.q;
-    stepStartV_ = world_.v;
-    // The start's accelerations (the last evaluation, of this state), for
-    // a limit passed and left within an adaptive step.
-    if (adaptive && ladder_) stepStartA_ = world_.a;
-    stepStartLedger_ = ledger_;
-    const double next0 = stepper_.nextStep();
-    // The last step's end, evaluated for its event functions, is this
-    // step's first stage when nothing has changed since.
-    std::swap(keptStart_, keptEnd_);
-    keptEnd_.forget();
-    const Powers* atStart = keptStart_.recall(world_, dynamics_, t_);
-    if (!atStart) keptStart_.forget();
-    MotionStep m =
-        advanceAndProject(world_, dynamics_, stepper_, t_, h, ledger_, solver.projectionTolerance, false, atStart);
-    if (!m.ok()) {
-        if (retryWithSmallerStep()) return true;
-        fail(m.step.finite
-                 ? "the projection onto the pins did not converge (gap " + gapText(m.projection.residual) + " after " +
-                       std::to_string(m.projection.iterations) + " iterations): " + blowUpAdvice(chosen)
-                 : "the step produced a non-finite state: " + blowUpAdvice(chosen));
-        return false;
-    }
+    const StepPlan plan = planStep(limit);
+    if (plan.h <= 0) return true;
+    keepStepStart(plan.adaptive);
+    const Powers* atStart = startAsLastEnd();
+    MotionStep m = advanceAndProject(world_, dynamics_, stepper_, t_, plan.h, ledger_,
+                                     scene_.solver.projectionTolerance, false, atStart);
+    if (!m.ok()) return blownUp(m, plan.chosen);
     double taken = m.step.taken;
     stats_.rejected += m.step.rejected;
-    if (adaptive && (!lands || taken < h)) {
+    if (plan.adaptive && (!plan.lands || taken < plan.h)) {
         stats_.adaptiveStep = true;
         noteStep(taken);
     }
@@ -365,93 +329,142 @@ bool Simulation::takeStep(double limit) {
         if (retryWithSmallerStep()) return true;
         restoreStepStart();
         world_.updateKinematics(t_);
-        fail("the energy no longer balances (the motion is running away): " + blowUpAdvice(chosen));
+        fail("the energy no longer balances (the motion is running away): " + blowUpAdvice(plan.chosen));
         return false;
     }
     if (ladder_) {
-        double forces = 0;
-        // The end of the step, evaluated for the event functions (and kept
-        // as the next step's first stage): by the step itself if its last
-        // stage was the projected end (Dormand-Prince), unless a move of
-        // the hand starts or stops there: its stage saw the other side.
-        double fEnd = 0;
-        // The corners to watch at the step's end: the same list at its
-        // start, for the bracket.
-        ladder_->blockContacts().refresh(world_, *ladder_);
-        if (m.step.endEvaluated && world_.pathsOnOnePiece(t_ + taken / 2, t_ + taken)) {
-            lastPowers_ = m.step.endPowers;
-            fEnd = eventFunctionsNow(&forces);
-        } else {
-            fEnd = smallestEventFunction(t_ + taken, &forces);
-        }
-        keptEnd_.keep(world_, dynamics_, t_ + taken, lastPowers_);
-        if (fEnd < 0) {
-            if (solver.events == EventPolicy::Located && taken > solver.eventTolerance) {
-                if (!locateEvent(taken, fEnd, forces)) return false;
-                stepper_.setNextStep(next0 > 0 ? next0 : chosen);
-            }
-            emitGridFrames(taken);
-            keepBeforeChange();
-            const double heldBefore = impactHeldWork_;
-            std::vector<Event> happened =
-                ladder_->settle(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
-            if (happened.empty() && taken < m.step.taken) {
-                // The located instant asked for nothing after all (a function
-                // within rounding of its threshold): take the whole step, so
-                // time can never stall on it.
-                restoreStepStart();
-                m = advanceAndProject(world_, dynamics_, stepper_, t_, m.step.taken, ledger_,
-                                      solver.projectionTolerance, true);
-                taken = m.step.taken;
-                ++stats_.spuriousEvents;
-                emitGridFrames(taken);
-                happened = ladder_->settle(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
-            }
-            for (Event& e : happened) record(e);
-            if (!stopOnLadderError(stepStart)) return false;
-            if (const auto why = squeezedByTheHand(heldBefore)) return stopAt(stepStart, *why);
-            if (!world_.q.allFinite() || !world_.v.allFinite()) {
-                restoreStepStart();
-                fail("an impact produced a non-finite state");
-                return false;
-            }
-            // The settled state is the next step's start, evaluated already.
-            keptEnd_.keep(world_, dynamics_, t_ + taken, ladder_->settledPowers());
-        } else if (const double dip = adaptive && taken > 100 * solver.eventTolerance ? limitDip(taken) : 0.0;
-                   dip > 0) {
-            // A free hinge swung past a limit and back within this (long,
-            // adaptive) step: no sign change at its ends shows it. The step
-            // is taken again to end at the dip, where the crossing shows
-            // (docs/model.md section 9.1). Fixed steps are short enough.
-            restoreStepStart();
-            world_.updateKinematics(t_);
-            dynamics_.evaluate(world_, t_);
-            stepper_.setNextStep(dip);
-            ++stats_.rejected;
-            return true;
-        } else {
-            emitGridFrames(taken);
-        }
-        ladder_->updateAngles(world_);
-        // The motion has come near the still tail: the next blocks move on
-        // their own. A change of structure: the end is evaluated anew, so
-        // that the next step starts from it and the automatic step is
-        // chosen from the pin forces of the pins there are now.
-        if (ladder_->tailReached(world_)) keepBeforeChange();
-        if (ladder_->wakeIfReached(world_) > 0) {
-            lastPowers_ = dynamics_.evaluate(world_, t_ + taken);
-            keptEnd_.keep(world_, dynamics_, t_ + taken, lastPowers_);
-        }
+        if (const std::optional<bool> ended = ladderAtStepEnd(m, taken, plan)) return *ended;
     } else {
         emitGridFrames(taken);
     }
-    t_ = (lands && taken == h) ? scheduled : t_ + taken;
+    t_ = (plan.lands && taken == plan.h) ? plan.scheduled : t_ + taken;
     ++stats_.steps;
     stats_.lastStep = taken;
     lastResidual_ = m.projection.residual;
     if (nextAction_ < scene_.script.size() && scene_.script[nextAction_].at <= t_ + 1e-12) keepBeforeChange();
     applyDueInputs();
-    return stopOnLadderError(stepStart);
+    return stopOnLadderError(plan.start);
+}
+
+// The step to take from t_: the adaptive method's own next step, or the
+// fixed or automatic one; shortened to land on the next scheduled instant
+// (or `limit`) when it would reach it.
+Simulation::StepPlan Simulation::planStep(double limit) {
+    StepPlan plan;
+    plan.adaptive = isAdaptive(scene_.solver.integrator);
+    plan.h = plan.adaptive && stepper_.nextStep() > 0 ? stepper_.nextStep() : fixedStep();
+    plan.chosen = plan.h;
+    plan.scheduled = std::min(nextScheduledTime(), limit);
+    plan.lands = t_ + plan.h >= plan.scheduled - 1e-12;
+    if (plan.lands) plan.h = plan.scheduled - t_;
+    plan.start = t_;
+    plan.next0 = stepper_.nextStep();
+    return plan;
+}
+
+// The state the step starts from, kept for going back to it (a retry, an
+// event located inside the step, a stop).
+void Simulation::keepStepStart(bool adaptive) {
+    changeKept_ = false;
+    stepStartQ_ = world_.q;
+    stepStartV_ = world_.v;
+    // The start's accelerations (the last evaluation, of this state), for
+    // a limit passed and left within an adaptive step.
+    if (adaptive && ladder_) stepStartA_ = world_.a;
+    stepStartLedger_ = ledger_;
+}
+
+// A step that produced no state to go on from: a shorter one is tried when
+// the step is the engine's own, else the run fails saying why.
+bool Simulation::blownUp(const MotionStep& m, double chosen) {
+    if (retryWithSmallerStep()) return true;
+    fail(m.step.finite
+             ? "the projection onto the pins did not converge (gap " + gapText(m.projection.residual) + " after " +
+                   std::to_string(m.projection.iterations) + " iterations): " + blowUpAdvice(chosen)
+             : "the step produced a non-finite state: " + blowUpAdvice(chosen));
+    return false;
+}
+
+// The ladder at the step's end: its event functions read there; an event
+// located inside the step and settled, or a limit a free hinge swung past
+// and back (the step taken again to end at the dip); then its angles and
+// its still tail. The step's result when it ends here, else nullopt.
+std::optional<bool> Simulation::ladderAtStepEnd(MotionStep& m, double& taken, const StepPlan& plan) {
+    double forces = 0;
+    const double fEnd = eventFunctionsAtEnd(m, taken, &forces);
+    if (fEnd < 0) {
+        if (!settleEvents(m, taken, fEnd, forces, plan)) return false;
+    } else if (const double dip = plan.adaptive && taken > 100 * scene_.solver.eventTolerance ? limitDip(taken) : 0.0;
+               dip > 0) {
+        retakeToDip(dip);
+        return true;
+    } else {
+        emitGridFrames(taken);
+    }
+    ladder_->updateAngles(world_);
+    wakeTailIfReached(taken);
+    return std::nullopt;
+}
+
+// An event function past its event at the step's end: the event located
+// inside the step (when the scene asks), the frames of the grid up to it,
+// and the ladder's events settled there. False when the run stops.
+bool Simulation::settleEvents(MotionStep& m, double& taken, double fEnd, double forces, const StepPlan& plan) {
+    const SolverSpec& solver = scene_.solver;
+    if (solver.events == EventPolicy::Located && taken > solver.eventTolerance) {
+        if (!locateEvent(taken, fEnd, forces)) return false;
+        stepper_.setNextStep(plan.next0 > 0 ? plan.next0 : plan.chosen);
+    }
+    emitGridFrames(taken);
+    keepBeforeChange();
+    const double heldBefore = impactHeldWork_;
+    std::vector<Event> happened = ladder_->settle(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
+    if (happened.empty() && taken < m.step.taken) {
+        // The located instant asked for nothing after all (a function
+        // within rounding of its threshold): take the whole step, so
+        // time can never stall on it.
+        restoreStepStart();
+        m = advanceAndProject(world_, dynamics_, stepper_, t_, m.step.taken, ledger_, solver.projectionTolerance, true);
+        taken = m.step.taken;
+        ++stats_.spuriousEvents;
+        emitGridFrames(taken);
+        happened = ladder_->settle(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
+    }
+    for (Event& e : happened) record(e);
+    if (!stopOnLadderError(plan.start)) return false;
+    if (const auto why = squeezedByTheHand(heldBefore)) return stopAt(plan.start, *why);
+    if (!world_.q.allFinite() || !world_.v.allFinite()) {
+        restoreStepStart();
+        fail("an impact produced a non-finite state");
+        return false;
+    }
+    // The settled state is the next step's start, evaluated already.
+    keptEnd_.keep(world_, dynamics_, t_ + taken, ladder_->settledPowers());
+    return true;
+}
+
+// A free hinge swung past a limit and back within this (long, adaptive)
+// step: no sign change at its ends shows it. The step is taken again to end
+// at the dip, where the crossing shows (docs/model.md section 9.1). Fixed
+// steps are short enough.
+void Simulation::retakeToDip(double dip) {
+    restoreStepStart();
+    world_.updateKinematics(t_);
+    dynamics_.evaluate(world_, t_);
+    stepper_.setNextStep(dip);
+    ++stats_.rejected;
+}
+
+// The motion has come near the still tail: the next blocks move on their
+// own. A change of structure: the end is evaluated anew, so that the next
+// step starts from it and the automatic step is chosen from the pin forces
+// of the pins there are now.
+void Simulation::wakeTailIfReached(double taken) {
+    if (ladder_->tailReached(world_)) keepBeforeChange();
+    if (ladder_->wakeIfReached(world_) > 0) {
+        lastPowers_ = dynamics_.evaluate(world_, t_ + taken);
+        keptEnd_.keep(world_, dynamics_, t_ + taken, lastPowers_);
+    }
 }
 
 double Simulation::limitDip(double taken) {

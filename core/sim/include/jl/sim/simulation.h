@@ -28,6 +28,7 @@ namespace jl {
 
 // The full state at one instant, enough to carry on bit-identically.
 struct Snapshot;
+struct MotionStep;
 
 class Simulation {
 public:
@@ -138,8 +139,30 @@ private:
     std::optional<std::string> join(const ScriptAction& a);
     void applyDragSample(const DragRecord& d, const DragRecord::Sample& s);
     void removeMouseSpring(const DragRecord& d);
-    // Stepping (simulation_step.cpp).
+    // Stepping (simulation_step.cpp), a step in its stages. A step as
+    // chosen before it is taken:
+    struct StepPlan {
+        double start = 0;      // s, the time the step starts at
+        double h = 0;          // s, the step to take
+        double chosen = 0;     // s, the step chosen before landing on `scheduled`
+        double scheduled = 0;  // s, the next instant a step must land on
+        bool lands = false;    // whether this step lands on it
+        bool adaptive = false;
+        double next0 = 0;  // s, the adaptive method's next step before this one
+    };
     bool takeStep(double limit);
+    StepPlan planStep(double limit);
+    void keepStepStart(bool adaptive);
+    bool blownUp(const MotionStep& m, double chosen);
+    std::optional<bool> ladderAtStepEnd(MotionStep& m, double& taken, const StepPlan& plan);
+    bool settleEvents(MotionStep& m, double& taken, double fEnd, double forces, const StepPlan& plan);
+    void retakeToDip(double dip);
+    void wakeTailIfReached(double taken);
+    // The dynamics at a step's ends, kept (simulation_step_ends.cpp).
+    const Powers* startAsLastEnd();
+    double eventFunctionsAtEnd(const MotionStep& m, double taken, double* forces);
+    Powers stepEndAsTaken(double taken);
+    // The ladder's events inside a step.
     bool locateEvent(double& taken, double fEnd, double forcesAtEnd);
     double smallestEventFunction(double t, double* forces = nullptr);
     double eventFunctionsNow(double* forces);
@@ -149,7 +172,6 @@ private:
     bool stopAt(double stepStart, std::string why);  // a copy: restoring clears the ladder's error
     std::optional<std::string> squeezedByTheHand(double heldBefore) const;
     void emitGridFrames(double taken);
-    Powers stepEndAsTaken(double taken);
     void record(const Event& e);
     bool booksDiverged() const;
     double booksImbalance(double total) const;
