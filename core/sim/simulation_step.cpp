@@ -1,12 +1,13 @@
 // Stepping a simulation: one step of the integrator, the check that the
-// motion has not blown up, and the ladder's events located inside the step
-// and resolved at their instant.
+// motion has not blown up, the ladder's events (located in
+// simulation_events.cpp) resolved at their instant, and the frames of the
+// grid read off the step.
+#include "books_between.h"
 #include "jl/base/short_number.h"
 #include "jl/engine/energy.h"
 #include "jl/engine/motion.h"
 #include "jl/engine/stable_step.h"
 #include "jl/scene/scene_ranges.h"
-#include "jl/sim/event_bracket.h"
 #include "jl/sim/simulation.h"
 
 #include <algorithm>
@@ -18,21 +19,6 @@
 namespace jl {
 
 void Simulation::record(const Event& e) { pending_.push_back(e); }
-
-namespace {
-
-// The energy books at the fraction s of a step of length h: cubic Hermite in
-// time from their values and rates (the powers) at both ends.
-Ledger ledgerBetween(const Ledger& l0, const Powers& p0, const Ledger& l1, const Powers& p1, double h, double s) {
-    const double s2 = s * s, s3 = s2 * s;
-    const auto books = [&](double b0, double r0, double b1, double r1) {
-        return (2 * s3 - 3 * s2 + 1) * b0 + (s3 - 2 * s2 + s) * h * r0 + (-2 * s3 + 3 * s2) * b1 + (s3 - s2) * h * r1;
-    };
-    return {books(l0.held, p0.held, l1.held, p1.held), books(l0.user, p0.user, l1.user, p1.user),
-            books(l0.damping, p0.damping, l1.damping, p1.damping)};
-}
-
-}  // namespace
 
 // The frames of the grid strictly inside the step just taken (from t_, of
 // length `taken`, not yet resolved: the world holds its end, in the same
@@ -83,169 +69,6 @@ void Simulation::emitGridFrames(double taken) {
     world_.a = a1saved;
     ledger_ = ledgerAtEnd;
     dynamics_.restoreLast(dynamicsAtEnd);
-}
-
-// The smallest event function in the state the world holds, at time t (an
-// event function is negative when its event has happened); `forces` gets
-// the smallest of the contact-force ones.
-double Simulation::smallestEventFunction(double t, double* forces) {
-    lastPowers_ = dynamics_.evaluate(world_, t);
-    return eventFunctionsNow(forces);
-}
-
-// The same in the state the world and the dynamics hold, evaluated already.
-//
-// The contacts between blocks add their functions after the hinges'; one
-// counts only once it has crossed (negative), or, while an event is
-// located, if it had crossed at the step's end: a corner near a face with
-// nothing happening leaves the bracket and its narrowing exactly as they
-// are without contact (docs/model.md section 17.4).
-double Simulation::eventFunctionsNow(double* forces) {
-    double f = ladder_->eventFunctions(world_, dynamics_, eventValues_);
-    hingeForces_ = f;
-    hingeFunctions_ = int(eventValues_.size());
-    double smallest = eventValues_.empty() ? 1.0 : *std::min_element(eventValues_.begin(), eventValues_.end());
-    const BlockContacts& contacts = ladder_->blockContacts();
-    contacts.eventFunctions(world_, dynamics_, *ladder_, eventValues_);
-    for (int k = hingeFunctions_; k < int(eventValues_.size()); ++k) {
-        const double value = eventValues_[size_t(k)];
-        const bool counts = locating_ ? std::find(crossed_.begin(), crossed_.end(), k) != crossed_.end() : value < 0;
-        if (!counts) continue;
-        smallest = std::min(smallest, value);
-        if (!contacts.positional(k - hingeFunctions_)) f = std::min(f, value);
-    }
-    if (forces) *forces = f;
-    return smallest;
-}
-
-// The first instant inside the step just taken (length `taken`, event
-// function fEnd < 0 at its end) at which an event function turns negative,
-// to within the event tolerance; leaves the world there and `taken` set to it.
-//
-// Narrowed on the step's quintic Hermite interpolant, at one evaluation per
-// trial instead of a whole step; when no contact force pulls at either end,
-// the event is a hinge reaching a limit, which positions alone tell, and a
-// trial needs no dynamics at all. The state at the instant is the
-// interpolant's too: its error is O(h^6), below the local error of every
-// integrator the engine has (RK4's and Dormand-Prince's are O(h^5)), so
-// re-running the step to the instant would cost a whole step of the ladder
-// and buy nothing. The books go with it, cubic Hermite in time.
-//
-// A trial of the angles alone reads the functions that are past their event
-// at the end, and only the angles of their bodies: a hinge that crosses and
-// crosses back inside one step is not seen in any case (the step's ends
-// bracket the first crossing of the smallest function), so the others add
-// nothing, and the trial costs the same on a ladder of 10 or 10,000 blocks.
-bool Simulation::locateEvent(double& taken, double fEnd, double forcesAtEnd) {
-    (void)fEnd;
-    (void)forcesAtEnd;
-    const double tolerance = scene_.solver.eventTolerance;
-    // The functions already past their event at the end (eventValues_
-    // holds the end's): a trial needs only these and their bodies' poses.
-    // The hinges' first, exactly as without contact between blocks; then,
-    // if a corner of a block had crossed a face by the end, whether it did
-    // so before the hinges' instant (docs/model.md section 17.4).
-    std::vector<int> hingesCrossed, contactsCrossed;
-    double hingesEnd = 1.0, contactsEnd = 1.0;
-    for (size_t k = 0; k < eventValues_.size(); ++k)
-        if (eventValues_[k] < 0) {
-            const bool hinge = int(k) < hingeFunctions_;
-            (hinge ? hingesCrossed : contactsCrossed).push_back(int(k));
-            (hinge ? hingesEnd : contactsEnd) = std::min(hinge ? hingesEnd : contactsEnd, eventValues_[k]);
-        }
-    // The hinges' own smallest function at the end is their smallest crossed
-    // one; their force functions' smallest is kept by eventFunctionsNow.
-    const double hingeForcesAtEnd = hingeForces_;
-    const Powers p1 = world_.pathsOnOnePiece(t_ + taken / 2, t_ + taken) ? lastPowers_ : stepEndAsTaken(taken);
-    locating_ = true;
-    ladder_->blockContacts().setLocating(true);
-    crossed_ = contactsCrossed;
-    const Ledger ledgerAtEnd = ledger_;
-    interpolant_.setEnd(world_.q, world_.v, world_.a);
-    restoreStepStart();
-    // The start as the step found it (the last step's end), or evaluated.
-    if (const Powers* kept = keptStart_.recall(world_, dynamics_, t_)) {
-        lastPowers_ = *kept;
-        eventFunctionsNow(nullptr);
-    } else {
-        smallestEventFunction(t_, nullptr);
-    }
-    const double hingesStart =
-        hingeFunctions_ > 0 ? *std::min_element(eventValues_.begin(), eventValues_.begin() + hingeFunctions_) : 1.0;
-    const double hingeForcesAtStart = hingeForces_;
-    double contactsStart = 1.0;
-    bool contactForces = false;
-    const BlockContacts& contacts = ladder_->blockContacts();
-    for (int k : contactsCrossed) {
-        contactsStart = std::min(contactsStart, eventValues_[size_t(k)]);
-        contactForces = contactForces || !contacts.positional(k - hingeFunctions_);
-    }
-    const Powers p0 = lastPowers_;
-    interpolant_.setStart(taken, stepStartQ_, stepStartV_, world_.a);
-
-    // Narrows [lo, hi] to the first crossing of the functions `among`,
-    // on the interpolant: by positions alone when none of them is a force.
-    const auto narrowAmong = [&](const std::vector<int>& among, bool anglesOnly, EventBracket b) {
-        crossed_ = among;
-        narrow(b, tolerance, [&](double h) {
-            if (!anglesOnly) {
-                interpolant_.at(h, world_.q, world_.v);
-                return smallestEventFunction(t_ + h);
-            }
-            double f = 1.0;
-            for (int k : crossed_) {
-                if (k >= hingeFunctions_) {
-                    // A block's corner at another's face: the two bodies' poses.
-                    for (int body : contacts.bodies(world_, *ladder_, k - hingeFunctions_))
-                        for (int c = 0; c < 3; ++c) world_.q[3 * body + c] = interpolant_.coordinateAt(h, 3 * body + c);
-                    f = std::min(f, contacts.positionFunction(world_, *ladder_, k - hingeFunctions_));
-                    continue;
-                }
-                for (int body : ladder_->angleEventBodies(world_, k))
-                    world_.q[3 * body + 2] = interpolant_.coordinateAt(h, 3 * body + 2);
-                f = std::min(f, ladder_->angleEventFunction(world_, k));
-            }
-            return f;
-        });
-        return b;
-    };
-    EventBracket b{0, 0, taken, 0};
-    if (!hingesCrossed.empty())
-        b = narrowAmong(hingesCrossed, hingeForcesAtStart >= 0 && hingeForcesAtEnd >= 0,
-                        EventBracket{0, hingesStart, taken, hingesEnd});
-    if (!contactsCrossed.empty()) {
-        // The corners' functions where the hinges' event is (or the end).
-        double atHi = contactsEnd;
-        if (!hingesCrossed.empty()) {
-            // Crossed by the hinges' instant as the step's end counts it:
-            // past the face by more than the pins' tolerance. A corner
-            // that grazes a face there (the hinge's event turns it away)
-            // leaves the hinges' instant as it is without contact.
-            interpolant_.at(b.hi, world_.q, world_.v);
-            crossed_ = contactsCrossed;
-            ladder_->blockContacts().setLocating(false);
-            smallestEventFunction(t_ + b.hi, nullptr);
-            ladder_->blockContacts().setLocating(true);
-            atHi = 1.0;
-            for (int k : contactsCrossed) atHi = std::min(atHi, eventValues_[size_t(k)]);
-        }
-        if (atHi < 0) b = narrowAmong(contactsCrossed, !contactForces, EventBracket{0, contactsStart, b.hi, atHi});
-        std::vector<int> located;
-        for (int k : contactsCrossed) located.push_back(k - hingeFunctions_);
-        ladder_->blockContacts().markLocated(located);
-    }
-    locating_ = false;
-    ladder_->blockContacts().setLocating(false);
-    interpolant_.at(b.hi, world_.q, world_.v);
-    world_.updateKinematics(t_ + b.hi);
-    if (!world_.q.allFinite() || !world_.v.allFinite()) {
-        restoreStepStart();
-        fail("an event could not be located: the step's interpolant is not finite");
-        return false;
-    }
-    ledger_ = ledgerBetween(stepStartLedger_, p0, ledgerAtEnd, p1, taken, b.hi / taken);
-    taken = b.hi;
-    return true;
 }
 
 // The scene's step, or the engine's: 1 ms at most, and within the stability

@@ -12,6 +12,7 @@
 #include "jl/engine/world.h"
 #include "jl/ladder/ladder.h"
 #include "jl/scene/scene.h"
+#include "jl/sim/event_bracket.h"
 #include "jl/sim/frame.h"
 
 #include <cstdint>
@@ -162,10 +163,15 @@ private:
     const Powers* startAsLastEnd();
     double eventFunctionsAtEnd(const MotionStep& m, double taken, double* forces);
     Powers stepEndAsTaken(double taken);
-    // The ladder's events inside a step.
-    bool locateEvent(double& taken, double fEnd, double forcesAtEnd);
+    // The ladder's events inside a step (simulation_events.cpp).
     double smallestEventFunction(double t, double* forces = nullptr);
     double eventFunctionsNow(double* forces);
+    bool locateEvent(double& taken, double fEnd, double forcesAtEnd);
+    void eventFunctionsAtStart();
+    EventBracket narrowAmong(const std::vector<int>& among, bool anglesOnly, EventBracket b);
+    double positionFunctions(double h);
+    EventBracket narrowContacts(const std::vector<int>& crossed, bool afterHinges, bool positionsOnly, double atStart,
+                                double atEnd, EventBracket b);
     void restoreStepStart();
     void keepBeforeChange();
     bool stopOnLadderError(double stepStart);
