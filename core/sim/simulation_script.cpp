@@ -119,29 +119,12 @@ void Simulation::applyScriptAction(const ScriptAction& a) {
             e.text = "the hand lets go of block " + std::to_string(a.block);
             break;
         }
-        case K::Push: {
-            // The impulse's work is P . (v- + v+)/2 at the point it acts on; the
-            // pins carry the rest of the change of kinetic energy into held
-            // blocks (their impulsive work). A held block takes the push itself.
+        case K::Push:
+            // A held block takes the push itself.
             if (world_.isHeld(part)) break;
-            const double before = energy(world_).kinetic;
-            const Vec2 local = vec(a.point), impulse = vec(a.impulse);
-            const Vec2 v0 = world_.pointVelocity(part, local);
-            if (ladder_) {
-                released = ladder_->push(world_, dynamics_, t_, a.block, local, impulse);
-            } else {
-                const int b = world_.part(part).body;
-                const Vec2 x = world_.pointPosition(part, local);
-                world_.v.segment<2>(3 * b) += world_.body(b).invMass * impulse;
-                world_.v[3 * b + 2] += world_.body(b).invInertia * cross(x - world_.q.segment<2>(3 * b), impulse);
-                projectVelocities(world_, dynamics_);
-            }
-            const double work = 0.5 * impulse.dot(v0 + world_.pointVelocity(part, local));
-            ledger_.user += work;
-            impactHeldWork_ += energy(world_).kinetic - before - work;
+            released = pushBlock(part, a);
             e.text = "block " + std::to_string(a.block) + " is pushed";
             break;
-        }
         case K::Cut:
             // A refused action is said in the log, so a script's author sees why.
             if (!ladder_) break;
@@ -160,6 +143,30 @@ void Simulation::applyScriptAction(const ScriptAction& a) {
     }
     if (!e.text.empty()) record(e);
     for (Event& r : released) record(r);
+}
+
+// A scripted push of a free block: an impulse at a point of it. The
+// impulse's work is P . (v- + v+)/2 at the point it acts on; the pins carry
+// the rest of the change of kinetic energy into held blocks (their
+// impulsive work). Returns the contacts it opened.
+std::vector<Event> Simulation::pushBlock(PartId part, const ScriptAction& a) {
+    std::vector<Event> released;
+    const double before = energy(world_).kinetic;
+    const Vec2 local = vec(a.point), impulse = vec(a.impulse);
+    const Vec2 v0 = world_.pointVelocity(part, local);
+    if (ladder_) {
+        released = ladder_->push(world_, dynamics_, t_, a.block, local, impulse);
+    } else {
+        const int b = world_.part(part).body;
+        const Vec2 x = world_.pointPosition(part, local);
+        world_.v.segment<2>(3 * b) += world_.body(b).invMass * impulse;
+        world_.v[3 * b + 2] += world_.body(b).invInertia * cross(x - world_.q.segment<2>(3 * b), impulse);
+        projectVelocities(world_, dynamics_);
+    }
+    const double work = 0.5 * impulse.dot(v0 + world_.pointVelocity(part, local));
+    ledger_.user += work;
+    impactHeldWork_ += energy(world_).kinetic - before - work;
+    return released;
 }
 
 // A scripted join: the two corners are pulled together (positions only: the

@@ -136,6 +136,7 @@ private:
     void applyDueInputs();
     void applyScriptAction(const ScriptAction& a);
     std::vector<Event> grab(PartId part);  // the contacts it opened
+    std::vector<Event> pushBlock(PartId part, const ScriptAction& a);
     // A scripted join; the reason if refused (the world unchanged then).
     std::optional<std::string> join(const ScriptAction& a);
     void applyDragSample(const DragRecord& d, const DragRecord::Sample& s);
