@@ -64,7 +64,12 @@ protected:
     void dropEvent(QDropEvent* e) override;
 
 private:
-    void createActions();
+    void createActions();  // main_window_actions.cpp, with the menus
+    void createFileActions();
+    void createUndoActions();
+    void createPlayActions();
+    void createViewActions();
+    void connectActions();
     void createMenus();
     void createToolBar();
     void createDocks();
