@@ -333,54 +333,70 @@ void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {
     }
     const double t = s->frame ? s->frame->time : 0;
     timeLabel_->setText(tr("t = %1 s  (of %2 s)").arg(t, 0, 'f', 3).arg(s->headTime, 0, 'f', 2));
+    showRunRate(*s);
+    if (s->frame) showFrameNumbers(*s->frame);
+    showStopOrNote(*s);
+    syncRecordedDrags(*s);
+}
+
+// What the run is doing: running to an instant (how far, how long left),
+// replaying, playing (at what rate), or paused (where).
+void MainWindow::showRunRate(const SimStatus& s) {
     // A long ladder can take a while to run again up to the moment an edit
     // was made at (or to an event's instant): say so, rather than "paused"
     // while the frames move on, and, once it has run a few seconds, about
     // how long it still needs.
-    if (s->seekingTo <= 0) seeking_.to = -1;
-    if (s->seekingTo > 0) {
+    if (s.seekingTo <= 0) seeking_.to = -1;
+    if (s.seekingTo > 0) {
         const auto now = std::chrono::steady_clock::now();
-        if (seeking_.to != s->seekingTo) seeking_ = {s->seekingTo, s->seekProgress, now};
-        QString done = tr("%1 %").arg(std::floor(100 * s->seekProgress), 0, 'f', 0);
+        if (seeking_.to != s.seekingTo) seeking_ = {s.seekingTo, s.seekProgress, now};
+        QString done = tr("%1 %").arg(std::floor(100 * s.seekProgress), 0, 'f', 0);
         const double wall = std::chrono::duration<double>(now - seeking_.since).count();
-        const double ran = s->seekProgress - seeking_.fromProgress;
+        const double ran = s.seekProgress - seeking_.fromProgress;
         if (wall >= kSecondsBeforeTimeLeft && ran > 0)
-            done = tr("%1, %2 left").arg(done, durationText((1 - s->seekProgress) * wall / ran));
-        rateLabel_->setText(tr("running to t = %1 s (%2)").arg(s->seekingTo, 0, 'f', 3).arg(done));
-    } else if (s->playing && s->frameIndex < s->frameCount - 1)
+            done = tr("%1, %2 left").arg(done, durationText((1 - s.seekProgress) * wall / ran));
+        rateLabel_->setText(tr("running to t = %1 s (%2)").arg(s.seekingTo, 0, 'f', 3).arg(done));
+    } else if (s.playing && s.frameIndex < s.frameCount - 1)
         // Frames recorded earlier: nothing is simulated, so no rate to measure.
-        rateLabel_->setText(tr("replaying recorded frames at %1×").arg(s->speed, 0, 'f', 2));
-    else if (s->playing)
-        rateLabel_->setText(s->realTimeFactor < 0 ? tr("playing; measuring the rate")
-                                                  : tr("%1× real time over %2 s · %3 steps/s")
-                                                        .arg(s->realTimeFactor, 0, 'f', 2)
-                                                        .arg(s->rateSpan, 0, 'f', 1)
-                                                        .arg(s->stepsPerSecond, 0, 'f', 0));
-    else if (atInstant(*s))
-        rateLabel_->setText(tr("paused between frames %1 and %2").arg(s->frameIndex).arg(s->frameIndex + 1));
+        rateLabel_->setText(tr("replaying recorded frames at %1×").arg(s.speed, 0, 'f', 2));
+    else if (s.playing)
+        rateLabel_->setText(s.realTimeFactor < 0 ? tr("playing; measuring the rate")
+                                                 : tr("%1× real time over %2 s · %3 steps/s")
+                                                       .arg(s.realTimeFactor, 0, 'f', 2)
+                                                       .arg(s.rateSpan, 0, 'f', 1)
+                                                       .arg(s.stepsPerSecond, 0, 'f', 0));
+    else if (atInstant(s))
+        rateLabel_->setText(tr("paused between frames %1 and %2").arg(s.frameIndex).arg(s.frameIndex + 1));
     else
-        rateLabel_->setText(tr("paused at frame %1 of %2").arg(s->frameIndex).arg(s->frameCount - 1));
-    if (s->frame) {
-        const jl::EnergyFrame& e = s->frame->energy;
-        energyLabel_->setText(tr("E = %1  (books %2)").arg(energyText(e.total()), energyText(e.balance())));
-        residualLabel_->setText(tr("gap %1 m").arg(s->frame->solver.residual, 0, 'e', 1));
-        const jl::SolverFrame& solver = s->frame->solver;
-        const QString step = QString::number(solver.lastStep * 1e3, 'g', 3);
-        // Before the first step there is no step to show (the engine's own
-        // is chosen at each step, from the forces of that moment).
-        if (solver.steps == 0)
-            stepLabel_->setText(tr("no step yet"));
-        else
-            stepLabel_->setText(solver.adaptiveStep    ? tr("step %1 ms (adaptive)").arg(step)
-                                : solver.automaticStep ? tr("step %1 ms (auto)").arg(step)
-                                                       : tr("step %1 ms").arg(step));
-        // A long ladder: how many of its blocks the motion has not reached.
-        const int blocks = int(s->frame->hinges.size()) + 1;
-        stillLabel_->setVisible(solver.stillFrom >= 0);
-        if (solver.stillFrom >= 0) stillLabel_->setText(tr("%L1 blocks still").arg(blocks - solver.stillFrom));
-    }
-    if (!s->failure.empty()) {
-        const QString failure = QString::fromStdString(s->failure);
+        rateLabel_->setText(tr("paused at frame %1 of %2").arg(s.frameIndex).arg(s.frameCount - 1));
+}
+
+// The frame's energy, the pins' gap, the step and the still blocks.
+void MainWindow::showFrameNumbers(const jl::Frame& f) {
+    const jl::EnergyFrame& e = f.energy;
+    energyLabel_->setText(tr("E = %1  (books %2)").arg(energyText(e.total()), energyText(e.balance())));
+    residualLabel_->setText(tr("gap %1 m").arg(f.solver.residual, 0, 'e', 1));
+    const jl::SolverFrame& solver = f.solver;
+    const QString step = QString::number(solver.lastStep * 1e3, 'g', 3);
+    // Before the first step there is no step to show (the engine's own
+    // is chosen at each step, from the forces of that moment).
+    if (solver.steps == 0)
+        stepLabel_->setText(tr("no step yet"));
+    else
+        stepLabel_->setText(solver.adaptiveStep    ? tr("step %1 ms (adaptive)").arg(step)
+                            : solver.automaticStep ? tr("step %1 ms (auto)").arg(step)
+                                                   : tr("step %1 ms").arg(step));
+    // A long ladder: how many of its blocks the motion has not reached.
+    const int blocks = int(f.hinges.size()) + 1;
+    stillLabel_->setVisible(solver.stillFrom >= 0);
+    if (solver.stillFrom >= 0) stillLabel_->setText(tr("%L1 blocks still").arg(blocks - solver.stillFrom));
+}
+
+// Why the run stopped, in red; else what is happening now (a push, the
+// events of the instant shown).
+void MainWindow::showStopOrNote(const SimStatus& s) {
+    if (!s.failure.empty()) {
+        const QString failure = QString::fromStdString(s.failure);
         warningLabel_->setStyleSheet("color: #b00020; font-weight: bold;");
         warningLabel_->setText(tr("Stopped: %1").arg(failure));
         warningLabel_->setToolTip(failure);
@@ -388,13 +404,12 @@ void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {
     } else {
         warningLabel_->setStyleSheet({});
         QString note;
-        if (s->dragging)
+        if (s.dragging)
             note = tr("Pushing a block: release the button to let go.");
-        else if (atInstant(*s))
-            note = eventsInWords(s->frame->events);
+        else if (atInstant(s))
+            note = eventsInWords(s.frame->events);
         warningLabel_->setText(note);
     }
-    syncRecordedDrags(*s);
 }
 
 // A failure says what failed, where and what to try, which is more than the

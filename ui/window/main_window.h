@@ -97,6 +97,9 @@ private:
 
     void onSceneChanged(SceneChange change);
     void onStatus(std::shared_ptr<const SimStatus> s);
+    void showRunRate(const SimStatus& s);
+    void showFrameNumbers(const jl::Frame& f);
+    void showStopOrNote(const SimStatus& s);
     void syncRecordedDrags(const SimStatus& s);
     void simulateEdit(SceneChange change);
 
