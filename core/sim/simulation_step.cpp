@@ -1,12 +1,13 @@
 // Stepping a simulation: one step of the integrator, the check that the
-// motion has not blown up, and the ladder's events located inside the step
-// and resolved at their instant.
+// motion has not blown up, the ladder's events (located in
+// simulation_events.cpp) resolved at their instant, and the frames of the
+// grid read off the step.
+#include "books_between.h"
 #include "jl/base/short_number.h"
 #include "jl/engine/energy.h"
 #include "jl/engine/motion.h"
 #include "jl/engine/stable_step.h"
 #include "jl/scene/scene_ranges.h"
-#include "jl/sim/event_bracket.h"
 #include "jl/sim/simulation.h"
 
 #include <algorithm>
@@ -18,21 +19,6 @@
 namespace jl {
 
 void Simulation::record(const Event& e) { pending_.push_back(e); }
-
-namespace {
-
-// The energy books at the fraction s of a step of length h: cubic Hermite in
-// time from their values and rates (the powers) at both ends.
-Ledger ledgerBetween(const Ledger& l0, const Powers& p0, const Ledger& l1, const Powers& p1, double h, double s) {
-    const double s2 = s * s, s3 = s2 * s;
-    const auto books = [&](double b0, double r0, double b1, double r1) {
-        return (2 * s3 - 3 * s2 + 1) * b0 + (s3 - 2 * s2 + s) * h * r0 + (-2 * s3 + 3 * s2) * b1 + (s3 - s2) * h * r1;
-    };
-    return {books(l0.held, p0.held, l1.held, p1.held), books(l0.user, p0.user, l1.user, p1.user),
-            books(l0.damping, p0.damping, l1.damping, p1.damping)};
-}
-
-}  // namespace
 
 // The frames of the grid strictly inside the step just taken (from t_, of
 // length `taken`, not yet resolved: the world holds its end, in the same
@@ -83,182 +69,6 @@ void Simulation::emitGridFrames(double taken) {
     world_.a = a1saved;
     ledger_ = ledgerAtEnd;
     dynamics_.restoreLast(dynamicsAtEnd);
-}
-
-// The end of the step just taken (from t_, of length `taken`; the world
-// holds it) evaluated as the step itself saw it, for the interpolant and the
-// books between its ends. Where a move of the hand starts or stops, the
-// hand's acceleration jumps: the step's own side of the jump is that of its
-// stages, and the end's evaluation for the event functions and the next
-// step (kept) is the other side.
-Powers Simulation::stepEndAsTaken(double taken) {
-    const double t1 = t_ + taken, mid = t_ + taken / 2;
-    if (world_.pathsOnOnePiece(mid, t1))
-        if (const Powers* kept = keptEnd_.recall(world_, dynamics_, t1)) return *kept;
-    return dynamics_.evaluate(world_, t1, mid);
-}
-
-// The smallest event function in the state the world holds, at time t (an
-// event function is negative when its event has happened); `forces` gets
-// the smallest of the contact-force ones.
-double Simulation::smallestEventFunction(double t, double* forces) {
-    lastPowers_ = dynamics_.evaluate(world_, t);
-    return eventFunctionsNow(forces);
-}
-
-// The same in the state the world and the dynamics hold, evaluated already.
-//
-// The contacts between blocks add their functions after the hinges'; one
-// counts only once it has crossed (negative), or, while an event is
-// located, if it had crossed at the step's end: a corner near a face with
-// nothing happening leaves the bracket and its narrowing exactly as they
-// are without contact (docs/model.md section 17.4).
-double Simulation::eventFunctionsNow(double* forces) {
-    double f = ladder_->eventFunctions(world_, dynamics_, eventValues_);
-    hingeForces_ = f;
-    hingeFunctions_ = int(eventValues_.size());
-    double smallest = eventValues_.empty() ? 1.0 : *std::min_element(eventValues_.begin(), eventValues_.end());
-    const BlockContacts& contacts = ladder_->blockContacts();
-    contacts.eventFunctions(world_, dynamics_, *ladder_, eventValues_);
-    for (int k = hingeFunctions_; k < int(eventValues_.size()); ++k) {
-        const double value = eventValues_[size_t(k)];
-        const bool counts = locating_ ? std::find(crossed_.begin(), crossed_.end(), k) != crossed_.end() : value < 0;
-        if (!counts) continue;
-        smallest = std::min(smallest, value);
-        if (!contacts.positional(k - hingeFunctions_)) f = std::min(f, value);
-    }
-    if (forces) *forces = f;
-    return smallest;
-}
-
-// The first instant inside the step just taken (length `taken`, event
-// function fEnd < 0 at its end) at which an event function turns negative,
-// to within the event tolerance; leaves the world there and `taken` set to it.
-//
-// Narrowed on the step's quintic Hermite interpolant, at one evaluation per
-// trial instead of a whole step; when no contact force pulls at either end,
-// the event is a hinge reaching a limit, which positions alone tell, and a
-// trial needs no dynamics at all. The state at the instant is the
-// interpolant's too: its error is O(h^6), below the local error of every
-// integrator the engine has (RK4's and Dormand-Prince's are O(h^5)), so
-// re-running the step to the instant would cost a whole step of the ladder
-// and buy nothing. The books go with it, cubic Hermite in time.
-//
-// A trial of the angles alone reads the functions that are past their event
-// at the end, and only the angles of their bodies: a hinge that crosses and
-// crosses back inside one step is not seen in any case (the step's ends
-// bracket the first crossing of the smallest function), so the others add
-// nothing, and the trial costs the same on a ladder of 10 or 10,000 blocks.
-bool Simulation::locateEvent(double& taken, double fEnd, double forcesAtEnd) {
-    (void)fEnd;
-    (void)forcesAtEnd;
-    const double tolerance = scene_.solver.eventTolerance;
-    // The functions already past their event at the end (eventValues_
-    // holds the end's): a trial needs only these and their bodies' poses.
-    // The hinges' first, exactly as without contact between blocks; then,
-    // if a corner of a block had crossed a face by the end, whether it did
-    // so before the hinges' instant (docs/model.md section 17.4).
-    std::vector<int> hingesCrossed, contactsCrossed;
-    double hingesEnd = 1.0, contactsEnd = 1.0;
-    for (size_t k = 0; k < eventValues_.size(); ++k)
-        if (eventValues_[k] < 0) {
-            const bool hinge = int(k) < hingeFunctions_;
-            (hinge ? hingesCrossed : contactsCrossed).push_back(int(k));
-            (hinge ? hingesEnd : contactsEnd) = std::min(hinge ? hingesEnd : contactsEnd, eventValues_[k]);
-        }
-    // The hinges' own smallest function at the end is their smallest crossed
-    // one; their force functions' smallest is kept by eventFunctionsNow.
-    const double hingeForcesAtEnd = hingeForces_;
-    const Powers p1 = world_.pathsOnOnePiece(t_ + taken / 2, t_ + taken) ? lastPowers_ : stepEndAsTaken(taken);
-    locating_ = true;
-    ladder_->blockContacts().setLocating(true);
-    crossed_ = contactsCrossed;
-    const Ledger ledgerAtEnd = ledger_;
-    interpolant_.setEnd(world_.q, world_.v, world_.a);
-    restoreStepStart();
-    // The start as the step found it (the last step's end), or evaluated.
-    if (const Powers* kept = keptStart_.recall(world_, dynamics_, t_)) {
-        lastPowers_ = *kept;
-        eventFunctionsNow(nullptr);
-    } else {
-        smallestEventFunction(t_, nullptr);
-    }
-    const double hingesStart =
-        hingeFunctions_ > 0 ? *std::min_element(eventValues_.begin(), eventValues_.begin() + hingeFunctions_) : 1.0;
-    const double hingeForcesAtStart = hingeForces_;
-    double contactsStart = 1.0;
-    bool contactForces = false;
-    const BlockContacts& contacts = ladder_->blockContacts();
-    for (int k : contactsCrossed) {
-        contactsStart = std::min(contactsStart, eventValues_[size_t(k)]);
-        contactForces = contactForces || !contacts.positional(k - hingeFunctions_);
-    }
-    const Powers p0 = lastPowers_;
-    interpolant_.setStart(taken, stepStartQ_, stepStartV_, world_.a);
-
-    // Narrows [lo, hi] to the first crossing of the functions `among`,
-    // on the interpolant: by positions alone when none of them is a force.
-    const auto narrowAmong = [&](const std::vector<int>& among, bool anglesOnly, EventBracket b) {
-        crossed_ = among;
-        narrow(b, tolerance, [&](double h) {
-            if (!anglesOnly) {
-                interpolant_.at(h, world_.q, world_.v);
-                return smallestEventFunction(t_ + h);
-            }
-            double f = 1.0;
-            for (int k : crossed_) {
-                if (k >= hingeFunctions_) {
-                    // A block's corner at another's face: the two bodies' poses.
-                    for (int body : contacts.bodies(world_, *ladder_, k - hingeFunctions_))
-                        for (int c = 0; c < 3; ++c) world_.q[3 * body + c] = interpolant_.coordinateAt(h, 3 * body + c);
-                    f = std::min(f, contacts.positionFunction(world_, *ladder_, k - hingeFunctions_));
-                    continue;
-                }
-                for (int body : ladder_->angleEventBodies(world_, k))
-                    world_.q[3 * body + 2] = interpolant_.coordinateAt(h, 3 * body + 2);
-                f = std::min(f, ladder_->angleEventFunction(world_, k));
-            }
-            return f;
-        });
-        return b;
-    };
-    EventBracket b{0, 0, taken, 0};
-    if (!hingesCrossed.empty())
-        b = narrowAmong(hingesCrossed, hingeForcesAtStart >= 0 && hingeForcesAtEnd >= 0,
-                        EventBracket{0, hingesStart, taken, hingesEnd});
-    if (!contactsCrossed.empty()) {
-        // The corners' functions where the hinges' event is (or the end).
-        double atHi = contactsEnd;
-        if (!hingesCrossed.empty()) {
-            // Crossed by the hinges' instant as the step's end counts it:
-            // past the face by more than the pins' tolerance. A corner
-            // that grazes a face there (the hinge's event turns it away)
-            // leaves the hinges' instant as it is without contact.
-            interpolant_.at(b.hi, world_.q, world_.v);
-            crossed_ = contactsCrossed;
-            ladder_->blockContacts().setLocating(false);
-            smallestEventFunction(t_ + b.hi, nullptr);
-            ladder_->blockContacts().setLocating(true);
-            atHi = 1.0;
-            for (int k : contactsCrossed) atHi = std::min(atHi, eventValues_[size_t(k)]);
-        }
-        if (atHi < 0) b = narrowAmong(contactsCrossed, !contactForces, EventBracket{0, contactsStart, b.hi, atHi});
-        std::vector<int> located;
-        for (int k : contactsCrossed) located.push_back(k - hingeFunctions_);
-        ladder_->blockContacts().markLocated(located);
-    }
-    locating_ = false;
-    ladder_->blockContacts().setLocating(false);
-    interpolant_.at(b.hi, world_.q, world_.v);
-    world_.updateKinematics(t_ + b.hi);
-    if (!world_.q.allFinite() || !world_.v.allFinite()) {
-        restoreStepStart();
-        fail("an event could not be located: the step's interpolant is not finite");
-        return false;
-    }
-    ledger_ = ledgerBetween(stepStartLedger_, p0, ledgerAtEnd, p1, taken, b.hi / taken);
-    taken = b.hi;
-    return true;
 }
 
 // The scene's step, or the engine's: 1 ms at most, and within the stability
@@ -319,45 +129,22 @@ std::string gapText(double metres) { return shortNumber(metres) + " m"; }
 
 }  // namespace
 
+// One step, as its stages: chosen, taken from a start kept for a retry,
+// checked for a blow-up and for books that run away, then (a ladder) its
+// end read for events and settled; time moves on to its end and the inputs
+// due there are applied.
 bool Simulation::takeStep(double limit) {
     if (!failure_.empty()) return false;
-    const SolverSpec& solver = scene_.solver;
-    const bool adaptive = isAdaptive(solver.integrator);
-    double h = adaptive && stepper_.nextStep() > 0 ? stepper_.nextStep() : fixedStep();
-    const double chosen = h;
-    const double scheduled = std::min(nextScheduledTime(), limit);
-    const bool lands = t_ + h >= scheduled - 1e-12;
-    if (lands) h = scheduled - t_;
-    if (h <= 0) return true;
-
-    const double stepStart = t_;
-    changeKept_ = false;
-    stepStartQ_ = world_.q;
-    stepStartV_ = world_.v;
-    // The start's accelerations (the last evaluation, of this state), for
-    // a limit passed and left within an adaptive step.
-    if (adaptive && ladder_) stepStartA_ = world_.a;
-    stepStartLedger_ = ledger_;
-    const double next0 = stepper_.nextStep();
-    // The last step's end, evaluated for its event functions, is this
-    // step's first stage when nothing has changed since.
-    std::swap(keptStart_, keptEnd_);
-    keptEnd_.forget();
-    const Powers* atStart = keptStart_.recall(world_, dynamics_, t_);
-    if (!atStart) keptStart_.forget();
-    MotionStep m =
-        advanceAndProject(world_, dynamics_, stepper_, t_, h, ledger_, solver.projectionTolerance, false, atStart);
-    if (!m.ok()) {
-        if (retryWithSmallerStep()) return true;
-        fail(m.step.finite
-                 ? "the projection onto the pins did not converge (gap " + gapText(m.projection.residual) + " after " +
-                       std::to_string(m.projection.iterations) + " iterations): " + blowUpAdvice(chosen)
-                 : "the step produced a non-finite state: " + blowUpAdvice(chosen));
-        return false;
-    }
+    const StepPlan plan = planStep(limit);
+    if (plan.h <= 0) return true;
+    keepStepStart(plan.adaptive);
+    const Powers* atStart = startAsLastEnd();
+    MotionStep m = advanceAndProject(world_, dynamics_, stepper_, t_, plan.h, ledger_,
+                                     scene_.solver.projectionTolerance, false, atStart);
+    if (!m.ok()) return blownUp(m, plan.chosen);
     double taken = m.step.taken;
     stats_.rejected += m.step.rejected;
-    if (adaptive && (!lands || taken < h)) {
+    if (plan.adaptive && (!plan.lands || taken < plan.h)) {
         stats_.adaptiveStep = true;
         noteStep(taken);
     }
@@ -365,93 +152,142 @@ bool Simulation::takeStep(double limit) {
         if (retryWithSmallerStep()) return true;
         restoreStepStart();
         world_.updateKinematics(t_);
-        fail("the energy no longer balances (the motion is running away): " + blowUpAdvice(chosen));
+        fail("the energy no longer balances (the motion is running away): " + blowUpAdvice(plan.chosen));
         return false;
     }
     if (ladder_) {
-        double forces = 0;
-        // The end of the step, evaluated for the event functions (and kept
-        // as the next step's first stage): by the step itself if its last
-        // stage was the projected end (Dormand-Prince), unless a move of
-        // the hand starts or stops there: its stage saw the other side.
-        double fEnd = 0;
-        // The corners to watch at the step's end: the same list at its
-        // start, for the bracket.
-        ladder_->blockContacts().refresh(world_, *ladder_);
-        if (m.step.endEvaluated && world_.pathsOnOnePiece(t_ + taken / 2, t_ + taken)) {
-            lastPowers_ = m.step.endPowers;
-            fEnd = eventFunctionsNow(&forces);
-        } else {
-            fEnd = smallestEventFunction(t_ + taken, &forces);
-        }
-        keptEnd_.keep(world_, dynamics_, t_ + taken, lastPowers_);
-        if (fEnd < 0) {
-            if (solver.events == EventPolicy::Located && taken > solver.eventTolerance) {
-                if (!locateEvent(taken, fEnd, forces)) return false;
-                stepper_.setNextStep(next0 > 0 ? next0 : chosen);
-            }
-            emitGridFrames(taken);
-            keepBeforeChange();
-            const double heldBefore = impactHeldWork_;
-            std::vector<Event> happened =
-                ladder_->settle(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
-            if (happened.empty() && taken < m.step.taken) {
-                // The located instant asked for nothing after all (a function
-                // within rounding of its threshold): take the whole step, so
-                // time can never stall on it.
-                restoreStepStart();
-                m = advanceAndProject(world_, dynamics_, stepper_, t_, m.step.taken, ledger_,
-                                      solver.projectionTolerance, true);
-                taken = m.step.taken;
-                ++stats_.spuriousEvents;
-                emitGridFrames(taken);
-                happened = ladder_->settle(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
-            }
-            for (Event& e : happened) record(e);
-            if (!stopOnLadderError(stepStart)) return false;
-            if (const auto why = squeezedByTheHand(heldBefore)) return stopAt(stepStart, *why);
-            if (!world_.q.allFinite() || !world_.v.allFinite()) {
-                restoreStepStart();
-                fail("an impact produced a non-finite state");
-                return false;
-            }
-            // The settled state is the next step's start, evaluated already.
-            keptEnd_.keep(world_, dynamics_, t_ + taken, ladder_->settledPowers());
-        } else if (const double dip = adaptive && taken > 100 * solver.eventTolerance ? limitDip(taken) : 0.0;
-                   dip > 0) {
-            // A free hinge swung past a limit and back within this (long,
-            // adaptive) step: no sign change at its ends shows it. The step
-            // is taken again to end at the dip, where the crossing shows
-            // (docs/model.md section 9.1). Fixed steps are short enough.
-            restoreStepStart();
-            world_.updateKinematics(t_);
-            dynamics_.evaluate(world_, t_);
-            stepper_.setNextStep(dip);
-            ++stats_.rejected;
-            return true;
-        } else {
-            emitGridFrames(taken);
-        }
-        ladder_->updateAngles(world_);
-        // The motion has come near the still tail: the next blocks move on
-        // their own. A change of structure: the end is evaluated anew, so
-        // that the next step starts from it and the automatic step is
-        // chosen from the pin forces of the pins there are now.
-        if (ladder_->tailReached(world_)) keepBeforeChange();
-        if (ladder_->wakeIfReached(world_) > 0) {
-            lastPowers_ = dynamics_.evaluate(world_, t_ + taken);
-            keptEnd_.keep(world_, dynamics_, t_ + taken, lastPowers_);
-        }
+        if (const std::optional<bool> ended = ladderAtStepEnd(m, taken, plan)) return *ended;
     } else {
         emitGridFrames(taken);
     }
-    t_ = (lands && taken == h) ? scheduled : t_ + taken;
+    t_ = (plan.lands && taken == plan.h) ? plan.scheduled : t_ + taken;
     ++stats_.steps;
     stats_.lastStep = taken;
     lastResidual_ = m.projection.residual;
     if (nextAction_ < scene_.script.size() && scene_.script[nextAction_].at <= t_ + 1e-12) keepBeforeChange();
     applyDueInputs();
-    return stopOnLadderError(stepStart);
+    return stopOnLadderError(plan.start);
+}
+
+// The step to take from t_: the adaptive method's own next step, or the
+// fixed or automatic one; shortened to land on the next scheduled instant
+// (or `limit`) when it would reach it.
+Simulation::StepPlan Simulation::planStep(double limit) {
+    StepPlan plan;
+    plan.adaptive = isAdaptive(scene_.solver.integrator);
+    plan.h = plan.adaptive && stepper_.nextStep() > 0 ? stepper_.nextStep() : fixedStep();
+    plan.chosen = plan.h;
+    plan.scheduled = std::min(nextScheduledTime(), limit);
+    plan.lands = t_ + plan.h >= plan.scheduled - 1e-12;
+    if (plan.lands) plan.h = plan.scheduled - t_;
+    plan.start = t_;
+    plan.next0 = stepper_.nextStep();
+    return plan;
+}
+
+// The state the step starts from, kept for going back to it (a retry, an
+// event located inside the step, a stop).
+void Simulation::keepStepStart(bool adaptive) {
+    changeKept_ = false;
+    stepStartQ_ = world_.q;
+    stepStartV_ = world_.v;
+    // The start's accelerations (the last evaluation, of this state), for
+    // a limit passed and left within an adaptive step.
+    if (adaptive && ladder_) stepStartA_ = world_.a;
+    stepStartLedger_ = ledger_;
+}
+
+// A step that produced no state to go on from: a shorter one is tried when
+// the step is the engine's own, else the run fails saying why.
+bool Simulation::blownUp(const MotionStep& m, double chosen) {
+    if (retryWithSmallerStep()) return true;
+    fail(m.step.finite
+             ? "the projection onto the pins did not converge (gap " + gapText(m.projection.residual) + " after " +
+                   std::to_string(m.projection.iterations) + " iterations): " + blowUpAdvice(chosen)
+             : "the step produced a non-finite state: " + blowUpAdvice(chosen));
+    return false;
+}
+
+// The ladder at the step's end: its event functions read there; an event
+// located inside the step and settled, or a limit a free hinge swung past
+// and back (the step taken again to end at the dip); then its angles and
+// its still tail. The step's result when it ends here, else nullopt.
+std::optional<bool> Simulation::ladderAtStepEnd(MotionStep& m, double& taken, const StepPlan& plan) {
+    double forces = 0;
+    const double fEnd = eventFunctionsAtEnd(m, taken, &forces);
+    if (fEnd < 0) {
+        if (!settleEvents(m, taken, fEnd, forces, plan)) return false;
+    } else if (const double dip = plan.adaptive && taken > 100 * scene_.solver.eventTolerance ? limitDip(taken) : 0.0;
+               dip > 0) {
+        retakeToDip(dip);
+        return true;
+    } else {
+        emitGridFrames(taken);
+    }
+    ladder_->updateAngles(world_);
+    wakeTailIfReached(taken);
+    return std::nullopt;
+}
+
+// An event function past its event at the step's end: the event located
+// inside the step (when the scene asks), the frames of the grid up to it,
+// and the ladder's events settled there. False when the run stops.
+bool Simulation::settleEvents(MotionStep& m, double& taken, double fEnd, double forces, const StepPlan& plan) {
+    const SolverSpec& solver = scene_.solver;
+    if (solver.events == EventPolicy::Located && taken > solver.eventTolerance) {
+        if (!locateEvent(taken, fEnd, forces)) return false;
+        stepper_.setNextStep(plan.next0 > 0 ? plan.next0 : plan.chosen);
+    }
+    emitGridFrames(taken);
+    keepBeforeChange();
+    const double heldBefore = impactHeldWork_;
+    std::vector<Event> happened = ladder_->settle(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
+    if (happened.empty() && taken < m.step.taken) {
+        // The located instant asked for nothing after all (a function
+        // within rounding of its threshold): take the whole step, so
+        // time can never stall on it.
+        restoreStepStart();
+        m = advanceAndProject(world_, dynamics_, stepper_, t_, m.step.taken, ledger_, solver.projectionTolerance, true);
+        taken = m.step.taken;
+        ++stats_.spuriousEvents;
+        emitGridFrames(taken);
+        happened = ladder_->settle(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
+    }
+    for (Event& e : happened) record(e);
+    if (!stopOnLadderError(plan.start)) return false;
+    if (const auto why = squeezedByTheHand(heldBefore)) return stopAt(plan.start, *why);
+    if (!world_.q.allFinite() || !world_.v.allFinite()) {
+        restoreStepStart();
+        fail("an impact produced a non-finite state");
+        return false;
+    }
+    // The settled state is the next step's start, evaluated already.
+    keptEnd_.keep(world_, dynamics_, t_ + taken, ladder_->settledPowers());
+    return true;
+}
+
+// A free hinge swung past a limit and back within this (long, adaptive)
+// step: no sign change at its ends shows it. The step is taken again to end
+// at the dip, where the crossing shows (docs/model.md section 9.1). Fixed
+// steps are short enough.
+void Simulation::retakeToDip(double dip) {
+    restoreStepStart();
+    world_.updateKinematics(t_);
+    dynamics_.evaluate(world_, t_);
+    stepper_.setNextStep(dip);
+    ++stats_.rejected;
+}
+
+// The motion has come near the still tail: the next blocks move on their
+// own. A change of structure: the end is evaluated anew, so that the next
+// step starts from it and the automatic step is chosen from the pin forces
+// of the pins there are now.
+void Simulation::wakeTailIfReached(double taken) {
+    if (ladder_->tailReached(world_)) keepBeforeChange();
+    if (ladder_->wakeIfReached(world_) > 0) {
+        lastPowers_ = dynamics_.evaluate(world_, t_ + taken);
+        keptEnd_.keep(world_, dynamics_, t_ + taken, lastPowers_);
+    }
 }
 
 double Simulation::limitDip(double taken) {

@@ -129,28 +129,47 @@ DesignMap::DesignMap(Document* doc, QWidget* parent) : QDialog(parent), doc_(doc
     auto* axes = new QHBoxLayout;
     x_ = makePicker("x");
     y_ = makePicker("y");
-    auto addPicker = [&](const QString& title, const Picker& p) {
-        auto* g = new QGroupBox(title, this);
-        auto* form = new QFormLayout(g);
-        form->addRow(tr("Parameter"), p.parameter);
-        auto* range = new QHBoxLayout;
-        range->addWidget(p.from);
-        range->addWidget(new QLabel(tr("to"), g));
-        range->addWidget(p.to);
-        range->addWidget(new QLabel(tr("step"), g));
-        range->addWidget(p.step);
-        form->addRow(tr("From"), range);
-        axes->addWidget(g);
-    };
-    addPicker(tr("Across (x)"), x_);
-    addPicker(tr("Up (y)"), y_);
+    addPickerBox(axes, tr("Across (x)"), x_);
+    addPickerBox(axes, tr("Up (y)"), y_);
     box->addLayout(axes);
 
     grid_ = new DesignMapGrid(this);
     grid_->setToolTip(
         tr("Each cell is one design, simulated from the top block's turn; hover for the numbers, click to open it."));
     box->addWidget(grid_, 1);
+    box->addLayout(makeRunBar());
+    box->addWidget(status_);
 
+    followEdits();
+    connect(computeButton_, &QPushButton::clicked, this, &DesignMap::compute);
+    connect(cancelButton_, &QPushButton::clicked, this, &DesignMap::cancel);
+    connect(exportButton_, &QPushButton::clicked, this, &DesignMap::exportDialog);
+    connect(grid_, &DesignMapGrid::cellClicked, this, &DesignMap::openCell);
+    connect(&watcher_, &QFutureWatcher<jl::RippleReach>::resultReadyAt, this, &DesignMap::onResult);
+    connect(&watcher_, &QFutureWatcher<jl::RippleReach>::finished, this, &DesignMap::onRunEnded);
+
+    setAxes(axisShown(jl::DesignParameter::Blocks).first, axisShown(jl::DesignParameter::Thickness).first);
+    resize(900, 680);
+}
+
+// One axis's picker in a box of its own: the parameter, and its range.
+void DesignMap::addPickerBox(QHBoxLayout* axes, const QString& title, const Picker& p) {
+    auto* g = new QGroupBox(title, this);
+    auto* form = new QFormLayout(g);
+    form->addRow(tr("Parameter"), p.parameter);
+    auto* range = new QHBoxLayout;
+    range->addWidget(p.from);
+    range->addWidget(new QLabel(tr("to"), g));
+    range->addWidget(p.to);
+    range->addWidget(new QLabel(tr("step"), g));
+    range->addWidget(p.step);
+    form->addRow(tr("From"), range);
+    axes->addWidget(g);
+}
+
+// The runs' bar: compute, cancel, their progress, export; and the status
+// line below it (made here, placed by the caller).
+QHBoxLayout* DesignMap::makeRunBar() {
     auto* bar = new QHBoxLayout;
     computeButton_ = new QPushButton(tr("Compute"), this);
     computeButton_->setObjectName("computeMap");
@@ -170,9 +189,12 @@ DesignMap::DesignMap(Document* doc, QWidget* parent) : QDialog(parent), doc_(doc
     bar->addWidget(cancelButton_);
     bar->addWidget(progress_, 1);
     bar->addWidget(exportButton_);
-    box->addLayout(bar);
-    box->addWidget(status_);
+    return bar;
+}
 
+// The map follows edits of the ladder and of the axes, a moment after the
+// last one: a running map starts again, a shown one is redrawn from the cache.
+void DesignMap::followEdits() {
     follow_ = new QTimer(this);
     follow_->setSingleShot(true);
     follow_->setInterval(300);
@@ -198,15 +220,6 @@ DesignMap::DesignMap(Document* doc, QWidget* parent) : QDialog(parent), doc_(doc
         });
         for (QDoubleSpinBox* s : {p->from, p->to, p->step}) connect(s, &QDoubleSpinBox::valueChanged, this, changed);
     }
-    connect(computeButton_, &QPushButton::clicked, this, &DesignMap::compute);
-    connect(cancelButton_, &QPushButton::clicked, this, &DesignMap::cancel);
-    connect(exportButton_, &QPushButton::clicked, this, &DesignMap::exportDialog);
-    connect(grid_, &DesignMapGrid::cellClicked, this, &DesignMap::openCell);
-    connect(&watcher_, &QFutureWatcher<jl::RippleReach>::resultReadyAt, this, &DesignMap::onResult);
-    connect(&watcher_, &QFutureWatcher<jl::RippleReach>::finished, this, &DesignMap::onRunEnded);
-
-    setAxes(axisShown(jl::DesignParameter::Blocks).first, axisShown(jl::DesignParameter::Thickness).first);
-    resize(900, 680);
 }
 
 DesignMap::~DesignMap() {

@@ -17,6 +17,7 @@
 
 class QComboBox;
 class QDoubleSpinBox;
+class QHBoxLayout;
 class QLabel;
 class QProgressBar;
 class QPushButton;
@@ -83,6 +84,9 @@ private:
     Picker makePicker(const QString& name);
     jl::DesignAxis axisOf(const Picker& p) const;
     void setPicker(Picker& p, const jl::DesignAxis& a);
+    void addPickerBox(QHBoxLayout* axes, const QString& title, const Picker& p);
+    QHBoxLayout* makeRunBar();
+    void followEdits();
     void showMap();  // the grid of the current ladder and axes, from the cache
     void onResult(int i);
     void onRunEnded();

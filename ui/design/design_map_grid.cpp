@@ -101,7 +101,26 @@ QString DesignMapGrid::cellText(int column, int row) const {
 void DesignMapGrid::paintEvent(QPaintEvent*) {
     QPainter p(this);
     p.fillRect(rect(), palette().window());
+    paintCells(p);
     const QRect plot = plotRect();
+    p.setPen(palette().color(QPalette::WindowText));
+    p.drawRect(plot.adjusted(0, 0, -1, -1));
+    if (current_.first >= 0) {  // the design being edited, framed black and white
+        const QRect cell = cellRect(current_.first, current_.second);
+        p.setPen(QPen(Qt::black, 3));
+        p.drawRect(cell.adjusted(2, 2, -2, -2));
+        p.setPen(QPen(Qt::white, 1));
+        p.drawRect(cell.adjusted(2, 2, -2, -2));
+        p.setPen(palette().color(QPalette::WindowText));  // the axes are text on the window
+    }
+    paintAxes(p, plot);
+    paintLegend(p);
+}
+
+// Each cell in the colour of its reach, with the hinges its ripple flipped
+// (of all) written on it where they fit; a cell not yet run is hatched, a
+// failed run crossed out.
+void DesignMapGrid::paintCells(QPainter& p) const {
     const QFontMetrics fm = fontMetrics();
     for (int r = 0; r < rows(); ++r)
         for (int c = 0; c < columns(); ++c) {
@@ -125,18 +144,11 @@ void DesignMapGrid::paintEvent(QPaintEvent*) {
                 p.drawText(cell, Qt::AlignCenter, label);
             }
         }
-    p.setPen(palette().color(QPalette::WindowText));
-    p.drawRect(plot.adjusted(0, 0, -1, -1));
-    if (current_.first >= 0) {  // the design being edited, framed black and white
-        const QRect cell = cellRect(current_.first, current_.second);
-        p.setPen(QPen(Qt::black, 3));
-        p.drawRect(cell.adjusted(2, 2, -2, -2));
-        p.setPen(QPen(Qt::white, 1));
-        p.drawRect(cell.adjusted(2, 2, -2, -2));
-        p.setPen(palette().color(QPalette::WindowText));  // the axes are text on the window
-    }
+}
 
-    // Axes: ticks at cell centres, every k-th when they would overlap.
+// Axes: ticks at cell centres, every k-th when they would overlap.
+void DesignMapGrid::paintAxes(QPainter& p, const QRect& plot) const {
+    const QFontMetrics fm = fontMetrics();
     int widest = 0;
     for (const QString& t : xTicks_) widest = std::max(widest, fm.horizontalAdvance(t) + 8);
     const int xStride = tickStride(columns(), plot.width(), widest);
@@ -160,8 +172,11 @@ void DesignMapGrid::paintEvent(QPaintEvent*) {
     p.rotate(-90);
     p.drawText(QRect(-plot.height() / 2, -fm.height() / 2, plot.height(), fm.height() + 2), Qt::AlignCenter, yTitle_);
     p.restore();
+}
 
-    // The legend: the fraction of hinges the first ripple flips.
+// The legend: the fraction of hinges the first ripple flips.
+void DesignMapGrid::paintLegend(QPainter& p) const {
+    const QFontMetrics fm = fontMetrics();
     const QRect legend = legendRect();
     for (int y = legend.top(); y <= legend.bottom(); ++y)
         p.fillRect(QRect(legend.left(), y, legend.width(), 1),

@@ -12,6 +12,8 @@
 #include <optional>
 #include <vector>
 
+class QPainter;
+
 namespace jl::ui {
 
 class DesignMapGrid : public QWidget {
@@ -51,6 +53,9 @@ private:
     int index(int column, int row) const { return row * columns() + column; }
     QRect plotRect() const;
     QRect legendRect() const;
+    void paintCells(QPainter& p) const;
+    void paintAxes(QPainter& p, const QRect& plot) const;
+    void paintLegend(QPainter& p) const;
     std::optional<std::pair<int, int>> cellAt(const QPoint& p) const;
 
     QString xTitle_, yTitle_;

@@ -14,13 +14,11 @@
 #include "ui/teaching/teaching_docks.h"
 #include "ui/view3d/ladder_view.h"
 #include "ui/view3d/shader_material.h"
-#include "ui/window/controls_sheet.h"
 #include "ui/window/help_pages.h"
 #include "ui/window/presentation_mode.h"
 #include "ui/window/screen_fit.h"
 
 #include <QAction>
-#include <QApplication>
 #include <QDockWidget>
 #include <QLabel>
 #include <QMenu>
@@ -127,125 +125,6 @@ MainWindow::MainWindow(Options options) : options_(options) {
 }
 
 MainWindow::~MainWindow() = default;
-
-void MainWindow::createActions() {
-    auto make = [this](const QString& text, const QList<QKeySequence>& keys, QStyle::StandardPixmap icon,
-                       const QString& tip) {
-        auto* a = new QAction(text, this);
-        a->setShortcuts(keys);
-        if (icon != QStyle::SP_CustomBase) a->setIcon(style()->standardIcon(icon));
-        a->setToolTip(
-            tip + (keys.isEmpty() ? QString() : QString(" (%1)").arg(keys.first().toString(QKeySequence::NativeText))));
-        a->setStatusTip(tip);
-        return a;
-    };
-    newAct_ = make(tr("&New"), QKeySequence::keyBindings(QKeySequence::New), QStyle::SP_FileIcon,
-                   tr("A new ladder of six blocks"));
-    openAct_ = make(tr("&Open..."), QKeySequence::keyBindings(QKeySequence::Open), QStyle::SP_DialogOpenButton,
-                    tr("Open a scene file"));
-    saveAct_ = make(tr("&Save"), QKeySequence::keyBindings(QKeySequence::Save), QStyle::SP_DialogSaveButton,
-                    tr("Save the scene"));
-    saveAsAct_ = make(tr("Save &As..."), QKeySequence::keyBindings(QKeySequence::SaveAs), QStyle::SP_CustomBase,
-                      tr("Save the scene under a new name"));
-    revertAct_ =
-        make(tr("&Revert"), {}, QStyle::SP_BrowserReload, tr("Throw away unsaved changes and read the file again"));
-    quitAct_ =
-        make(tr("&Quit"), QKeySequence::keyBindings(QKeySequence::Quit), QStyle::SP_CustomBase, tr("Quit the program"));
-    undoAct_ = doc_->undoStack()->createUndoAction(this, tr("&Undo"));
-    undoAct_->setShortcuts(QKeySequence::Undo);
-    redoAct_ = doc_->undoStack()->createRedoAction(this, tr("&Redo"));
-    // The platform's own keys (Ctrl+Shift+Z here), and Ctrl+Y everywhere, as the Help says.
-    const QKeySequence ctrlY(Qt::CTRL | Qt::Key_Y);
-    redoAct_->setShortcuts(QKeySequence::keyBindings(QKeySequence::Redo) << ctrlY);
-    // Icons on the toolbar: its buttons would otherwise carry the changing
-    // text ("Undo Change blocks") and every button after them would shift.
-    undoAct_->setIcon(QIcon::fromTheme("edit-undo", style()->standardIcon(QStyle::SP_ArrowBack)));
-    redoAct_->setIcon(QIcon::fromTheme("edit-redo", style()->standardIcon(QStyle::SP_ArrowForward)));
-    playAct_ = make(tr("&Play"), {Qt::Key_Space}, QStyle::SP_MediaPlay, tr("Play or pause the simulation"));
-    stepAct_ = make(tr("Step &forward"), {Qt::Key_Right, Qt::Key_Period}, QStyle::SP_MediaSeekForward,
-                    tr("One frame forward"));
-    backAct_ =
-        make(tr("Step &back"), {Qt::Key_Left, Qt::Key_Comma}, QStyle::SP_MediaSeekBackward, tr("One frame back"));
-    restartAct_ = make(tr("&Restart"), {QKeySequence(Qt::CTRL | Qt::Key_R)}, QStyle::SP_MediaSkipBackward,
-                       tr("Back to the start"));
-    resetViewAct_ =
-        make(tr("Reset &view"), {Qt::Key_Home}, QStyle::SP_CustomBase, tr("Look at the whole ladder again"));
-    frameAct_ = make(tr("&Frame the ladder"), {Qt::Key_F}, QStyle::SP_CustomBase,
-                     tr("Fit the whole ladder in the view, seen from where you are"));
-    frameMotionAct_ =
-        make(tr("Frame the &moving blocks"), {Qt::Key_M}, QStyle::SP_CustomBase,
-             tr("Fit the blocks that moved most in the last frame in the view: on a long ladder, where the action is"));
-    frameMotionAct_->setObjectName("frameMotionAction");
-    walkAct_ = make(tr("&Walk mode"), {Qt::Key_V}, QStyle::SP_CustomBase,
-                    tr("Walk around the room: W A S D to move, Q E down and up, drag to look, Esc to stop"));
-    walkAct_->setCheckable(true);
-    followAct_ = make(tr("F&ollow the ladder"), {}, QStyle::SP_CustomBase,
-                      tr("Move the camera with the ladder, so a ladder that swings away stays in view"));
-    followAct_->setCheckable(true);
-    followAct_->setObjectName("followAction");
-    connect(followAct_, &QAction::toggled, this, [this](bool on) {
-        view_->setFollow(on);
-        QSettings().setValue("view/follow", on);
-    });
-    followAct_->setChecked(QSettings().value("view/follow", false).toBool());
-
-    connect(newAct_, &QAction::triggered, this, &MainWindow::newFile);
-    connect(openAct_, &QAction::triggered, this, &MainWindow::openDialog);
-    connect(saveAct_, &QAction::triggered, this, &MainWindow::save);
-    connect(saveAsAct_, &QAction::triggered, this, &MainWindow::saveAsDialog);
-    connect(revertAct_, &QAction::triggered, this, &MainWindow::revert);
-    connect(quitAct_, &QAction::triggered, this, &QWidget::close);
-    connect(playAct_, &QAction::triggered, sim_, &SimController::togglePlay);
-    connect(stepAct_, &QAction::triggered, sim_, &SimController::stepForward);
-    connect(backAct_, &QAction::triggered, sim_, &SimController::stepBack);
-    connect(restartAct_, &QAction::triggered, sim_, &SimController::restart);
-    connect(resetViewAct_, &QAction::triggered, this, [this] { view_->resetView(); });
-    connect(frameAct_, &QAction::triggered, this, [this] { view_->frameLadder(); });
-    connect(frameMotionAct_, &QAction::triggered, this, [this] {
-        if (!view_->frameMotion())
-            statusBar()->showMessage(tr("Nothing moved between the last two frames: the whole ladder is framed."),
-                                     4000);
-    });
-    connect(walkAct_, &QAction::toggled, this, [this](bool on) { view_->setWalkMode(on); });
-    connect(view_, &LadderView::walkModeChanged, walkAct_, &QAction::setChecked);
-}
-
-void MainWindow::createMenus() {
-    QMenu* file = menuBar()->addMenu(tr("&File"));
-    file->addActions({newAct_, openAct_});
-    recentMenu_ = file->addMenu(tr("Open &Recent"));
-    file->addSeparator();
-    file->addActions({saveAct_, saveAsAct_, revertAct_});
-    file->addSeparator();
-    file->addAction(quitAct_);
-    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
-    edit->addActions({undoAct_, redoAct_});
-    edit->addSeparator();
-    QAction* text =
-        edit->addAction(tr("&Title and Description..."), this, [this] { SceneTextDialog(doc_, this).exec(); });
-    text->setObjectName("sceneTextAction");
-    text->setStatusTip(tr("Edit the scene's title and description: the lesson the Lesson panel shows"));
-    QMenu* sim = menuBar()->addMenu(tr("&Simulation"));
-    sim->addActions({playAct_, stepAct_, backAct_, restartAct_});
-    sim->addSeparator();
-    sim->addAction(tr("&Design map..."), this, [this] { showDesignMap(); })->setObjectName("designMapAction");
-    viewMenu_ = menuBar()->addMenu(tr("&View"));
-    viewMenu_->addActions({resetViewAct_, frameAct_, frameMotionAct_, followAct_, walkAct_});
-    viewMenu_->addSeparator();
-    for (QDockWidget* d : findChildren<QDockWidget*>()) viewMenu_->addAction(d->toggleViewAction());
-    helpMenu_ = menuBar()->addMenu(tr("&Help"));
-    QMenu* help = helpMenu_;
-    addHelpPages(help, this);
-    QAction* controls = help->addAction(tr("&Controls"), this, [this] { showControlsSheet(this); });
-    controls->setShortcut(QKeySequence::HelpContents);
-    help->addAction(tr("&About"), this, [this] {
-        QMessageBox::about(
-            this, tr("About Jacob's Ladder Studio"),
-            tr("<b>Jacob's Ladder Studio</b> %1<p>Build, simulate and teach with a virtual Jacob's ladder.</p>")
-                .arg(QApplication::applicationVersion()));
-    });
-    updateRecentMenu();
-}
 
 void MainWindow::createToolBar() {
     QToolBar* bar = addToolBar(tr("Main"));
@@ -454,54 +333,70 @@ void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {
     }
     const double t = s->frame ? s->frame->time : 0;
     timeLabel_->setText(tr("t = %1 s  (of %2 s)").arg(t, 0, 'f', 3).arg(s->headTime, 0, 'f', 2));
+    showRunRate(*s);
+    if (s->frame) showFrameNumbers(*s->frame);
+    showStopOrNote(*s);
+    syncRecordedDrags(*s);
+}
+
+// What the run is doing: running to an instant (how far, how long left),
+// replaying, playing (at what rate), or paused (where).
+void MainWindow::showRunRate(const SimStatus& s) {
     // A long ladder can take a while to run again up to the moment an edit
     // was made at (or to an event's instant): say so, rather than "paused"
     // while the frames move on, and, once it has run a few seconds, about
     // how long it still needs.
-    if (s->seekingTo <= 0) seeking_.to = -1;
-    if (s->seekingTo > 0) {
+    if (s.seekingTo <= 0) seeking_.to = -1;
+    if (s.seekingTo > 0) {
         const auto now = std::chrono::steady_clock::now();
-        if (seeking_.to != s->seekingTo) seeking_ = {s->seekingTo, s->seekProgress, now};
-        QString done = tr("%1 %").arg(std::floor(100 * s->seekProgress), 0, 'f', 0);
+        if (seeking_.to != s.seekingTo) seeking_ = {s.seekingTo, s.seekProgress, now};
+        QString done = tr("%1 %").arg(std::floor(100 * s.seekProgress), 0, 'f', 0);
         const double wall = std::chrono::duration<double>(now - seeking_.since).count();
-        const double ran = s->seekProgress - seeking_.fromProgress;
+        const double ran = s.seekProgress - seeking_.fromProgress;
         if (wall >= kSecondsBeforeTimeLeft && ran > 0)
-            done = tr("%1, %2 left").arg(done, durationText((1 - s->seekProgress) * wall / ran));
-        rateLabel_->setText(tr("running to t = %1 s (%2)").arg(s->seekingTo, 0, 'f', 3).arg(done));
-    } else if (s->playing && s->frameIndex < s->frameCount - 1)
+            done = tr("%1, %2 left").arg(done, durationText((1 - s.seekProgress) * wall / ran));
+        rateLabel_->setText(tr("running to t = %1 s (%2)").arg(s.seekingTo, 0, 'f', 3).arg(done));
+    } else if (s.playing && s.frameIndex < s.frameCount - 1)
         // Frames recorded earlier: nothing is simulated, so no rate to measure.
-        rateLabel_->setText(tr("replaying recorded frames at %1×").arg(s->speed, 0, 'f', 2));
-    else if (s->playing)
-        rateLabel_->setText(s->realTimeFactor < 0 ? tr("playing; measuring the rate")
-                                                  : tr("%1× real time over %2 s · %3 steps/s")
-                                                        .arg(s->realTimeFactor, 0, 'f', 2)
-                                                        .arg(s->rateSpan, 0, 'f', 1)
-                                                        .arg(s->stepsPerSecond, 0, 'f', 0));
-    else if (atInstant(*s))
-        rateLabel_->setText(tr("paused between frames %1 and %2").arg(s->frameIndex).arg(s->frameIndex + 1));
+        rateLabel_->setText(tr("replaying recorded frames at %1×").arg(s.speed, 0, 'f', 2));
+    else if (s.playing)
+        rateLabel_->setText(s.realTimeFactor < 0 ? tr("playing; measuring the rate")
+                                                 : tr("%1× real time over %2 s · %3 steps/s")
+                                                       .arg(s.realTimeFactor, 0, 'f', 2)
+                                                       .arg(s.rateSpan, 0, 'f', 1)
+                                                       .arg(s.stepsPerSecond, 0, 'f', 0));
+    else if (atInstant(s))
+        rateLabel_->setText(tr("paused between frames %1 and %2").arg(s.frameIndex).arg(s.frameIndex + 1));
     else
-        rateLabel_->setText(tr("paused at frame %1 of %2").arg(s->frameIndex).arg(s->frameCount - 1));
-    if (s->frame) {
-        const jl::EnergyFrame& e = s->frame->energy;
-        energyLabel_->setText(tr("E = %1  (books %2)").arg(energyText(e.total()), energyText(e.balance())));
-        residualLabel_->setText(tr("gap %1 m").arg(s->frame->solver.residual, 0, 'e', 1));
-        const jl::SolverFrame& solver = s->frame->solver;
-        const QString step = QString::number(solver.lastStep * 1e3, 'g', 3);
-        // Before the first step there is no step to show (the engine's own
-        // is chosen at each step, from the forces of that moment).
-        if (solver.steps == 0)
-            stepLabel_->setText(tr("no step yet"));
-        else
-            stepLabel_->setText(solver.adaptiveStep    ? tr("step %1 ms (adaptive)").arg(step)
-                                : solver.automaticStep ? tr("step %1 ms (auto)").arg(step)
-                                                       : tr("step %1 ms").arg(step));
-        // A long ladder: how many of its blocks the motion has not reached.
-        const int blocks = int(s->frame->hinges.size()) + 1;
-        stillLabel_->setVisible(solver.stillFrom >= 0);
-        if (solver.stillFrom >= 0) stillLabel_->setText(tr("%L1 blocks still").arg(blocks - solver.stillFrom));
-    }
-    if (!s->failure.empty()) {
-        const QString failure = QString::fromStdString(s->failure);
+        rateLabel_->setText(tr("paused at frame %1 of %2").arg(s.frameIndex).arg(s.frameCount - 1));
+}
+
+// The frame's energy, the pins' gap, the step and the still blocks.
+void MainWindow::showFrameNumbers(const jl::Frame& f) {
+    const jl::EnergyFrame& e = f.energy;
+    energyLabel_->setText(tr("E = %1  (books %2)").arg(energyText(e.total()), energyText(e.balance())));
+    residualLabel_->setText(tr("gap %1 m").arg(f.solver.residual, 0, 'e', 1));
+    const jl::SolverFrame& solver = f.solver;
+    const QString step = QString::number(solver.lastStep * 1e3, 'g', 3);
+    // Before the first step there is no step to show (the engine's own
+    // is chosen at each step, from the forces of that moment).
+    if (solver.steps == 0)
+        stepLabel_->setText(tr("no step yet"));
+    else
+        stepLabel_->setText(solver.adaptiveStep    ? tr("step %1 ms (adaptive)").arg(step)
+                            : solver.automaticStep ? tr("step %1 ms (auto)").arg(step)
+                                                   : tr("step %1 ms").arg(step));
+    // A long ladder: how many of its blocks the motion has not reached.
+    const int blocks = int(f.hinges.size()) + 1;
+    stillLabel_->setVisible(solver.stillFrom >= 0);
+    if (solver.stillFrom >= 0) stillLabel_->setText(tr("%L1 blocks still").arg(blocks - solver.stillFrom));
+}
+
+// Why the run stopped, in red; else what is happening now (a push, the
+// events of the instant shown).
+void MainWindow::showStopOrNote(const SimStatus& s) {
+    if (!s.failure.empty()) {
+        const QString failure = QString::fromStdString(s.failure);
         warningLabel_->setStyleSheet("color: #b00020; font-weight: bold;");
         warningLabel_->setText(tr("Stopped: %1").arg(failure));
         warningLabel_->setToolTip(failure);
@@ -509,13 +404,12 @@ void MainWindow::onStatus(std::shared_ptr<const SimStatus> s) {
     } else {
         warningLabel_->setStyleSheet({});
         QString note;
-        if (s->dragging)
+        if (s.dragging)
             note = tr("Pushing a block: release the button to let go.");
-        else if (atInstant(*s))
-            note = eventsInWords(s->frame->events);
+        else if (atInstant(s))
+            note = eventsInWords(s.frame->events);
         warningLabel_->setText(note);
     }
-    syncRecordedDrags(*s);
 }
 
 // A failure says what failed, where and what to try, which is more than the

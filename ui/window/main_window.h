@@ -64,7 +64,12 @@ protected:
     void dropEvent(QDropEvent* e) override;
 
 private:
-    void createActions();
+    void createActions();  // main_window_actions.cpp, with the menus
+    void createFileActions();
+    void createUndoActions();
+    void createPlayActions();
+    void createViewActions();
+    void connectActions();
     void createMenus();
     void createToolBar();
     void createDocks();
@@ -92,6 +97,9 @@ private:
 
     void onSceneChanged(SceneChange change);
     void onStatus(std::shared_ptr<const SimStatus> s);
+    void showRunRate(const SimStatus& s);
+    void showFrameNumbers(const jl::Frame& f);
+    void showStopOrNote(const SimStatus& s);
     void syncRecordedDrags(const SimStatus& s);
     void simulateEdit(SceneChange change);
 

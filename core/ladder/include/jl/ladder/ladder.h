@@ -223,6 +223,15 @@ private:
     };
     Wrench internalWrench(const World& w, const Dynamics& d, int j, const Impact* impact) const;
     Wrench weldWrench(const World& w, const Dynamics& d, int j, const Impact* impact) const;
+    // The sums of internalWrench over the blocks first .. last (hinge_wrench.cpp).
+    bool onSide(PartId part, int first, int last) const;
+    void addSideMotion(Wrench& s, const World& w, int body, int first, int last, const Vec2& p,
+                       const Impact* impact) const;
+    void addPinsOnSide(Wrench& s, const World& w, const Eigen::VectorXd& lambda, int first, int last,
+                       const Vec2& p) const;
+    void addContactsOnSide(Wrench& s, const World& w, const Dynamics& d, const Impact* impact, int first, int last,
+                           const Vec2& p) const;
+    void addDampersOnSide(Wrench& s, const World& w, int first, int last) const;
     double foldAcceleration(const World& w, int j) const;
     double foldSense(const World& w, int j) const;
     double blockAngle(const World& w, int i) const;

@@ -12,10 +12,12 @@
 #include "jl/engine/world.h"
 #include "jl/ladder/ladder.h"
 #include "jl/scene/scene.h"
+#include "jl/sim/event_bracket.h"
 #include "jl/sim/frame.h"
 
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -27,6 +29,7 @@ namespace jl {
 
 // The full state at one instant, enough to carry on bit-identically.
 struct Snapshot;
+struct MotionStep;
 
 class Simulation {
 public:
@@ -121,7 +124,11 @@ public:
 
 private:
     explicit Simulation(const Scene& scene);
+    // Building (simulation_build.cpp).
     std::optional<std::string> buildWorld();
+    std::optional<std::string> addLadder(std::map<std::string, PartId>& named);
+    void addBodies(std::map<std::string, PartId>& named);
+    void openBooks();
     void hangStillTail();
     std::optional<std::string> belowTheFloor() const;
     void wakeThrough(int block);
@@ -129,22 +136,49 @@ private:
     void applyDueInputs();
     void applyScriptAction(const ScriptAction& a);
     std::vector<Event> grab(PartId part);  // the contacts it opened
+    std::vector<Event> pushBlock(PartId part, const ScriptAction& a);
     // A scripted join; the reason if refused (the world unchanged then).
     std::optional<std::string> join(const ScriptAction& a);
     void applyDragSample(const DragRecord& d, const DragRecord::Sample& s);
     void removeMouseSpring(const DragRecord& d);
-    // Stepping (simulation_step.cpp).
+    // Stepping (simulation_step.cpp), a step in its stages. A step as
+    // chosen before it is taken:
+    struct StepPlan {
+        double start = 0;      // s, the time the step starts at
+        double h = 0;          // s, the step to take
+        double chosen = 0;     // s, the step chosen before landing on `scheduled`
+        double scheduled = 0;  // s, the next instant a step must land on
+        bool lands = false;    // whether this step lands on it
+        bool adaptive = false;
+        double next0 = 0;  // s, the adaptive method's next step before this one
+    };
     bool takeStep(double limit);
-    bool locateEvent(double& taken, double fEnd, double forcesAtEnd);
+    StepPlan planStep(double limit);
+    void keepStepStart(bool adaptive);
+    bool blownUp(const MotionStep& m, double chosen);
+    std::optional<bool> ladderAtStepEnd(MotionStep& m, double& taken, const StepPlan& plan);
+    bool settleEvents(MotionStep& m, double& taken, double fEnd, double forces, const StepPlan& plan);
+    void retakeToDip(double dip);
+    void wakeTailIfReached(double taken);
+    // The dynamics at a step's ends, kept (simulation_step_ends.cpp).
+    const Powers* startAsLastEnd();
+    double eventFunctionsAtEnd(const MotionStep& m, double taken, double* forces);
+    Powers stepEndAsTaken(double taken);
+    // The ladder's events inside a step (simulation_events.cpp).
     double smallestEventFunction(double t, double* forces = nullptr);
     double eventFunctionsNow(double* forces);
+    bool locateEvent(double& taken, double fEnd, double forcesAtEnd);
+    void eventFunctionsAtStart();
+    EventBracket narrowAmong(const std::vector<int>& among, bool anglesOnly, EventBracket b);
+    double positionFunctions(double h);
+    EventBracket narrowContacts(const std::vector<int>& crossed, bool afterHinges, bool positionsOnly, double atStart,
+                                double atEnd, EventBracket b);
     void restoreStepStart();
     void keepBeforeChange();
     bool stopOnLadderError(double stepStart);
     bool stopAt(double stepStart, std::string why);  // a copy: restoring clears the ladder's error
     std::optional<std::string> squeezedByTheHand(double heldBefore) const;
     void emitGridFrames(double taken);
-    Powers stepEndAsTaken(double taken);
     void record(const Event& e);
     bool booksDiverged() const;
     double booksImbalance(double total) const;
