@@ -80,20 +80,25 @@ std::optional<std::string> Simulation::squeezedByTheHand(double heldBefore) cons
            "block); the state before the step is kept";
 }
 
-// Stops the run, `why`, with the state as it was at the step's start.
+// Stops the run, `why`, with the state as it was at the step's start; or,
+// when the still tail woke at the step's end with nothing kept before the
+// wake, at the step's end (before whatever came after the wake), since the
+// step's start has another structure.
 bool Simulation::stopAt(double stepStart, std::string why) {
+    const bool back = !wokeUnkept_;
+    const double keep = back ? stepStart : t_;
     std::vector<Event> earlier;
     for (const Event& e : pending_)
-        if (e.time <= stepStart) earlier.push_back(e);
+        if (e.time <= keep) earlier.push_back(e);
     if (changeKept_) restore(*beforeChange_);  // the structure, the ladder's state, no error
-    restoreStepStart();
-    t_ = stepStart;
+    if (back) restoreStepStart();
+    t_ = keep;
     world_.updateKinematics(t_);
     dynamics_.evaluate(world_, t_);
     keptStart_.forget();
     keptEnd_.forget();
-    std::erase_if(gridFrames_, [&](const Frame& f) { return f.time > stepStart; });
-    gridDoneUpTo_ = std::min(gridDoneUpTo_, stepStart);
+    std::erase_if(gridFrames_, [&](const Frame& f) { return f.time > keep; });
+    gridDoneUpTo_ = std::min(gridDoneUpTo_, keep);
     pending_ = std::move(earlier);
     fail(why);
     return false;

@@ -245,6 +245,7 @@ private:
     // storage kept from step to step (a copy, no allocation).
     std::shared_ptr<Snapshot> beforeChange_;
     bool changeKept_ = false;
+    bool wokeUnkept_ = false;  // the tail woke in this step with nothing kept before it
 };
 
 }  // namespace jl
