@@ -51,23 +51,39 @@ std::string backticked(std::string_view s) {
 }
 
 // A default outside the range stands for "left out" (the step: chosen by
-// the engine); the meaning says what happens then.
+// the engine), as does an unset optional; the meaning says what happens then.
 std::string defaultOf(double value, const Bound& b) {
     return b.contains(value) ? backticked(docNumber(value)) : "left out";
+}
+std::string defaultOf(const std::optional<double>& value, const Bound& b) {
+    return value ? defaultOf(*value, b) : "left out";
+}
+std::string defaultOf(const Point2& p, const Bound&) {
+    std::string point(1, '[');  // piece by piece, as backticked()
+    point += docNumber(p[0]);
+    point += ", ";
+    point += docNumber(p[1]);
+    point += ']';
+    return backticked(point);
 }
 
 void header(std::ostringstream& out) {
     out << "| key | type | unit | default | allowed | meaning |\n|---|---|---|---|---|---|\n";
 }
 
-// `required`: the section, when given, must give every one of them.
 template <class Section, std::size_t N>
-void numberRows(std::ostringstream& out, const NumberField<Section> (&numbers)[N], bool required = false) {
+void numberRows(std::ostringstream& out, const NumberField<Section> (&numbers)[N]) {
     const Section d{};
-    for (const NumberField<Section>& n : numbers)
-        out << "| " << backticked(n.key) << " | number | " << n.unit << " | "
-            << (required ? "*required*" : defaultOf(d.*n.member, n.range)) << " | " << allowed(n.range) << " | "
-            << n.meaning << " |\n";
+    for (const NumberField<Section>& n : numbers) {
+        const bool point = std::holds_alternative<Point2 Section::*>(n.member);
+        const std::string fallback = visitValue(n, d, [&](const auto& v) { return defaultOf(v, n.range); });
+        out << "| " << backticked(n.key) << " | "
+            << (n.is(kAngle) ? "angle"
+                : point      ? "point"
+                             : "number")
+            << " | " << n.unit << " | " << (n.is(kRequired) ? "*required*" : fallback) << " | "
+            << (point ? "each " : "") << allowed(n.range) << " | " << n.meaning << " |\n";
+    }
 }
 
 template <class E>
@@ -87,18 +103,37 @@ void wordRow(std::ostringstream& out, std::string_view key, std::span<const Word
 std::string fieldTable(std::string_view section) {
     std::ostringstream out;
     header(out);
-    if (section == "ladder.block")
+    if (section == "top")
+        numberRows(out, kSceneNumbers);
+    else if (section == "ladder.block")
         numberRows(out, kBlockNumbers);
+    else if (section == "ladder.overrides")
+        numberRows(out, kOverrideNumbers);
     else if (section == "ladder.ribbons")
         numberRows(out, kRibbonNumbers);
     else if (section == "ladder.hinges")
         numberRows(out, kHingeNumbers);
+    else if (section == "pose")
+        numberRows(out, kMotionNumbers<BlockState>);
+    else if (section == "bodies") {
+        numberRows(out, kBodyNumbers);
+        numberRows(out, kMotionNumbers<BodySpec>);
+    } else if (section == "particles")
+        numberRows(out, kParticleNumbers);
+    else if (section == "points")
+        numberRows(out, kPointRefNumbers);
+    else if (section == "springs")
+        numberRows(out, kSpringNumbers);
     else if (section == "damping")
         numberRows(out, kDampingNumbers);
+    else if (section == "script")
+        numberRows(out, kActionNumbers);
+    else if (section == "drags")
+        numberRows(out, kDragNumbers);
     else if (section == "view")
         numberRows(out, kViewNumbers);
     else if (section == "floor")
-        numberRows(out, kFloorNumbers, true);
+        numberRows(out, kFloorNumbers);
     else if (section == "solver") {
         const SolverSpec d;
         wordRow<Integrator>(out, "integrator", kIntegrators, d.integrator,

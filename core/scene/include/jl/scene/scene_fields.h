@@ -13,18 +13,34 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <variant>
 
 namespace jl {
 
-// A number of one section of the scene (SolverSpec, BlockSpec, ...).
+// A number of one section of the scene (SolverSpec, BlockSpec, ...): a
+// plain number, one that may be left out, or a point [x, y].
+enum FieldFlag : unsigned {
+    kAngle = 1,     // radians, or a number with `deg` or `rad`
+    kRequired = 2,  // the section must give it; always written
+};
 template <class Section>
 struct NumberField {
+    using Member = std::variant<double Section::*, std::optional<double> Section::*, Point2 Section::*>;
     std::string_view key;  // as in the file
-    double Section::*member;
-    std::string_view unit;  // SI, as written in the file; empty: a pure number
-    Bound range;
+    Member member;
+    std::string_view unit;     // SI, as written in the file; empty: a pure number
+    Bound range;               // of a point: of each coordinate
     std::string_view meaning;  // one line, for the docs and the forms' tips
+    unsigned flags = 0;        // FieldFlag
+    bool is(FieldFlag f) const { return (flags & f) != 0; }
 };
+
+// The value a field names in a section, as what it is (double,
+// std::optional<double> or Point2), handed to `visit`.
+template <class Section, class S, class Visit>
+decltype(auto) visitValue(const NumberField<Section>& n, S& section, Visit&& visit) {
+    return std::visit([&](auto member) -> decltype(auto) { return visit(section.*member); }, n.member);
+}
 
 // A word of a choice, with the enum value it stands for and a label for menus.
 template <class E>
@@ -35,15 +51,34 @@ struct Word {
 };
 
 // ---- numbers, section by section, in the order the writer writes them ----
+// Whole numbers (a ladder's block count, a block or hinge index, a corner)
+// are not here: their range is the ladder's own size, known only as the
+// file is read, and each is read where that is known.
+
+// The top level's numbers; `damping` (a section, below) is written between them.
+inline constexpr NumberField<Scene> kGravityField = {"gravity", &Scene::gravity, "m/s²", range::gravity,
+                                                     "the same on everything"};
+inline constexpr NumberField<Scene> kDurationField = {"duration", &Scene::duration, "s", range::duration,
+                                                      "suggested run length (the timeline; `jladder export`'s "
+                                                      "default end)"};
+inline constexpr NumberField<Scene> kSceneNumbers[] = {kGravityField, kDurationField};
 
 inline constexpr NumberField<BlockSpec> kBlockNumbers[] = {
     {"length", &BlockSpec::length, "m", range::size, "along the ladder; shared by all blocks"},
     {"thickness", &BlockSpec::thickness, "m", range::size, "in the plane, across the ladder"},
     {"width", &BlockSpec::width, "m", range::size, "out of the plane (mass, drawing)"},
     {"density", &BlockSpec::density, "kg/m³", range::density, "used when `mass` is not given"},
+    {"mass", &BlockSpec::mass, "kg", range::mass, "left out: from the density"},
 };
-// block.mass is optional (left out, it follows from the density).
-inline constexpr std::string_view kBlockMassUnit = "kg";
+
+// An override's `index` is a whole number (above); its `length` may only
+// repeat the ladder's, so it is read and checked on its own.
+inline constexpr NumberField<BlockOverride> kOverrideNumbers[] = {
+    {"thickness", &BlockOverride::thickness, "m", range::size, "left out: the ladder's"},
+    {"width", &BlockOverride::width, "m", range::size, "left out: the ladder's"},
+    {"density", &BlockOverride::density, "kg/m³", range::density, "left out: the ladder's"},
+    {"mass", &BlockOverride::mass, "kg", range::mass, "left out: from this block's density"},
+};
 
 inline constexpr NumberField<RibbonSpec> kRibbonNumbers[] = {
     {"width", &RibbonSpec::width, "m", range::ribbonSize, "each of the outer pair (ribbons are drawn only)"},
@@ -57,6 +92,68 @@ inline constexpr NumberField<HingeOptions> kHingeNumbers[] = {
     {"restitution", &HingeOptions::restitution, "", range::restitution, "bounce at LOCK/FOLD"},
     {"min_rebound_speed", &HingeOptions::minReboundSpeed, "rad/s", range::reboundSpeed, "below it an impact locks"},
 };
+
+// Where a ladder block (a pose, after its `block`) or a body is, and how it
+// moves: the same four numbers.
+template <class Section>
+inline constexpr NumberField<Section> kMotionNumbers[] = {
+    {"position", &Section::position, "m", range::coordinate, "the centre"},
+    {"angle", &Section::angle, "rad", range::angle, "counter-clockwise", kAngle},
+    {"velocity", &Section::velocity, "m/s", range::velocity, "of the centre"},
+    {"angular_velocity", &Section::angularVelocity, "rad/s", range::angularVelocity, "counter-clockwise"},
+};
+
+// A body's size and mass, before its motion (kMotionNumbers<BodySpec>).
+inline constexpr NumberField<BodySpec> kBodyNumbers[] = {
+    {"length", &BodySpec::length, "m", range::size, "along the body's local y axis"},
+    {"thickness", &BodySpec::thickness, "m", range::size, "along its local x axis"},
+    {"width", &BodySpec::width, "m", range::size, "out of the plane"},
+    {"density", &BodySpec::density, "kg/m³", range::density, "used when `mass` is not given"},
+    {"mass", &BodySpec::mass, "kg", range::mass, "left out: from the density"},
+    {"inertia", &BodySpec::inertia, "kg m²", range::inertia, "about the centre; left out: from the box"},
+};
+
+inline constexpr NumberField<ParticleSpec> kParticleNumbers[] = {
+    {"mass", &ParticleSpec::mass, "kg", range::mass, ""},
+    {"position", &ParticleSpec::position, "m", range::coordinate, ""},
+    {"velocity", &ParticleSpec::velocity, "m/s", range::velocity, ""},
+};
+
+// A point on something (after its `body`, a name).
+inline constexpr NumberField<PointRef> kPointRefNumbers[] = {
+    {"local", &PointRef::local, "m", range::coordinate, "in that thing's frame"},
+};
+
+inline constexpr NumberField<SpringSpec> kSpringNumbers[] = {
+    {"stiffness", &SpringSpec::stiffness, "N/m", range::stiffness, ""},
+    {"rest_length", &SpringSpec::restLength, "m", range::restLength, "left out: the initial distance"},
+    {"damping", &SpringSpec::damping, "N s/m", range::springDamping, "along the spring"},
+};
+
+// A script entry's time, and the numbers of its actions (a turn's `by` is
+// an angle, a move's a point: one key, two fields).
+inline constexpr NumberField<ScriptAction> kActionAt = {"at",           &ScriptAction::at,        "s",
+                                                        range::instant, "when the action starts", kRequired};
+inline constexpr NumberField<ScriptAction> kTurnBy = {
+    "by", &ScriptAction::angle, "rad", range::angle, "`turn`: the angle, counter-clockwise", kAngle | kRequired};
+inline constexpr NumberField<ScriptAction> kMoveBy = {
+    "by", &ScriptAction::offset, "m", range::coordinate, "`move`: how far the centre goes", kRequired};
+inline constexpr NumberField<ScriptAction> kActionDuration = {
+    "duration", &ScriptAction::duration, "s", range::actionDuration,
+    "`turn`, `move`: how long it takes, with a smooth profile"};
+inline constexpr NumberField<ScriptAction> kPushImpulse = {"impulse",      &ScriptAction::impulse, "N s",
+                                                           range::impulse, "`push`: the impulse",  kRequired};
+inline constexpr NumberField<ScriptAction> kPushPoint = {"point", &ScriptAction::point, "m", range::coordinate,
+                                                         "`push`: where, in the block's frame"};
+inline constexpr NumberField<ScriptAction> kActionNumbers[] = {kActionAt,       kTurnBy,      kMoveBy,
+                                                               kActionDuration, kPushImpulse, kPushPoint};
+
+// A recorded drag's numbers; its samples, [t, x, y] lists, are read on their own.
+inline constexpr NumberField<DragRecord> kDragPoint = {"point", &DragRecord::point, "m", range::coordinate,
+                                                       "the grabbed point, in the block's frame"};
+inline constexpr NumberField<DragRecord> kDragEnd = {
+    "end", &DragRecord::end, "s", range::instant, "the release, not before the last sample", kRequired};
+inline constexpr NumberField<DragRecord> kDragNumbers[] = {kDragPoint, kDragEnd};
 
 inline constexpr NumberField<Scene> kDampingNumbers[] = {
     {"linear", &Scene::linearDamping, "N s/m", range::linearDamping, "air drag on every block and body"},
@@ -80,10 +177,11 @@ inline constexpr NumberField<SolverSpec> kSolverNumbers[] = {
 
 inline constexpr NumberField<FloorSpec> kFloorNumbers[] = {
     {"height", &FloorSpec::height, "m", range::coordinate,
-     "the table top's height; every block corner starts on or above it"},
+     "the table top's height; every block corner starts on or above it", kRequired},
 };
 
 inline constexpr NumberField<ViewSpec> kViewNumbers[] = {
+    {"target", &ViewSpec::target, "m", range::coordinate, "where the camera looks, in the ladder plane"},
     {"distance", &ViewSpec::distance, "m", range::viewDistance, "from the camera to its target"},
     {"yaw", &ViewSpec::yaw, "°", range::yaw, "turn about the vertical; 0 looks at the ladder edge-on"},
     {"pitch", &ViewSpec::pitch, "°", range::pitch, "look down (+) or up (-)"},
@@ -151,8 +249,9 @@ inline std::string_view integratorWord(Integrator i) { return wordOf<Integrator>
 // Markdown table of one (key, type, unit, default, allowed, meaning). The
 // page holds each between `<!-- fields: SECTION -->` and
 // `<!-- end fields -->`; a test checks that it is current.
-inline constexpr std::string_view kDocumentedSections[] = {"ladder.block", "ladder.ribbons", "ladder.hinges", "damping",
-                                                           "solver",       "floor",          "view"};
+inline constexpr std::string_view kDocumentedSections[] = {
+    "top",    "ladder.block", "ladder.overrides", "ladder.ribbons", "ladder.hinges", "pose",  "bodies", "particles",
+    "points", "springs",      "damping",          "solver",         "script",        "drags", "floor",  "view"};
 std::string fieldTable(std::string_view section);
 // `page` with every generated table replaced by the current one.
 std::string withCurrentFieldTables(const std::string& page);
