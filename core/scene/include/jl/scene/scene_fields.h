@@ -9,6 +9,7 @@
 #include "jl/scene/scene.h"
 #include "jl/scene/scene_ranges.h"
 
+#include <cstdlib>
 #include <optional>
 #include <span>
 #include <string>
@@ -42,6 +43,15 @@ decltype(auto) visitValue(const NumberField<Section>& n, S& section, Visit&& vis
     return std::visit([&](auto member) -> decltype(auto) { return visit(section.*member); }, n.member);
 }
 
+// The row of `key` in a section's table; a key that is not there is a
+// mistake of the program's own.
+template <class Section, std::size_t N>
+const NumberField<Section>& rowOf(const NumberField<Section> (&numbers)[N], std::string_view key) {
+    for (const NumberField<Section>& n : numbers)
+        if (n.key == key) return n;
+    std::abort();
+}
+
 // A word of a choice, with the enum value it stands for and a label for menus.
 template <class E>
 struct Word {
@@ -58,38 +68,46 @@ struct Word {
 // The top level's numbers; `damping` (a section, below) is written between them.
 inline constexpr NumberField<Scene> kGravityField = {"gravity", &Scene::gravity, "m/s²", range::gravity,
                                                      "the same on everything"};
-inline constexpr NumberField<Scene> kDurationField = {"duration", &Scene::duration, "s", range::duration,
-                                                      "suggested run length (the timeline; `jladder export`'s "
-                                                      "default end)"};
+inline constexpr NumberField<Scene> kDurationField = {
+    "duration", &Scene::duration, "s", range::duration,
+    "how long the scene plays before it pauses; the timeline spans it, and it is `jladder export`'s default end"};
 inline constexpr NumberField<Scene> kSceneNumbers[] = {kGravityField, kDurationField};
 
 inline constexpr NumberField<BlockSpec> kBlockNumbers[] = {
-    {"length", &BlockSpec::length, "m", range::size, "along the ladder; shared by all blocks"},
-    {"thickness", &BlockSpec::thickness, "m", range::size, "in the plane, across the ladder"},
-    {"width", &BlockSpec::width, "m", range::size, "out of the plane (mass, drawing)"},
-    {"density", &BlockSpec::density, "kg/m³", range::density, "used when `mass` is not given"},
-    {"mass", &BlockSpec::mass, "kg", range::mass, "left out: from the density"},
+    {"length", &BlockSpec::length, "m", range::size,
+     "along the ladder; every block shares it, so the far corners meet when folded"},
+    {"thickness", &BlockSpec::thickness, "m", range::size,
+     "in the plane, across the ladder; thin blocks carry the ripple further"},
+    {"width", &BlockSpec::width, "m", range::size, "out of the plane; changes only the mass and the drawing"},
+    {"density", &BlockSpec::density, "kg/m³", range::density, "of the wood; gives the mass unless `mass` is given"},
+    {"mass", &BlockSpec::mass, "kg", range::mass, "of every block; left out, it follows from the density"},
 };
 
 // An override's `index` is a whole number (above); its `length` may only
 // repeat the ladder's, so it is read and checked on its own.
 inline constexpr NumberField<BlockOverride> kOverrideNumbers[] = {
-    {"thickness", &BlockOverride::thickness, "m", range::size, "left out: the ladder's"},
-    {"width", &BlockOverride::width, "m", range::size, "left out: the ladder's"},
-    {"density", &BlockOverride::density, "kg/m³", range::density, "left out: the ladder's"},
-    {"mass", &BlockOverride::mass, "kg", range::mass, "left out: from this block's density"},
+    {"thickness", &BlockOverride::thickness, "m", range::size,
+     "this block's, across the ladder; left out: the ladder's"},
+    {"width", &BlockOverride::width, "m", range::size, "this block's, out of the plane; left out: the ladder's"},
+    {"density", &BlockOverride::density, "kg/m³", range::density, "this block's; left out: the ladder's"},
+    {"mass", &BlockOverride::mass, "kg", range::mass,
+     "this block's, over its density; left out, it follows from the density"},
 };
 
 inline constexpr NumberField<RibbonSpec> kRibbonNumbers[] = {
-    {"width", &RibbonSpec::width, "m", range::ribbonSize, "each of the outer pair (ribbons are drawn only)"},
-    {"central_width", &RibbonSpec::centralWidth, "m", range::ribbonSize, "the middle ribbon"},
-    {"thickness", &RibbonSpec::thickness, "m", range::ribbonSize, ""},
+    {"width", &RibbonSpec::width, "m", range::ribbonSize,
+     "each of the two outer ribbons across the block faces (ribbons are drawn only)"},
+    {"central_width", &RibbonSpec::centralWidth, "m", range::ribbonSize,
+     "the middle ribbon, on the faces that do not carry the outer pair"},
+    {"thickness", &RibbonSpec::thickness, "m", range::ribbonSize, "how far the ribbons stand off the faces"},
     {"inset", &RibbonSpec::inset, "m", range::inset, "from the block's side edge to an outer ribbon"},
 };
 
 inline constexpr NumberField<HingeOptions> kHingeNumbers[] = {
-    {"damping", &HingeOptions::damping, "N m s", range::angularDamping, "viscous torque while FREE"},
-    {"restitution", &HingeOptions::restitution, "", range::restitution, "bounce at LOCK/FOLD"},
+    {"damping", &HingeOptions::damping, "N m s", range::angularDamping,
+     "viscous torque in a FREE hinge; above about 1e-5 it stops long ripples"},
+    {"restitution", &HingeOptions::restitution, "", range::restitution,
+     "bounce at LOCK/FOLD, from 0 (plastic) to just under 1"},
     {"min_rebound_speed", &HingeOptions::minReboundSpeed, "rad/s", range::reboundSpeed, "below it an impact locks"},
 };
 
@@ -170,9 +188,11 @@ inline constexpr NumberField<SolverSpec> kSolverNumbers[] = {
      "local error tolerance of the adaptive `dormand_prince45`, `verner65` and `rosenbrock_w` (below 1e-14 the "
      "rounding of the state alone exceeds it)"},
     {"projection_tolerance", &SolverSpec::projectionTolerance, "m", range::projectionTolerance,
-     "constraint residual after projection"},
-    {"event_tolerance", &SolverSpec::eventTolerance, "s", range::eventTolerance, "time accuracy of located events"},
-    {"frame_interval", &SolverSpec::frameInterval, "s", range::frameInterval, "output frames (1/60 s)"},
+     "largest gap left in a pin after the constraint projection"},
+    {"event_tolerance", &SolverSpec::eventTolerance, "s", range::eventTolerance,
+     "how precisely the time of a lock, fold or flip is located"},
+    {"frame_interval", &SolverSpec::frameInterval, "s", range::frameInterval,
+     "simulated time between recorded frames (the timeline's resolution; 1/60 s)"},
 };
 
 inline constexpr NumberField<FloorSpec> kFloorNumbers[] = {
