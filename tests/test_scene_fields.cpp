@@ -292,9 +292,12 @@ private slots:
         std::stringstream text;
         text << in.rdbuf();
         const std::string committed = text.str();
-        for (std::string_view section : kDocumentedSections)
+        for (std::string_view section : kDocumentedSections) {
             QVERIFY2(committed.find("<!-- fields: " + std::string(section) + " -->") != std::string::npos,
                      section.data());
+            const std::string table = fieldTable(section);  // a header and rows
+            QVERIFY2(std::count(table.begin(), table.end(), '\n') > 2, section.data());
+        }
         const std::string current = withCurrentFieldTables(committed);
         if (current != committed && std::getenv("JL_UPDATE_DOCS")) {
             std::ofstream(page, std::ios::binary) << current;

@@ -98,61 +98,63 @@ void wordRow(std::ostringstream& out, std::string_view key, std::span<const Word
     out << " | " << meaning << " |\n";
 }
 
+// The rows of a section, from one table of numbers or more.
+template <const auto&... numbers>
+void rowsOf(std::ostringstream& out) {
+    (numberRows(out, numbers), ...);
+}
+
+// The solver's choices, then its numbers.
+void solverRows(std::ostringstream& out) {
+    const SolverSpec d;
+    wordRow<Integrator>(out, "integrator", kIntegrators, d.integrator,
+                        "how the motion is integrated (docs/model.md section 6)");
+    wordRow<EventPolicy>(out, "events", kEventPolicies, d.events, "event policy (docs/model.md section 9)");
+    wordRow<RigidPairs>(out, "rigid_pairs", kRigidPairs, d.rigidPairs,
+                        "a locked or folded pair is one body (`merge`, fewer unknowns) or two bodies held by a pin "
+                        "and a weld (`weld`, for comparison)");
+    wordRow<StillTail>(out, "still_tail", kStillTails, d.stillTail,
+                       "the blocks of a ladder at rest that the motion has not reached hang as a few rigid "
+                       "bodies until it comes near them (`joined`, docs/model.md section 3.7: the same motion for "
+                       "much less work), or each block is its own body from the start (`separate`, the full model)");
+    wordRow<BlockContact>(out, "block_contact", kBlockContacts, d.blockContact,
+                          "a corner of a block meets the face of a block that is not its neighbour as a "
+                          "frictionless contact that only pushes (`on`, docs/model.md section 17), or blocks "
+                          "pass through one another (`off`, the paper's model)");
+    numberRows(out, kSolverNumbers);
+}
+
+// Each documented section (kDocumentedSections) and its rows.
+struct DocumentedTable {
+    std::string_view section;
+    void (*rows)(std::ostringstream&);
+};
+const DocumentedTable kTables[] = {
+    {"top", rowsOf<kSceneNumbers>},
+    {"ladder.block", rowsOf<kBlockNumbers>},
+    {"ladder.overrides", rowsOf<kOverrideNumbers>},
+    {"ladder.ribbons", rowsOf<kRibbonNumbers>},
+    {"ladder.hinges", rowsOf<kHingeNumbers>},
+    {"pose", rowsOf<kMotionNumbers<BlockState>>},
+    {"bodies", rowsOf<kBodyNumbers, kMotionNumbers<BodySpec>>},
+    {"particles", rowsOf<kParticleNumbers>},
+    {"points", rowsOf<kPointRefNumbers>},
+    {"springs", rowsOf<kSpringNumbers>},
+    {"damping", rowsOf<kDampingNumbers>},
+    {"solver", solverRows},
+    {"script", rowsOf<kActionNumbers>},
+    {"drags", rowsOf<kDragNumbers>},
+    {"floor", rowsOf<kFloorNumbers>},
+    {"view", rowsOf<kViewNumbers>},
+};
+
 }  // namespace
 
 std::string fieldTable(std::string_view section) {
     std::ostringstream out;
     header(out);
-    if (section == "top")
-        numberRows(out, kSceneNumbers);
-    else if (section == "ladder.block")
-        numberRows(out, kBlockNumbers);
-    else if (section == "ladder.overrides")
-        numberRows(out, kOverrideNumbers);
-    else if (section == "ladder.ribbons")
-        numberRows(out, kRibbonNumbers);
-    else if (section == "ladder.hinges")
-        numberRows(out, kHingeNumbers);
-    else if (section == "pose")
-        numberRows(out, kMotionNumbers<BlockState>);
-    else if (section == "bodies") {
-        numberRows(out, kBodyNumbers);
-        numberRows(out, kMotionNumbers<BodySpec>);
-    } else if (section == "particles")
-        numberRows(out, kParticleNumbers);
-    else if (section == "points")
-        numberRows(out, kPointRefNumbers);
-    else if (section == "springs")
-        numberRows(out, kSpringNumbers);
-    else if (section == "damping")
-        numberRows(out, kDampingNumbers);
-    else if (section == "script")
-        numberRows(out, kActionNumbers);
-    else if (section == "drags")
-        numberRows(out, kDragNumbers);
-    else if (section == "view")
-        numberRows(out, kViewNumbers);
-    else if (section == "floor")
-        numberRows(out, kFloorNumbers);
-    else if (section == "solver") {
-        const SolverSpec d;
-        wordRow<Integrator>(out, "integrator", kIntegrators, d.integrator,
-                            "how the motion is integrated (docs/model.md section 6)");
-        wordRow<EventPolicy>(out, "events", kEventPolicies, d.events, "event policy (docs/model.md section 9)");
-        wordRow<RigidPairs>(out, "rigid_pairs", kRigidPairs, d.rigidPairs,
-                            "a locked or folded pair is one body (`merge`, fewer unknowns) or two bodies held by a pin "
-                            "and a weld (`weld`, for comparison)");
-        wordRow<StillTail>(
-            out, "still_tail", kStillTails, d.stillTail,
-            "the blocks of a ladder at rest that the motion has not reached hang as a few rigid "
-            "bodies until it comes near them (`joined`, docs/model.md section 3.7: the same motion for "
-            "much less work), or each block is its own body from the start (`separate`, the full model)");
-        wordRow<BlockContact>(out, "block_contact", kBlockContacts, d.blockContact,
-                              "a corner of a block meets the face of a block that is not its neighbour as a "
-                              "frictionless contact that only pushes (`on`, docs/model.md section 17), or blocks "
-                              "pass through one another (`off`, the paper's model)");
-        numberRows(out, kSolverNumbers);
-    }
+    for (const DocumentedTable& t : kTables)
+        if (t.section == section) t.rows(out);
     return out.str();
 }
 
