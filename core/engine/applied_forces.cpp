@@ -1,4 +1,5 @@
-// The force laws of the applied forces that need more than a line.
+// The force laws of the applied forces that need more than a line, and
+// the energy a spring stores.
 #include "jl/engine/applied_forces.h"
 
 namespace jl {
@@ -14,6 +15,12 @@ bool springForce(const World& w, const Spring& s, Vec2& xa, Vec2& xb, Vec2& f, d
     rate = (w.particleVelocity(s.b) - w.particleVelocity(s.a)).dot(u);
     f = (s.stiffness * (len - s.restLength) + s.damping * rate) * u;
     return true;
+}
+
+double elasticEnergy(const World& w, const Spring& s) {
+    if (!w.validParticle(s.a) || !w.validParticle(s.b)) return 0;  // an absorbed end still acts
+    const double stretch = (w.particlePosition(s.b) - w.particlePosition(s.a)).norm() - s.restLength;
+    return 0.5 * s.stiffness * stretch * stretch;
 }
 
 Vec2 dragForce(const World& w, const UserDrag& g, Vec2& x, Vec2& vx) {

@@ -1,8 +1,9 @@
 // The applied forces of a world, listed once: gravity, air drag, springs,
 // rotary dampers, loads and the mouse. The dynamics sums them into the
 // bodies' forces and books their power; a locked pair's contact force is
-// found against those on one side of it (Ladder). Both walk this list, so a
-// new kind of force is added here and reaches both.
+// found against those on one side of it (Ladder); the energy books take the
+// potentials of the conservative ones. All walk these lists, so a new kind
+// of force is added here and reaches each of them.
 #pragma once
 
 #include "jl/engine/world.h"
@@ -31,10 +32,20 @@ struct AppliedForce {
 // its ends coincide (no direction). An end absorbed by combine still has its
 // own attachment at the shared point: the spring keeps acting there.
 bool springForce(const World& w, const Spring& s, Vec2& xa, Vec2& xb, Vec2& f, double& rate);
+// What one spring stores, 0.5 k (length - rest)^2 (J).
+double elasticEnergy(const World& w, const Spring& s);
 // The mouse spring of docs/model.md section 11.3 at its point x, capped.
 Vec2 dragForce(const World& w, const UserDrag& g, Vec2& x, Vec2& vx);
 // True when the world's only applied forces are the weights (World::weights()).
 bool onlyWeights(const World& w);
+
+// The potential energy of each conservative applied force but the weights
+// (whose potential goes with each body's mass: jl::energy), handed to `add`:
+// the energy books' side of the list below.
+template <class Add>
+void forEachAppliedPotential(const World& w, Add&& add) {
+    for (const jl::Spring& s : w.springs()) add(elasticEnergy(w, s));
+}
 
 // Visits the pieces of the `sources` (AppliedForce::Source bits), in a fixed
 // order: each source in turn, each element's pieces together. With `only` a
