@@ -16,7 +16,7 @@ namespace {
 template <class Section, std::size_t N>
 Bound fieldRange(const NumberField<Section> (&numbers)[N], double Section::*member) {
     for (const NumberField<Section>& n : numbers)
-        if (n.member == member) return n.range;
+        if (n.member == typename NumberField<Section>::Member(member)) return n.range;
     return Bound::any();
 }
 

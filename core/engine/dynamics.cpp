@@ -1,5 +1,6 @@
 #include "jl/engine/dynamics.h"
 
+#include "jl/engine/applied_forces.h"
 #include "jl/engine/world.h"
 #include "pin_solver.h"
 
@@ -20,8 +21,7 @@ Powers Dynamics::evaluate(World& w, double t, double within) {
     // same until the world or gravity changes, and are copied again only
     // then (on a long chain each copy is a pass over memory).
     const World& cw = w;
-    const bool weightsOnly = cw.dampedParts().empty() && cw.springs().empty() && cw.rotaryDampers().empty() &&
-                             cw.loads().empty() && cw.drags().empty();
+    const bool weightsOnly = onlyWeights(cw);
     if (!weightsOnly || weightsRevision_ != cw.revision() || weightsGravity_ != cw.gravity ||
         force_.size() != cw.q.size()) {
         accumulateForces(cw, force_, powers);

@@ -1,5 +1,6 @@
 #include "jl/engine/energy.h"
 
+#include "jl/engine/applied_forces.h"
 #include "jl/engine/world.h"
 
 namespace jl {
@@ -30,14 +31,8 @@ Energy energy(const World& w) {
             e.potential -= part.mass * w.gravity.dot(w.partPose(p).position);
         }
     }
-    for (const Spring& s : w.springs()) e.potential += elasticEnergy(w, s);
+    forEachAppliedPotential(w, [&](double u) { e.potential += u; });
     return e;
-}
-
-double elasticEnergy(const World& w, const Spring& s) {
-    if (!w.validParticle(s.a) || !w.validParticle(s.b)) return 0;  // an absorbed end still acts
-    const double stretch = (w.particlePosition(s.b) - w.particlePosition(s.a)).norm() - s.restLength;
-    return 0.5 * s.stiffness * stretch * stretch;
 }
 
 // Kinetic energy relative to the held body when exactly one body is held,

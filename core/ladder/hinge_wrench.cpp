@@ -2,6 +2,7 @@
 // other (summed over the side inside one rigid body, or what the pin and the
 // weld carry in weld mode), and its split into the pin and the normal
 // forces at the corners, against the thresholds that tell a pull.
+#include "jl/engine/applied_forces.h"
 #include "jl/ladder/ladder.h"
 
 #include <algorithm>
@@ -110,16 +111,13 @@ void Ladder::addContactsOnSide(Wrench& s, const World& w, const Dynamics& d, con
     }
 }
 
-// The ladder's rotary dampers between blocks of two bodies, on the side.
+// The rotary dampers between blocks of two bodies, on the side: applied
+// forces like those of addSideMotion, less what they supply, but summed
+// after the pins and contacts (one damper's two ends may be on the side).
 void Ladder::addDampersOnSide(Wrench& s, const World& w, int first, int last) const {
-    for (int id : dampers_) {
-        const RotaryDamper& dm = w.rotaryDampers()[size_t(id)];
-        const int ba = w.part(dm.a).body, bb = w.part(dm.b).body;
-        if (ba == bb) continue;
-        const double rel = w.v[3 * bb + 2] - w.v[3 * ba + 2];
-        if (onSide(dm.b, first, last)) s.moment += dm.damping * rel;
-        if (onSide(dm.a, first, last)) s.moment -= dm.damping * rel;
-    }
+    forEachAppliedForce(w, AppliedForce::RotaryDamper, -1, [&](const AppliedForce& a) {
+        if (onSide(a.part, first, last)) s.moment -= a.torque;
+    });
 }
 
 // Weld mode: the two blocks stay separate bodies, so the wrench is what the

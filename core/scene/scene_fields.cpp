@@ -51,23 +51,39 @@ std::string backticked(std::string_view s) {
 }
 
 // A default outside the range stands for "left out" (the step: chosen by
-// the engine); the meaning says what happens then.
+// the engine), as does an unset optional; the meaning says what happens then.
 std::string defaultOf(double value, const Bound& b) {
     return b.contains(value) ? backticked(docNumber(value)) : "left out";
+}
+std::string defaultOf(const std::optional<double>& value, const Bound& b) {
+    return value ? defaultOf(*value, b) : "left out";
+}
+std::string defaultOf(const Point2& p, const Bound&) {
+    std::string point(1, '[');  // piece by piece, as backticked()
+    point += docNumber(p[0]);
+    point += ", ";
+    point += docNumber(p[1]);
+    point += ']';
+    return backticked(point);
 }
 
 void header(std::ostringstream& out) {
     out << "| key | type | unit | default | allowed | meaning |\n|---|---|---|---|---|---|\n";
 }
 
-// `required`: the section, when given, must give every one of them.
 template <class Section, std::size_t N>
-void numberRows(std::ostringstream& out, const NumberField<Section> (&numbers)[N], bool required = false) {
+void numberRows(std::ostringstream& out, const NumberField<Section> (&numbers)[N]) {
     const Section d{};
-    for (const NumberField<Section>& n : numbers)
-        out << "| " << backticked(n.key) << " | number | " << n.unit << " | "
-            << (required ? "*required*" : defaultOf(d.*n.member, n.range)) << " | " << allowed(n.range) << " | "
-            << n.meaning << " |\n";
+    for (const NumberField<Section>& n : numbers) {
+        const bool point = std::holds_alternative<Point2 Section::*>(n.member);
+        const std::string fallback = visitValue(n, d, [&](const auto& v) { return defaultOf(v, n.range); });
+        out << "| " << backticked(n.key) << " | "
+            << (n.is(kAngle) ? "angle"
+                : point      ? "point"
+                             : "number")
+            << " | " << n.unit << " | " << (n.is(kRequired) ? "*required*" : fallback) << " | "
+            << (point ? "each " : "") << allowed(n.range) << " | " << n.meaning << " |\n";
+    }
 }
 
 template <class E>
@@ -82,42 +98,63 @@ void wordRow(std::ostringstream& out, std::string_view key, std::span<const Word
     out << " | " << meaning << " |\n";
 }
 
+// The rows of a section, from one table of numbers or more.
+template <const auto&... numbers>
+void rowsOf(std::ostringstream& out) {
+    (numberRows(out, numbers), ...);
+}
+
+// The solver's choices, then its numbers.
+void solverRows(std::ostringstream& out) {
+    const SolverSpec d;
+    wordRow<Integrator>(out, "integrator", kIntegrators, d.integrator,
+                        "how the motion is integrated (docs/model.md section 6)");
+    wordRow<EventPolicy>(out, "events", kEventPolicies, d.events, "event policy (docs/model.md section 9)");
+    wordRow<RigidPairs>(out, "rigid_pairs", kRigidPairs, d.rigidPairs,
+                        "a locked or folded pair is one body (`merge`, fewer unknowns) or two bodies held by a pin "
+                        "and a weld (`weld`, for comparison)");
+    wordRow<StillTail>(out, "still_tail", kStillTails, d.stillTail,
+                       "the blocks of a ladder at rest that the motion has not reached hang as a few rigid "
+                       "bodies until it comes near them (`joined`, docs/model.md section 3.7: the same motion for "
+                       "much less work), or each block is its own body from the start (`separate`, the full model)");
+    wordRow<BlockContact>(out, "block_contact", kBlockContacts, d.blockContact,
+                          "a corner of a block meets the face of a block that is not its neighbour as a "
+                          "frictionless contact that only pushes (`on`, docs/model.md section 17), or blocks "
+                          "pass through one another (`off`, the paper's model)");
+    numberRows(out, kSolverNumbers);
+}
+
+// Each documented section (kDocumentedSections) and its rows.
+struct DocumentedTable {
+    std::string_view section;
+    void (*rows)(std::ostringstream&);
+};
+const DocumentedTable kTables[] = {
+    {"top", rowsOf<kSceneNumbers>},
+    {"ladder.block", rowsOf<kBlockNumbers>},
+    {"ladder.overrides", rowsOf<kOverrideNumbers>},
+    {"ladder.ribbons", rowsOf<kRibbonNumbers>},
+    {"ladder.hinges", rowsOf<kHingeNumbers>},
+    {"pose", rowsOf<kMotionNumbers<BlockState>>},
+    {"bodies", rowsOf<kBodyNumbers, kMotionNumbers<BodySpec>>},
+    {"particles", rowsOf<kParticleNumbers>},
+    {"points", rowsOf<kPointRefNumbers>},
+    {"springs", rowsOf<kSpringNumbers>},
+    {"damping", rowsOf<kDampingNumbers>},
+    {"solver", solverRows},
+    {"script", rowsOf<kActionNumbers>},
+    {"drags", rowsOf<kDragNumbers>},
+    {"floor", rowsOf<kFloorNumbers>},
+    {"view", rowsOf<kViewNumbers>},
+};
+
 }  // namespace
 
 std::string fieldTable(std::string_view section) {
     std::ostringstream out;
     header(out);
-    if (section == "ladder.block")
-        numberRows(out, kBlockNumbers);
-    else if (section == "ladder.ribbons")
-        numberRows(out, kRibbonNumbers);
-    else if (section == "ladder.hinges")
-        numberRows(out, kHingeNumbers);
-    else if (section == "damping")
-        numberRows(out, kDampingNumbers);
-    else if (section == "view")
-        numberRows(out, kViewNumbers);
-    else if (section == "floor")
-        numberRows(out, kFloorNumbers, true);
-    else if (section == "solver") {
-        const SolverSpec d;
-        wordRow<Integrator>(out, "integrator", kIntegrators, d.integrator,
-                            "how the motion is integrated (docs/model.md section 6)");
-        wordRow<EventPolicy>(out, "events", kEventPolicies, d.events, "event policy (docs/model.md section 9)");
-        wordRow<RigidPairs>(out, "rigid_pairs", kRigidPairs, d.rigidPairs,
-                            "a locked or folded pair is one body (`merge`, fewer unknowns) or two bodies held by a pin "
-                            "and a weld (`weld`, for comparison)");
-        wordRow<StillTail>(
-            out, "still_tail", kStillTails, d.stillTail,
-            "the blocks of a ladder at rest that the motion has not reached hang as a few rigid "
-            "bodies until it comes near them (`joined`, docs/model.md section 3.7: the same motion for "
-            "much less work), or each block is its own body from the start (`separate`, the full model)");
-        wordRow<BlockContact>(out, "block_contact", kBlockContacts, d.blockContact,
-                              "a corner of a block meets the face of a block that is not its neighbour as a "
-                              "frictionless contact that only pushes (`on`, docs/model.md section 17), or blocks "
-                              "pass through one another (`off`, the paper's model)");
-        numberRows(out, kSolverNumbers);
-    }
+    for (const DocumentedTable& t : kTables)
+        if (t.section == section) t.rows(out);
     return out.str();
 }
 

@@ -22,24 +22,9 @@ namespace jl {
 
 namespace {
 
-// The keys of a section: its numbers from the table, then the others.
-template <class Section, std::size_t N>
-std::vector<std::string_view> keysOf(const NumberField<Section> (&numbers)[N], std::vector<std::string_view> others) {
-    std::vector<std::string_view> keys;
-    for (const NumberField<Section>& n : numbers) keys.push_back(n.key);
-    keys.insert(keys.end(), others.begin(), others.end());
-    return keys;
-}
-
-template <class Section, std::size_t N>
-void readNumbers(Fields& f, const NumberField<Section> (&numbers)[N], Section& section) {
-    for (const NumberField<Section>& n : numbers) f.number(n.key, section.*n.member, n.range);
-}
-
 void readBlockSpec(const Fields& parent, BlockSpec& block) {
-    Fields f(parent.problems(), parent.value("block"), keysOf(kBlockNumbers, {"mass", "color"}));
-    readNumbers(f, kBlockNumbers, block);
-    f.number("mass", block.mass, range::mass);
+    Fields f(parent.problems(), parent.value("block"), keysOf({}, kBlockNumbers, {"color"}));
+    f.readAll(kBlockNumbers, block);
     f.color("color", block.color);
 }
 
@@ -48,7 +33,7 @@ void readBlockSpec(const Fields& parent, BlockSpec& block) {
 void readOverrides(const Fields& parent, LadderSpec& ladder) {
     std::unordered_map<int, std::string> seen;  // index -> where
     forEachItem(parent.problems(), parent.value("overrides"), [&](const Located& item) {
-        Fields f(parent.problems(), item, {"index", "length", "thickness", "width", "density", "mass", "color"});
+        Fields f(parent.problems(), item, keysOf({"index", "length"}, kOverrideNumbers, {"color"}));
         if (!f.isMap()) return;
         BlockOverride o;
         o.index = -1;
@@ -57,31 +42,29 @@ void readOverrides(const Fields& parent, LadderSpec& ladder) {
             f.errorAt("index", "block " + std::to_string(o.index) + " already has an override (" + seen[o.index] +
                                    "); merge them");
         std::optional<double> length;
-        f.number("length", length, range::size);
+        f.number("length", length, kBlockNumbers[0].range);  // the ladder's `length`
         if (length && *length != ladder.block.length)
             f.errorAt("length", formatNumber(*length) + " differs from the ladder's block length " +
                                     formatNumber(ladder.block.length) +
                                     "; all blocks of a ladder have the same length");
-        f.number("thickness", o.thickness, range::size);
-        f.number("width", o.width, range::size);
-        f.number("density", o.density, range::density);
-        f.number("mass", o.mass, range::mass);
+        f.readAll(kOverrideNumbers, o);
         f.color("color", o.color);
         ladder.overrides.push_back(o);
     });
 }
 
 void readRibbons(const Fields& parent, RibbonSpec& ribbons) {
-    Fields f(parent.problems(), parent.value("ribbons"), keysOf(kRibbonNumbers, {"color", "central_color", "visible"}));
-    readNumbers(f, kRibbonNumbers, ribbons);
+    Fields f(parent.problems(), parent.value("ribbons"),
+             keysOf({}, kRibbonNumbers, {"color", "central_color", "visible"}));
+    f.readAll(kRibbonNumbers, ribbons);
     f.color("color", ribbons.color);
     f.color("central_color", ribbons.centralColor);
     f.flag("visible", ribbons.visible);
 }
 
 void readHinges(const Fields& parent, HingeOptions& hinges) {
-    Fields f(parent.problems(), parent.value("hinges"), keysOf(kHingeNumbers, {}));
-    readNumbers(f, kHingeNumbers, hinges);
+    Fields f(parent.problems(), parent.value("hinges"), keysOf({}, kHingeNumbers));
+    f.readAll(kHingeNumbers, hinges);
 }
 
 void readHeld(const Fields& parent, LadderSpec& ladder) {
@@ -145,32 +128,30 @@ void readFormat(Fields& f) {
 }
 
 void readDamping(const Fields& parent, Scene& scene) {
-    Fields f(parent.problems(), parent.value("damping"), keysOf(kDampingNumbers, {}));
-    readNumbers(f, kDampingNumbers, scene);
+    Fields f(parent.problems(), parent.value("damping"), keysOf({}, kDampingNumbers));
+    f.readAll(kDampingNumbers, scene);
 }
 
 void readSolver(const Fields& parent, SolverSpec& solver) {
     Fields f(parent.problems(), parent.value("solver"),
-             keysOf(kSolverNumbers, {"integrator", "events", "rigid_pairs", "still_tail", "block_contact"}));
+             keysOf({}, kSolverNumbers, {"integrator", "events", "rigid_pairs", "still_tail", "block_contact"}));
     f.choice<Integrator>("integrator", solver.integrator, kIntegrators);
     f.choice<EventPolicy>("events", solver.events, kEventPolicies);
     f.choice<RigidPairs>("rigid_pairs", solver.rigidPairs, kRigidPairs);
     f.choice<StillTail>("still_tail", solver.stillTail, kStillTails);
     f.choice<BlockContact>("block_contact", solver.blockContact, kBlockContacts);
-    readNumbers(f, kSolverNumbers, solver);
+    f.readAll(kSolverNumbers, solver);
 }
 
 void readView(const Fields& parent, ViewSpec& view) {
-    Fields f(parent.problems(), parent.value("view"), keysOf(kViewNumbers, {"target"}));
-    f.point("target", view.target, range::coordinate);
-    readNumbers(f, kViewNumbers, view);
+    Fields f(parent.problems(), parent.value("view"), keysOf({}, kViewNumbers));
+    f.readAll(kViewNumbers, view);
 }
 
 void readFloor(const Fields& parent, FloorSpec& floor) {
-    Fields f(parent.problems(), parent.value("floor"), keysOf(kFloorNumbers, {}));
+    Fields f(parent.problems(), parent.value("floor"), keysOf({}, kFloorNumbers));
     if (!f.isMap()) return;
-    f.require("height");
-    readNumbers(f, kFloorNumbers, floor);
+    f.readAll(kFloorNumbers, floor);
 }
 
 }  // namespace
@@ -192,9 +173,9 @@ std::optional<Scene> readScene(const YAML::Node& root, const LoadLimits& limits,
     if (f.has("particles")) readParticles(f.value("particles"), problems, scene.particles, names);
     if (f.has("pins")) readPins(f.value("pins"), problems, blocks, names, scene.pins);
     if (f.has("springs")) readSprings(f.value("springs"), problems, blocks, names, scene.springs);
-    f.point("gravity", scene.gravity, range::gravity);
+    f.read(kGravityField, scene);
     if (f.has("damping")) readDamping(f, scene);
-    f.number("duration", scene.duration, range::duration);
+    f.read(kDurationField, scene);
     if (f.has("solver")) readSolver(f, scene.solver);
     if (f.has("script")) readScript(f.value("script"), problems, blocks, scene.script);
     if (f.has("drags")) readDrags(f.value("drags"), problems, blocks, scene.drags);

@@ -13,19 +13,12 @@ namespace jl {
 
 namespace {
 
-void readMotion(Fields& f, Point2& position, double& angle, Point2& velocity, double& angularVelocity) {
-    f.point("position", position, range::coordinate);
-    f.angle("angle", angle, range::angle);
-    f.point("velocity", velocity, range::velocity);
-    f.number("angular_velocity", angularVelocity, range::angularVelocity);
-}
-
 BlockState readPose(const Located& item, Problems& problems, int blocks) {
-    Fields f(problems, item, {"block", "position", "angle", "velocity", "angular_velocity"});
+    Fields f(problems, item, keysOf({"block"}, kMotionNumbers<BlockState>));
     BlockState pose;
     pose.block = -1;
     if (f.require("block")) readBlockIndex(f, "block", pose.block, blocks);
-    readMotion(f, pose.position, pose.angle, pose.velocity, pose.angularVelocity);
+    f.readAll(kMotionNumbers<BlockState>, pose);
     return pose;
 }
 
@@ -74,8 +67,7 @@ void readInitial(const Located& at, Problems& problems, LadderSpec& ladder) {
         });
     if (f.has("fold_angles"))
         forEachItem(problems, f.value("fold_angles"), [&](const Located& item) {
-            if (const auto phi = readAngle(problems, item, Bound::closed(0, std::numbers::pi)))
-                initial.foldAngles.push_back(*phi);
+            if (const auto phi = readAngle(problems, item, range::foldAngle)) initial.foldAngles.push_back(*phi);
         });
     if (initial.kind == Kind::Poses) checkPoses(f, poseItems, ladder);
     if (initial.kind == Kind::FoldAngles) checkFoldAngles(f, ladder);
@@ -103,18 +95,12 @@ void readName(Fields& f, std::string& name, Names& names) {
 void readBodies(const Located& at, Problems& problems, std::vector<BodySpec>& bodies, Names& names) {
     forEachItem(problems, at, [&](const Located& item) {
         Fields f(problems, item,
-                 {"name", "length", "thickness", "width", "density", "mass", "inertia", "position", "angle", "velocity",
-                  "angular_velocity", "held", "color"});
+                 keysOf({"name"}, kBodyNumbers, keysOf({}, kMotionNumbers<BodySpec>, {"held", "color"})));
         if (!f.isMap()) return;
         BodySpec body;
         readName(f, body.name, names);
-        f.number("length", body.length, range::size);
-        f.number("thickness", body.thickness, range::size);
-        f.number("width", body.width, range::size);
-        f.number("density", body.density, range::density);
-        f.number("mass", body.mass, range::mass);
-        f.number("inertia", body.inertia, range::inertia);
-        readMotion(f, body.position, body.angle, body.velocity, body.angularVelocity);
+        f.readAll(kBodyNumbers, body);
+        f.readAll(kMotionNumbers<BodySpec>, body);
         f.flag("held", body.held);
         f.color("color", body.color);
         bodies.push_back(body);
@@ -123,13 +109,11 @@ void readBodies(const Located& at, Problems& problems, std::vector<BodySpec>& bo
 
 void readParticles(const Located& at, Problems& problems, std::vector<ParticleSpec>& particles, Names& names) {
     forEachItem(problems, at, [&](const Located& item) {
-        Fields f(problems, item, {"name", "mass", "position", "velocity"});
+        Fields f(problems, item, keysOf({"name"}, kParticleNumbers));
         if (!f.isMap()) return;
         ParticleSpec particle;
         readName(f, particle.name, names);
-        f.number("mass", particle.mass, range::mass);
-        f.point("position", particle.position, range::coordinate);
-        f.point("velocity", particle.velocity, range::velocity);
+        f.readAll(kParticleNumbers, particle);
         particles.push_back(particle);
     });
 }
@@ -160,12 +144,12 @@ void checkReference(Fields& f, const std::string& body, int blocks, const Names&
 PointRef readPointRef(Fields& parent, std::string_view key, int blocks, const Names& names) {
     PointRef ref;
     if (!parent.require(key)) return ref;
-    Fields f(parent.problems(), parent.value(key), {"body", "local"});
+    Fields f(parent.problems(), parent.value(key), keysOf({"body"}, kPointRefNumbers));
     if (f.require("body")) {
         f.text("body", ref.on, kMostNameCharacters);
         checkReference(f, ref.on, blocks, names);
     }
-    f.point("local", ref.local, range::coordinate);
+    f.readAll(kPointRefNumbers, ref);
     return ref;
 }
 
@@ -187,14 +171,12 @@ void readPins(const Located& at, Problems& problems, int blocks, const Names& na
 void readSprings(const Located& at, Problems& problems, int blocks, const Names& names,
                  std::vector<SpringSpec>& springs) {
     forEachItem(problems, at, [&](const Located& item) {
-        Fields f(problems, item, {"a", "b", "stiffness", "rest_length", "damping"});
+        Fields f(problems, item, keysOf({"a", "b"}, kSpringNumbers));
         if (!f.isMap()) return;
         SpringSpec spring;
         spring.a = readPointRef(f, "a", blocks, names);
         spring.b = readPointRef(f, "b", blocks, names);
-        f.number("stiffness", spring.stiffness, range::stiffness);
-        f.number("rest_length", spring.restLength, range::restLength);
-        f.number("damping", spring.damping, range::springDamping);
+        f.readAll(kSpringNumbers, spring);
         springs.push_back(spring);
     });
 }

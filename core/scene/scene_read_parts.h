@@ -3,6 +3,7 @@
 
 #include "jl/scene/load_limits.h"
 #include "jl/scene/scene.h"
+#include "jl/scene/scene_fields.h"
 #include "problems.h"
 #include "yaml_fields.h"
 
@@ -34,6 +35,16 @@ void forEachItem(Problems& problems, const Located& list, Visit visit) {
     if (!expectList(problems, list)) return;
     std::size_t i = 0;
     for (const YAML::Node& item : list.node) visit(locate(item, list.path + "[" + std::to_string(i++) + "]"));
+}
+
+// The keys of a section: the others it starts with, its numbers from the
+// table, then the others after them (the order did-you-mean goes by).
+template <class Section, std::size_t N>
+std::vector<std::string_view> keysOf(std::vector<std::string_view> before, const NumberField<Section> (&numbers)[N],
+                                     std::vector<std::string_view> after = {}) {
+    for (const NumberField<Section>& n : numbers) before.push_back(n.key);
+    before.insert(before.end(), after.begin(), after.end());
+    return before;
 }
 
 // A ladder block index (0..blocks-1) under `key`; says so when there is no ladder.

@@ -52,16 +52,16 @@ void readActionBody(Fields& f, ScriptAction& action, int blocks) {
     if (needsBlock && f.require("block")) readBlockIndex(f, "block", action.block, blocks);
     switch (action.kind) {
         case Kind::Turn:
-            if (f.require("by")) f.angle("by", action.angle, range::angle);
-            f.number("duration", action.duration, range::actionDuration);
+            f.read(kTurnBy, action);
+            f.read(kActionDuration, action);
             break;
         case Kind::Move:
-            if (f.require("by")) f.point("by", action.offset, range::coordinate);
-            f.number("duration", action.duration, range::actionDuration);
+            f.read(kMoveBy, action);
+            f.read(kActionDuration, action);
             break;
         case Kind::Push:
-            if (f.require("impulse")) f.point("impulse", action.impulse, range::impulse);
-            f.point("point", action.point, range::coordinate);
+            f.read(kPushImpulse, action);
+            f.read(kPushPoint, action);
             break;
         case Kind::Cut:
             if (!f.require("hinge")) break;
@@ -106,7 +106,7 @@ void readAction(const Located& item, Problems& problems, int blocks, std::vector
     Fields f(problems, item, {"at", "turn", "move", "hold", "release", "push", "cut", "join"}, kActionHelp);
     if (!f.isMap()) return;
     ScriptAction action;
-    if (f.require("at")) f.number("at", action.at, range::instant);
+    f.read(kActionAt, action);
     int found = 0;
     for (const auto& [word, kind] : kActions) {
         if (!f.has(word)) continue;
@@ -140,9 +140,9 @@ void readSamples(Fields& f, DragRecord& drag) {
             fail(problems, item, "a sample [t, x, y]");
             return;
         }
-        const auto t = readNumber(problems, locate(item.node[0], item.path + "[0]"), range::instant);
-        const auto x = readNumber(problems, locate(item.node[1], item.path + "[1]"), range::coordinate);
-        const auto y = readNumber(problems, locate(item.node[2], item.path + "[2]"), range::coordinate);
+        const auto t = readNumber(problems, locate(item.node[0], item.path + "[0]"), kDragEnd.range);
+        const auto x = readNumber(problems, locate(item.node[1], item.path + "[1]"), kDragPoint.range);
+        const auto y = readNumber(problems, locate(item.node[2], item.path + "[2]"), kDragPoint.range);
         if (!t || !x || !y) return;
         if (!drag.samples.empty() && *t < drag.samples.back().t)
             report(problems, item.mark, item.path + ": samples must be in time order");
@@ -158,9 +158,9 @@ void readDrags(const Located& at, Problems& problems, int blocks, std::vector<Dr
         if (!f.isMap()) return;
         DragRecord drag;
         if (f.require("block")) readBlockIndex(f, "block", drag.block, blocks);
-        f.point("point", drag.point, range::coordinate);
+        f.read(kDragPoint, drag);
         if (f.require("samples")) readSamples(f, drag);
-        if (f.require("end")) f.number("end", drag.end, range::instant);
+        f.read(kDragEnd, drag);
         if (!drag.samples.empty() && drag.end < drag.samples.back().t)
             f.errorAt("end", "the release comes before the last sample");
         drags.push_back(drag);

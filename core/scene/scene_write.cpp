@@ -9,6 +9,7 @@
 #include <yaml-cpp/emittermanip.h>
 
 #include <string>
+#include <variant>
 
 namespace jl {
 
@@ -33,19 +34,9 @@ public:
         out_ << YAML::Flow << YAML::BeginSeq << formatNumber(p[0]) << formatNumber(p[1]) << YAML::EndSeq;
     }
 
-    // The same, skipped when the value is the default.
-    template <class T>
-    void numberIf(std::string_view key, const T& value, const T& fallback) {
-        if (value != fallback) number(key, value);
-    }
+    // The same, skipped when the value is the default or not given.
     void number(std::string_view key, const std::optional<double>& value) {
         if (value) number(key, *value);
-    }
-    void angleIf(std::string_view key, double value, double fallback) {
-        if (value != fallback) angle(key, value);
-    }
-    void pointIf(std::string_view key, const Point2& value, const Point2& fallback) {
-        if (value != fallback) point(key, value);
     }
     void colorIf(std::string_view key, const Color& value, const Color& fallback) {
         if (value != fallback) color(key, value);
@@ -75,12 +66,32 @@ private:
     YAML::Emitter& out_;
 };
 
-// A section's numbers from the table, each only where it differs from the
-// default of a fresh section.
+// A number of the table, only where it differs from the default of a fresh
+// section (a required one always, an optional one when given).
+void writeValue(Writer& w, std::string_view key, unsigned flags, double value, double fallback) {
+    if (!(flags & kRequired) && value == fallback) return;
+    if (flags & kAngle)
+        w.angle(key, value);
+    else
+        w.number(key, value);
+}
+void writeValue(Writer& w, std::string_view key, unsigned, const std::optional<double>& value,
+                const std::optional<double>&) {
+    w.number(key, value);
+}
+void writeValue(Writer& w, std::string_view key, unsigned flags, const Point2& value, const Point2& fallback) {
+    if ((flags & kRequired) || value != fallback) w.point(key, value);
+}
+
+template <class Section>
+void writeNumber(Writer& w, const NumberField<Section>& n, const Section& section) {
+    static const Section d{};
+    std::visit([&](auto member) { writeValue(w, n.key, n.flags, section.*member, d.*member); }, n.member);
+}
+
 template <class Section, std::size_t N>
 void writeNumbers(Writer& w, const NumberField<Section> (&numbers)[N], const Section& section) {
-    const Section d{};
-    for (const NumberField<Section>& n : numbers) w.numberIf(n.key, section.*n.member, d.*n.member);
+    for (const NumberField<Section>& n : numbers) writeNumber(w, n, section);
 }
 
 void writeBlockSpec(Writer& w, const BlockSpec& block) {
@@ -89,7 +100,6 @@ void writeBlockSpec(Writer& w, const BlockSpec& block) {
     w.keyed("block");
     w.beginMap(true);
     writeNumbers(w, kBlockNumbers, block);
-    w.number("mass", block.mass);
     w.colorIf("color", block.color, d.color);
     w.endMap();
 }
@@ -101,10 +111,7 @@ void writeOverrides(Writer& w, const std::vector<BlockOverride>& overrides) {
     for (const BlockOverride& o : overrides) {
         w.beginMap(true);
         w.integer("index", o.index);
-        w.number("thickness", o.thickness);
-        w.number("width", o.width);
-        w.number("density", o.density);
-        w.number("mass", o.mass);
+        writeNumbers(w, kOverrideNumbers, o);
         if (o.color) w.color("color", *o.color);
         w.endMap();
     }
@@ -131,18 +138,10 @@ void writeRibbonsAndHinges(Writer& w, const RibbonSpec& ribbons, const HingeOpti
     }
 }
 
-// Where a block or body is and how it moves; the same four keys everywhere.
-void writeMotion(Writer& w, const Point2& position, double angle, const Point2& velocity, double angularVelocity) {
-    w.pointIf("position", position, Point2{0, 0});
-    w.angleIf("angle", angle, 0.0);
-    w.pointIf("velocity", velocity, Point2{0, 0});
-    w.numberIf("angular_velocity", angularVelocity, 0.0);
-}
-
 void writePose(Writer& w, const BlockState& pose) {
     w.beginMap(true);
     w.integer("block", pose.block);
-    writeMotion(w, pose.position, pose.angle, pose.velocity, pose.angularVelocity);
+    writeNumbers(w, kMotionNumbers<BlockState>, pose);
     w.endMap();
 }
 
@@ -189,25 +188,17 @@ void writeBody(Writer& w, const BodySpec& body) {
     const BodySpec d;
     w.beginMap();
     w.textIf("name", body.name);
-    w.numberIf("length", body.length, d.length);
-    w.numberIf("thickness", body.thickness, d.thickness);
-    w.numberIf("width", body.width, d.width);
-    w.numberIf("density", body.density, d.density);
-    w.number("mass", body.mass);
-    w.number("inertia", body.inertia);
-    writeMotion(w, body.position, body.angle, body.velocity, body.angularVelocity);
+    writeNumbers(w, kBodyNumbers, body);
+    writeNumbers(w, kMotionNumbers<BodySpec>, body);
     if (body.held) w.flag("held", true);
     w.colorIf("color", body.color, d.color);
     w.endMap();
 }
 
 void writeParticle(Writer& w, const ParticleSpec& particle) {
-    const ParticleSpec d;
     w.beginMap(true);
     w.textIf("name", particle.name);
-    w.numberIf("mass", particle.mass, d.mass);
-    w.pointIf("position", particle.position, d.position);
-    w.pointIf("velocity", particle.velocity, d.velocity);
+    writeNumbers(w, kParticleNumbers, particle);
     w.endMap();
 }
 
@@ -215,7 +206,7 @@ void writePointRef(Writer& w, std::string_view key, const PointRef& ref) {
     w.keyed(key);
     w.beginMap(true);
     w.text("body", ref.on);
-    w.pointIf("local", ref.local, Point2{0, 0});
+    writeNumbers(w, kPointRefNumbers, ref);
     w.endMap();
 }
 
@@ -232,16 +223,13 @@ void writeLinks(Writer& w, const Scene& scene) {
         w.endList();
     }
     if (scene.springs.empty()) return;
-    const SpringSpec d;
     w.keyed("springs");
     w.beginList();
     for (const SpringSpec& spring : scene.springs) {
         w.beginMap(true);
         writePointRef(w, "a", spring.a);
         writePointRef(w, "b", spring.b);
-        w.numberIf("stiffness", spring.stiffness, d.stiffness);
-        w.number("rest_length", spring.restLength);
-        w.numberIf("damping", spring.damping, d.damping);
+        writeNumbers(w, kSpringNumbers, spring);
         w.endMap();
     }
     w.endList();
@@ -264,22 +252,21 @@ void writeSolver(Writer& w, const SolverSpec& solver) {
 void writeAction(Writer& w, const ScriptAction& a) {
     using Kind = ScriptAction::Kind;
     static constexpr const char* words[] = {"turn", "move", "hold", "release", "push", "cut", "join"};
-    const ScriptAction d;
     w.beginMap(true);
-    w.number("at", a.at);
+    writeNumber(w, kActionAt, a);
     w.keyed(words[static_cast<int>(a.kind)]);
     w.beginMap(true);
     if (a.kind != Kind::Cut) w.integer("block", a.block);
     switch (a.kind) {
         case Kind::Turn:
-            w.angle("by", a.angle);
+            writeNumber(w, kTurnBy, a);
             break;
         case Kind::Move:
-            w.point("by", a.offset);
+            writeNumber(w, kMoveBy, a);
             break;
         case Kind::Push:
-            w.point("impulse", a.impulse);
-            w.pointIf("point", a.point, d.point);
+            writeNumber(w, kPushImpulse, a);
+            writeNumber(w, kPushPoint, a);
             break;
         case Kind::Cut:
             w.integer("hinge", a.hinge);
@@ -293,7 +280,7 @@ void writeAction(Writer& w, const ScriptAction& a) {
         case Kind::Release:
             break;
     }
-    if (a.kind == Kind::Turn || a.kind == Kind::Move) w.numberIf("duration", a.duration, d.duration);
+    if (a.kind == Kind::Turn || a.kind == Kind::Move) writeNumber(w, kActionDuration, a);
     w.endMap();
     w.endMap();
 }
@@ -301,8 +288,7 @@ void writeAction(Writer& w, const ScriptAction& a) {
 void writeDrag(Writer& w, const DragRecord& drag) {
     w.beginMap();
     w.integer("block", drag.block);
-    w.pointIf("point", drag.point, Point2{0, 0});
-    w.number("end", drag.end);
+    writeNumbers(w, kDragNumbers, drag);
     w.keyed("samples");
     w.beginList();
     for (const DragRecord::Sample& s : drag.samples) {
@@ -334,7 +320,7 @@ void writeFloor(Writer& w, const std::optional<FloorSpec>& floor) {
     if (!floor) return;
     w.keyed("floor");
     w.beginMap(true);
-    for (const NumberField<FloorSpec>& n : kFloorNumbers) w.number(n.key, (*floor).*n.member);
+    writeNumbers(w, kFloorNumbers, *floor);
     w.endMap();
 }
 
@@ -343,7 +329,6 @@ void writeView(Writer& w, const ViewSpec& view) {
     if (view == d) return;
     w.keyed("view");
     w.beginMap(true);
-    w.pointIf("target", view.target, d.target);
     writeNumbers(w, kViewNumbers, view);
     w.endMap();
 }
@@ -372,14 +357,14 @@ std::string sceneToYaml(const Scene& scene) {
     writeList(w, "bodies", scene.bodies, writeBody);
     writeList(w, "particles", scene.particles, writeParticle);
     writeLinks(w, scene);
-    w.pointIf("gravity", scene.gravity, d.gravity);
+    writeNumber(w, kGravityField, scene);
     if (scene.linearDamping != d.linearDamping || scene.angularDamping != d.angularDamping) {
         w.keyed("damping");
         w.beginMap(true);
         writeNumbers(w, kDampingNumbers, scene);
         w.endMap();
     }
-    w.numberIf("duration", scene.duration, d.duration);
+    writeNumber(w, kDurationField, scene);
     writeSolver(w, scene.solver);
     writeTimeline(w, scene);
     writeFloor(w, scene.floor);

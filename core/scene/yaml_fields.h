@@ -13,6 +13,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -84,6 +85,15 @@ public:
     // A word from a fixed set (jl/scene/scene_fields.h), e.g. integrator: rk4.
     template <class E>
     void choice(std::string_view key, E& out, std::span<const Word<E>> words);
+    // A number of the table (jl/scene/scene_fields.h) into its place in
+    // `section`: its key, its range, and whether it is an angle or required.
+    template <class Section>
+    void read(const NumberField<Section>& n, Section& section);
+    // Each number of a section's table, in the table's order.
+    template <class Section, std::size_t N>
+    void readAll(const NumberField<Section> (&numbers)[N], Section& section) {
+        for (const NumberField<Section>& n : numbers) read(n, section);
+    }
 
 private:
     struct Entry {
@@ -108,6 +118,19 @@ void Fields::choice(std::string_view key, E& out, std::span<const Word<E>> words
     int index = -1;
     chooseFrom(key, names, index);
     if (index >= 0) out = words[size_t(index)].value;
+}
+
+template <class Section>
+void Fields::read(const NumberField<Section>& n, Section& section) {
+    if (n.is(kRequired) && !require(n.key)) return;
+    visitValue(n, section, [&](auto& value) {
+        if constexpr (std::is_same_v<std::remove_reference_t<decltype(value)>, Point2>)
+            point(n.key, value, n.range);
+        else if constexpr (std::is_same_v<std::remove_reference_t<decltype(value)>, double>)
+            n.is(kAngle) ? angle(n.key, value, n.range) : number(n.key, value, n.range);
+        else
+            number(n.key, value, n.range);
+    });
 }
 
 // The known word closest to `word` if it is close enough to be a likely typo.

@@ -1,6 +1,7 @@
 // Building the world of a scene: its parts, pins and springs, the hand's
 // first holds, the inputs due at t = 0 and the books opened after them, and
 // the still tail of a ladder the motion has not reached yet.
+#include "jl/engine/applied_forces.h"
 #include "jl/engine/energy.h"
 #include "jl/engine/motion.h"
 #include "jl/engine/projection.h"
@@ -149,12 +150,13 @@ void Simulation::openBooks() {
     // What "small" means for the books when nothing has moved yet: every
     // part lifted by its own half size (at rest, the flows are all zero and
     // the first step's rounding, or explicit Euler's first kick, would look
-    // like a blow-up against them alone), and what the springs hold (without
-    // gravity a plucked spring is all the energy there is to flow).
+    // like a blow-up against them alone), and what the springs (the applied
+    // forces' potentials) hold: without gravity a plucked spring is all the
+    // energy there is to flow.
     energyFloor_ = 0;
     for (PartId p = 1; p < world_.partCount(); ++p)
         energyFloor_ += world_.part(p).mass * world_.gravity.norm() * (world_.part(p).halfSize.norm() + 1e-3);
-    for (const Spring& s : world_.springs()) energyFloor_ += elasticEnergy(world_, s);
+    forEachAppliedPotential(world_, [&](double u) { energyFloor_ += u; });
 }
 
 // A block corner under the table top at the start (by more than the pins'

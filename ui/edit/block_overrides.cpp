@@ -1,5 +1,6 @@
 #include "ui/edit/block_overrides.h"
 
+#include "jl/scene/scene_fields.h"
 #include "ui/edit/scene_fields.h"
 #include "ui/edit/table_cells.h"
 
@@ -17,15 +18,37 @@ namespace jl::ui {
 namespace {
 enum Column { Index, Thickness, Width, Density, Mass, Colour, Columns };
 
+// The columns of numbers: each a row of the scene's table (its unit, range
+// and meaning), with the form's short header and shown scale.
+struct NumberColumn {
+    Column column;
+    const char* header;
+    double scale;
+    const jl::NumberField<jl::BlockOverride>& row;
+    // Every number of an override may be left out.
+    template <class Override>  // const or not
+    auto& of(Override& o) const {
+        return o.*std::get<std::optional<double> jl::BlockOverride::*>(row.member);
+    }
+};
+const NumberColumn kNumbers[] = {
+    {Thickness, QT_TR_NOOP("T"), 1000, jl::rowOf(jl::kOverrideNumbers, "thickness")},
+    {Width, QT_TR_NOOP("W"), 1000, jl::rowOf(jl::kOverrideNumbers, "width")},
+    {Density, QT_TR_NOOP("ρ"), 1, jl::rowOf(jl::kOverrideNumbers, "density")},
+    {Mass, QT_TR_NOOP("m"), 1000, jl::rowOf(jl::kOverrideNumbers, "mass")},
+};
+
 // Shown value of an optional field: empty when the ladder's value applies.
 QString cell(const std::optional<double>& v, double scale) {
     return v ? QString::number(*v * scale, 'g', 6) : QString();
 }
-std::optional<double> read(const QString& text, double scale) {
+// A typed value, kept when the scene file would take it: empty or out of
+// the row's range, the ladder's value applies.
+std::optional<double> read(const QString& text, const NumberColumn& c) {
     bool ok = false;
-    const double v = text.trimmed().toDouble(&ok);
-    if (!ok || v <= 0) return std::nullopt;
-    return v / scale;
+    const double v = text.trimmed().toDouble(&ok) / c.scale;
+    if (!ok || !c.row.range.contains(v)) return std::nullopt;
+    return v;
 }
 std::optional<jl::Color> readColor(const QString& text) {
     const QColor c(text.trimmed());
@@ -39,14 +62,14 @@ BlockOverrides::BlockOverrides(Document* doc, QWidget* parent) : QWidget(parent)
     box->setContentsMargins(0, 0, 0, 0);
     table_ = new QTableWidget(0, Columns, this);
     table_->setObjectName("blockOverrides");
-    table_->setHorizontalHeaderLabels(
-        {tr("Block"), tr("T (mm)"), tr("W (mm)"), tr("ρ (kg/m³)"), tr("m (g)"), tr("Colour")});
-    const QStringList tips = {tr("Which block (0 is the top)."),
-                              tr("Thickness of this block, across the ladder."),
-                              tr("Width of this block, out of the plane."),
-                              tr("Density of this block."),
-                              tr("Mass of this block; overrides the density."),
-                              tr("Colour, as #rrggbb.")};
+    QStringList headers(Columns), tips(Columns);
+    headers[Index] = tr("Block"), tips[Index] = tr("Which block (0 is the top).");
+    headers[Colour] = tr("Colour"), tips[Colour] = tr("Colour, as #rrggbb.");
+    for (const NumberColumn& c : kNumbers) {
+        headers[c.column] = QString("%1 (%2)").arg(tr(c.header), shownUnit(c.row.unit, c.scale));
+        tips[c.column] = tipOf(c.row.meaning);
+    }
+    table_->setHorizontalHeaderLabels(headers);
     for (int c = 0; c < Columns; ++c) table_->horizontalHeaderItem(c)->setToolTip(tips[c]);
     table_->setToolTip(tr("Blocks that differ from the rest; an empty cell keeps the ladder's value."));
     table_->verticalHeader()->hide();
@@ -98,10 +121,7 @@ void BlockOverrides::commitRow(int row) {
     const bool taken =
         std::any_of(overrides.begin(), overrides.end(), [&](const auto& x) { return &x != &o && x.index == index; });
     if (ok && index >= 0 && index < doc_->scene().ladder->blocks && !taken) o.index = index;
-    o.thickness = read(text(Thickness), 1000);
-    o.width = read(text(Width), 1000);
-    o.density = read(text(Density), 1);
-    o.mass = read(text(Mass), 1000);
+    for (const NumberColumn& c : kNumbers) c.of(o) = read(text(c.column), c);
     o.color = readColor(text(Colour));
     setOverrides(std::move(overrides), tr("Change block %1").arg(o.index));
     refresh();  // shows what was kept of the typing (unchanged scene: no change signal)
@@ -114,9 +134,9 @@ void BlockOverrides::refresh() {
     for (int r = 0; r < int(overrides.size()); ++r) {
         const jl::BlockOverride& o = overrides[size_t(r)];
         const QString colour = o.color ? QColor(o.color->r, o.color->g, o.color->b).name() : QString();
-        const QString values[Columns] = {QString::number(o.index), cell(o.thickness, 1000), cell(o.width, 1000),
-                                         cell(o.density, 1),       cell(o.mass, 1000),      colour};
-        for (int c = 0; c < Columns; ++c) setCellText(table_, r, c, values[c]);
+        setCellText(table_, r, Index, QString::number(o.index));
+        for (const NumberColumn& c : kNumbers) setCellText(table_, r, c.column, cell(c.of(o), c.scale));
+        setCellText(table_, r, Colour, colour);
         table_->item(r, Colour)->setBackground(o.color ? QBrush(QColor(o.color->r, o.color->g, o.color->b)) : QBrush());
     }
 }

@@ -1,11 +1,15 @@
 #include "ui/edit/scene_fields.h"
 
 #include "jl/scene/ladder_blocks.h"
+#include "jl/scene/scene_fields.h"
 #include "jl/scene/scene_ranges.h"
 
 #include <QCoreApplication>
 
 #include <algorithm>
+#include <cmath>
+#include <tuple>
+#include <variant>
 
 namespace jl::ui {
 
@@ -13,26 +17,64 @@ namespace {
 
 QString tr(const char* s) { return QCoreApplication::translate("SceneFields", s); }
 
-// The scene files' range of a number (jl/scene/scene_ranges.h), in the
-// form's shown units: the form accepts exactly what a file may hold.
-struct Shown {
-    double min, max;
+// The form's own choices for a row: its stable name (the editor's object
+// name and the undo merge key), label, shown scale and decimals, and what
+// it adds to the row's meaning.
+struct Look {
+    QString key, label;
+    double scale = 1;
+    int decimals = 3;
+    QString note = {};
+    bool scientific = false;  // typed as 1e-8, to any precision
 };
-Shown within(jl::Bound b, double scale) { return {b.lo * scale, b.hi * scale}; }
 
-// A field of the ladder spec, read as 0 when the scene has no ladder.
-NumberField ladderNumber(QString key, QString label, QString unit, QString tip, Shown range, double scale, int decimals,
-                         std::function<double(const jl::LadderSpec&)> get,
-                         std::function<void(jl::LadderSpec&, double)> set) {
+double siOf(double v) { return v; }
+double siOf(const std::optional<double>& v) { return v.value_or(0.0); }  // 0: left out
+void setSi(double& out, double v) { out = v; }
+void setSi(std::optional<double>& out, double v) { out = v > 0 ? std::optional<double>(v) : std::nullopt; }
+
+// A number of the scene's table in a form. `where` finds its section in a
+// scene (nullptr when the scene has none: a scene without a ladder).
+template <class Section, class Where>
+NumberField fieldOf(const jl::NumberField<Section>& row, const Look& look, SceneChange change, Where where) {
     NumberField f;
-    f.key = std::move(key), f.label = std::move(label), f.unit = std::move(unit), f.tip = std::move(tip);
-    f.min = range.min, f.max = range.max, f.scale = scale, f.decimals = decimals;
-    f.change = SceneChange::Ladder;
-    f.get = [get](const jl::Scene& s) { return s.ladder ? get(*s.ladder) : 0.0; };
-    f.set = [set](jl::Scene& s, double v) {
-        if (s.ladder) set(*s.ladder, v);
+    f.key = look.key, f.label = look.label, f.scale = look.scale, f.decimals = look.decimals;
+    f.unit = shownUnit(row.unit, look.scale);
+    f.tip = tipOf(row.meaning, look.note);
+    f.scientific = look.scientific;
+    if (look.scientific)
+        f.min = row.range.lo * look.scale, f.max = row.range.hi * look.scale;
+    else
+        std::tie(f.min, f.max) = shownRange(row.range, look.scale, look.decimals);
+    f.change = change;
+    // No form edits a point as one number: only plain and optional numbers.
+    using Plain = double Section::*;
+    using Optional = std::optional<double> Section::*;
+    const auto member = row.member;
+    f.get = [where, member](const jl::Scene& s) {
+        const Section* at = where(s);
+        if (!at) return 0.0;
+        return std::holds_alternative<Plain>(member) ? siOf(at->*std::get<Plain>(member))
+                                                     : siOf(at->*std::get<Optional>(member));
+    };
+    f.set = [where, member](jl::Scene& s, double v) {
+        Section* at = where(s);
+        if (!at) return;
+        if (std::holds_alternative<Plain>(member))
+            setSi(at->*std::get<Plain>(member), v);
+        else
+            setSi(at->*std::get<Optional>(member), v);
     };
     return f;
+}
+
+// Where the ladder's sections and the solver are in a scene.
+template <class Section, Section jl::LadderSpec::*part>
+NumberField ladderNumber(const jl::NumberField<Section>& row, const Look& look) {
+    return fieldOf(row, look, SceneChange::Ladder, [](auto& s) { return s.ladder ? &((*s.ladder).*part) : nullptr; });
+}
+NumberField solverNumber(std::string_view key, const Look& look) {
+    return fieldOf(jl::rowOf(jl::kSolverNumbers, key), look, SceneChange::Solver, [](auto& s) { return &s.solver; });
 }
 
 // A number whose useful values span decades: kept to `decimals`, shown to `digits`.
@@ -41,25 +83,26 @@ NumberField significant(NumberField f, int digits) {
     return f;
 }
 
-NumberField solverNumber(QString key, QString label, QString unit, QString tip, Shown range, double scale, int decimals,
-                         bool scientific, double jl::SolverSpec::*member) {
+// The block count is a whole number, whose range is the loader's (not a
+// row of the table: jl/scene/scene_fields.h).
+NumberField blockCountField() {
     NumberField f;
-    f.key = std::move(key), f.label = std::move(label), f.unit = std::move(unit), f.tip = std::move(tip);
-    f.min = range.min, f.max = range.max, f.scale = scale, f.decimals = decimals, f.scientific = scientific;
-    f.change = SceneChange::Solver;
-    f.get = [member](const jl::Scene& s) { return s.solver.*member; };
-    f.set = [member](jl::Scene& s, double v) { s.solver.*member = v; };
+    f.key = "blocks", f.label = tr("Blocks"), f.decimals = 0;
+    f.tip = tr("How many blocks hang in the ladder; changing it rebuilds the ladder.");
+    f.min = jl::range::kFewestBlocks, f.max = jl::range::kMostBlocks;
+    f.get = [](const jl::Scene& s) { return s.ladder ? double(s.ladder->blocks) : 0.0; };
+    f.set = [](jl::Scene& s, double v) {
+        if (s.ladder) setBlockCount(*s.ladder, int(v));
+    };
     return f;
 }
 
-// The mass of every block; at 0 (not set) it follows from the density, and
+// The mass of every block; at 0 (left out) it follows from the density, and
 // the field says what that comes to rather than showing "0 g".
 NumberField blockMassField() {
-    using L = jl::LadderSpec;
-    NumberField f = ladderNumber(
-        "mass", tr("Block mass"), "g", tr("Mass of every block; 0 means computed from the density."),
-        {0, jl::range::mass.hi * 1000}, 1000, 2, [](const L& l) { return l.block.mass.value_or(0.0); },
-        [](L& l, double v) { l.block.mass = v > 0 ? std::optional<double>(v) : std::nullopt; });
+    NumberField f = ladderNumber<jl::BlockSpec, &jl::LadderSpec::block>(
+        jl::rowOf(jl::kBlockNumbers, "mass"), {"mass", tr("Block mass"), 1000, 2, tr("0 leaves it out.")});
+    f.min = 0;
     f.unset = [](const jl::Scene& s) {
         if (!s.ladder) return QString();
         jl::BlockSpec b = s.ladder->block;
@@ -72,28 +115,38 @@ NumberField blockMassField() {
 // The step: 0 lets the engine choose it (1 ms at most, within the stability
 // limit of the ladder's fastest vibration), which the field says in words.
 NumberField automaticStepField() {
-    NumberField f = solverNumber("step", tr("Time step"), "ms",
-                                 tr("Fixed step of the integrator (the first try of the adaptive one); 0: the engine "
-                                    "chooses it, at most 1 ms and short enough to stay stable on long ladders."),
-                                 {0, jl::range::step.hi * 1000}, 1000, 3, false, &jl::SolverSpec::step);
+    NumberField f = solverNumber("step", {"step", tr("Time step"), 1000, 3, tr("0: the engine chooses it.")});
+    f.min = 0;
     f.unset = [](const jl::Scene&) { return tr("automatic"); };
     return f;
 }
 
-// The scene's length: where the lesson stops playing and the timeline ends
-// (Play at the end goes on). The range's open end at 0 is the form's 1 ms.
-NumberField durationField() {
-    NumberField f;
-    f.key = "duration", f.label = tr("Duration"), f.unit = "s";
-    f.tip = tr("How long the scene plays before it pauses; the timeline spans it. Play at the end goes on.");
-    f.min = 0.001, f.max = jl::range::duration.hi, f.scale = 1, f.decimals = 3;
-    f.change = SceneChange::Duration;
-    f.get = [](const jl::Scene& s) { return s.duration; };
-    f.set = [](jl::Scene& s, double v) { s.duration = v; };
-    return f;
+}  // namespace
+
+QString shownUnit(std::string_view si, double scale) {
+    QString unit = QString::fromUtf8(si.data(), qsizetype(si.size()));
+    if (scale == 1000 && (unit == "m" || unit == "s")) return "m" + unit;
+    if (scale == 1000 && unit == "kg") return "g";
+    return unit.replace(' ', QChar(0x00B7));  // N·m·s
 }
 
-}  // namespace
+QString tipOf(std::string_view meaning, const QString& note) {
+    QString tip = QString::fromUtf8(meaning.data(), qsizetype(meaning.size())).remove('`');
+    if (!tip.isEmpty()) tip = tip.front().toUpper() + tip.mid(1) + ".";
+    if (!note.isEmpty()) tip += (tip.isEmpty() ? "" : " ") + note;
+    return tip;
+}
+
+std::pair<double, double> shownRange(const jl::Bound& range, double scale, int decimals) {
+    // Rounded inward to what the form shows: a spin box rounds its limits
+    // to its decimals, and 0.001 mm shown to one decimal would allow 0.
+    const double per = std::pow(10.0, decimals), slack = 1e-9;
+    double lo = std::ceil(range.lo * scale * per - slack) / per;
+    double hi = std::floor(range.hi * scale * per + slack) / per;
+    if (range.loOpen && lo <= range.lo * scale) lo += 1 / per;
+    if (range.hiOpen && hi >= range.hi * scale) hi -= 1 / per;
+    return {lo, hi};
+}
 
 void setBlockCount(jl::LadderSpec& ladder, int n) {
     ladder.blocks = n;
@@ -105,77 +158,44 @@ void setBlockCount(jl::LadderSpec& ladder, int n) {
 
 std::vector<NumberField> ladderNumberFields() {
     using L = jl::LadderSpec;
+    auto block = [](std::string_view key, const Look& look) {
+        return ladderNumber<jl::BlockSpec, &L::block>(jl::rowOf(jl::kBlockNumbers, key), look);
+    };
+    auto ribbon = [](std::string_view key, const Look& look) {
+        return ladderNumber<jl::RibbonSpec, &L::ribbons>(jl::rowOf(jl::kRibbonNumbers, key), look);
+    };
+    auto hinge = [](std::string_view key, const Look& look) {
+        return ladderNumber<jl::HingeOptions, &L::hinges>(jl::rowOf(jl::kHingeNumbers, key), look);
+    };
     return {
-        ladderNumber(
-            "blocks", tr("Blocks"), "", tr("How many blocks hang in the ladder; changing it rebuilds the ladder."),
-            {jl::range::kFewestBlocks, jl::range::kMostBlocks}, 1, 0, [](const L& l) { return double(l.blocks); },
-            [](L& l, double v) { setBlockCount(l, int(v)); }),
-        ladderNumber(
-            "length", tr("Block length"), "mm",
-            tr("Along the ladder; every block shares it, so the far corners meet when folded."),
-            within(jl::range::size, 1000), 1000, 1, [](const L& l) { return l.block.length; },
-            [](L& l, double v) { l.block.length = v; }),
-        ladderNumber(
-            "thickness", tr("Block thickness"), "mm",
-            tr("Across the ladder, in its plane; thin blocks carry the ripple further."), within(jl::range::size, 1000),
-            1000, 2, [](const L& l) { return l.block.thickness; }, [](L& l, double v) { l.block.thickness = v; }),
-        ladderNumber(
-            "width", tr("Block width"), "mm", tr("Out of the ladder's plane; changes only the mass and the drawing."),
-            within(jl::range::size, 1000), 1000, 1, [](const L& l) { return l.block.width; },
-            [](L& l, double v) { l.block.width = v; }),
-        ladderNumber(
-            "density", tr("Density"), "kg/m³", tr("Of the wood; gives each block's mass unless a mass is set."),
-            within(jl::range::density, 1), 1, 0, [](const L& l) { return l.block.density; },
-            [](L& l, double v) { l.block.density = v; }),
+        blockCountField(),
+        block("length", {"length", tr("Block length"), 1000, 1}),
+        block("thickness", {"thickness", tr("Block thickness"), 1000, 2}),
+        block("width", {"width", tr("Block width"), 1000, 1}),
+        block("density", {"density", tr("Density"), 1, 0}),
         blockMassField(),
-        ladderNumber(
-            "ribbonWidth", tr("Outer ribbon width"), "mm",
-            tr("Width of each of the two outer ribbons across the block faces (drawing only)."),
-            within(jl::range::ribbonSize, 1000), 1000, 1, [](const L& l) { return l.ribbons.width; },
-            [](L& l, double v) { l.ribbons.width = v; }),
-        ladderNumber(
-            "ribbonCentralWidth", tr("Middle ribbon width"), "mm",
-            tr("Width of the middle ribbon, on the faces that do not carry the outer pair (drawing only)."),
-            within(jl::range::ribbonSize, 1000), 1000, 1, [](const L& l) { return l.ribbons.centralWidth; },
-            [](L& l, double v) { l.ribbons.centralWidth = v; }),
-        ladderNumber(
-            "ribbonThickness", tr("Ribbon thickness"), "mm",
-            tr("How far the ribbons stand off the faces (drawing only)."), within(jl::range::ribbonSize, 1000), 1000, 2,
-            [](const L& l) { return l.ribbons.thickness; }, [](L& l, double v) { l.ribbons.thickness = v; }),
-        ladderNumber(
-            "ribbonInset", tr("Ribbon inset"), "mm", tr("From a block's edge to an outer ribbon (drawing only)."),
-            within(jl::range::inset, 1000), 1000, 1, [](const L& l) { return l.ribbons.inset; },
-            [](L& l, double v) { l.ribbons.inset = v; }),
-        significant(ladderNumber(
-                        "damping", tr("Hinge damping"), "N·m·s",
-                        tr("Viscous torque in free hinges; above about 1e-5 it stops long ripples."),
-                        within(jl::range::angularDamping, 1), 1, 9, [](const L& l) { return l.hinges.damping; },
-                        [](L& l, double v) { l.hinges.damping = v; }),
-                    3),
-        ladderNumber(
-            "restitution", tr("Restitution"), "", tr("Bounce at a lock or fold, 0 (plastic) to just under 1."),
-            within(jl::range::restitution, 1), 1, 3, [](const L& l) { return l.hinges.restitution; },
-            [](L& l, double v) { l.hinges.restitution = v; }),
+        ribbon("width", {"ribbonWidth", tr("Outer ribbon width"), 1000, 1}),
+        ribbon("central_width", {"ribbonCentralWidth", tr("Middle ribbon width"), 1000, 1}),
+        ribbon("thickness", {"ribbonThickness", tr("Ribbon thickness"), 1000, 2}),
+        ribbon("inset", {"ribbonInset", tr("Ribbon inset"), 1000, 1}),
+        significant(hinge("damping", {"damping", tr("Hinge damping"), 1, 9}), 3),
+        hinge("restitution", {"restitution", tr("Restitution"), 1, 3}),
     };
 }
 
 std::vector<NumberField> solverNumberFields() {
-    using S = jl::SolverSpec;
+    // The scene's length: where the lesson stops playing and the timeline
+    // ends (Play at the end goes on).
+    NumberField duration =
+        fieldOf(jl::kDurationField, {"duration", tr("Duration"), 1, 3, tr("Play at the end goes on.")},
+                SceneChange::Duration, [](auto& s) { return &s; });
     return {
-        durationField(),
+        duration,
         automaticStepField(),
-        solverNumber("tolerance", tr("Error tolerance"), "",
-                     tr("Local error allowed per step by the adaptive integrator."), within(jl::range::tolerance, 1), 1,
-                     0, true, &S::tolerance),
-        solverNumber("projectionTolerance", tr("Pin tolerance"), "m",
-                     tr("Largest gap left in a pin after the constraint projection."),
-                     within(jl::range::projectionTolerance, 1), 1, 0, true, &S::projectionTolerance),
-        solverNumber("eventTolerance", tr("Event tolerance"), "s",
-                     tr("How precisely the time of a lock, fold or flip is located."),
-                     within(jl::range::eventTolerance, 1), 1, 0, true, &S::eventTolerance),
-        solverNumber("frameInterval", tr("Frame interval"), "ms",
-                     tr("Simulated time between recorded frames (the timeline's resolution)."),
-                     within(jl::range::frameInterval, 1000), 1000, 2, false, &S::frameInterval),
+        solverNumber("tolerance", {"tolerance", tr("Error tolerance"), 1, 0, {}, true}),
+        solverNumber("projection_tolerance", {"projectionTolerance", tr("Pin tolerance"), 1, 0, {}, true}),
+        solverNumber("event_tolerance", {"eventTolerance", tr("Event tolerance"), 1, 0, {}, true}),
+        solverNumber("frame_interval", {"frameInterval", tr("Frame interval"), 1000, 2}),
     };
 }
 

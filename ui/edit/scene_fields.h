@@ -1,13 +1,18 @@
-// The editable numbers of a scene with their units and one-line descriptions:
-// the metadata that drives the generic value forms of the Ladder and Simulation docks.
+// The editable numbers of a scene as the Ladder and Simulation docks show
+// them: each built from its row of the scene's table (jl/scene/scene_fields.h:
+// unit, range, meaning) and the form's own choices (label, shown scale,
+// decimals, what a sentinel 0 means).
 #pragma once
 
+#include "jl/scene/bound.h"
 #include "jl/scene/scene.h"
 #include "ui/edit/change_value.h"
 
 #include <QString>
 
 #include <functional>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 namespace jl::ui {
@@ -31,6 +36,15 @@ struct NumberField {
 };
 
 std::vector<NumberField> ladderNumberFields();
+// The unit a form shows for a row's SI unit at a scale (shown = SI * scale):
+// "mm" for "m" at 1000, "N·m·s" for "N m s" at 1.
+QString shownUnit(std::string_view si, double scale);
+// A row's meaning as a tooltip: a sentence, without the page's backticks,
+// and what the form adds (`note`).
+QString tipOf(std::string_view meaning, const QString& note = {});
+// The range a form allows for a row's at a scale and number of decimals:
+// rounded inward to the decimals, an open end moved in by one step.
+std::pair<double, double> shownRange(const jl::Bound& range, double scale, int decimals);
 std::vector<NumberField> solverNumberFields();  // the Simulation panel's: the scene's duration, then the solver's
 
 // The whole sub-spec is what an edit stores, so side effects (dropping

@@ -1,6 +1,8 @@
 #include "ui/edit/script_panel.h"
 
+#include "jl/scene/scene_fields.h"
 #include "ui/edit/change_value.h"
+#include "ui/edit/scene_fields.h"
 #include "ui/edit/table_cells.h"
 
 #include <QComboBox>
@@ -26,6 +28,9 @@ SceneField<std::vector<jl::ScriptAction>> scriptField(UndoId id = UndoId::Script
             [](jl::Scene& s, const std::vector<jl::ScriptAction>& v) { s.script = v; }};
 }
 
+// A typed time brought into its row's (closed) range, as a file may hold it.
+double within(double v, const jl::Bound& range) { return std::clamp(v, range.lo, range.hi); }
+
 QString pair(const jl::Point2& p, double scale) {
     return QString("%1, %2").arg(p[0] * scale, 0, 'g', 6).arg(p[1] * scale, 0, 'g', 6);
 }
@@ -40,9 +45,9 @@ QString amountText(const jl::ScriptAction& a) {
         case Kind::Turn:
             return QString::number(a.angle * 180 / std::numbers::pi, 'g', 6) + "°";
         case Kind::Move:
-            return pair(a.offset, 1000) + " mm";
+            return pair(a.offset, 1000) + " " + shownUnit(jl::kMoveBy.unit, 1000);
         case Kind::Push:
-            return pair(a.impulse, 1) + " N·s";
+            return pair(a.impulse, 1) + " " + shownUnit(jl::kPushImpulse.unit, 1);
         case Kind::Cut:
             return QObject::tr("hinge %1").arg(a.hinge);
         case Kind::Join:
@@ -83,15 +88,19 @@ ScriptPanel::ScriptPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_
     auto* box = new QVBoxLayout(this);
     table_ = new QTableWidget(0, Columns, this);
     table_->setObjectName("script");
-    table_->setHorizontalHeaderLabels({tr("At (s)"), tr("Action"), tr("Block"), tr("Amount"), tr("Duration (s)")});
-    table_->horizontalHeaderItem(At)->setToolTip(tr("When the action starts, in simulated seconds."));
+    // The times are rows of the scene's table: their units and meanings.
+    auto timed = [](const QString& label, const jl::NumberField<jl::ScriptAction>& row) {
+        return QString("%1 (%2)").arg(label, shownUnit(row.unit, 1));
+    };
+    table_->setHorizontalHeaderLabels({timed(tr("At"), jl::kActionAt), tr("Action"), tr("Block"), tr("Amount"),
+                                       timed(tr("Duration"), jl::kActionDuration)});
+    table_->horizontalHeaderItem(At)->setToolTip(tipOf(jl::kActionAt.meaning));
     table_->horizontalHeaderItem(Action)->setToolTip(
         tr("Turn or move a held block, hold or release one, push, cut a hinge, join two blocks."));
     table_->horizontalHeaderItem(Block)->setToolTip(tr("The block acted on (0 is the top)."));
     table_->horizontalHeaderItem(Amount)->setToolTip(
         tr("Turn: degrees, counter-clockwise. Move: mm. Push: N·s. Cut: hinge. Join: block, corners."));
-    table_->horizontalHeaderItem(Duration)->setToolTip(
-        tr("How long a turn or move takes; the motion starts and ends smoothly."));
+    table_->horizontalHeaderItem(Duration)->setToolTip(tipOf(jl::kActionDuration.meaning));
     table_->horizontalHeader()->setStretchLastSection(true);
     table_->verticalHeader()->hide();
     box->addWidget(table_);
@@ -145,11 +154,11 @@ void ScriptPanel::commitRow(int row) {
     if (row < 0 || row >= int(script.size())) return;
     jl::ScriptAction& a = script[size_t(row)];
     auto text = [&](int col) { return table_->item(row, col) ? table_->item(row, col)->text() : QString(); };
-    a.at = std::max(0.0, text(At).toDouble());
+    a.at = within(text(At).toDouble(), jl::kActionAt.range);
     a.block = std::max(0, text(Block).toInt());
     if (auto* combo = qobject_cast<QComboBox*>(table_->cellWidget(row, Action))) a.kind = Kind(combo->currentIndex());
     readAmount(a, text(Amount));
-    a.duration = std::max(0.0, text(Duration).toDouble());
+    a.duration = within(text(Duration).toDouble(), jl::kActionDuration.range);
     setScript(std::move(script), tr("Edit script action"));
 }
 

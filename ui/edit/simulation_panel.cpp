@@ -1,7 +1,6 @@
 #include "ui/edit/simulation_panel.h"
 
 #include "jl/scene/scene_fields.h"
-#include "jl/scene/scene_ranges.h"
 #include "jl/sim/simulation.h"
 #include "ui/edit/change_value.h"
 #include "ui/edit/scene_fields.h"
@@ -122,19 +121,21 @@ QComboBox* SimulationPanel::addChoice(std::span<const jl::Word<E>> words, E jl::
 // The table top (docs/model.md section 17.8): checked, one is put just
 // under the ladder; its height is then a field. Each is one undoable edit.
 void SimulationPanel::addTableTop() {
-    const QString tip =
-        tr("A level table top at this height: block corners strike it and rest on it "
-           "(whatever \"Blocks touch\" says). Every corner must start on or above it.");
+    const jl::NumberField<jl::FloorSpec>& height = jl::rowOf(jl::kFloorNumbers, "height");
+    const QString tip = tipOf(height.meaning, tr("Block corners strike it and rest on it, whatever \"Blocks touch\" "
+                                                 "says; the box puts one just under the ladder."));
     table_ = new QCheckBox(this);
     table_->setObjectName("floor");
     table_->setToolTip(tip);
     tableHeight_ = new QDoubleSpinBox(this);
     tableHeight_->setObjectName("floor.height");
-    // One tenth of a millimetre under the lowest height a scene may give:
-    // the minimum, which reads "none".
-    tableHeight_->setRange(jl::range::coordinate.lo * 1000 - 0.1, jl::range::coordinate.hi * 1000);
-    tableHeight_->setDecimals(1);
-    tableHeight_->setSuffix(" mm");
+    // One step under the lowest height a scene may give: the minimum, which
+    // reads "none".
+    const int decimals = 1;
+    const auto [lowest, highest] = shownRange(height.range, 1000, decimals);
+    tableHeight_->setRange(lowest - std::pow(10.0, -decimals), highest);
+    tableHeight_->setDecimals(decimals);
+    tableHeight_->setSuffix(" " + shownUnit(height.unit, 1000));
     tableHeight_->setSpecialValueText(tr("none"));  // shown at the minimum, where no table is
     tableHeight_->setKeyboardTracking(false);
     tableHeight_->setToolTip(tip);

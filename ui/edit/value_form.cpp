@@ -45,7 +45,9 @@ ValueForm::ValueForm(Document* doc, std::vector<NumberField> fields, QWidget* pa
         editor->setObjectName(f.key);
         editor->setToolTip(f.tip);
         editor->installEventFilter(this);
-        auto* label = new QLabel(f.label, this);
+        // A number typed as 1e-8 has no suffix: its label says the unit.
+        const bool unitInLabel = f.scientific && !f.unit.isEmpty();
+        auto* label = new QLabel(unitInLabel ? QString("%1 (%2)").arg(f.label, f.unit) : f.label, this);
         label->setToolTip(f.tip);
         label->setBuddy(editor);
         form_->addRow(label, editor);

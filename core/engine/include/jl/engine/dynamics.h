@@ -83,7 +83,7 @@ private:
 // origin) and the held, user and damping powers of those forces.
 void accumulateForces(const World& w, Eigen::VectorXd& force, Powers& powers);
 
-// The applied forces on one part alone (gravity, air damping, springs,
+// The applied forces (jl/engine/applied_forces.h) on one part alone (gravity, air damping, springs,
 // loads, the mouse; not the rotary dampers, which act between parts), as a
 // force and a moment about the point `about`: one side of a locked pair is
 // held by its contact against these (Ladder's contact forces).

@@ -8,7 +8,6 @@
 namespace jl {
 
 class World;
-struct Spring;
 
 struct Energy {
     double kinetic = 0;    // J
@@ -17,9 +16,6 @@ struct Energy {
 };
 
 Energy energy(const World& w);
-
-// What one spring stores, 0.5 k (length - rest)^2 (J).
-double elasticEnergy(const World& w, const Spring& s);
 
 // Kinetic energy relative to the held body when exactly one body is held,
 // else the plain kinetic energy: in that frame a plastic impact never

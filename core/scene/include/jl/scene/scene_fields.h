@@ -9,22 +9,48 @@
 #include "jl/scene/scene.h"
 #include "jl/scene/scene_ranges.h"
 
+#include <cstdlib>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <variant>
 
 namespace jl {
 
-// A number of one section of the scene (SolverSpec, BlockSpec, ...).
+// A number of one section of the scene (SolverSpec, BlockSpec, ...): a
+// plain number, one that may be left out, or a point [x, y].
+enum FieldFlag : unsigned {
+    kAngle = 1,     // radians, or a number with `deg` or `rad`
+    kRequired = 2,  // the section must give it; always written
+};
 template <class Section>
 struct NumberField {
+    using Member = std::variant<double Section::*, std::optional<double> Section::*, Point2 Section::*>;
     std::string_view key;  // as in the file
-    double Section::*member;
-    std::string_view unit;  // SI, as written in the file; empty: a pure number
-    Bound range;
+    Member member;
+    std::string_view unit;     // SI, as written in the file; empty: a pure number
+    Bound range;               // of a point: of each coordinate
     std::string_view meaning;  // one line, for the docs and the forms' tips
+    unsigned flags = 0;        // FieldFlag
+    bool is(FieldFlag f) const { return (flags & f) != 0; }
 };
+
+// The value a field names in a section, as what it is (double,
+// std::optional<double> or Point2), handed to `visit`.
+template <class Section, class S, class Visit>
+decltype(auto) visitValue(const NumberField<Section>& n, S& section, Visit&& visit) {
+    return std::visit([&](auto member) -> decltype(auto) { return visit(section.*member); }, n.member);
+}
+
+// The row of `key` in a section's table; a key that is not there is a
+// mistake of the program's own.
+template <class Section, std::size_t N>
+const NumberField<Section>& rowOf(const NumberField<Section> (&numbers)[N], std::string_view key) {
+    for (const NumberField<Section>& n : numbers)
+        if (n.key == key) return n;
+    std::abort();
+}
 
 // A word of a choice, with the enum value it stands for and a label for menus.
 template <class E>
@@ -35,28 +61,117 @@ struct Word {
 };
 
 // ---- numbers, section by section, in the order the writer writes them ----
+// Whole numbers (a ladder's block count, a block or hinge index, a corner)
+// are not here: their range is the ladder's own size, known only as the
+// file is read, and each is read where that is known.
+
+// The top level's numbers; `damping` (a section, below) is written between them.
+inline constexpr NumberField<Scene> kGravityField = {"gravity", &Scene::gravity, "m/s²", range::gravity,
+                                                     "the same on everything"};
+inline constexpr NumberField<Scene> kDurationField = {
+    "duration", &Scene::duration, "s", range::duration,
+    "how long the scene plays before it pauses; the timeline spans it, and it is `jladder export`'s default end"};
+inline constexpr NumberField<Scene> kSceneNumbers[] = {kGravityField, kDurationField};
 
 inline constexpr NumberField<BlockSpec> kBlockNumbers[] = {
-    {"length", &BlockSpec::length, "m", range::size, "along the ladder; shared by all blocks"},
-    {"thickness", &BlockSpec::thickness, "m", range::size, "in the plane, across the ladder"},
-    {"width", &BlockSpec::width, "m", range::size, "out of the plane (mass, drawing)"},
-    {"density", &BlockSpec::density, "kg/m³", range::density, "used when `mass` is not given"},
+    {"length", &BlockSpec::length, "m", range::size,
+     "along the ladder; every block shares it, so the far corners meet when folded"},
+    {"thickness", &BlockSpec::thickness, "m", range::size,
+     "in the plane, across the ladder; thin blocks carry the ripple further"},
+    {"width", &BlockSpec::width, "m", range::size, "out of the plane; changes only the mass and the drawing"},
+    {"density", &BlockSpec::density, "kg/m³", range::density, "of the wood; gives the mass unless `mass` is given"},
+    {"mass", &BlockSpec::mass, "kg", range::mass, "of every block; left out, it follows from the density"},
 };
-// block.mass is optional (left out, it follows from the density).
-inline constexpr std::string_view kBlockMassUnit = "kg";
+
+// An override's `index` is a whole number (above); its `length` may only
+// repeat the ladder's, so it is read and checked on its own.
+inline constexpr NumberField<BlockOverride> kOverrideNumbers[] = {
+    {"thickness", &BlockOverride::thickness, "m", range::size,
+     "this block's, across the ladder; left out: the ladder's"},
+    {"width", &BlockOverride::width, "m", range::size, "this block's, out of the plane; left out: the ladder's"},
+    {"density", &BlockOverride::density, "kg/m³", range::density, "this block's; left out: the ladder's"},
+    {"mass", &BlockOverride::mass, "kg", range::mass,
+     "this block's, over its density; left out, it follows from the density"},
+};
 
 inline constexpr NumberField<RibbonSpec> kRibbonNumbers[] = {
-    {"width", &RibbonSpec::width, "m", range::ribbonSize, "each of the outer pair (ribbons are drawn only)"},
-    {"central_width", &RibbonSpec::centralWidth, "m", range::ribbonSize, "the middle ribbon"},
-    {"thickness", &RibbonSpec::thickness, "m", range::ribbonSize, ""},
+    {"width", &RibbonSpec::width, "m", range::ribbonSize,
+     "each of the two outer ribbons across the block faces (ribbons are drawn only)"},
+    {"central_width", &RibbonSpec::centralWidth, "m", range::ribbonSize,
+     "the middle ribbon, on the faces that do not carry the outer pair"},
+    {"thickness", &RibbonSpec::thickness, "m", range::ribbonSize, "how far the ribbons stand off the faces"},
     {"inset", &RibbonSpec::inset, "m", range::inset, "from the block's side edge to an outer ribbon"},
 };
 
 inline constexpr NumberField<HingeOptions> kHingeNumbers[] = {
-    {"damping", &HingeOptions::damping, "N m s", range::angularDamping, "viscous torque while FREE"},
-    {"restitution", &HingeOptions::restitution, "", range::restitution, "bounce at LOCK/FOLD"},
+    {"damping", &HingeOptions::damping, "N m s", range::angularDamping,
+     "viscous torque in a FREE hinge; above about 1e-5 it stops long ripples"},
+    {"restitution", &HingeOptions::restitution, "", range::restitution,
+     "bounce at LOCK/FOLD, from 0 (plastic) to just under 1"},
     {"min_rebound_speed", &HingeOptions::minReboundSpeed, "rad/s", range::reboundSpeed, "below it an impact locks"},
 };
+
+// Where a ladder block (a pose, after its `block`) or a body is, and how it
+// moves: the same four numbers.
+template <class Section>
+inline constexpr NumberField<Section> kMotionNumbers[] = {
+    {"position", &Section::position, "m", range::coordinate, "the centre"},
+    {"angle", &Section::angle, "rad", range::angle, "counter-clockwise", kAngle},
+    {"velocity", &Section::velocity, "m/s", range::velocity, "of the centre"},
+    {"angular_velocity", &Section::angularVelocity, "rad/s", range::angularVelocity, "counter-clockwise"},
+};
+
+// A body's size and mass, before its motion (kMotionNumbers<BodySpec>).
+inline constexpr NumberField<BodySpec> kBodyNumbers[] = {
+    {"length", &BodySpec::length, "m", range::size, "along the body's local y axis"},
+    {"thickness", &BodySpec::thickness, "m", range::size, "along its local x axis"},
+    {"width", &BodySpec::width, "m", range::size, "out of the plane"},
+    {"density", &BodySpec::density, "kg/m³", range::density, "used when `mass` is not given"},
+    {"mass", &BodySpec::mass, "kg", range::mass, "left out: from the density"},
+    {"inertia", &BodySpec::inertia, "kg m²", range::inertia, "about the centre; left out: from the box"},
+};
+
+inline constexpr NumberField<ParticleSpec> kParticleNumbers[] = {
+    {"mass", &ParticleSpec::mass, "kg", range::mass, ""},
+    {"position", &ParticleSpec::position, "m", range::coordinate, ""},
+    {"velocity", &ParticleSpec::velocity, "m/s", range::velocity, ""},
+};
+
+// A point on something (after its `body`, a name).
+inline constexpr NumberField<PointRef> kPointRefNumbers[] = {
+    {"local", &PointRef::local, "m", range::coordinate, "in that thing's frame"},
+};
+
+inline constexpr NumberField<SpringSpec> kSpringNumbers[] = {
+    {"stiffness", &SpringSpec::stiffness, "N/m", range::stiffness, ""},
+    {"rest_length", &SpringSpec::restLength, "m", range::restLength, "left out: the initial distance"},
+    {"damping", &SpringSpec::damping, "N s/m", range::springDamping, "along the spring"},
+};
+
+// A script entry's time, and the numbers of its actions (a turn's `by` is
+// an angle, a move's a point: one key, two fields).
+inline constexpr NumberField<ScriptAction> kActionAt = {"at",           &ScriptAction::at,        "s",
+                                                        range::instant, "when the action starts", kRequired};
+inline constexpr NumberField<ScriptAction> kTurnBy = {
+    "by", &ScriptAction::angle, "rad", range::angle, "`turn`: the angle, counter-clockwise", kAngle | kRequired};
+inline constexpr NumberField<ScriptAction> kMoveBy = {
+    "by", &ScriptAction::offset, "m", range::coordinate, "`move`: how far the centre goes", kRequired};
+inline constexpr NumberField<ScriptAction> kActionDuration = {
+    "duration", &ScriptAction::duration, "s", range::actionDuration,
+    "`turn`, `move`: how long it takes, with a smooth profile"};
+inline constexpr NumberField<ScriptAction> kPushImpulse = {"impulse",      &ScriptAction::impulse, "N s",
+                                                           range::impulse, "`push`: the impulse",  kRequired};
+inline constexpr NumberField<ScriptAction> kPushPoint = {"point", &ScriptAction::point, "m", range::coordinate,
+                                                         "`push`: where, in the block's frame"};
+inline constexpr NumberField<ScriptAction> kActionNumbers[] = {kActionAt,       kTurnBy,      kMoveBy,
+                                                               kActionDuration, kPushImpulse, kPushPoint};
+
+// A recorded drag's numbers; its samples, [t, x, y] lists, are read on their own.
+inline constexpr NumberField<DragRecord> kDragPoint = {"point", &DragRecord::point, "m", range::coordinate,
+                                                       "the grabbed point, in the block's frame"};
+inline constexpr NumberField<DragRecord> kDragEnd = {
+    "end", &DragRecord::end, "s", range::instant, "the release, not before the last sample", kRequired};
+inline constexpr NumberField<DragRecord> kDragNumbers[] = {kDragPoint, kDragEnd};
 
 inline constexpr NumberField<Scene> kDampingNumbers[] = {
     {"linear", &Scene::linearDamping, "N s/m", range::linearDamping, "air drag on every block and body"},
@@ -73,17 +188,20 @@ inline constexpr NumberField<SolverSpec> kSolverNumbers[] = {
      "local error tolerance of the adaptive `dormand_prince45`, `verner65` and `rosenbrock_w` (below 1e-14 the "
      "rounding of the state alone exceeds it)"},
     {"projection_tolerance", &SolverSpec::projectionTolerance, "m", range::projectionTolerance,
-     "constraint residual after projection"},
-    {"event_tolerance", &SolverSpec::eventTolerance, "s", range::eventTolerance, "time accuracy of located events"},
-    {"frame_interval", &SolverSpec::frameInterval, "s", range::frameInterval, "output frames (1/60 s)"},
+     "largest gap left in a pin after the constraint projection"},
+    {"event_tolerance", &SolverSpec::eventTolerance, "s", range::eventTolerance,
+     "how precisely the time of a lock, fold or flip is located"},
+    {"frame_interval", &SolverSpec::frameInterval, "s", range::frameInterval,
+     "simulated time between recorded frames (the timeline's resolution; 1/60 s)"},
 };
 
 inline constexpr NumberField<FloorSpec> kFloorNumbers[] = {
     {"height", &FloorSpec::height, "m", range::coordinate,
-     "the table top's height; every block corner starts on or above it"},
+     "the table top's height; every block corner starts on or above it", kRequired},
 };
 
 inline constexpr NumberField<ViewSpec> kViewNumbers[] = {
+    {"target", &ViewSpec::target, "m", range::coordinate, "where the camera looks, in the ladder plane"},
     {"distance", &ViewSpec::distance, "m", range::viewDistance, "from the camera to its target"},
     {"yaw", &ViewSpec::yaw, "°", range::yaw, "turn about the vertical; 0 looks at the ladder edge-on"},
     {"pitch", &ViewSpec::pitch, "°", range::pitch, "look down (+) or up (-)"},
@@ -151,8 +269,9 @@ inline std::string_view integratorWord(Integrator i) { return wordOf<Integrator>
 // Markdown table of one (key, type, unit, default, allowed, meaning). The
 // page holds each between `<!-- fields: SECTION -->` and
 // `<!-- end fields -->`; a test checks that it is current.
-inline constexpr std::string_view kDocumentedSections[] = {"ladder.block", "ladder.ribbons", "ladder.hinges", "damping",
-                                                           "solver",       "floor",          "view"};
+inline constexpr std::string_view kDocumentedSections[] = {
+    "top",    "ladder.block", "ladder.overrides", "ladder.ribbons", "ladder.hinges", "pose",  "bodies", "particles",
+    "points", "springs",      "damping",          "solver",         "script",        "drags", "floor",  "view"};
 std::string fieldTable(std::string_view section);
 // `page` with every generated table replaced by the current one.
 std::string withCurrentFieldTables(const std::string& page);
