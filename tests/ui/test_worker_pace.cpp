@@ -37,6 +37,33 @@ long long voluntarySleeps(const std::string& name) {
     return -1;
 }
 
+// The classic design with `blocks` blocks played at `speed` from t = 0.3 s
+// (past the still start) for 1.5 s of wall time: the frames the controller
+// handed the window (statuses with a new frame), per wall second.
+double framesShownPerSecond(int blocks, double speed) {
+    jl::SceneLoad load = jl::loadScene(std::string(JL_SOURCE_DIR) + "/examples/classic.yaml");
+    if (!load.scene) return -1;
+    load.scene->ladder->blocks = blocks;
+    load.scene->duration = 60;
+    SimController sim;
+    sim.load(*load.scene);
+    sim.seek(0.3);
+    if (!jl::test::waitForStatus(&sim, [](const SimStatus& s) { return s.frame && s.frame->time >= 0.3; })) return -1;
+    sim.setSpeed(speed);
+    sim.play();
+    if (!jl::test::waitForStatus(&sim, [](const SimStatus& s) { return s.playing; })) return -1;
+    QTest::qWait(300);
+    int shown = 0;
+    const jl::Frame* last = nullptr;
+    QObject::connect(&sim, &SimController::statusChanged, [&](auto s) {
+        if (s->frame && s->frame.get() != last) ++shown, last = s->frame.get();
+    });
+    QElapsedTimer wall;
+    wall.start();
+    QTest::qWait(1500);
+    return shown / (double(wall.elapsed()) / 1000);
+}
+
 }  // namespace
 
 class WorkerPaceTest : public QObject {
@@ -81,6 +108,20 @@ private slots:
         // at every catch-up given up (before: 26 and 27 times in these 2 s,
         // playing at 0.64x and 0.66x; after: 0 times, at 1.08x).
         QVERIFY2(sleeps <= 5, qPrintable(QString("the worker slept %1 times while behind").arg(sleeps)));
+    }
+
+    void aRunBehindTheClockIsShownEveryOtherDisplayInterval() {
+        // 1,000 blocks at four times real time, into the ripple: the engine
+        // makes about 150 frames a wall second, more than the window looks
+        // at (every 16 ms), and trails the clock all along.
+        const double behind = framesShownPerSecond(1000, 4.0);
+        // 6 blocks at real time: on time, every frame shown.
+        const double onTime = framesShownPerSecond(6, 1.0);
+        qInfo("frames shown per wall second: %.1f behind the clock, %.1f on time", behind, onTime);
+        // Every other look while behind: at most 31 a second (before, every
+        // look took the newest frame: about 60 a second, as on time).
+        QVERIFY2(behind < 40, qPrintable(QString("%1 frames a second shown while behind").arg(behind)));
+        QVERIFY2(onTime > 45, qPrintable(QString("%1 frames a second shown on time").arg(onTime)));
     }
 
     void aStallBehindTheClockIsMadeGoodUpToATenthOfASecond() {

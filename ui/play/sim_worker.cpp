@@ -363,7 +363,13 @@ void SimWorker::advancePaced() {
     // user). Given up whole, a stall of a tenth of a second cost the run a
     // tenth for good: a 1,000-block ladder the engine runs at twice real
     // time played at 0.95x in the window.
-    paceSim_ -= lagGivenUp(desired - cursor_ * dt);
+    const double lag = desired - cursor_ * dt;
+    paceSim_ -= lagGivenUp(lag);
+    // Told the window, which then draws fewer frames (draw_pace.h).
+    if (const double behind = std::clamp(lag, 0.0, kCatchUp); behind != behind_) {
+        behind_ = behind;
+        dirty_ = true;
+    }
 }
 
 void SimWorker::fail(const std::string& why) {
@@ -432,6 +438,7 @@ void SimWorker::publish() {
     s->realTimeFactor = realTimeFactor_;
     s->stepsPerSecond = stepsPerSecond_;
     s->rateSpan = rateSpan_;
+    s->behind = playing_ ? behind_ : 0;
     s->headHash = headHash_;
     s->failure = failure_;
     s->serial = ++serial_;

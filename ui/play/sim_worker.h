@@ -190,6 +190,7 @@ private:
     // Pacing: simulated time paceSim_ was on screen at wall time paceWall_.
     double paceSim_ = 0;
     Clock::time_point paceWall_;
+    double behind_ = 0;  // s the frame on screen trailed the clock at the last advance (SimStatus::behind)
     // Rates over the last seconds of playing, from the frame on screen;
     // replaying recorded frames is a stretch apart from simulating them.
     RateWindow rate_;
