@@ -15,6 +15,7 @@
 #include <QThread>
 #include <QtTest>
 
+#include <algorithm>
 #include <map>
 #include <string>
 
@@ -38,7 +39,26 @@ jl::Scene classicWith(int blocks) {
 class LongLadderTiming : public QObject {
     Q_OBJECT
 private slots:
-    void initTestCase() { jl::test::isolateSettings(); }
+    void initTestCase() {
+        jl::test::isolateSettings();
+        renderThreadsGiven_ = qEnvironmentVariableIsSet("LP_NUM_THREADS");
+    }
+
+    // Software OpenGL draws on all cores but one (ladder_view.cpp): with
+    // llvmpipe's two threads on two cores, the simulation thread of the
+    // 1,000-block row below lost its core to them at every frame.
+    void theRendererLeavesACoreToTheSimulation() {
+        if (renderThreadsGiven_) QSKIP("LP_NUM_THREADS is set by the environment");
+        MainWindow window(jl::test::quietWindow());
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QTest::qWait(500);  // the first frames drawn
+        int threads = 0;
+        for (const QString& tid : jl::test::threadIds()) threads += jl::test::threadName(tid) == "llvmpipe" ? 1 : 0;
+        if (threads == 0) QSKIP("not drawn by llvmpipe");
+        QVERIFY2(threads <= std::max(1, QThread::idealThreadCount() - 1),
+                 qPrintable(QString("%1 llvmpipe threads on %2 cores").arg(threads).arg(QThread::idealThreadCount())));
+    }
 
     void theWindowAnswersAtOnceWhileALongLadderPlays_data() {
         QTest::addColumn<int>("blocks");
@@ -120,6 +140,9 @@ private slots:
                  qPrintable(QString("the event loop stalled for %1 ms").arg(probe.worst)));
         QVERIFY2(pauseMs < kLongestStallMs, qPrintable(QString("the pause waited %1 ms").arg(pauseMs)));
     }
+
+private:
+    bool renderThreadsGiven_ = false;  // LP_NUM_THREADS set before the program set it
 };
 
 QTEST_MAIN(LongLadderTiming)
