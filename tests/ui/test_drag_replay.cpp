@@ -157,6 +157,37 @@ private slots:
         QVERIFY(d.samples.front().t >= t12 && d.samples.front().t < t12 + 0.001 + 1e-12);
         QCOMPARE(engineHashAt(*s->recorded, 40), s->headHash);
     }
+
+    // Playing on time, the worker has made frames ahead of the one on
+    // screen and keeps them back (sim_worker_ahead.cpp): a push in the
+    // frame the worker is at starts from the run as recorded up to it,
+    // and the recorded scene replays the run it makes. (With the head
+    // simulation left ahead, the run stopped: the frame it asked for was
+    // behind it.)
+    void aPushWhilePlayingReplaysBitIdentically() {
+        jl::Scene scene = jl::test::swingingLadder();
+        scene.duration = 60;
+        Fixture f(scene);
+        f.sim->play();
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.playing && s.frameIndex >= 20; }));
+        const jl::Vec2 centre = f.sim->status()->frame->poses[3].position;
+        f.sim->beginDrag(centre, 3, jl::Vec2::Zero());
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return s.dragging; }));
+        QTest::qWait(200);
+        f.sim->moveDrag(centre + jl::Vec2(0.05, 0.02));
+        QTest::qWait(200);
+        f.sim->endDrag();
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return !s.dragging; }));
+        QVERIFY(jl::test::waitForStatus(f.sim,
+                                        [](const SimStatus& s) { return s.frameIndex >= 70 || !s.failure.empty(); }));
+        f.sim->pause();
+        QVERIFY(jl::test::waitForStatus(f.sim, [](const SimStatus& s) { return !s.playing; }));
+        const auto s = f.sim->status();
+        QVERIFY2(s->failure.empty(), s->failure.c_str());
+        QCOMPARE(int(s->recorded->drags.size()), 1);
+        QCOMPARE(engineHashAt(*s->recorded, s->frameCount - 1), s->headHash);
+        QVERIFY(samePoses(*s->frame, engineFrameAt(*s->recorded, s->frameIndex)));
+    }
 };
 
 QTEST_MAIN(DragReplayTest)

@@ -15,6 +15,7 @@
 #include <QThread>
 #include <QtTest>
 
+#include <algorithm>
 #include <map>
 #include <string>
 
@@ -38,7 +39,26 @@ jl::Scene classicWith(int blocks) {
 class LongLadderTiming : public QObject {
     Q_OBJECT
 private slots:
-    void initTestCase() { jl::test::isolateSettings(); }
+    void initTestCase() {
+        jl::test::isolateSettings();
+        renderThreadsGiven_ = qEnvironmentVariableIsSet("LP_NUM_THREADS");
+    }
+
+    // Software OpenGL draws on all cores but one (ladder_view.cpp): with
+    // llvmpipe's two threads on two cores, the simulation thread of the
+    // 1,000-block row below lost its core to them at every frame.
+    void theRendererLeavesACoreToTheSimulation() {
+        if (renderThreadsGiven_) QSKIP("LP_NUM_THREADS is set by the environment");
+        MainWindow window(jl::test::quietWindow());
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QTest::qWait(500);  // the first frames drawn
+        int threads = 0;
+        for (const QString& tid : jl::test::threadIds()) threads += jl::test::threadName(tid) == "llvmpipe" ? 1 : 0;
+        if (threads == 0) QSKIP("not drawn by llvmpipe");
+        QVERIFY2(threads <= std::max(1, QThread::idealThreadCount() - 1),
+                 qPrintable(QString("%1 llvmpipe threads on %2 cores").arg(threads).arg(QThread::idealThreadCount())));
+    }
 
     void theWindowAnswersAtOnceWhileALongLadderPlays_data() {
         QTest::addColumn<int>("blocks");
@@ -60,17 +80,27 @@ private slots:
         QVERIFY(jl::test::waitForStatus(sim, [](const SimStatus& s) { return s.playing && s.frameIndex > 0; }));
 
         jl::test::EventLoopProbe probe;
+        // Frames handed to the views: each one the 3-D view draws.
+        int framesShown = 0;
+        const jl::Frame* lastShown = nullptr;
+        const auto counting = connect(sim, &SimController::statusChanged, this, [&](auto st) {
+            if (st->frame && st->frame.get() != lastShown) ++framesShown, lastShown = st->frame.get();
+        });
         const auto cpuBefore = jl::test::threadSeconds();
+        const auto waitBefore = jl::test::threadWaits();
         const double simBefore = sim->status()->frame->time;
         probe.start();
         // The last 2 s on their own too: the span the status bar's factor covers.
         QTest::qWait(4000);
         const double simAt4 = sim->status()->frame->time;
         const qint64 wallAt4 = probe.clock.elapsed();
+        const auto cpuAt4 = jl::test::threadSeconds();
         QTest::qWait(2000);
         probe.stop();
+        disconnect(counting);
         const double wall = double(probe.clock.elapsed()) / 1000;
         const auto cpuAfter = jl::test::threadSeconds();
+        const auto waitAfter = jl::test::threadWaits();
         const auto s = sim->status();
 
         // A click on Pause while it plays: from the click's event to the
@@ -85,14 +115,24 @@ private slots:
         const double lastTwo = (s->frame->time - simAt4) / (double(probe.clock.elapsed() - wallAt4) / 1000);
         qInfo(
             "%d blocks: simulated %.3f s (from t = %.3f s) in %.2f s wall (%.3fx; the last 2 s %.3fx; the status bar "
-            "said %.2fx over %.1f s); longest gap between UI ticks %lld ms (%.0f ms waiting for a processor not "
-            "counted); pause took effect after %lld ms",
-            blocks, simulated, simBefore, wall, simulated / wall, lastTwo, s->realTimeFactor, s->rateSpan, probe.worst,
-            probe.queued, pauseMs);
+            "said %.2fx over %.1f s); %d frames shown; longest gap between UI ticks %lld ms (%.0f ms waiting for a "
+            "processor not counted); pause took effect after %lld ms",
+            blocks, simulated, simBefore, wall, simulated / wall, lastTwo, s->realTimeFactor, s->rateSpan, framesShown,
+            probe.worst, probe.queued, pauseMs);
+        // Each thread's share, and the time it waited for a processor: a
+        // simulation thread that falls behind either waits on a run queue
+        // (the other threads have the cores) or runs short of its work.
+        const auto since = [](const std::map<std::string, double>& from, const std::string& name, double now) {
+            return now - (from.count(name) ? from.at(name) : 0.0);
+        };
         for (const auto& [name, seconds] : cpuAfter) {
-            const double used = seconds - (cpuBefore.count(name) ? cpuBefore.at(name) : 0.0);
+            const double used = since(cpuBefore, name, seconds);
+            const double waited = waitAfter.count(name) ? since(waitBefore, name, waitAfter.at(name)) : 0.0;
             if (used > 0.005)
-                qInfo("  thread %-16s %6.2f CPU s (%.2f per simulated s)", name.c_str(), used, used / simulated);
+                qInfo(
+                    "  thread %-16s %6.2f CPU s (%.2f per simulated s; the last 2 s %.2f), waited %.2f s for a "
+                    "processor",
+                    name.c_str(), used, used / simulated, since(cpuAt4, name, seconds), waited);
         }
         for (const auto& [at, gap] : probe.gaps) qInfo("  gap of %lld ms ending at %lld ms", gap, at);
         QVERIFY(simulated > 0);
@@ -100,6 +140,9 @@ private slots:
                  qPrintable(QString("the event loop stalled for %1 ms").arg(probe.worst)));
         QVERIFY2(pauseMs < kLongestStallMs, qPrintable(QString("the pause waited %1 ms").arg(pauseMs)));
     }
+
+private:
+    bool renderThreadsGiven_ = false;  // LP_NUM_THREADS set before the program set it
 };
 
 QTEST_MAIN(LongLadderTiming)

@@ -1,5 +1,6 @@
 #include "ui/play/sim_controller.h"
 
+#include "ui/play/draw_pace.h"
 #include "ui/play/sim_worker.h"
 
 #include <QThread>
@@ -66,6 +67,11 @@ std::shared_ptr<const SimStatus> SimController::status() const { return worker_-
 void SimController::poll() {
     auto s = worker_->status();
     if (shown_ && s->serial == shown_->serial) return;
+    // A run behind the clock: every other look, the processor to the simulation.
+    if (shown_ && !drawNow(s->playing, s->behind, s->interval, double(sinceShown_.nsecsElapsed()) / 1e9,
+                           poll_.interval() / 1000.0))
+        return;
+    sinceShown_.start();
     shown_ = std::move(s);
     emit statusChanged(shown_);
     if (shown_->newFrames) worker_->taken(shown_->firstNewFrame + shown_->newFrames->size());

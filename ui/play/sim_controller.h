@@ -6,6 +6,7 @@
 #include "jl/scene/scene.h"
 #include "ui/play/sim_status.h"
 
+#include <QElapsedTimer>
 #include <QObject>
 #include <QTimer>
 
@@ -63,6 +64,7 @@ private:
     QThread* thread_ = nullptr;
     QTimer poll_;
     std::shared_ptr<const SimStatus> shown_;
+    QElapsedTimer sinceShown_;  // since shown_ was taken (draw_pace.h)
 };
 
 }  // namespace jl::ui

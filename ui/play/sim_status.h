@@ -32,6 +32,9 @@ struct SimStatus {
     double realTimeFactor = -1;
     double stepsPerSecond = -1;
     double rateSpan = 0;
+    // While playing, s of simulated time the frame on screen trails the
+    // clock by (up to kCatchUp, which the run makes good); 0 on time.
+    double behind = 0;
     std::uint64_t headHash = 0;  // Simulation::stateHash() at the head
     std::string failure;         // non-empty: the run stopped and says why
     // Every frame the run made that the window has not taken yet, in time

@@ -77,7 +77,9 @@ void SimWorker::run() {
         {
             std::unique_lock lock(queueMutex_);
             if (queue_.empty()) {
-                const double wait = playing_ ? nextFrameWaitSeconds() : framesWanted_ > 0 ? 0.0 : 0.1;
+                const double wait = playing_            ? (canWorkAhead() ? 0.0 : nextFrameWaitSeconds())
+                                    : framesWanted_ > 0 ? 0.0
+                                                        : 0.1;
                 if (wait > 0)
                     wake_.wait_for(lock, std::chrono::duration<double>(wait), [this] { return !queue_.empty(); });
             }
@@ -120,6 +122,14 @@ void SimWorker::apply(const SimCommand& c) {
                           !std::is_same_v<T, cmd::Duration> && !std::is_same_v<T, cmd::DragMove> &&
                           !std::is_same_v<T, cmd::DragEnd>)
                 rate_.restart();
+            // The head simulation is the one on record again before a command can reach it.
+            if constexpr (!std::is_same_v<T, cmd::Speed> && !std::is_same_v<T, cmd::Budget> &&
+                          !std::is_same_v<T, cmd::Duration> && !std::is_same_v<T, cmd::Pause> &&
+                          !std::is_same_v<T, cmd::Play> && !std::is_same_v<T, cmd::DragMove> &&
+                          !std::is_same_v<T, cmd::DragEnd> && !std::is_same_v<T, cmd::Seek> &&
+                          !std::is_same_v<T, cmd::StepForward> && !std::is_same_v<T, cmd::StepBack> &&
+                          !std::is_same_v<T, cmd::Restart>)
+                rewindAhead();
             if constexpr (std::is_same_v<T, cmd::Load> || std::is_same_v<T, cmd::Seek> ||
                           std::is_same_v<T, cmd::ShowInstant> || std::is_same_v<T, cmd::DragBegin> ||
                           std::is_same_v<T, cmd::Recall>) {
@@ -363,7 +373,14 @@ void SimWorker::advancePaced() {
     // user). Given up whole, a stall of a tenth of a second cost the run a
     // tenth for good: a 1,000-block ladder the engine runs at twice real
     // time played at 0.95x in the window.
-    paceSim_ -= lagGivenUp(desired - cursor_ * dt);
+    if ((cursor_ + 1) * dt > desired + 1e-9) workAhead(start);
+    const double lag = desired - cursor_ * dt;
+    paceSim_ -= lagGivenUp(lag);
+    // Told the window, which then draws fewer frames (draw_pace.h).
+    if (const double behind = std::clamp(lag, 0.0, kCatchUp); behind != behind_) {
+        behind_ = behind;
+        dirty_ = true;
+    }
 }
 
 void SimWorker::fail(const std::string& why) {
@@ -432,6 +449,7 @@ void SimWorker::publish() {
     s->realTimeFactor = realTimeFactor_;
     s->stepsPerSecond = stepsPerSecond_;
     s->rateSpan = rateSpan_;
+    s->behind = playing_ ? behind_ : 0;
     s->headHash = headHash_;
     s->failure = failure_;
     s->serial = ++serial_;

@@ -120,6 +120,22 @@ private:
     int restoreKeyframeFor(jl::Simulation& sim, int index);
     jl::FrameGrid frameGrid() const { return {0.0, history_.interval()}; }
     bool simulateNextFrame();
+    // Frames made ahead of the clock and kept back (sim_worker_ahead.cpp).
+    static constexpr std::size_t kAheadFrames = 15;  // 0.25 s at 60 frames a second
+    static constexpr std::size_t kAheadBlockFrames = 150000;
+    struct AheadGroup {
+        std::vector<FramePtr> frames;                           // in order, their events attached
+        std::vector<std::shared_ptr<const jl::Snapshot>> keys;  // each one's keyframe, or null
+        std::shared_ptr<const jl::Snapshot> after;              // the head simulation after them
+        std::vector<jl::Event> carried;                         // events after the last of them
+        std::uint64_t hash = 0;
+    };
+    int framesAhead() const;
+    bool makeAhead();
+    void releaseAhead();
+    void rewindAhead();
+    bool canWorkAhead() const;
+    void workAhead(Clock::time_point start);
     bool simulateTo(int index);
     void showFrame(int index);
     std::shared_ptr<const jl::Frame> regenerate(int index);
@@ -174,6 +190,14 @@ private:
     // Events the head simulation has recorded after the last frame it gave:
     // they go with the next frame (its time is not earlier than theirs).
     std::vector<jl::Event> carried_;
+    // Kept back, oldest first; the head simulation at the history's head
+    // (and its carried events) while it is past it; no more made ahead
+    // until it is put back.
+    std::deque<AheadGroup> ahead_;
+    std::shared_ptr<const jl::Snapshot> aheadFrom_;
+    std::vector<jl::Event> aheadCarried_;
+    bool aheadMidFrame_ = false;
+    bool aheadStopped_ = false;
     // Frames appended to the history and not yet taken by the window; the
     // first is number feedFirst_ (SimStatus::newFrames).
     void feed(std::shared_ptr<const jl::Frame> f);
@@ -190,6 +214,7 @@ private:
     // Pacing: simulated time paceSim_ was on screen at wall time paceWall_.
     double paceSim_ = 0;
     Clock::time_point paceWall_;
+    double behind_ = 0;  // s the frame on screen trailed the clock at the last advance (SimStatus::behind)
     // Rates over the last seconds of playing, from the frame on screen;
     // replaying recorded frames is a stretch apart from simulating them.
     RateWindow rate_;

@@ -68,6 +68,11 @@ bool SimWorker::simulateNextFrame() {
         playing_ = false;
         return false;
     }
+    if (!ahead_.empty()) {
+        releaseAhead();
+        return true;
+    }
+    rewindAhead();
     const int next = history_.count();
     FramePtr first;
     midFrame_ = true;

@@ -13,6 +13,7 @@
 #include <QKeyEvent>
 #include <QMenu>
 #include <QMouseEvent>
+#include <QThread>
 #include <QToolTip>
 #include <QWheelEvent>
 #include <Qt3DExtras/QForwardRenderer>
@@ -42,9 +43,22 @@ void addBox(std::vector<QVector3D>& corners, const jl::Pose& pose, float across,
 void addCorners(std::vector<QVector3D>& corners, const jl::Pose& pose, const BlockShape& shape) {
     addBox(corners, pose, shape.across, shape.along, shape.out);
 }
+// Software OpenGL (Mesa's llvmpipe) rasterises with a thread per core, all
+// woken at every frame: on two cores they took the simulation thread's core
+// as often as the other one, and a 1,000-block ladder, whose engine needs
+// all of a core late in its run, fell further behind real time. With one
+// thread fewer (one on two cores) it kept pace better, at the same CPU per
+// frame (docs/desktop-performance.md). Mesa reads this when the first
+// OpenGL context is made, hence before the view's; the user's own setting
+// stands, and other drivers ignore it.
+Qt3DRender::API openGlLeavingACore() {
+    if (!qEnvironmentVariableIsSet("LP_NUM_THREADS"))
+        qputenv("LP_NUM_THREADS", QByteArray::number(std::max(1, QThread::idealThreadCount() - 1)));
+    return Qt3DRender::API::OpenGL;
+}
 }  // namespace
 
-LadderView::LadderView() : Qt3DExtras::Qt3DWindow(nullptr, Qt3DRender::API::OpenGL) {
+LadderView::LadderView() : Qt3DExtras::Qt3DWindow(nullptr, openGlLeavingACore()) {
     auto* forward = defaultFrameGraph();
     forward->setClearColor(QColor(201, 207, 216));
     // Blocks are instanced far from their unit cube: the cube's bounds say nothing about where they are.
