@@ -63,15 +63,18 @@ bool Ladder::tailReached(const World& w) const {
 int Ladder::wakeIfReached(World& w) { return tailReached(w) ? wakeThrough(w, stillFrom_) : 0; }
 
 // Separates the still points of hinges first .. last (a batch: one regroup).
+// The world's separate is all or nothing, and the points are forgotten only
+// once it succeeded: a wake that fails leaves the world and the tail as they
+// were (the run then stops at the step's end, Simulation::stopAt).
 void Ladder::partStill(World& w, int first, int last) {
     std::vector<ParticleId> parting;
-    for (int j = first; j <= last; ++j) {
-        std::array<ParticleId, 2>& p = stillPoints_[size_t(j - 1)];
-        if (p[0] < 0) continue;
-        parting.push_back(p[0]);
-        p = {-1, -1};
+    for (int j = first; j <= last; ++j)
+        if (stillPoints_[size_t(j - 1)][0] >= 0) parting.push_back(stillPoints_[size_t(j - 1)][0]);
+    if (auto e = w.separate(parting)) {
+        error_ = "the still tail could not be parted: " + e->message;
+        return;
     }
-    if (auto e = w.separate(parting)) error_ = "the still tail could not be parted: " + e->message;
+    for (int j = first; j <= last; ++j) stillPoints_[size_t(j - 1)] = {-1, -1};
 }
 
 int Ladder::wakeThrough(World& w, int block) {
