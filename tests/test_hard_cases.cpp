@@ -141,7 +141,7 @@ private slots:
         p.name = "p1";
         p.mass = 0.02;
         s.particles.push_back(p);
-        s.pins.push_back(PinSpec{PointRef{"world", {0.5, 0}}, PointRef{"p1", {0, 0}}});
+        s.pins.push_back(PinSpec{PointRef{"world", {0.5, 0}}, PointRef{"p1", {0, 0}}, std::nullopt, std::nullopt});
         Simulation::Built built = Simulation::build(s);
         QVERIFY(!built.simulation);
         QVERIFY(!built.errors.empty());

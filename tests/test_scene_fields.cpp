@@ -103,6 +103,16 @@ Scene bodyScene() {
     s.springs[0].b.on = "pip";
     return s;
 }
+Scene pinScene() {
+    Scene s;
+    s.bodies.resize(2);
+    s.bodies[0].name = "bob";
+    s.bodies[1].name = "ann";
+    s.pins.resize(1);
+    s.pins[0].a.on = "bob";
+    s.pins[0].b.on = "ann";
+    return s;
+}
 Scene poseScene() {
     Scene s = ladderScene();
     s.ladder->blocks = 2;
@@ -183,6 +193,7 @@ private slots:
         eachNumberRoundTrips(kMotionNumbers<BodySpec>, &bodyScene, [](Scene& s) -> BodySpec& { return s.bodies[0]; });
         eachNumberRoundTrips(kParticleNumbers, &bodyScene, [](Scene& s) -> ParticleSpec& { return s.particles[0]; });
         eachNumberRoundTrips(kPointRefNumbers, &bodyScene, [](Scene& s) -> PointRef& { return s.springs[0].b; });
+        eachNumberRoundTrips(kPinNumbers, &pinScene, [](Scene& s) -> PinSpec& { return s.pins[0]; });
         eachNumberRoundTrips(kSpringNumbers, &bodyScene, [](Scene& s) -> SpringSpec& { return s.springs[0]; });
         eachNumberRoundTrips(kDampingNumbers, &ladderScene, [](Scene& s) -> Scene& { return s; });
         eachNumberRoundTrips(kSolverNumbers, &ladderScene, [](Scene& s) -> SolverSpec& { return s.solver; });
@@ -211,6 +222,8 @@ private slots:
         eachNumberIsChecked(kMotionNumbers<BodySpec>, top + "bodies: [{", "}]");
         eachNumberIsChecked(kParticleNumbers, top + "particles: [{", "}]");
         eachNumberIsChecked(kPointRefNumbers, top + "pins: [{a: {body: world, ", "}, b: {body: 'block:0'}}]");
+        eachNumberIsChecked(kPinNumbers, "bodies: [{name: bob}, {name: ann}]\npins: [{a: {body: bob}, b: {body: ann}, ",
+                            "}]");
         eachNumberIsChecked(kSpringNumbers, top + "springs: [{a: {body: world}, b: {body: 'block:0'}, ", "}]");
         eachNumberIsChecked(kDampingNumbers, top + "damping: {", "}");
         eachNumberIsChecked(kSolverNumbers, top + "solver: {", "}");

@@ -94,7 +94,7 @@ Scene generalScene() {
     b.name = "true";
     s.bodies = {a, b};
     s.particles = {{"bob", 0.02, {0.3, -0.1}, {1, 0}}, {"p2", 1e-3, {}, {}}};
-    s.pins = {{{"world", {0, 0}}, {"arm", {0, 0.05}}}};
+    s.pins = {{{"world", {0, 0}}, {"arm", {0, 0.05}}, std::nullopt, std::nullopt}};
     s.springs = {{{"arm", {0, -0.05}}, {"bob", {}}, 250, 0.08, 0.1}, {{"bob", {}}, {"p2", {}}, 50, std::nullopt, 0}};
     s.gravity = {0, 0};
     return s;

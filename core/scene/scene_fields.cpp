@@ -139,6 +139,7 @@ const DocumentedTable kTables[] = {
     {"bodies", rowsOf<kBodyNumbers, kMotionNumbers<BodySpec>>},
     {"particles", rowsOf<kParticleNumbers>},
     {"points", rowsOf<kPointRefNumbers>},
+    {"pins", rowsOf<kPinNumbers>},
     {"springs", rowsOf<kSpringNumbers>},
     {"damping", rowsOf<kDampingNumbers>},
     {"solver", solverRows},

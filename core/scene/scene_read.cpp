@@ -171,7 +171,7 @@ std::optional<Scene> readScene(const YAML::Node& root, const LoadLimits& limits,
     Names names;
     if (f.has("bodies")) readBodies(f.value("bodies"), problems, scene.bodies, names);
     if (f.has("particles")) readParticles(f.value("particles"), problems, scene.particles, names);
-    if (f.has("pins")) readPins(f.value("pins"), problems, blocks, names, scene.pins);
+    if (f.has("pins")) readPins(f.value("pins"), problems, blocks, names, scene.bodies, scene.pins);
     if (f.has("springs")) readSprings(f.value("springs"), problems, blocks, names, scene.springs);
     f.read(kGravityField, scene);
     if (f.has("damping")) readDamping(f, scene);

@@ -6,6 +6,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <charconv>
 #include <numbers>
 
@@ -155,15 +156,46 @@ PointRef readPointRef(Fields& parent, std::string_view key, int blocks, const Na
 
 }  // namespace
 
-void readPins(const Located& at, Problems& problems, int blocks, const Names& names, std::vector<PinSpec>& pins) {
+namespace {
+
+// Stops hold one body's angle to another's: a point has no angle, the
+// world's stops would be a hand, and a ladder's hinges have their own limits.
+// They need the pins' weld form of a locked pair (docs/model.md section
+// 18), which a ladder in the same world would take too: not with a ladder.
+void checkStops(Fields& f, const PinSpec& pin, int blocks, const std::vector<BodySpec>& bodies) {
+    if (!pin.minAngle && !pin.maxAngle) return;
+    const std::string_view key = pin.minAngle ? "min_angle" : "max_angle";
+    if (blocks > 0) {
+        f.errorAt(key, "stops on pins are not available in a scene with a ladder");
+        return;
+    }
+    const auto isBody = [&](const std::string& name) {
+        return std::any_of(bodies.begin(), bodies.end(), [&](const BodySpec& b) { return b.name == name; });
+    };
+    for (const PointRef* r : {&pin.a, &pin.b})
+        if (!r->on.empty() && !isBody(r->on)) {
+            f.errorAt(key, "stops hold the angle between two bodies; '" + shownText(r->on) +
+                               "' is not a body of `bodies` (the world, a particle or a ladder block)");
+            return;
+        }
+    if (pin.minAngle && pin.maxAngle && !(*pin.minAngle < *pin.maxAngle))
+        f.errorAt("max_angle", "must be greater than min_angle");
+}
+
+}  // namespace
+
+void readPins(const Located& at, Problems& problems, int blocks, const Names& names,
+              const std::vector<BodySpec>& bodies, std::vector<PinSpec>& pins) {
     forEachItem(problems, at, [&](const Located& item) {
-        Fields f(problems, item, {"a", "b"});
+        Fields f(problems, item, keysOf({"a", "b"}, kPinNumbers));
         if (!f.isMap()) return;
         PinSpec pin;
         pin.a = readPointRef(f, "a", blocks, names);
         pin.b = readPointRef(f, "b", blocks, names);
         if (!pin.a.on.empty() && pin.a.on == pin.b.on)
             report(problems, item.mark, item.path + ": pins '" + pin.a.on + "' to itself");
+        f.readAll(kPinNumbers, pin);
+        checkStops(f, pin, blocks, bodies);
         pins.push_back(pin);
     });
 }

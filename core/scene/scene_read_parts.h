@@ -23,7 +23,8 @@ void readLadder(const Located& at, const LoadLimits& limits, Problems& problems,
 void readInitial(const Located& at, Problems& problems, LadderSpec& ladder);
 void readBodies(const Located& at, Problems& problems, std::vector<BodySpec>& bodies, Names& names);
 void readParticles(const Located& at, Problems& problems, std::vector<ParticleSpec>& particles, Names& names);
-void readPins(const Located& at, Problems& problems, int blocks, const Names& names, std::vector<PinSpec>& pins);
+void readPins(const Located& at, Problems& problems, int blocks, const Names& names,
+              const std::vector<BodySpec>& bodies, std::vector<PinSpec>& pins);
 void readSprings(const Located& at, Problems& problems, int blocks, const Names& names,
                  std::vector<SpringSpec>& springs);
 void readScript(const Located& at, Problems& problems, int blocks, std::vector<ScriptAction>& script);

@@ -75,9 +75,12 @@ void writeValue(Writer& w, std::string_view key, unsigned flags, double value, d
     else
         w.number(key, value);
 }
-void writeValue(Writer& w, std::string_view key, unsigned, const std::optional<double>& value,
+void writeValue(Writer& w, std::string_view key, unsigned flags, const std::optional<double>& value,
                 const std::optional<double>&) {
-    w.number(key, value);
+    if (value && (flags & kAngle))
+        w.angle(key, *value);
+    else
+        w.number(key, value);
 }
 void writeValue(Writer& w, std::string_view key, unsigned flags, const Point2& value, const Point2& fallback) {
     if ((flags & kRequired) || value != fallback) w.point(key, value);
@@ -218,6 +221,7 @@ void writeLinks(Writer& w, const Scene& scene) {
             w.beginMap(true);
             writePointRef(w, "a", pin.a);
             writePointRef(w, "b", pin.b);
+            writeNumbers(w, kPinNumbers, pin);
             w.endMap();
         }
         w.endList();

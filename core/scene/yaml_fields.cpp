@@ -277,6 +277,11 @@ void Fields::angle(std::string_view key, double& out, Bound bound) {
         if (const auto v = readAngle(problems_, value(key), bound)) out = *v;
 }
 
+void Fields::angle(std::string_view key, std::optional<double>& out, Bound bound) {
+    if (has(key))
+        if (const auto v = readAngle(problems_, value(key), bound)) out = *v;
+}
+
 void Fields::point(std::string_view key, Point2& out, Bound bound) {
     if (has(key))
         if (const auto v = readPoint(problems_, value(key), bound)) out = *v;

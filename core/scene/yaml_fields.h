@@ -76,6 +76,7 @@ public:
     void number(std::string_view key, std::optional<double>& out, Bound bound);
     void integer(std::string_view key, int& out, long long lo, long long hi);
     void angle(std::string_view key, double& out, Bound bound);
+    void angle(std::string_view key, std::optional<double>& out, Bound bound);
     void point(std::string_view key, Point2& out, Bound bound);
     void color(std::string_view key, Color& out);
     void color(std::string_view key, std::optional<Color>& out);
@@ -129,7 +130,7 @@ void Fields::read(const NumberField<Section>& n, Section& section) {
         else if constexpr (std::is_same_v<std::remove_reference_t<decltype(value)>, double>)
             n.is(kAngle) ? angle(n.key, value, n.range) : number(n.key, value, n.range);
         else
-            number(n.key, value, n.range);
+            n.is(kAngle) ? angle(n.key, value, n.range) : number(n.key, value, n.range);
     });
 }
 

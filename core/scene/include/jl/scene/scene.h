@@ -136,6 +136,9 @@ struct PointRef {
 
 struct PinSpec {
     PointRef a, b;
+    // Stops (docs/model.md section 18): the least and greatest angle of b's
+    // frame to a's, rad, counter-clockwise. Only between two bodies.
+    std::optional<double> minAngle, maxAngle;
     bool operator==(const PinSpec&) const = default;
 };
 

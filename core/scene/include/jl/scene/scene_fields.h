@@ -142,6 +142,14 @@ inline constexpr NumberField<PointRef> kPointRefNumbers[] = {
     {"local", &PointRef::local, "m", range::coordinate, "in that thing's frame"},
 };
 
+// A pin's stops: the angle of b's frame to a's is held between them.
+inline constexpr NumberField<PinSpec> kPinNumbers[] = {
+    {"min_angle", &PinSpec::minAngle, "rad", range::stopAngle,
+     "stop: the least angle of b's frame to a's (counter-clockwise); left out: none", kAngle},
+    {"max_angle", &PinSpec::maxAngle, "rad", range::stopAngle,
+     "stop: the greatest angle of b's frame to a's; left out: none", kAngle},
+};
+
 inline constexpr NumberField<SpringSpec> kSpringNumbers[] = {
     {"stiffness", &SpringSpec::stiffness, "N/m", range::stiffness, ""},
     {"rest_length", &SpringSpec::restLength, "m", range::restLength, "left out: the initial distance"},
@@ -270,8 +278,9 @@ inline std::string_view integratorWord(Integrator i) { return wordOf<Integrator>
 // page holds each between `<!-- fields: SECTION -->` and
 // `<!-- end fields -->`; a test checks that it is current.
 inline constexpr std::string_view kDocumentedSections[] = {
-    "top",    "ladder.block", "ladder.overrides", "ladder.ribbons", "ladder.hinges", "pose",  "bodies", "particles",
-    "points", "springs",      "damping",          "solver",         "script",        "drags", "floor",  "view"};
+    "top",    "ladder.block", "ladder.overrides", "ladder.ribbons", "ladder.hinges", "pose",   "bodies", "particles",
+    "points", "pins",         "springs",          "damping",        "solver",        "script", "drags",  "floor",
+    "view"};
 std::string fieldTable(std::string_view section);
 // `page` with every generated table replaced by the current one.
 std::string withCurrentFieldTables(const std::string& page);

@@ -44,13 +44,14 @@ inline constexpr Bound mass = Bound::closed(1e-6, 1e6);
 inline constexpr Bound inertia = Bound::closed(1e-15, 1e9);
 
 // Where things are and how they move: each coordinate of a point.
-inline constexpr Bound coordinate = Bound::symmetric(1e4);              // m
-inline constexpr Bound velocity = Bound::symmetric(1e4);                // m/s
-inline constexpr Bound angle = Bound::symmetric(1e4);                   // rad
-inline constexpr Bound foldAngle = Bound::closed(0, std::numbers::pi);  // rad, a hinge's fold
-inline constexpr Bound angularVelocity = Bound::symmetric(1e4);         // rad/s
-inline constexpr Bound gravity = Bound::symmetric(1e3);                 // m/s^2, about 100 g
-inline constexpr Bound impulse = Bound::symmetric(1e4);                 // N s
+inline constexpr Bound coordinate = Bound::symmetric(1e4);               // m
+inline constexpr Bound velocity = Bound::symmetric(1e4);                 // m/s
+inline constexpr Bound angle = Bound::symmetric(1e4);                    // rad
+inline constexpr Bound stopAngle = Bound::symmetric(3.141592653589793);  // rad, within half a turn either way
+inline constexpr Bound foldAngle = Bound::closed(0, std::numbers::pi);   // rad, a hinge's fold
+inline constexpr Bound angularVelocity = Bound::symmetric(1e4);          // rad/s
+inline constexpr Bound gravity = Bound::symmetric(1e3);                  // m/s^2, about 100 g
+inline constexpr Bound impulse = Bound::symmetric(1e4);                  // N s
 
 // Springs, dampers and impacts.
 inline constexpr Bound stiffness = Bound::closed(0, 1e7);       // N/m
