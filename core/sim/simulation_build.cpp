@@ -75,12 +75,16 @@ std::optional<std::string> addSprings(World& w, const Names& named, const std::v
 
 std::optional<std::string> Simulation::buildWorld() {
     world_.gravity = vec(scene_.gravity);
-    world_.setWeldRigidPairs(scene_.solver.rigidPairs == RigidPairs::Weld);
+    // A closed stop is a weld (docs/model.md section 18).
+    const bool stops =
+        std::any_of(scene_.pins.begin(), scene_.pins.end(), [](const PinSpec& p) { return p.minAngle || p.maxAngle; });
+    world_.setWeldRigidPairs(scene_.solver.rigidPairs == RigidPairs::Weld || stops);
     std::map<std::string, PartId> named;
     if (auto e = addLadder(named)) return e;
     addBodies(named);
     if (auto e = addPins(world_, named, scene_.pins)) return e;
     if (auto e = addSprings(world_, named, scene_.springs)) return e;
+    addStops(named);
     for (size_t i = 0; i < scene_.bodies.size(); ++i)
         if (scene_.bodies[i].held) {
             world_.hold(named[scene_.bodies[i].name], Drive(world_.partPose(named[scene_.bodies[i].name])));
@@ -101,6 +105,11 @@ std::optional<std::string> Simulation::buildWorld() {
     // A start the ladder cannot settle (hinges whose corners cannot be
     // joined) is a scene that cannot be built, not a run that fails later.
     if (ladder_ && !ladder_->error().empty()) return "at t = 0: " + ladder_->error();
+    if (stops_) {
+        if (auto outside = stops_->outsideAtStart(world_)) return *outside;
+        for (Event& e : stops_->settle(world_, dynamics_, 0, &impactLoss_, &impactHeldWork_)) record(e);
+        if (!stops_->error().empty()) return "at t = 0: " + stops_->error();
+    }
     if (auto below = belowTheFloor()) return below;
     openBooks();
     lastResidual_ = pinResidual(world_);
@@ -138,6 +147,16 @@ void Simulation::addBodies(std::map<std::string, PartId>& named) {
         named[s.name] = p;
         blocks_.push_back(p);
     }
+}
+
+// The stops of the scene's pins (the reader lets them only between two bodies).
+void Simulation::addStops(const std::map<std::string, PartId>& named) {
+    std::vector<PinStop> stops;
+    for (const PinSpec& p : scene_.pins)
+        if (p.minAngle || p.maxAngle)
+            stops.push_back({named.at(p.a.on), named.at(p.b.on), vec(p.a.local), vec(p.b.local), p.minAngle, p.maxAngle,
+                             p.a.on, p.b.on});
+    if (!stops.empty()) stops_.emplace(world_, std::move(stops));
 }
 
 // The books open after the inputs at t = 0. E(0) is the energy before them:

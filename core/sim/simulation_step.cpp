@@ -157,6 +157,8 @@ bool Simulation::takeStep(double limit) {
     }
     if (ladder_) {
         if (const std::optional<bool> ended = ladderAtStepEnd(m, taken, plan)) return *ended;
+    } else if (stops_) {
+        if (const std::optional<bool> ended = stopsAtStepEnd(m, taken, plan)) return *ended;
     } else {
         emitGridFrames(taken);
     }
@@ -242,19 +244,8 @@ bool Simulation::settleEvents(MotionStep& m, double& taken, double fEnd, double 
     emitGridFrames(taken);
     keepBeforeChange();
     const double heldBefore = impactHeldWork_;
-    std::vector<Event> happened = ladder_->settle(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
-    if (happened.empty() && taken < m.step.taken) {
-        // The located instant asked for nothing after all (a function
-        // within rounding of its threshold): take the whole step, so
-        // time can never stall on it.
-        restoreStepStart();
-        m = advanceAndProject(world_, dynamics_, stepper_, t_, m.step.taken, ledger_, solver.projectionTolerance, true);
-        taken = m.step.taken;
-        ++stats_.spuriousEvents;
-        emitGridFrames(taken);
-        happened = ladder_->settle(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_);
-    }
-    for (Event& e : happened) record(e);
+    settleOrRetake(m, taken,
+                   [&] { return ladder_->settle(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_); });
     if (!stopOnLadderError(plan.start)) return false;
     if (const auto why = squeezedByTheHand(heldBefore)) return stopAt(plan.start, *why);
     if (!world_.q.allFinite() || !world_.v.allFinite()) {
@@ -265,6 +256,24 @@ bool Simulation::settleEvents(MotionStep& m, double& taken, double fEnd, double 
     // The settled state is the next step's start, evaluated already.
     keptEnd_.keep(world_, dynamics_, t_ + taken, ladder_->settledPowers());
     return true;
+}
+
+// The events of the located instant settled (`settle`, at t_ + taken) and
+// recorded. When the instant asked for nothing after all (a function within
+// rounding of its threshold), the whole step is taken instead and its end
+// settled, so time can never stall on it.
+void Simulation::settleOrRetake(MotionStep& m, double& taken, const std::function<std::vector<Event>()>& settle) {
+    std::vector<Event> happened = settle();
+    if (happened.empty() && taken < m.step.taken) {
+        restoreStepStart();
+        m = advanceAndProject(world_, dynamics_, stepper_, t_, m.step.taken, ledger_, scene_.solver.projectionTolerance,
+                              true);
+        taken = m.step.taken;
+        ++stats_.spuriousEvents;
+        emitGridFrames(taken);
+        happened = settle();
+    }
+    for (Event& e : happened) record(e);
 }
 
 // A free hinge swung past a limit and back within this (long, adaptive)

@@ -12,6 +12,7 @@ namespace jl {
 struct Snapshot {
     World world;
     std::optional<Ladder> ladder;
+    std::optional<PinStops> stops;
     Stepper stepper;
     Ledger ledger;
     double t = 0, impactLoss = 0, impactHeldWork = 0;
@@ -25,8 +26,8 @@ struct Snapshot {
     // The fields, in the order of Simulation::stateOf.
     template <class Self>
     static auto stateOf(Self& s) {
-        return std::tie(s.world, s.ladder, s.stepper, s.ledger, s.t, s.impactLoss, s.impactHeldWork, s.nextAction,
-                        s.nextDragSample, s.stats, s.stepScale, s.imbalanceBase);
+        return std::tie(s.world, s.ladder, s.stops, s.stepper, s.ledger, s.t, s.impactLoss, s.impactHeldWork,
+                        s.nextAction, s.nextDragSample, s.stats, s.stepScale, s.imbalanceBase);
     }
 };
 

@@ -11,11 +11,13 @@
 #include "jl/engine/stiff_mode.h"
 #include "jl/engine/world.h"
 #include "jl/ladder/ladder.h"
+#include "jl/ladder/pin_stops.h"
 #include "jl/scene/scene.h"
 #include "jl/sim/event_bracket.h"
 #include "jl/sim/frame.h"
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <map>
 #include <memory>
@@ -44,6 +46,7 @@ public:
     const Scene& scene() const { return scene_; }  // the recorded drags included
     const World& world() const { return world_; }
     const Ladder* ladder() const { return ladder_ ? &*ladder_ : nullptr; }
+    const PinStops* stops() const { return stops_ ? &*stops_ : nullptr; }  // a general scene's pin stops
     int blockCount() const { return int(blocks_.size()); }
     PartId blockPart(int block) const { return blocks_[size_t(block)]; }
 
@@ -128,6 +131,7 @@ private:
     std::optional<std::string> buildWorld();
     std::optional<std::string> addLadder(std::map<std::string, PartId>& named);
     void addBodies(std::map<std::string, PartId>& named);
+    void addStops(const std::map<std::string, PartId>& named);
     void openBooks();
     void hangStillTail();
     std::optional<std::string> belowTheFloor() const;
@@ -159,6 +163,11 @@ private:
     std::optional<bool> ladderAtStepEnd(MotionStep& m, double& taken, const StepPlan& plan);
     bool settleEvents(MotionStep& m, double& taken, double fEnd, double forces, const StepPlan& plan);
     void retakeToDip(double dip);
+    void settleOrRetake(MotionStep& m, double& taken, const std::function<std::vector<Event>()>& settle);
+    // The pin stops at the step's end (simulation_stops.cpp), as the ladder's.
+    std::optional<bool> stopsAtStepEnd(MotionStep& m, double& taken, const StepPlan& plan);
+    void locateStop(double& taken);
+    double stopFunctionsAmong(double t, bool forces);
     void wakeTailIfReached(double taken);
     // The dynamics at a step's ends, kept (simulation_step_ends.cpp).
     const Powers* startAsLastEnd();
@@ -191,7 +200,7 @@ private:
     // What a Snapshot holds, in its order (simulation_snapshot.cpp).
     template <class Self>
     static auto stateOf(Self& s) {
-        return std::tie(s.world_, s.ladder_, s.stepper_, s.ledger_, s.t_, s.impactLoss_, s.impactHeldWork_,
+        return std::tie(s.world_, s.ladder_, s.stops_, s.stepper_, s.ledger_, s.t_, s.impactLoss_, s.impactHeldWork_,
                         s.nextAction_, s.nextDragSample_, s.stats_, s.stepScale_, s.imbalanceBase_);
     }
     void fail(const std::string& why);
@@ -209,6 +218,7 @@ private:
     Stepper stepper_;
     Ledger ledger_;
     std::optional<Ladder> ladder_;
+    std::optional<PinStops> stops_;
     std::vector<PartId> blocks_;
     double t_ = 0;
     double initialEnergy_ = 0;

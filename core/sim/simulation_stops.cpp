@@ -1,0 +1,98 @@
+// The stops of a general scene's pins at a step's end: their event
+// functions read there, the first crossing located on the step's
+// interpolant, and their events settled (docs/model.md section 18). The
+// same flow as the ladder's (simulation_step.cpp, simulation_events.cpp),
+// on a handful of stops: no still tail, no block contacts.
+#include "books_between.h"
+#include "jl/engine/motion.h"
+#include "jl/sim/event_bracket.h"
+#include "jl/sim/simulation.h"
+
+#include <algorithm>
+
+namespace jl {
+
+// The smallest of the stops' functions that had crossed at the step's end
+// (crossed_), in the state the world holds at time t; `forces`: a closed
+// stop is among them, and its push needs the dynamics.
+double Simulation::stopFunctionsAmong(double t, bool forces) {
+    world_.updateKinematics(t);
+    if (forces) lastPowers_ = dynamics_.evaluate(world_, t);
+    stops_->eventFunctions(world_, dynamics_, eventValues_);
+    double f = 1.0;
+    for (int k : crossed_) f = std::min(f, eventValues_[size_t(k)]);
+    return f;
+}
+
+// The first instant inside the step just taken at which a stop's function
+// turns negative, to within the event tolerance, on the step's quintic
+// Hermite interpolant (as Simulation::locateEvent); leaves the world there,
+// the books interpolated, and `taken` set to it.
+void Simulation::locateStop(double& taken) {
+    crossed_.clear();
+    bool forces = false;
+    double fEnd = 1.0;
+    for (int k = 0; k < int(eventValues_.size()); ++k)
+        if (eventValues_[size_t(k)] < 0) {
+            crossed_.push_back(k);
+            forces = forces || !stops_->positional(k);
+            fEnd = std::min(fEnd, eventValues_[size_t(k)]);
+        }
+    const Powers p1 = stepEndAsTaken(taken);
+    const Ledger ledgerAtEnd = ledger_;
+    interpolant_.setEnd(world_.q, world_.v, world_.a);
+    restoreStepStart();
+    const Powers* kept = keptStart_.recall(world_, dynamics_, t_);
+    const Powers p0 = kept ? *kept : dynamics_.evaluate(world_, t_);
+    interpolant_.setStart(taken, stepStartQ_, stepStartV_, world_.a);
+    EventBracket b{0, stopFunctionsAmong(t_, false), taken, fEnd};
+    narrow(b, scene_.solver.eventTolerance, [&](double h) {
+        interpolant_.at(h, world_.q, world_.v);
+        return stopFunctionsAmong(t_ + h, forces);
+    });
+    interpolant_.at(b.hi, world_.q, world_.v);
+    world_.updateKinematics(t_ + b.hi);
+    ledger_ = ledgerBetween(stepStartLedger_, p0, ledgerAtEnd, p1, taken, b.hi / taken);
+    taken = b.hi;
+}
+
+// The stops at the end of the step just taken: nothing when no function
+// has crossed; else the event located (when the scene asks) and settled.
+// The step's result when it ends here, else nullopt.
+std::optional<bool> Simulation::stopsAtStepEnd(MotionStep& m, double& taken, const StepPlan& plan) {
+    if (stops_->anyClosed()) {
+        lastPowers_ = m.step.endEvaluated && world_.pathsOnOnePiece(t_ + taken / 2, t_ + taken)
+                          ? m.step.endPowers
+                          : dynamics_.evaluate(world_, t_ + taken);
+        keptEnd_.keep(world_, dynamics_, t_ + taken, lastPowers_);
+    }
+    stops_->eventFunctions(world_, dynamics_, eventValues_);
+    if (std::all_of(eventValues_.begin(), eventValues_.end(), [](double f) { return f >= 0; })) {
+        emitGridFrames(taken);
+        return std::nullopt;
+    }
+    const SolverSpec& solver = scene_.solver;
+    if (solver.events == EventPolicy::Located && taken > solver.eventTolerance) {
+        locateStop(taken);
+        stepper_.setNextStep(plan.next0 > 0 ? plan.next0 : plan.chosen);
+    }
+    if (!world_.q.allFinite() || !world_.v.allFinite()) {
+        restoreStepStart();
+        fail("an event could not be located: the step's interpolant is not finite");
+        return false;
+    }
+    emitGridFrames(taken);
+    keepBeforeChange();
+    settleOrRetake(m, taken,
+                   [&] { return stops_->settle(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_); });
+    if (!stops_->error().empty()) return stopAt(plan.start, stops_->error());
+    if (!world_.q.allFinite() || !world_.v.allFinite()) {
+        restoreStepStart();
+        fail("an impact produced a non-finite state");
+        return false;
+    }
+    keptEnd_.keep(world_, dynamics_, t_ + taken, stops_->settledPowers());
+    return std::nullopt;
+}
+
+}  // namespace jl
