@@ -82,7 +82,9 @@ public:
         std::snprintf(joint, sizeof joint, "<joint type='hinge' axis='0 1 0' limited='true' range='%.17g %.17g'/>",
                       -kStop, kStop);
         // refsafe stays on: MuJoCo raises a time constant below 2 dt to 2 dt,
-        // so the stiff limits are the stiffest it integrates stably.
+        // so the stiff limits (2 dt) are the stiffest it integrates stably.
+        // With refsafe off, a time constant of dt / 5 blows up at a strike,
+        // 0.32 to 0.78 s in (N = 10, dt = 1e-3 and 1e-4, every integrator).
         std::snprintf(head, sizeof head,
                       "<compiler angle='radian'/><option timestep='%.17g' integrator='%s' gravity='0 0 -%.17g'><flag "
                       "contact='disable'/></option>%s",
