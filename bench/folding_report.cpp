@@ -177,4 +177,10 @@ std::string foldingSection(const std::string& parts, bool quick, bool& ok) {
                   ok);
 }
 
+bool writeFoldingReport(const std::string& parts, bool quick, const std::filesystem::path& report) {
+    bool ok = true;
+    const std::string text = foldingSection(parts, quick, ok);
+    return writeSection("folding", quick, report, text, ok);
+}
+
 }  // namespace jl::bench

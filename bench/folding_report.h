@@ -40,5 +40,7 @@ bool writeFoldingCharts(const std::vector<FoldingRun>& runs, const FoldingRun& o
 
 // The section from its parts (one foldingPart per N), its template filled.
 std::string foldingSection(const std::string& parts, bool quick, bool& ok);
+// The section alone, as `jladder bench --only folding` would write it.
+bool writeFoldingReport(const std::string& parts, bool quick, const std::filesystem::path& report);
 
 }  // namespace jl::bench
