@@ -407,7 +407,8 @@ std::string foldingPeerNote() {
     char steps[160];
     std::snprintf(steps, sizeof steps, "%g, %g, %g, %g and %g s", kFoldingSteps[0], kFoldingSteps[1], kFoldingSteps[2],
                   kFoldingSteps[3], kFoldingSteps[4]);
-    return mujocoVersion() + ", " + box2dVersion() + " (single precision), " + bulletVersion() +
+    return mujocoVersion() + ", " + box2dVersion() +
+           " (single precision; Debian's libbox2d 2.4.1 calls itself 2.4.0), " + bulletVersion() +
            " (double precision), each at fixed steps " + steps + " (a step whose run would take over " +
            std::to_string(int(kLongestRun)) + " CPU s, judged from the one before, dropped with the smaller ones); " +
            "a hinge counts as closed within 1e-4 rad of its stop";
