@@ -7,6 +7,8 @@
 #include <functional>
 
 #ifdef JL_BENCH_PEERS
+#include "bench/mujoco_chain.h"
+
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
@@ -17,7 +19,6 @@
 #endif
 
 #include <cstdio>
-#include <cstring>
 #include <memory>
 #include <string>
 
@@ -38,41 +39,17 @@ using PeerRunner = std::function<std::vector<Vec2>(int n, double h, int steps)>;
 std::vector<Vec2> runMujoco(int n, double h, int steps, const char* integrator) {
     // Nested bodies, each a box hinged at its inner end about +y; gravity -z.
     // The plane is x-z: our y is MuJoCo's z.
-    // The XML parser allows ~100 nested elements, so the chain is split into
-    // files of 40 bodies, each included inside the last body of the one before.
-    constexpr int perFile = 40;
     char geom[256];
     std::snprintf(geom, sizeof geom, "<geom type='box' size='%.17g %.17g %.17g' pos='%.17g 0 0' mass='%.17g'/>", kL / 2,
                   kW / 2, kT / 2, kL / 2, kMass);
-    std::vector<std::string> files;
-    for (int first = 0; first < n; first += perFile) {
-        const int last = std::min(n, first + perFile);
-        std::string x = first == 0 ? "<mujoco><compiler angle='radian'/><option timestep='" + std::to_string(h) +
-                                         "' integrator='" + integrator +
-                                         "' gravity='0 0 -9.81'><flag contact='disable'/></option><worldbody>"
-                                   : "<mujoco>";
-        for (int i = first; i < last; ++i)
-            x += std::string("<body pos='") + (i == 0 ? "0" : std::to_string(kL)) +
-                 " 0 0'><joint type='hinge' axis='0 1 0'/>" + geom;
-        if (last < n) x += "<include file='chain" + std::to_string(last / perFile) + ".xml'/>";
-        for (int i = first; i < last; ++i) x += "</body>";
-        x += first == 0 ? "</worldbody></mujoco>" : "</mujoco>";
-        files.push_back(x);
-    }
-    mjVFS vfs;
-    mj_defaultVFS(&vfs);
-    for (size_t k = 0; k < files.size(); ++k) {
-        const std::string name = "chain" + std::to_string(k) + ".xml";
-        mj_makeEmptyFileVFS(&vfs, name.c_str(), int(files[k].size()));
-        std::memcpy(vfs.filedata[mj_findFileVFS(&vfs, name.c_str())], files[k].data(), files[k].size());
-    }
-    char error[512] = "";
-    mjModel* m = mj_loadXML("chain0.xml", &vfs, error, sizeof error);
-    mj_deleteVFS(&vfs);
-    if (!m) {
-        std::fprintf(stderr, "mujoco: %s\n", error);
-        return {};
-    }
+    std::vector<std::string> bodies;
+    for (int i = 0; i < n; ++i)
+        bodies.push_back(std::string("<body pos='") + (i == 0 ? "0" : std::to_string(kL)) +
+                         " 0 0'><joint type='hinge' axis='0 1 0'/>" + geom);
+    mjModel* m = loadNestedChain("<compiler angle='radian'/><option timestep='" + std::to_string(h) + "' integrator='" +
+                                     integrator + "' gravity='0 0 -9.81'><flag contact='disable'/></option>",
+                                 bodies);
+    if (!m) return {};
     mjData* d = mj_makeData(m);
     for (int s = 0; s < steps; ++s) mj_step(m, d);
     std::vector<Vec2> out;

@@ -41,8 +41,8 @@ private slots:
 
     // Each part of the report is built in, and fills once each of its names has a value.
     void everyBuiltInTemplateFills() {
-        for (const char* part :
-             {"performance", "stability", "stability_beyond", "stability_within", "models", "events", "examples"}) {
+        for (const char* part : {"performance", "stability", "stability_beyond", "stability_within", "models", "events",
+                                 "examples", "folding"}) {
             const std::string text(reportTemplate(part));
             QVERIFY2(text.size() > 100, part);
             TemplateValues values;
