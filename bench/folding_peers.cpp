@@ -36,7 +36,7 @@ constexpr double kFoldingSteps[] = {1e-3, 2.5e-4, 1e-4, 2.5e-5, 1e-5};
 // A run projected to take longer than this (from the one before it at a
 // larger step) is dropped, with the rest of its series.
 constexpr double kLongestRun = 30;  // CPU s
-// A hinge counts as closed when |phi| is within this of kStop: Box2D stops a
+// A hinge counts as closed when |phi| is within this of its stop: Box2D stops a
 // joint speculatively, at the stop to within single-precision rounding.
 constexpr double kClosingSlack = 1e-4;  // rad (foldingPeerNote says so)
 
@@ -80,7 +80,7 @@ public:
         std::snprintf(geom, sizeof geom, "<geom type='box' size='%.17g %.17g %.17g' pos='%.17g 0 0' mass='%.17g'/>",
                       kLength / 2, kWidth / 2, kThickness / 2, kLength / 2, kMass);
         std::snprintf(joint, sizeof joint, "<joint type='hinge' axis='0 1 0' limited='true' range='%.17g %.17g'/>",
-                      -kStop, kStop);
+                      -stopAngle(n), stopAngle(n));
         // refsafe stays on: MuJoCo raises a time constant below 2 dt to 2 dt,
         // so the stiff limits (2 dt) are the stiffest it integrates stably.
         // With refsafe off, a time constant of dt / 5 blows up at a strike,
@@ -159,8 +159,8 @@ public:
             b2RevoluteJointDef joint;
             joint.Initialize(previous, b, b2Vec2(float(i * kLength), 0));  // angle: theta_B - theta_A
             joint.enableLimit = stops && i > 0;
-            joint.lowerAngle = float(-kStop);
-            joint.upperAngle = float(kStop);
+            joint.lowerAngle = float(-stopAngle(n));
+            joint.upperAngle = float(stopAngle(n));
             b2Joint* j = world_.CreateJoint(&joint);
             if (i > 0) hinges_.push_back(static_cast<b2RevoluteJoint*>(j));
             bodies_.push_back(b);
@@ -227,8 +227,8 @@ public:
             body_->getLink(i).m_collider = c;
         }
         for (int i = 1; stops && i < n; ++i) {
-            limits_.push_back(
-                std::make_unique<btMultiBodyJointLimitConstraint>(body_.get(), i, btScalar(-kStop), btScalar(kStop)));
+            limits_.push_back(std::make_unique<btMultiBodyJointLimitConstraint>(body_.get(), i, btScalar(-stopAngle(n)),
+                                                                                btScalar(stopAngle(n))));
             world_.addMultiBodyConstraint(limits_.back().get());
         }
     }
@@ -282,7 +282,7 @@ using HingeWatch = std::function<void(double t, const std::vector<double>& phi)>
 void simulate(FoldingModel& model, int n, double h, FoldingRun& r, const HingeWatch& watch = nullptr) {
     const int steps = int(std::lround(kDuration / h));
     const double start = chainEnergy(model.motion());
-    const double target = kStop - kClosingSlack;
+    const double target = stopAngle(n) - kClosingSlack;
     std::vector<double> phi(size_t(n) - 1), previous(size_t(n) - 1, 0.0);
     r.firstClosing.assign(size_t(n) - 1, kNever);
     size_t sample = 0;
