@@ -68,5 +68,7 @@ constexpr double kNever = std::numeric_limits<double>::quiet_NaN();
 // `tolerance` with located events.
 std::vector<FoldingRun> runFoldingOurs(int n, double minSeconds);
 FoldingRun runFoldingReference(int n, double tolerance);
+// One fixed-step run: `integrator` "rk4" or "symplectic_euler".
+FoldingRun runFoldingSetting(int n, const std::string& integrator, bool located, double step);
 
 }  // namespace jl::bench

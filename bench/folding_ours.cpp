@@ -112,6 +112,11 @@ FoldingRun runOnce(int n, const Setting& setting) {
 
 }  // namespace
 
+FoldingRun runFoldingSetting(int n, const std::string& integrator, bool located, double step) {
+    const Integrator i = integrator == "rk4" ? Integrator::RK4 : Integrator::SymplecticEuler;
+    return runOnce(n, {i, located ? EventPolicy::Located : EventPolicy::EndOfStep, step, 0});
+}
+
 FoldingRun runFoldingReference(int n, double tolerance) {
     return runOnce(n, {Integrator::DormandPrince45, EventPolicy::Located, 0, tolerance});
 }

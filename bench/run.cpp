@@ -6,6 +6,7 @@
 #include "bench/csv_columns.h"
 #include "bench/events.h"
 #include "bench/examples.h"
+#include "bench/folding_study.h"
 #include "bench/models.h"
 #include "bench/peers.h"
 #include "bench/report.h"
@@ -136,6 +137,10 @@ bool runBench(const BenchRequest& request) {
         const ExamplesStudy study = examplesStudy(plan, examplesDir);
         return (writeExamplesCsv(study, out / "examples.csv") && writeExamplesReport(study, plan.quick, report) &&
                 study.error.empty());
+    }
+    if (only == "folding") {
+        starts("folding chain: stops, against the peers");
+        return runFoldingStudy(plan, out, report);
     }
     if (onlyContacts) {
         starts("block contacts");

@@ -14,7 +14,7 @@ namespace {
 
 const char* kHelp =
     "usage: jladder bench [--quick] [--out DIR] [--report FILE] [--examples DIR]\n"
-    "                     [--only stability|models|events|examples|contacts] [--quiet]\n"
+    "                     [--only stability|models|events|examples|contacts|folding] [--quiet]\n"
     "Measures cost (CPU seconds per simulated second) against error for every\n"
     "integrator and event policy on the physical pendulum, the falling chain\n"
     "(N = 10, 100, 1,000; against an independent reduced-coordinate reference)\n"
@@ -32,9 +32,9 @@ const char* kHelp =
     "Bullet on the same chains. Writes DIR/*.csv, DIR/*.svg\n"
     "(default DIR: docs/bench) and FILE (default docs/performance.md).\n"
     "--quick: fewer sizes and steps; fits in CI (under a minute).\n"
-    "--only stability|models|events|examples|contacts: that study alone; FILE (default\n"
-    "DIR/stability.md, DIR/models.md, DIR/events.md, DIR/examples.md or\n"
-    "DIR/contacts.md) gets\n"
+    "--only stability|models|events|examples|contacts|folding: that study alone; FILE (default\n"
+    "DIR/stability.md, DIR/models.md, DIR/events.md, DIR/examples.md,\n"
+    "DIR/contacts.md or DIR/folding.md) gets\n"
     "its section only.\n"
     "Each study's name goes to stderr as it starts; when stderr is a terminal,\n"
     "with how many studies are done and the time so far (not with --quiet).\n";
@@ -48,8 +48,9 @@ int bench(const std::vector<std::string>& args) {
     }
     const std::string only = o.get("--only").value_or("");
     if (o.error.empty() && !only.empty() && only != "stability" && only != "models" && only != "events" &&
-        only != "examples" && only != "contacts")
-        o.error = "--only takes 'stability', 'models', 'events', 'examples' or 'contacts', not '" + only + "'";
+        only != "examples" && only != "contacts" && only != "folding")
+        o.error =
+            "--only takes 'stability', 'models', 'events', 'examples', 'contacts' or 'folding', not '" + only + "'";
     if (!o.error.empty()) {
         std::fprintf(stderr, "jladder bench: %s\n", o.error.c_str());
         return 2;
