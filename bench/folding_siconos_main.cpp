@@ -41,10 +41,16 @@ void print(const FoldingRun& r, const FoldingRun* reference) {
                         r.centres[s].back().y());
     if (reference) {
         double closing = 0;
+        int unmatched = 0;  // hinges that close in one run only
         for (size_t i = 0; i < r.firstClosing.size(); ++i)
-            closing = std::max(closing, std::abs(r.firstClosing[i] - reference->firstClosing[i]));
-        std::printf("  from the reference: centres %.3e m, first closings %.3e s, dissipated at 1 s %.3e J\n",
-                    distance(r, *reference), closing, r.dissipated[2] - reference->dissipated[2]);
+            if (std::isnan(r.firstClosing[i]) != std::isnan(reference->firstClosing[i]))
+                ++unmatched;
+            else if (!std::isnan(r.firstClosing[i]))
+                closing = std::max(closing, std::abs(r.firstClosing[i] - reference->firstClosing[i]));
+        std::printf(
+            "  from the reference: centres %.3e m, first closings %.3e s (%d hinges close in one run only), "
+            "dissipated at 1 s %.3e J\n",
+            distance(r, *reference), closing, unmatched, r.dissipated[2] - reference->dissipated[2]);
     }
 }
 
