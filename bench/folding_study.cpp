@@ -4,7 +4,6 @@
 #include "bench/folding_peers.h"
 #include "bench/folding_report.h"
 #include "bench/folding_siconos.h"
-
 #include "bench/report_text.h"
 
 #include <algorithm>

@@ -166,6 +166,26 @@ private slots:
         QVERIFY(run.impactLossNeverFell);
     }
 
+    // The stops' state is part of a snapshot: a fresh simulation restored
+    // to one taken among the strikes carries on bit for bit (the timeline
+    // and the desktop program's scrubbing rebuild frames that way), the
+    // same stops closed at the end.
+    void aSnapshotCarriesTheStops() {
+        auto sim = simulateFile("examples/folding-chain.yaml");
+        QVERIFY(sim);
+        QVERIFY(sim->advanceTo(0.5));
+        const auto snap = sim->snapshot();
+        QVERIFY(sim->advanceTo(0.8));
+        const std::uint64_t straight = sim->stateHash();
+        auto fresh = simulateFile("examples/folding-chain.yaml");
+        QVERIFY(fresh);
+        fresh->restore(*snap);
+        QVERIFY(fresh->advanceTo(0.8));
+        QCOMPARE(fresh->stateHash(), straight);
+        for (int i = 0; i < sim->stops()->count(); ++i)
+            QCOMPARE(fresh->stops()->closedAt(i), sim->stops()->closedAt(i));
+    }
+
     // Stops are written back as they were read, and what cannot be a stop
     // is refused with the place in the file.
     void sceneFiles() {
