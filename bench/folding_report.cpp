@@ -51,6 +51,17 @@ std::string times() {
     return s + " s";
 }
 
+// A peer's failure in a line: Siconos's exceptions carry their message
+// after "message*] = ".
+std::string shortReason(const std::string& why) {
+    const std::string key = "message*] = ";
+    const size_t at = why.find(key);
+    std::string s = at == std::string::npos ? why : why.substr(at + key.size());
+    const size_t close = s.find("  )");
+    if (close != std::string::npos) s.erase(close, 3);
+    return s.size() > 240 ? s.substr(0, 240) + "..." : s;
+}
+
 std::string describe(const FoldingRun& r) { return r.engine + ", " + r.method + ", " + r.setting; }
 
 // What the reference itself shows: its energy and when its hinges close.
@@ -76,8 +87,10 @@ std::string referencesPart(const FoldingRun& ours, const FoldingRun* siconos) {
         return md.str();
     }
     const FoldingError e = foldingError(*siconos, ours);
-    md << "**Check of the reference** against " << describe(*siconos) << ": " << referenceValues(*siconos)
-       << ". Between the two, at " << times() << ": largest block-centre distance " << perSample(e.centre, 2)
+    md << "**Check of the reference** against " << describe(*siconos) << ": " << referenceValues(*siconos);
+    if (!siconos->finished)
+        md << " (it stopped before 1 s: " << shortReason(siconos->why) << "; a dash is a time it did not reach)";
+    md << ". Between the two, at " << times() << ": largest block-centre distance " << perSample(e.centre, 2)
        << " m; dissipated energy differs by " << perSample(e.dissipated, 2) << " J; first closings differ by at most "
        << closingCell(e) << " s.\n\n";
     return md.str();
