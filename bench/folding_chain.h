@@ -38,6 +38,8 @@ constexpr double kDuration = 1.0;                                               
 constexpr std::array<double, 3> kSampleTimes{0.25, 0.5, 1.0};                                        // s
 }  // namespace folding
 
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
 // One run of the folding chain in one engine at one setting.
 struct FoldingRun {
     std::string engine;     // "mujoco 2.2.2", "siconos 4.4", "jladder", ...
@@ -53,14 +55,14 @@ struct FoldingRun {
     // energy at the start minus that at the sample (energy stored in a soft
     // stop's spring counts as dissipated: the run does not hold it as motion).
     std::array<std::vector<Vec2>, folding::kSampleTimes.size()> centres;
-    std::array<double, folding::kSampleTimes.size()> dissipated{};
+    std::array<double, folding::kSampleTimes.size()> dissipated{kNaN, kNaN, kNaN};  // NaN: not reached
     // For each hinge i = 1 .. N-1 (index i-1): the first time |phi_i| reaches
     // stopAngle(N) (located events: the event time; a stepping method: linear
     // interpolation between the two steps that straddle it); NaN if never.
     std::vector<double> firstClosing;
 };
 
-constexpr double kNever = std::numeric_limits<double>::quiet_NaN();
+constexpr double kNever = kNaN;
 
 // This engine's runs (bench/folding_ours.cpp): RK4 and symplectic Euler at
 // several steps, with located and end-of-step events, and the adaptive

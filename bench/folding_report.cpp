@@ -4,6 +4,7 @@
 
 #include "bench/chart.h"
 #include "bench/folding_peers.h"
+#include "bench/folding_siconos.h"
 #include "bench/report_text.h"
 
 #include <algorithm>
@@ -109,7 +110,7 @@ std::string runsTable(const std::vector<FoldingRun>& runs, const FoldingRun& our
            << r.setting << " | " << sig(r.cpuSeconds, 3) << " | ";
         previous = series;
         if (!r.finished) {
-            md << "failed: " << r.why << " | | |\n";
+            md << "failed: " << shortReason(r.why) << " | | |\n";
             continue;
         }
         const FoldingError e = foldingError(r, ours);
@@ -144,7 +145,8 @@ FoldingError foldingError(const FoldingRun& run, const FoldingRun& reference) {
 
 std::string foldingPart(const std::vector<FoldingRun>& runs, const FoldingRun& oursRef, const FoldingRun* siconosRef,
                         const std::string& charts) {
-    const std::string name = charts + "/folding" + std::to_string(oursRef.blocks);
+    const std::string name =
+        (charts.empty() || charts == "." ? "" : charts + "/") + "folding" + std::to_string(oursRef.blocks);
     std::ostringstream md;
     md << "### Folding chain, N = " << oursRef.blocks << "\n\n"
        << referencesPart(oursRef, siconosRef) << "![block centres at 1 s](" << name << "_centre.svg)\n\n"
@@ -186,7 +188,10 @@ bool writeFoldingCharts(const std::vector<FoldingRun>& runs, const FoldingRun& o
 }
 
 std::string foldingSection(const std::string& parts, bool quick, bool& ok) {
-    return filled("folding", {{"min_time", quick ? "5 ms" : "50 ms"}, {"peers", foldingPeerNote()}, {"parts", parts}},
+    return filled("folding",
+                  {{"min_time", quick ? "5 ms" : "50 ms"},
+                   {"peers", foldingPeerNote() + "; " + siconosVersion()},
+                   {"parts", parts}},
                   ok);
 }
 

@@ -84,10 +84,12 @@ std::string timeTable() {
 }  // namespace
 
 bool runFoldingStudy(const BenchPlan& plan, const std::filesystem::path& out, const std::filesystem::path& report) {
-    (void)out;
-    const std::filesystem::path charts = report.parent_path() / "bench";
+    // The charts go with the CSV tables (`out`), linked from the report's directory.
     std::error_code ec;
-    std::filesystem::create_directories(charts, ec);
+    std::filesystem::create_directories(out, ec);
+    const std::string link = std::filesystem::absolute(out)
+                                 .lexically_relative(std::filesystem::absolute(report).parent_path())
+                                 .generic_string();
     std::string parts;
     bool ok = true;
     for (int n : {10, 100}) {
@@ -99,9 +101,9 @@ bool runFoldingStudy(const BenchPlan& plan, const std::filesystem::path& out, co
         runs.insert(runs.end(), siconos.begin(), siconos.end());
         const std::vector<FoldingRun> peers = runFoldingPeers(n, plan.minSeconds);
         runs.insert(runs.end(), peers.begin(), peers.end());
-        parts += foldingPart(runs, reference, siconosReference(siconos), "bench");
+        parts += foldingPart(runs, reference, siconosReference(siconos), link);
         parts += targetsTable(runs, reference);
-        ok = writeFoldingCharts(runs, reference, charts) && ok;
+        ok = writeFoldingCharts(runs, reference, out) && ok;
     }
     parts += timeTable();
     return writeFoldingReport(parts, plan.quick, report) && ok;

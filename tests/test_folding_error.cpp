@@ -22,6 +22,7 @@ FoldingRun restingRun() {
     r.setting = "dt = 1 s";
     r.blocks = 3;
     for (auto& c : r.centres) c = {Vec2(0.03, 0), Vec2(0.09, 0), Vec2(0.15, 0)};
+    r.dissipated = {0, 0, 0};
     r.firstClosing = {kNever, kNever};
     return r;
 }
