@@ -24,7 +24,9 @@ if [ "${1:-}" = --inside ]; then
         sleep 0.2
         best=0
         for id in $(xwininfo -root -children | awk '/^ +0x/ {print $1}'); do
-            info=$(xwininfo -id "$id")
+            # A window listed a moment ago may be gone (a tooltip, a splash):
+            # skip it rather than let `set -e` end the test.
+            info=$(xwininfo -id "$id" 2>/dev/null) || continue
             grep -q "IsViewable" <<<"$info" || continue
             x=$(awk '/Absolute upper-left X/ {print $4}' <<<"$info")
             y=$(awk '/Absolute upper-left Y/ {print $4}' <<<"$info")
