@@ -111,6 +111,7 @@ Scene pinScene() {
     s.pins.resize(1);
     s.pins[0].a.on = "bob";
     s.pins[0].b.on = "ann";
+    s.pins[0].maxAngle = 3.0;  // a stop, which a restitution needs; above any min_angle tried
     return s;
 }
 Scene poseScene() {

@@ -5,31 +5,13 @@
 // (angle, rate and acceleration, as the step's interpolant has them) finds
 // the dip; the step is then taken again to end inside it.
 #include "jl/ladder/ladder.h"
+#include "jl/ladder/quintic_dip.h"
 
 #include <algorithm>
 #include <array>
 #include <utility>
 
 namespace jl {
-
-namespace {
-
-// The lowest of 32 samples inside (0, 1) of the quintic Hermite with value
-// f, slope m and curvature c (per unit s) at both ends: {s, value}.
-std::pair<double, double> lowestInside(double f0, double m0, double c0, double f1, double m1, double c1) {
-    std::pair<double, double> lowest{0, f0};
-    for (int i = 1; i < 32; ++i) {
-        const double s = i / 32.0, s2 = s * s, s3 = s2 * s, s4 = s3 * s, s5 = s4 * s;
-        const double h0 = 1 - 10 * s3 + 15 * s4 - 6 * s5, h1 = s - 6 * s3 + 8 * s4 - 3 * s5,
-                     h2 = (s2 - 3 * s3 + 3 * s4 - s5) / 2, h5 = 10 * s3 - 15 * s4 + 6 * s5,
-                     h4 = -4 * s3 + 7 * s4 - 3 * s5, h3 = (s3 - 2 * s4 + s5) / 2;
-        const double p = h0 * f0 + h1 * m0 + h2 * c0 + h3 * c1 + h4 * m1 + h5 * f1;
-        if (p < lowest.second) lowest = {s, p};
-    }
-    return lowest;
-}
-
-}  // namespace
 
 double Ladder::limitDip(World& w, StepStart& start, double h) const {
     const int live = liveEnd();
@@ -55,8 +37,8 @@ double Ladder::limitDip(World& w, StepStart& start, double h) const {
         const auto [open1, folded1] = limitFunctions(j, phi1);
         if (!(open0 > 0 && open1 > 0 && folded0 > 0 && folded1 > 0)) continue;  // a crossing at an end: located
         const double sign = towardOpen ? 1 : -1;
-        const auto [s, value] = lowestInside(towardOpen ? open0 : folded0, sign * rate0 * h, sign * accel0 * h * h,
-                                             towardOpen ? open1 : folded1, sign * rate1 * h, sign * accel1 * h * h);
+        const auto [s, value] = quinticLowest(towardOpen ? open0 : folded0, sign * rate0 * h, sign * accel0 * h * h,
+                                              towardOpen ? open1 : folded1, sign * rate1 * h, sign * accel1 * h * h);
         if (value < 0 && (first == 0 || s * h < first)) first = s * h;
     }
     return first;

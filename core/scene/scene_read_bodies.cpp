@@ -163,7 +163,10 @@ namespace {
 // They need the pins' weld form of a locked pair (docs/model.md section
 // 18), which a ladder in the same world would take too: not with a ladder.
 void checkStops(Fields& f, const PinSpec& pin, int blocks, const std::vector<BodySpec>& bodies) {
-    if (!pin.minAngle && !pin.maxAngle) return;
+    if (!pin.minAngle && !pin.maxAngle) {
+        if (pin.restitution != 0) f.errorAt("restitution", "a bounce needs a stop: give min_angle or max_angle");
+        return;
+    }
     const std::string_view key = pin.minAngle ? "min_angle" : "max_angle";
     if (blocks > 0) {
         f.errorAt(key, "stops on pins are not available in a scene with a ladder");

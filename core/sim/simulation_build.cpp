@@ -155,7 +155,7 @@ void Simulation::addStops(const std::map<std::string, PartId>& named) {
     for (const PinSpec& p : scene_.pins)
         if (p.minAngle || p.maxAngle)
             stops.push_back({named.at(p.a.on), named.at(p.b.on), vec(p.a.local), vec(p.b.local), p.minAngle, p.maxAngle,
-                             p.a.on, p.b.on});
+                             p.a.on, p.b.on, p.restitution});
     if (!stops.empty()) stops_.emplace(world_, std::move(stops));
 }
 

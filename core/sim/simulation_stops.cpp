@@ -57,10 +57,15 @@ void Simulation::locateStop(double& taken) {
 }
 
 // The stops at the end of the step just taken: nothing when no function
-// has crossed; else the event located (when the scene asks) and settled.
-// The step's result when it ends here, else nullopt.
+// has crossed, unless a free stop swung past a limit and back within a
+// long adaptive step (then the step is taken again to end at the dip, as
+// the ladder's, docs/model.md section 9.1); else the event located (when
+// the scene asks) and settled. The step's result when it ends here, else
+// nullopt.
 std::optional<bool> Simulation::stopsAtStepEnd(MotionStep& m, double& taken, const StepPlan& plan) {
-    if (stops_->anyClosed()) {
+    // The end's accelerations: a closed stop's push needs them, and so does
+    // the search for a dip.
+    if (stops_->anyClosed() || plan.adaptive) {
         lastPowers_ = m.step.endEvaluated && world_.pathsOnOnePiece(t_ + taken / 2, t_ + taken)
                           ? m.step.endPowers
                           : dynamics_.evaluate(world_, t_ + taken);
@@ -68,7 +73,13 @@ std::optional<bool> Simulation::stopsAtStepEnd(MotionStep& m, double& taken, con
     }
     stops_->eventFunctions(world_, dynamics_, eventValues_);
     if (std::all_of(eventValues_.begin(), eventValues_.end(), [](double f) { return f >= 0; })) {
+        if (plan.adaptive && taken > 100 * scene_.solver.eventTolerance)
+            if (const double dip = stops_->limitDip(world_, stepStartQ_, stepStartV_, stepStartA_, taken); dip > 0) {
+                retakeToDip(dip);
+                return true;
+            }
         emitGridFrames(taken);
+        stops_->track(world_);
         return std::nullopt;
     }
     const SolverSpec& solver = scene_.solver;
@@ -92,6 +103,7 @@ std::optional<bool> Simulation::stopsAtStepEnd(MotionStep& m, double& taken, con
         return false;
     }
     keptEnd_.keep(world_, dynamics_, t_ + taken, stops_->settledPowers());
+    stops_->track(world_);
     return std::nullopt;
 }
 

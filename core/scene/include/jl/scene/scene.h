@@ -139,6 +139,7 @@ struct PinSpec {
     // Stops (docs/model.md section 18): the least and greatest angle of b's
     // frame to a's, rad, counter-clockwise. Only between two bodies.
     std::optional<double> minAngle, maxAngle;
+    double restitution = 0.0;  // [0, 1): a stop's bounce, as a hinge's
     bool operator==(const PinSpec&) const = default;
 };
 

@@ -148,6 +148,8 @@ inline constexpr NumberField<PinSpec> kPinNumbers[] = {
      "stop: the least angle of b's frame to a's (counter-clockwise); left out: none", kAngle},
     {"max_angle", &PinSpec::maxAngle, "rad", range::stopAngle,
      "stop: the greatest angle of b's frame to a's; left out: none", kAngle},
+    {"restitution", &PinSpec::restitution, "", range::restitution,
+     "stop: bounce at a strike, from 0 (plastic) to just under 1; needs a stop"},
 };
 
 inline constexpr NumberField<SpringSpec> kSpringNumbers[] = {

@@ -236,7 +236,7 @@ private:
     double imbalanceBase_ = 0;  // J, the books' imbalance at the last halving (the check watches growth past it)
     // Kept from step to step so that stepping allocates nothing.
     Eigen::VectorXd stepStartQ_, stepStartV_;  // the state the step started from
-    Eigen::VectorXd stepStartA_;               // and its accelerations (adaptive steps of a ladder)
+    Eigen::VectorXd stepStartA_;               // and its accelerations (adaptive steps with limits)
     Ledger stepStartLedger_;
     std::vector<double> eventValues_;
     Powers lastPowers_;  // of smallestEventFunction's evaluation
