@@ -43,4 +43,14 @@ inline constexpr const char* kContactExamplesColumns =
     "scene,asked [s],cpu_off [s],cpu_on [s],steps_off,steps_on,events_off,events_on,strikes,same_sequence,"
     "largest_shift [s],part_at [s],largest_balance_on [J],failure_off,failure_on";
 
+// The folding chain (bench/folding_study.cpp): every run of every engine,
+// its errors against this engine's reference at 0.25, 0.5 and 1 s (centre:
+// the largest block-centre distance; dissipated: |dissipated - reference|;
+// closing: the largest first-closing difference; missing and extra: hinges
+// the reference closes by 1 s and the run never does, and the reverse).
+inline constexpr const char* kFoldingColumns =
+    "blocks,engine,method,setting,stop_model,cpu [s],finished,centre_0.25 [m],centre_0.5 [m],centre_1 [m],"
+    "dissipated_0.25 [J],dissipated_0.5 [J],dissipated_1 [J],closing_0.25 [s],closing_0.5 [s],closing_1 [s],"
+    "missing,extra,failure";
+
 }  // namespace jl::bench

@@ -13,10 +13,10 @@
 // The range: at +-60 deg ten blocks first strike at 0.316 s and then not
 // until 0.937 s, and a hundred strike nothing within 1 s (their largest
 // bend by then is 14 deg). At +-20 deg ten blocks strike from 0.189 s on,
-// about a thousand times in the second; a hundred blocks bend less, and
-// +-10 deg is the widest range they reach within 1 s (from 0.95 s on):
-// below it their stops close thousands of times a second (+-5 deg:
-// 40,897 events in this engine), a storm no reference could follow.
+// about 150 times in the second; a hundred blocks bend less, and +-10 deg
+// is the widest range they reach within 1 s (from 0.95 s on): below it
+// their stops close thousands of times a second (+-5 deg: 4,323 events in
+// this engine), a storm no reference could follow.
 #pragma once
 
 #include "jl/base/geometry.h"

@@ -60,7 +60,7 @@ std::string methodName(const Setting& s) {
 }
 
 // One run to kDuration: the samples at their exact times, the first
-// closing of each stop from the events ("'linkK' strikes its stop ...").
+// closing of each stop as the stops kept it.
 FoldingRun runOnce(int n, const Setting& setting) {
     Scene scene = foldingScene(n);
     scene.solver.integrator = setting.integrator;
@@ -91,12 +91,7 @@ FoldingRun runOnce(int n, const Setting& setting) {
         const double t = folding::kSampleTimes[k];
         while (sim.time() < t && sim.failure().empty()) {
             sim.stepOnceUpTo(t);
-            for (const Event& e : sim.takeEvents()) {
-                if (e.kind != EventKind::Touch || e.text.rfind("'link", 0) != 0) continue;
-                const int i = std::atoi(e.text.c_str() + 5);
-                if (i >= 1 && i < n && std::isnan(r.firstClosing[size_t(i - 1)]))
-                    r.firstClosing[size_t(i - 1)] = e.time;
-            }
+            sim.takeEvents();
         }
         if (!sim.failure().empty()) {
             r.finished = false;
@@ -107,6 +102,9 @@ FoldingRun runOnce(int n, const Setting& setting) {
         r.dissipated[k] = e0 - energy(sim.world()).total();
     }
     r.cpuSeconds = threadSeconds() - start;
+    // Stop i joins link i to link i + 1 (foldingScene).
+    if (const PinStops* stops = sim.stops())
+        for (int i = 0; i < stops->count() && i < n - 1; ++i) r.firstClosing[size_t(i)] = stops->firstClosing(i);
     return r;
 }
 

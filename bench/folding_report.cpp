@@ -6,6 +6,7 @@
 #include "bench/folding_peers.h"
 #include "bench/folding_siconos.h"
 #include "bench/report_text.h"
+#include "jl/base/csv_writer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -157,6 +158,19 @@ std::string foldingPart(const std::vector<FoldingRun>& runs, const FoldingRun& o
           "(missing: the reference closes the hinge and the run never does; extra: the reverse).\n\n"
        << runsTable(runs, oursRef) << "\n";
     return md.str();
+}
+
+std::string foldingCsvRows(const std::vector<FoldingRun>& runs, const FoldingRun& oursRef) {
+    std::ostringstream csv;
+    CsvWriter w(csv, 6);
+    for (const FoldingRun& r : runs) {
+        const FoldingError e = foldingError(r, oursRef);
+        const size_t last = kSampleTimes.size() - 1;
+        w.row(r.blocks, r.engine, r.method, r.setting, r.stopModel, r.cpuSeconds, r.finished ? 1 : 0, e.centre[0],
+              e.centre[1], e.centre[2], e.dissipated[0], e.dissipated[1], e.dissipated[2], e.closing[0], e.closing[1],
+              e.closing[2], e.missing[last], e.extra[last], r.why);
+    }
+    return csv.str();
 }
 
 bool writeFoldingCharts(const std::vector<FoldingRun>& runs, const FoldingRun& oursRef,

@@ -38,6 +38,10 @@ std::string foldingPart(const std::vector<FoldingRun>& runs, const FoldingRun& o
 bool writeFoldingCharts(const std::vector<FoldingRun>& runs, const FoldingRun& oursRef,
                         const std::filesystem::path& dir);
 
+// One N's rows of docs/bench/folding.csv (kFoldingColumns): every run's
+// errors against oursRef.
+std::string foldingCsvRows(const std::vector<FoldingRun>& runs, const FoldingRun& oursRef);
+
 // The section from its parts (one foldingPart per N), its template filled.
 std::string foldingSection(const std::string& parts, bool quick, bool& ok);
 // The section alone, as `jladder bench --only folding` would write it.

@@ -1,10 +1,12 @@
 #include "bench/folding_study.h"
 
+#include "bench/csv_columns.h"
 #include "bench/folding_chain.h"
 #include "bench/folding_peers.h"
 #include "bench/folding_report.h"
 #include "bench/folding_siconos.h"
 #include "bench/report_text.h"
+#include "bench/save_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -90,7 +92,7 @@ bool runFoldingStudy(const BenchPlan& plan, const std::filesystem::path& out, co
     const std::string link = std::filesystem::absolute(out)
                                  .lexically_relative(std::filesystem::absolute(report).parent_path())
                                  .generic_string();
-    std::string parts;
+    std::string parts, csv = std::string(kFoldingColumns) + "\n";
     bool ok = true;
     for (int n : {10, 100}) {
         std::fprintf(stderr, "folding chain, N = %d\n", n);
@@ -104,7 +106,9 @@ bool runFoldingStudy(const BenchPlan& plan, const std::filesystem::path& out, co
         parts += foldingPart(runs, reference, siconosReference(siconos), link);
         parts += targetsTable(runs, reference);
         ok = writeFoldingCharts(runs, reference, out) && ok;
+        csv += foldingCsvRows(runs, reference);
     }
+    ok = saveText(out / "folding.csv", csv) && ok;
     parts += timeTable();
     return writeFoldingReport(parts, plan.quick, report) && ok;
 }

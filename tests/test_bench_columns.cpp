@@ -72,7 +72,12 @@ const std::set<std::string> kNoUnit{"study",
                                     "strikes",
                                     "same_sequence",
                                     "failure_off",
-                                    "failure_on"};
+                                    "failure_on",
+                                    "engine",
+                                    "setting",
+                                    "stop_model",
+                                    "missing",
+                                    "extra"};
 
 const std::pair<const char*, const char*> kTables[] = {
     {"pendulum", kWorkPrecisionPendulumColumns},
@@ -88,6 +93,7 @@ const std::pair<const char*, const char*> kTables[] = {
     {"stability", kStabilityColumns},
     {"contacts_broad_phase", kBroadPhaseColumns},
     {"contacts_examples", kContactExamplesColumns},
+    {"folding", kFoldingColumns},
 };
 
 }  // namespace
