@@ -49,8 +49,8 @@ inline constexpr const char* kContactExamplesColumns =
 // closing: the largest first-closing difference; missing and extra: hinges
 // the reference closes by 1 s and the run never does, and the reverse).
 inline constexpr const char* kFoldingColumns =
-    "blocks,engine,method,setting,stop_model,cpu [s],finished,centre_0.25 [m],centre_0.5 [m],centre_1 [m],"
-    "dissipated_0.25 [J],dissipated_0.5 [J],dissipated_1 [J],closing_0.25 [s],closing_0.5 [s],closing_1 [s],"
-    "missing,extra,failure";
+    "blocks,engine,method,setting,stop_model,cpu [s],finished,centre_at_250ms [m],centre_at_500ms [m],"
+    "centre_at_1s [m],dissipated_at_250ms [J],dissipated_at_500ms [J],dissipated_at_1s [J],closing_at_250ms [s],"
+    "closing_at_500ms [s],closing_at_1s [s],missing,extra,failure";
 
 }  // namespace jl::bench

@@ -1,8 +1,12 @@
 // labels: physics;engine
 // Locating an event inside a step: the step's quintic Hermite interpolant
-// against motions with known answers, and the bracket narrowing on the shape
-// of a grazing contact that closes again just after a release.
+// against motions with known answers, symplectic Euler's steps read as the
+// method's own, and the bracket narrowing on the shape of a grazing contact
+// that closes again just after a release.
+#include "jl/engine/dynamics.h"
 #include "jl/engine/step_interpolant.h"
+#include "jl/engine/stepper.h"
+#include "jl/engine/world.h"
 #include "jl/sim/event_bracket.h"
 
 #include <QtTest>
@@ -68,6 +72,41 @@ private slots:
                             [&](int i, double t) { return poly(i, t, 2); }, 3};
         const auto [dq, dv] = m.worstError(0.4, 0.7);
         QVERIFY2(dq < 1e-13 && dv < 1e-13, qPrintable(QString("position error %1, velocity error %2").arg(dq).arg(dv)));
+    }
+
+    // Symplectic Euler's step read inside is the step that method takes to
+    // that instant, bit for bit: a box on a spring to the ground (its
+    // acceleration depends on where it is), one step of 2 ms read at 0.37
+    // of it against a step of that length from the same start.
+    void symplecticEulerIsReadAsItsOwnStep() {
+        World w;
+        w.gravity = Vec2(0, -9.81);
+        const PartId box =
+            w.addBox(0.02, Vec2(0.012, 0.06), 0.045, Pose{Vec2(0.03, -0.05), 0.3}, Twist{Vec2(0.2, 0), 1.5});
+        w.addSpring({w.anchor(Vec2(0, 0)), w.addParticle(box, Vec2(0, 0.03)), 50, 0.02, 0});
+        Dynamics d;
+        d.evaluate(w, 0);
+        const World start = w;
+        const double h = 2e-3, tau = 0.37 * h;
+        Ledger ledger;
+        Stepper whole(Integrator::SymplecticEuler);
+        whole.advance(w, d, 0, h, ledger);
+        StepInterpolant inside(StepInterpolant::Inside::SymplecticEuler);
+        inside.setEnd(w.q, w.v, w.a);
+        inside.setStart(h, start.q, start.v, start.a);
+        World cut = start;
+        Stepper shorter(Integrator::SymplecticEuler);
+        shorter.advance(cut, d, 0, tau, ledger);
+        Eigen::VectorXd q, v;
+        inside.at(tau, q, v);
+        QVERIFY(q == cut.q && v == cut.v);
+        QVERIFY(q[0] == inside.coordinateAt(tau, 0));
+        // The quintic through the same ends passes elsewhere.
+        StepInterpolant quintic;
+        quintic.setEnd(w.q, w.v, w.a);
+        quintic.setStart(h, start.q, start.v, start.a);
+        quintic.at(tau, q, v);
+        QVERIFY((q - cut.q).norm() > 1e-9);
     }
 
     // On a pendulum-like oscillation the error falls as h^6 in position and

@@ -33,6 +33,7 @@ Weights positionWeights(double s) {
 }  // namespace
 
 double StepInterpolant::coordinateAt(double tau, Eigen::Index i) const {
+    if (inside_ == Inside::SymplecticEuler) return q0_[i] + tau * (v0_[i] + tau * a0_[i]);
     const double h = h_, hh = h_ * h_;
     const auto [w0, w1, w2, w3, w4, w5] = positionWeights(h_ > 0 ? tau / h_ : 0);
     return w0 * q0_[i] + (w1 * h) * v0_[i] + (w2 * hh) * a0_[i] + (w3 * hh) * a1_[i] + (w4 * h) * v1_[i] + w5 * q1_[i];
@@ -40,6 +41,11 @@ double StepInterpolant::coordinateAt(double tau, Eigen::Index i) const {
 
 // The weights of positionWeights and their derivatives in s.
 void StepInterpolant::at(double tau, Eigen::VectorXd& q, Eigen::VectorXd& v) const {
+    if (inside_ == Inside::SymplecticEuler) {
+        v = v0_ + tau * a0_;
+        q = q0_ + tau * v;
+        return;
+    }
     const double s = h_ > 0 ? tau / h_ : 0, s2 = s * s, s3 = s2 * s, s4 = s3 * s;
     const double h = h_, hh = h_ * h_;
     const auto [w0, w1, w2, w3, w4, w5] = positionWeights(s);

@@ -10,7 +10,11 @@
 
 namespace jl {
 
-Simulation::Simulation(const Scene& scene) : scene_(scene), stepper_(scene.solver.integrator, scene.solver.tolerance) {}
+Simulation::Simulation(const Scene& scene)
+    : scene_(scene),
+      stepper_(scene.solver.integrator, scene.solver.tolerance),
+      interpolant_(scene.solver.integrator == Integrator::SymplecticEuler ? StepInterpolant::Inside::SymplecticEuler
+                                                                          : StepInterpolant::Inside::Quintic) {}
 
 Simulation::Built Simulation::build(const Scene& scene) {
     Built b;
