@@ -453,6 +453,19 @@ std::vector<Event> PinStops::settle(World& w, Dynamics& d, double t, double* imp
                      " s) could not be settled";
         settled_ = d.evaluate(w, t);
     }
+    // A free stop the instant leaves a hair past its limit (within the
+    // touching band: moving away, or resting with its acceleration away)
+    // measures its limits from there, as one just released does; else its
+    // function would start the next step negative, that step's event could
+    // not be located, and the step would be taken whole, the stops it
+    // crossed settled late and deep.
+    for (int i = 0; i < count(); ++i) {
+        if (closed_[size_t(i)] != 0) continue;
+        const PinStop& s = stop(i);
+        const double phi = angle(w, i);
+        const double gap = std::min(s.min ? phi - *s.min : 1.0, s.max ? *s.max - phi : 1.0);
+        if (gap < 0) contacts_[size_t(i)].releaseGap = std::min(contacts_[size_t(i)].releaseGap, gap);
+    }
     return net(events, closedBefore);
 }
 

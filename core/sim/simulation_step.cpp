@@ -195,8 +195,8 @@ void Simulation::keepStepStart(bool adaptive) {
     stepStartQ_ = world_.q;
     stepStartV_ = world_.v;
     // The start's accelerations (the last evaluation, of this state), for
-    // a limit or a stop passed and left within an adaptive step.
-    if (adaptive && (ladder_ || stops_)) stepStartA_ = world_.a;
+    // a limit passed and left within an adaptive step, or a stop within any.
+    if ((adaptive && ladder_) || stops_) stepStartA_ = world_.a;
     stepStartLedger_ = ledger_;
 }
 

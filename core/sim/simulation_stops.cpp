@@ -56,28 +56,43 @@ void Simulation::locateStop(double& taken) {
     taken = b.hi;
 }
 
-// The stops at the end of the step just taken: nothing when no function
-// has crossed, unless a free stop swung past a limit and back within a
-// long adaptive step (then the step is taken again to end at the dip, as
-// the ladder's, docs/model.md section 9.1); else the event located (when
-// the scene asks) and settled. The step's result when it ends here, else
+// The stops at the end of the step just taken. A free stop that swung past
+// a limit and back within the step shows no sign change at its ends
+// (docs/model.md section 9.1): an adaptive step is then taken again to end
+// at the dip, as a ladder's is, and a fixed one too, once (a stop's range
+// can be a degree or two, which a step of 1 ms swings through and back; a
+// fixed step cannot be shortened for the next try). That holds also when
+// another stop's function has crossed: the dip may come first. Then
+// nothing when no function has crossed; else the event located (when the
+// scene asks) and settled. The step's result when it ends here, else
 // nullopt.
 std::optional<bool> Simulation::stopsAtStepEnd(MotionStep& m, double& taken, const StepPlan& plan) {
-    // The end's accelerations: a closed stop's push needs them, and so does
-    // the search for a dip.
-    if (stops_->anyClosed() || plan.adaptive) {
+    // The end evaluated (a closed stop's push needs its accelerations, and so
+    // does the search for a dip; the next step starts from this evaluation),
+    // and the stops' functions read there. True when one has crossed.
+    const auto functionsAtEnd = [&] {
         lastPowers_ = m.step.endEvaluated && world_.pathsOnOnePiece(t_ + taken / 2, t_ + taken)
                           ? m.step.endPowers
                           : dynamics_.evaluate(world_, t_ + taken);
         keptEnd_.keep(world_, dynamics_, t_ + taken, lastPowers_);
-    }
-    stops_->eventFunctions(world_, dynamics_, eventValues_);
-    if (std::all_of(eventValues_.begin(), eventValues_.end(), [](double f) { return f >= 0; })) {
-        if (plan.adaptive && taken > 100 * scene_.solver.eventTolerance)
-            if (const double dip = stops_->limitDip(world_, stepStartQ_, stepStartV_, stepStartA_, taken); dip > 0) {
+        stops_->eventFunctions(world_, dynamics_, eventValues_);
+        return !std::all_of(eventValues_.begin(), eventValues_.end(), [](double f) { return f >= 0; });
+    };
+    bool crossed = functionsAtEnd();
+    if (taken > 100 * scene_.solver.eventTolerance)
+        if (const double dip = stops_->limitDip(world_, stepStartQ_, stepStartV_, stepStartA_, taken); dip > 0) {
+            if (plan.adaptive) {
                 retakeToDip(dip);
                 return true;
             }
+            restoreStepStart();
+            m = advanceAndProject(world_, dynamics_, stepper_, t_, dip, ledger_, scene_.solver.projectionTolerance,
+                                  true);
+            if (!m.ok()) return blownUp(m, plan.chosen);
+            taken = m.step.taken;
+            crossed = functionsAtEnd();
+        }
+    if (!crossed) {
         emitGridFrames(taken);
         stops_->track(world_);
         return std::nullopt;
