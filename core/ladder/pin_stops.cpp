@@ -34,6 +34,14 @@ std::string degrees(double rad) {
     return text;
 }
 
+// rad: how far stop i's angle is inside its range from the nearer limit
+// (negative past it); 1 with no limit.
+double nearerGap(const PinStops& stops, const World& w, int i) {
+    const double phi = stops.angle(w, i);
+    const PinStop& s = stops.stop(i);
+    return std::min(s.min ? phi - *s.min : 1.0, s.max ? *s.max - phi : 1.0);
+}
+
 }  // namespace
 
 PinStops::PinStops(World& w, std::vector<PinStop> stops) : stops_(std::move(stops)) {
@@ -146,19 +154,14 @@ double PinStops::eventFunctions(const World& w, const Dynamics& d, std::vector<d
             forces = std::min(forces, out[size_t(i)]);
             continue;
         }
-        const double phi = angle(w, i), zero = contacts_[size_t(i)].releaseGap - kAngleTolerance;
-        const PinStop& s = stop(i);
-        out[size_t(i)] = std::min(s.min ? phi - *s.min - zero : 1.0, s.max ? *s.max - phi - zero : 1.0);
+        out[size_t(i)] = nearerGap(*this, w, i) - (contacts_[size_t(i)].releaseGap - kAngleTolerance);
     }
     return forces;
 }
 
 void PinStops::track(const World& w) {
     for (int i = 0; i < count(); ++i) {
-        if (closed_[size_t(i)] != 0 || contacts_[size_t(i)].releaseGap == 0) continue;
-        const double phi = angle(w, i);
-        const PinStop& s = stop(i);
-        if ((!s.min || phi - *s.min > kTouch) && (!s.max || *s.max - phi > kTouch)) contacts_[size_t(i)].releaseGap = 0;
+        if (closed_[size_t(i)] == 0 && nearerGap(*this, w, i) > kTouch) contacts_[size_t(i)].releaseGap = 0;
     }
 }
 
@@ -223,16 +226,15 @@ bool PinStops::noteClose(int i, double t) {
 // would only close again at once. Tried on a copy of the world.
 bool PinStops::wouldChatter(const World& w, double t, int i, const std::vector<Twist>& before) const {
     World trial = w;
-    PinStops after = *this;
     Dynamics d;
     const int side = closed_[size_t(i)];
-    after.open(trial, i);
+    trial.separate(pairs_[size_t(i)][side < 0 ? 0 : 1][0]);
     trial.setPartVelocities(before);
     projectVelocities(trial, d);
     d.evaluate(trial, t);
     const double away = side < 0 ? 1.0 : -1.0;
-    const double speed = away * after.rate(trial, i);
-    const double accel = away * after.acceleration(trial, i);
+    const double speed = away * rate(trial, i);
+    const double accel = away * acceleration(trial, i);
     return speed < kMinReboundSpeed && accel < 0;
 }
 
@@ -461,10 +463,8 @@ std::vector<Event> PinStops::settle(World& w, Dynamics& d, double t, double* imp
     // crossed settled late and deep.
     for (int i = 0; i < count(); ++i) {
         if (closed_[size_t(i)] != 0) continue;
-        const PinStop& s = stop(i);
-        const double phi = angle(w, i);
-        const double gap = std::min(s.min ? phi - *s.min : 1.0, s.max ? *s.max - phi : 1.0);
-        if (gap < 0) contacts_[size_t(i)].releaseGap = std::min(contacts_[size_t(i)].releaseGap, gap);
+        if (const double g = nearerGap(*this, w, i); g < 0)
+            contacts_[size_t(i)].releaseGap = std::min(contacts_[size_t(i)].releaseGap, g);
     }
     return net(events, closedBefore);
 }
