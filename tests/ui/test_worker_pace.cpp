@@ -127,16 +127,25 @@ private slots:
     }
 
     void aRunKeepsPaceThroughAStretchTheEngineRunsSlowerThanTheClock() {
-        // The 1,000-block classic at real time: the engine needs 0.14 to
-        // 0.8 of a core up to t = 4 s, then 1.2 from t = 4.5 to 5 s. Made
+        // The 1,000-block classic at real time: the window's simulation
+        // thread needs 0.1 to 0.8 of a core up to t = 3 s, then 1.0 to 1.6
+        // up to t = 5.5 s (more on a day this machine runs slower). Made
         // only as they fell due, its frames trailed the clock there by the
-        // whole catch-up allowance; made ahead in the slack before, never
-        // by more than a frame or two. Only on a core of its own: where the
-        // machine's other work kept the thread waiting, it says so.
+        // whole catch-up allowance; made up to 0.25 s or 1 s ahead in the
+        // slack before, they still did so on a slow day (0.8 s short by
+        // t = 5.2 s); made up to 2 s ahead, never by more than a frame or
+        // two. Only
+        // where the thread had a core of its own and time to spare: where
+        // the machine's other work kept it waiting, or it never rested
+        // (then no lead could have carried it), a run that fell behind is
+        // not held against the lead.
         SimController sim;
         sim.load(classicWith(1000));
         QVERIFY(jl::test::waitForStatus(&sim, [](const SimStatus& s) { return s.frame != nullptr; }));
         const auto waitedBefore = jl::test::threadWaits();
+        const auto ranBefore = jl::test::threadSeconds();
+        QElapsedTimer wall;
+        wall.start();
         sim.play();
         double most = 0, at = 0;
         QVERIFY(jl::test::waitForStatus(
@@ -147,12 +156,17 @@ private slots:
             },
             15000));
         const double waited = jl::test::threadWaits()["simulation"] - waitedBefore.at("simulation");
+        const double ran = jl::test::threadSeconds()["simulation"] - ranBefore.at("simulation");
+        const double seconds = double(wall.elapsed()) / 1000;
         qInfo(
             "the frame on screen trailed the clock by %.3f s at most from t = 4.3 to 5.3 s (at t = %.3f s); the "
-            "simulation thread waited %.3f s for a processor",
-            most, at, waited);
-        if (waited > 0.25) QSKIP("the simulation thread had no core of its own: the machine is busy");
-        QVERIFY2(most < 2 * sim.status()->interval, qPrintable(QString("trailed by %1 s").arg(most)));
+            "simulation thread ran %.2f s of the %.2f s and waited %.3f s for a processor",
+            most, at, ran, seconds, waited);
+        const bool kept = most < 2 * sim.status()->interval;
+        if (!kept && waited > 0.25) QSKIP("the simulation thread had no core of its own: the machine is busy");
+        if (!kept && ran > 0.97 * seconds)
+            QSKIP("the simulation thread never rested: the engine is slower than the clock here");
+        QVERIFY2(kept, qPrintable(QString("trailed by %1 s").arg(most)));
     }
 
     void aStallBehindTheClockIsMadeGoodUpToATenthOfASecond() {

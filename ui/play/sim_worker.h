@@ -121,7 +121,7 @@ private:
     jl::FrameGrid frameGrid() const { return {0.0, history_.interval()}; }
     bool simulateNextFrame();
     // Frames made ahead of the clock and kept back (sim_worker_ahead.cpp).
-    static constexpr std::size_t kAheadFrames = 15;  // 0.25 s at 60 frames a second
+    static constexpr std::size_t kAheadFrames = 120;  // 2 s at 60 frames a second
     static constexpr std::size_t kAheadBlockFrames = 150000;
     struct AheadGroup {
         std::vector<FramePtr> frames;                           // in order, their events attached

@@ -3,10 +3,11 @@
 // keeps them back: each goes to the history, the events and the window
 // only when the clock reaches it, exactly as if it had been made then. So
 // the slack of a stretch the engine runs faster than real time carries the
-// run through one it runs slower (the 1,000-block classic needs 0.14 to
-// 0.8 of a core up to t = 4 s, then 1.2 at t = 4.5 s:
-// docs/desktop-performance.md). Any command that reaches the head
-// simulation first puts it back at the history's head (rewindAhead).
+// run through one it runs slower (the 1,000-block classic needs 0.15 to
+// 0.65 of a core up to t = 4 s, then 1.2 to 1.6 up to t = 5.5 s: on a
+// slow day 0.8 s short, docs/desktop-performance.md). Any command that
+// reaches the head simulation first puts it back at the history's head
+// (rewindAhead).
 #include "ui/play/sim_worker.h"
 
 #include <algorithm>
@@ -92,7 +93,7 @@ void SimWorker::rewindAhead() {
 }
 
 // Each group kept back holds a copy of the world: at most kAheadBlockFrames
-// blocks' worth of them (15 frames of 10,000 blocks, 1 of 150,000).
+// blocks' worth of them (120 frames of 1,000 blocks, 15 of 10,000, 1 of 150,000).
 bool SimWorker::canWorkAhead() const {
     if (!playing_ || !sim_ || !failure_.empty() || aheadStopped_ || sim_->dragging()) return false;
     const std::size_t blocks = std::max<std::size_t>(1, shown_ ? shown_->poses.size() : 1);
