@@ -16,6 +16,7 @@
 #include <QSignalBlocker>
 #include <QSpinBox>
 #include <QVBoxLayout>
+#include <QtConcurrent>
 
 #include <cmath>
 #include <limits>
@@ -146,15 +147,34 @@ void SimulationPanel::addTableTop() {
     l->setToolTip(tip);
     form_->layout()->addRow(l, row);
     connect(table_, &QCheckBox::toggled, this, [this](bool on) {
-        std::optional<jl::FloorSpec> floor;
-        if (on) floor = jl::FloorSpec{tableUnderTheLadder(doc_->scene())};
-        changeScene(doc_, floorField("floor"), floor, on ? tr("Add table top") : tr("Remove table top"));
+        if (on)
+            placeTableTop();
+        else
+            changeScene(doc_, floorField("floor"), std::optional<jl::FloorSpec>(), tr("Remove table top"));
+    });
+    connect(doc_, &Document::changed, this, [this] { tablePlaceStale_ = placingTable_; });
+    connect(&tablePlace_, &QFutureWatcher<double>::finished, this, [this] {
+        if (tablePlaceStale_) return placeTableTop();
+        placingTable_ = false;
+        table_->setEnabled(true);
+        if (doc_->scene().floor) return refresh();
+        changeScene(doc_, floorField("floor"), std::optional<jl::FloorSpec>(jl::FloorSpec{tablePlace_.result()}),
+                    tr("Add table top"));
     });
     connect(tableHeight_, &QDoubleSpinBox::valueChanged, this, [this](double mm) {
         if (!doc_->scene().floor || mm == tableHeight_->minimum()) return;
         changeScene(doc_, floorField("floor.height"), std::optional<jl::FloorSpec>(jl::FloorSpec{mm / 1000}),
                     tr("Change table top"));
     });
+}
+
+// The box stays checked, and out of reach, until the place is found; the
+// table top is then one undoable edit.
+void SimulationPanel::placeTableTop() {
+    placingTable_ = true;
+    tablePlaceStale_ = false;
+    table_->setEnabled(false);
+    tablePlace_.setFuture(QtConcurrent::run([scene = doc_->scene()] { return tableUnderTheLadder(scene); }));
 }
 
 void SimulationPanel::setHistoryMegabytes(int mb) {
@@ -171,8 +191,8 @@ void SimulationPanel::refresh() {
     blockContact_->setCurrentIndex(blockContact_->findData(int(s.blockContact)));
     const QSignalBlocker b4(table_), b5(tableHeight_);
     const std::optional<jl::FloorSpec>& floor = doc_->scene().floor;
-    table_->setChecked(floor.has_value());
-    table_->setEnabled(doc_->scene().ladder.has_value());
+    table_->setChecked(floor.has_value() || placingTable_);
+    table_->setEnabled(doc_->scene().ladder.has_value() && !placingTable_);
     tableHeight_->setEnabled(floor.has_value());
     tableHeight_->setValue(floor ? floor->height * 1000 : tableHeight_->minimum());
 }
