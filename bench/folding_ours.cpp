@@ -120,7 +120,6 @@ FoldingRun runFoldingReference(int n, double tolerance) {
 }
 
 std::vector<FoldingRun> runFoldingOurs(int n, double minSeconds) {
-    (void)minSeconds;  // each run is timed once: the slowest take seconds
     std::vector<Setting> settings;
     for (EventPolicy events : {EventPolicy::Located, EventPolicy::EndOfStep})
         for (double h : {1e-3, 2.5e-4, 1e-4, 2.5e-5}) settings.push_back({Integrator::RK4, events, h, 0});
@@ -132,7 +131,12 @@ std::vector<FoldingRun> runFoldingOurs(int n, double minSeconds) {
     std::vector<FoldingRun> out;
     for (const Setting& s : settings) {
         out.push_back(runOnce(n, s));
-        const FoldingRun& r = out.back();
+        FoldingRun& r = out.back();
+        // Short runs repeated until the clock resolves them, as the peers' are.
+        double cpu = r.cpuSeconds;
+        int repeats = 1;
+        for (; r.finished && cpu < minSeconds; ++repeats) cpu += runOnce(n, s).cpuSeconds;
+        r.cpuSeconds = cpu / repeats;
         std::fprintf(stderr, "  jladder %-28s %-16s N=%-4d %8.3f CPU s%s\n", r.method.c_str(), r.setting.c_str(), n,
                      r.cpuSeconds, r.finished ? "" : (" failed: " + r.why).c_str());
     }

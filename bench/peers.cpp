@@ -52,10 +52,16 @@ std::vector<Vec2> runMujoco(int n, double h, int steps, const char* integrator) 
     if (!m) return {};
     mjData* d = mj_makeData(m);
     for (int s = 0; s < steps; ++s) mj_step(m, d);
+    // mj_step leaves the positions of the bodies (xipos) where its last
+    // step started: they are computed from the state after it here.
+    mj_forward(m, d);
     std::vector<Vec2> out;
     for (int i = 1; i <= n; ++i) {
         const double* c = d->xipos + 3 * i;
-        if (!std::isfinite(c[0]) || !std::isfinite(c[2])) return {};
+        if (!std::isfinite(c[0]) || !std::isfinite(c[2])) {
+            out.clear();
+            break;
+        }
         out.emplace_back(c[0], c[2]);
     }
     mj_deleteData(d);
