@@ -122,7 +122,7 @@ FoldingRun runFoldingReference(int n, double tolerance) {
 std::vector<FoldingRun> runFoldingOurs(int n, double minSeconds) {
     std::vector<Setting> settings;
     for (EventPolicy events : {EventPolicy::Located, EventPolicy::EndOfStep})
-        for (double h : {1e-3, 2.5e-4, 1e-4, 2.5e-5}) settings.push_back({Integrator::RK4, events, h, 0});
+        for (double h : {2e-3, 1e-3, 2.5e-4, 1e-4, 2.5e-5}) settings.push_back({Integrator::RK4, events, h, 0});
     for (double h : {1e-3, 2.5e-4, 1e-4, 2.5e-5})
         settings.push_back({Integrator::SymplecticEuler, EventPolicy::Located, h, 0});
     for (Integrator i : {Integrator::DormandPrince45, Integrator::Verner65})

@@ -32,7 +32,7 @@ namespace {
 using namespace folding;
 
 // The steps every peer is run at: each divides the sample times exactly.
-constexpr double kFoldingSteps[] = {1e-3, 2.5e-4, 1e-4, 2.5e-5, 1e-5};
+constexpr double kFoldingSteps[] = {2e-3, 1e-3, 2.5e-4, 1e-4, 2.5e-5, 1e-5};
 // A run projected to take longer than this (from the one before it at a
 // larger step) is dropped, with the rest of its series.
 constexpr double kLongestRun = 30;  // CPU s
@@ -405,8 +405,8 @@ std::vector<FoldingRun> runFoldingPeers(int n, double minSeconds) {
 
 std::string foldingPeerNote() {
     char steps[160];
-    std::snprintf(steps, sizeof steps, "%g, %g, %g, %g and %g s", kFoldingSteps[0], kFoldingSteps[1], kFoldingSteps[2],
-                  kFoldingSteps[3], kFoldingSteps[4]);
+    std::snprintf(steps, sizeof steps, "%g, %g, %g, %g, %g and %g s", kFoldingSteps[0], kFoldingSteps[1],
+                  kFoldingSteps[2], kFoldingSteps[3], kFoldingSteps[4], kFoldingSteps[5]);
     return mujocoVersion() + ", " + box2dVersion() +
            " (single precision; Debian's libbox2d 2.4.1 calls itself 2.4.0), " + bulletVersion() +
            " (double precision), each at fixed steps " + steps + " (a step whose run would take over " +
