@@ -14,6 +14,7 @@
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QLineEdit>
+#include <QThreadPool>
 #include <QUndoStack>
 #include <QtTest>
 
@@ -145,6 +146,22 @@ private slots:
         QCOMPARE(doc.undoStack()->undoText(), QString("Add table top"));
         panel.refresh();
         QVERIFY(table->isChecked() && table->isEnabled());
+
+        // Another scene opened meanwhile: the click is dropped, not put
+        // under the new scene's ladder.
+        doc.reset(*load.scene, QString());
+        panel.refresh();
+        QVERIFY(!table->isChecked() && table->isEnabled());
+        QTest::mouseClick(table, Qt::LeftButton, {}, QPoint(4, table->height() / 2));
+        QVERIFY(table->isChecked() && !table->isEnabled());
+        const jl::SceneLoad six = jl::loadScene(JL_SOURCE_DIR "/examples/classic.yaml");
+        QVERIFY(six.scene);
+        doc.reset(*six.scene, QString());
+        QVERIFY(!table->isChecked() && table->isEnabled());
+        QVERIFY(QThreadPool::globalInstance()->waitForDone(30000));
+        QCoreApplication::processEvents();
+        QVERIFY(!doc.scene().floor && doc.undoStack()->count() == 0);
+        QVERIFY(!table->isChecked() && table->isEnabled());
     }
 };
 

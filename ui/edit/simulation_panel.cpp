@@ -152,8 +152,17 @@ void SimulationPanel::addTableTop() {
         else
             changeScene(doc_, floorField("floor"), std::optional<jl::FloorSpec>(), tr("Remove table top"));
     });
-    connect(doc_, &Document::changed, this, [this] { tablePlaceStale_ = placingTable_; });
+    // An edit meanwhile: the place is found again for the scene as it is
+    // now. Another scene altogether (a file opened): the click is dropped.
+    connect(doc_, &Document::changed, this, [this](SceneChange c) {
+        if (!placingTable_) return;
+        tablePlaceStale_ = true;
+        if (c != SceneChange::Whole) return;
+        placingTable_ = false;
+        refresh();
+    });
     connect(&tablePlace_, &QFutureWatcher<double>::finished, this, [this] {
+        if (!placingTable_) return;
         if (tablePlaceStale_) return placeTableTop();
         placingTable_ = false;
         table_->setEnabled(true);
