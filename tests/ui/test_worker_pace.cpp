@@ -134,11 +134,10 @@ private slots:
         // whole catch-up allowance; made up to 0.25 s or 1 s ahead in the
         // slack before, they still did so on a slow day (0.8 s short by
         // t = 5.2 s); made up to 2 s ahead, never by more than a frame or
-        // two. Only
-        // where the thread had a core of its own and time to spare: where
-        // the machine's other work kept it waiting, or it never rested
-        // (then no lead could have carried it), a run that fell behind is
-        // not held against the lead.
+        // two. Checked only where the thread had a core of its own and
+        // time to spare: where the machine's other work kept it waiting,
+        // or it never rested (then no lead could have carried it), a run
+        // that fell behind is not held against the lead.
         SimController sim;
         sim.load(classicWith(1000));
         QVERIFY(jl::test::waitForStatus(&sim, [](const SimStatus& s) { return s.frame != nullptr; }));
