@@ -73,6 +73,26 @@ QString invalidity(const World& w) {
     }
     for (const Pin& pin : w.pins())
         if (!w.body(pin.bodyA).alive || !w.body(pin.bodyB).alive) return "a pin joins a dead body";
+    // The pins the world keeps up to date change by change are the ones a
+    // pass over every particle derives: a pin for each further body a live
+    // particle lies on, unless both are kinematic.
+    std::vector<std::pair<ParticleId, int>> derived;
+    for (ParticleId id = 0; id < w.particleCount(); ++id) {
+        const Particle& p = w.particle(id);
+        if (p.mergedInto >= 0 || p.at.empty()) continue;
+        std::vector<int> bodies{w.part(p.at.front().part).body};
+        for (const Attachment& a : p.at) {
+            const int b = w.part(a.part).body;
+            if (std::find(bodies.begin(), bodies.end(), b) != bodies.end()) continue;
+            bodies.push_back(b);
+            if (!(w.body(bodies.front()).kinematic && w.body(b).kinematic)) derived.emplace_back(id, b);
+        }
+    }
+    if (derived.size() != w.pins().size())
+        return QString("%1 pins, %2 derived").arg(w.pins().size()).arg(derived.size());
+    for (size_t i = 0; i < derived.size(); ++i)
+        if (w.pins()[i].particle != derived[i].first || w.pins()[i].bodyB != derived[i].second)
+            return QString("pin %1 is not the one derived").arg(i);
     if (!w.q.allFinite() || !w.v.allFinite()) return "non-finite state";
     return {};
 }

@@ -115,6 +115,7 @@ void World::regroup(const std::vector<int>& touchedBodies) {
         }
         makeBody(g, gp, gv);
     }
+    regrouped_.insert(regrouped_.end(), parts.begin(), parts.end());
     pinsStale_ = true;
 }
 

@@ -13,12 +13,12 @@ namespace jl {
 void World::rebuildPins() const {
     pinsStale_ = false;
     pins_.clear();
+    updatePinning();
     // The bodies a particle already joins; one list for all of them (a list
     // per particle was an allocation each, at every change of structure).
     std::vector<int>& done = scratch_->joined;
-    for (ParticleId id = 0; id < particleCount(); ++id) {
+    for (ParticleId id : pinning_) {
         const Particle& p = particles_[id];
-        if (p.mergedInto >= 0 || p.at.size() < 2) continue;
         const Attachment& first = p.at.front();
         const int ba = parts_[first.part].body;
         done.assign(1, ba);
@@ -33,6 +33,66 @@ void World::rebuildPins() const {
     }
     welds_.clear();
     if (weldRigidPairs_) weldSharedPairs();
+}
+
+namespace {
+
+// Whether particle `id` makes a pin: it is live and lies on two bodies, not
+// both kinematic (what rebuildPins derives a pin from).
+bool makesPin(const std::vector<Particle>& particles, const std::vector<Part>& parts, const std::vector<Body>& bodies,
+              ParticleId id) {
+    const Particle& p = particles[size_t(id)];
+    if (p.mergedInto >= 0 || p.at.size() < 2) return false;
+    const int ba = parts[size_t(p.at.front().part)].body;
+    for (size_t i = 1; i < p.at.size(); ++i) {
+        const int bb = parts[size_t(p.at[i].part)].body;
+        if (bb != ba && !(bodies[size_t(ba)].kinematic && bodies[size_t(bb)].kinematic)) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+// Brings `pinning_` up to date for the parts regrouped since it last was:
+// only their particles can have begun or ceased to make a pin. A few are
+// looked up one by one; many (a still tail joined or woken) are merged into
+// the list in one pass; and where they are most of the world (a ladder
+// built hinge by hinge) every particle is looked at once, as the pins were
+// derived before the list was kept.
+void World::updatePinning() const {
+    std::vector<ParticleId> affected;
+    for (PartId part : regrouped_)
+        affected.insert(affected.end(), particlesOfPart_[size_t(part)].begin(), particlesOfPart_[size_t(part)].end());
+    regrouped_.clear();
+    const auto pins = [this](ParticleId id) { return makesPin(particles_, parts_, bodies_, id); };
+    if (affected.size() * 4 > particles_.size()) {
+        pinning_.clear();
+        for (ParticleId id = 0; id < particleCount(); ++id)
+            if (pins(id)) pinning_.push_back(id);
+        return;
+    }
+    std::sort(affected.begin(), affected.end());
+    affected.erase(std::unique(affected.begin(), affected.end()), affected.end());
+    constexpr size_t kOneByOne = 16;
+    if (affected.size() * kOneByOne < pinning_.size()) {
+        for (ParticleId id : affected) {
+            const auto at = std::lower_bound(pinning_.begin(), pinning_.end(), id);
+            const bool listed = at != pinning_.end() && *at == id, now = pins(id);
+            if (now && !listed) pinning_.insert(at, id);
+            if (!now && listed) pinning_.erase(at);
+        }
+        return;
+    }
+    std::vector<ParticleId> merged;
+    merged.reserve(pinning_.size() + affected.size());
+    size_t i = 0;
+    for (ParticleId id : affected) {
+        while (i < pinning_.size() && pinning_[i] < id) merged.push_back(pinning_[i++]);
+        if (i < pinning_.size() && pinning_[i] == id) ++i;
+        if (pins(id)) merged.push_back(id);
+    }
+    merged.insert(merged.end(), pinning_.begin() + std::ptrdiff_t(i), pinning_.end());
+    pinning_ = std::move(merged);
 }
 
 // Weld mode: of the pins between one pair of bodies (two bodies that share

@@ -305,6 +305,7 @@ private:
                  const std::vector<Twist>& partVelocities);
     int allocateBody();
     void rebuildPins() const;
+    void updatePinning() const;
     void indexBodies() const;
     void weldSharedPairs() const;
 
@@ -313,6 +314,14 @@ private:
     std::vector<Particle> particles_;
     std::vector<std::vector<ParticleId>> particlesOfPart_;  // every particle ever on the part
     mutable std::vector<Pin> pins_;
+    // The live particles whose attachments lie on two or more bodies (not
+    // all kinematic), ascending: the only ones that make pins. Brought up to
+    // date with the pins for the particles of the parts regrouped since
+    // (`regrouped_`), so that deriving the pins after a lock or a wake of
+    // the still tail costs what the moving bodies' pins number, not a pass
+    // over every particle of a long ladder.
+    mutable std::vector<ParticleId> pinning_;
+    mutable std::vector<PartId> regrouped_;
     mutable std::vector<Weld> welds_;
     mutable bool pinsStale_ = false;
     // indexBodies: valid for this structure, gravity and length of q.
