@@ -100,7 +100,10 @@ void World::regroup(const std::vector<int>& touchedBodies) {
     for (int b : olds) {
         bodies_[size_t(b)] = Body{};
         invMassDiag.segment<3>(3 * b).setZero();  // dead until reused: no mass to move
-        if (b != 0) freeBodies_.push_back(b);
+        if (b != 0) {
+            freeBodies_.push_back(b);
+            std::push_heap(freeBodies_.begin(), freeBodies_.end(), std::greater<>());
+        }
     }
     std::vector<Pose> gp;
     std::vector<Twist> gv;
@@ -121,7 +124,7 @@ void World::regroup(const std::vector<int>& touchedBodies) {
 
 int World::allocateBody() {
     if (!freeBodies_.empty()) {
-        std::sort(freeBodies_.begin(), freeBodies_.end(), std::greater<>());
+        std::pop_heap(freeBodies_.begin(), freeBodies_.end(), std::greater<>());
         const int b = freeBodies_.back();
         freeBodies_.pop_back();
         return b;

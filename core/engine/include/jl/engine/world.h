@@ -336,7 +336,7 @@ private:
     std::vector<UserDrag> drags_;
     std::vector<AppliedLoad> loads_;
     std::vector<Contact> contacts_;
-    std::vector<int> freeBodies_;
+    std::vector<int> freeBodies_;      // a heap, the smallest number on top: reused first
     std::vector<PartId> dampedParts_;  // ascending
     long long structureVersion_ = 0;
     std::uint64_t revision_ = freshRevision();
