@@ -44,6 +44,20 @@ private slots:
         QVERIFY(early.events <= whole.events);
     }
 
+    // The same with blocks that meet as solids: contacts between blocks
+    // only take energy, so the stop by energy still gives the whole run's
+    // reach and flips.
+    void aStalledRippleAmongSolidBlocksStopsByEnergy() {
+        Scene s = turnedLadder(50, 0.012);
+        s.solver.blockContact = BlockContact::On;
+        const RippleReach early = firstRippleReach(s), whole = wholeRun(s);
+        QVERIFY2(early.failure.empty() && whole.failure.empty(), whole.failure.c_str());
+        QCOMPARE(early.end, RippleEnd::Energy);
+        QVERIFY2(early.until < 0.25 * whole.until, qPrintable(QString::number(early.until)));
+        QCOMPARE(early.reached, whole.reached);
+        QCOMPARE(early.flipTimes, whole.flipTimes);
+    }
+
     // Twenty-five blocks 3 mm thick: the bottom block flips at 1.1 s, so once
     // hinge 23 has flipped the ripple can never take hinge 24 in order.
     void aRippleOvertakenStopsByOrder() {
@@ -134,6 +148,9 @@ private slots:
         Scene twoHands = base;
         twoHands.ladder->held = {0, 7};
         QVERIFY(!applies(twoHands));
+        Scene solid = base;
+        solid.solver.blockContact = BlockContact::On;
+        QVERIFY(applies(solid));  // frictionless contacts and plastic impacts
         Scene table = base;
         table.floor = FloorSpec{-1.0};
         QVERIFY(!applies(table));

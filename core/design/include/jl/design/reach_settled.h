@@ -39,8 +39,9 @@ public:
     // Whether the energy argument holds for this scene: a ladder held by
     // block 0 alone, moved only by Turn and Move actions of block 0 (no
     // drags, pushes, cuts, joins or releases), nothing but the ladder (no
-    // bodies, particles, pins or springs), no table and no contact between
-    // blocks, gravity not zero, damping not negative, restitution below 1.
+    // bodies, particles, pins or springs), no table, gravity not zero,
+    // damping not negative, restitution below 1 (contact between blocks
+    // only takes energy too).
     bool applies() const { return applies_; }
     // s: the end of the hand's last motion; from then on E only falls.
     double handStops() const { return handStops_; }
