@@ -4,7 +4,9 @@
 // (when it lands, what it loses, the pushes that hold it up), a block
 // landing on one corner (the impulse of a rigid-body impact), a block
 // sliding down a tilted face without friction (energy kept), and every
-// example (no two blocks inside each other).
+// example and design of the map's 12-block row (no two blocks inside each
+// other).
+#include "jl/design/ripple_reach.h"
 #include "jl/engine/energy.h"
 #include "tests/example_claims.h"
 #include "tests/scene_run.h"
@@ -409,6 +411,41 @@ private slots:
         QVERIFY2(r.failure.empty(), r.failure.c_str());
         QVERIFY(r.worstBalance < 2e-4 * scale);
         QVERIFY(deepest <= 0.05e-3);
+    }
+
+    // The design map's 12-block row (docs/ripple-reach.md, "The map with
+    // solid blocks"), each cell run for its whole time with contact on: no
+    // two blocks inside each other by more than 0.05 mm after any step, the
+    // books balanced as the examples' are. Without contact the bottom block
+    // swings through block 8 in the two cells whose answers contact changes
+    // (8 and 10 mm: 2.3 and 5.2 mm deep), and 0.3 mm into block 9 at 7 mm.
+    void noDesignOfTwelveBlocksHasBlocksInsideEachOther_data() {
+        QTest::addColumn<int>("millimetres");
+        for (int t = 1; t <= 15; ++t) QTest::newRow(qPrintable(QString("%1 mm").arg(t))) << t;
+    }
+    void noDesignOfTwelveBlocksHasBlocksInsideEachOther() {
+        QFETCH(int, millimetres);
+        struct Deepest {
+            double overlap = 0, scale = 0;
+            Run run;
+        };
+        const auto deepestOf = [&](BlockContact contact) {
+            Scene s = turnedLadder(12, 1e-3 * millimetres);
+            s.solver.blockContact = contact;
+            auto sim = std::move(Simulation::build(s).simulation);
+            Deepest d;
+            d.run = runUntil(*sim, rippleRunTime(s),
+                             [&](const Frame&) { d.overlap = std::max(d.overlap, deepestOverlap(*sim)); });
+            d.scale = energyScale(*sim);
+            return d;
+        };
+        const Deepest solid = deepestOf(BlockContact::On), through = deepestOf(BlockContact::Off);
+        qInfo("deepest overlap %.3g mm with contact, %.3g mm without; books %.3g J of %.3g J", solid.overlap * 1e3,
+              through.overlap * 1e3, solid.run.worstBalance, solid.scale);
+        QVERIFY2(solid.run.failure.empty(), solid.run.failure.c_str());
+        QVERIFY(solid.run.worstBalance < 2e-4 * solid.scale);
+        QVERIFY(solid.overlap <= 0.05e-3);
+        if (millimetres == 8 || millimetres == 10) QVERIFY(through.overlap > 1e-3);
     }
 };
 
