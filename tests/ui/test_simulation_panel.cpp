@@ -14,11 +14,23 @@
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QLineEdit>
+#include <QSpinBox>
 #include <QThreadPool>
 #include <QUndoStack>
 #include <QtTest>
 
 using namespace jl::ui;
+
+namespace {
+
+// The classic cascade with this many blocks.
+jl::Scene classicWith(int blocks) {
+    jl::Scene scene = *jl::loadScene(JL_SOURCE_DIR "/examples/classic.yaml").scene;
+    scene.ladder->blocks = blocks;
+    return scene;
+}
+
+}  // namespace
 
 class SimulationPanelTest : public QObject {
     Q_OBJECT
@@ -110,10 +122,8 @@ private slots:
     // box checked and out of reach; the table comes as one edit after.
     void aTableTopUnderALongLadderIsFoundOffTheUiThread() {
         Document doc;
-        jl::SceneLoad load = jl::loadScene(JL_SOURCE_DIR "/examples/classic.yaml");
-        QVERIFY(load.scene);
-        load.scene->ladder->blocks = 100000;
-        doc.reset(*load.scene, QString());
+        const jl::Scene longLadder = classicWith(100000);
+        doc.reset(longLadder, QString());
         SimulationPanel panel(&doc);
         panel.show();
         QVERIFY(QTest::qWaitForWindowExposed(&panel));
@@ -149,19 +159,43 @@ private slots:
 
         // Another scene opened meanwhile: the click is dropped, not put
         // under the new scene's ladder.
-        doc.reset(*load.scene, QString());
+        doc.reset(longLadder, QString());
         panel.refresh();
         QVERIFY(!table->isChecked() && table->isEnabled());
         QTest::mouseClick(table, Qt::LeftButton, {}, QPoint(4, table->height() / 2));
         QVERIFY(table->isChecked() && !table->isEnabled());
-        const jl::SceneLoad six = jl::loadScene(JL_SOURCE_DIR "/examples/classic.yaml");
-        QVERIFY(six.scene);
-        doc.reset(*six.scene, QString());
+        doc.reset(classicWith(6), QString());
         QVERIFY(!table->isChecked() && table->isEnabled());
         QVERIFY(QThreadPool::globalInstance()->waitForDone(30000));
         QCoreApplication::processEvents();
         QVERIFY(!doc.scene().floor && doc.undoStack()->count() == 0);
         QVERIFY(!table->isChecked() && table->isEnabled());
+    }
+
+    // Checked from the keyboard, the box keeps the keyboard: while the place
+    // is found no other field takes it (the next one, History memory, would
+    // change with the arrow keys), and the box has it again afterwards.
+    void aTableTopCheckedFromTheKeyboardKeepsTheFocus() {
+        Document doc;
+        doc.reset(classicWith(100000), QString());
+        SimulationPanel panel(&doc);
+        panel.show();
+        panel.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&panel));
+        auto* table = panel.findChild<QCheckBox*>("floor");
+        auto* history = panel.findChild<QSpinBox*>("historyMegabytes");
+        QVERIFY(table && history);
+        table->setFocus();
+        QTRY_VERIFY(table->hasFocus());
+        const int megabytes = history->value();
+        QTest::keyClick(table, Qt::Key_Space);
+        QVERIFY(table->isChecked() && !table->isEnabled() && !doc.scene().floor);
+        QVERIFY(!history->hasFocus());
+        QTest::keyClick(&panel, Qt::Key_Up);
+        QCOMPARE(history->value(), megabytes);
+        QTRY_VERIFY_WITH_TIMEOUT(doc.scene().floor, 30000);
+        QVERIFY(table->isEnabled());
+        QVERIFY(table->hasFocus());
     }
 };
 

@@ -6,6 +6,7 @@
 #include "ui/edit/scene_fields.h"
 #include "ui/edit/value_form.h"
 
+#include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QCoreApplication>
@@ -20,6 +21,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace jl::ui {
 
@@ -158,14 +160,13 @@ void SimulationPanel::addTableTop() {
         if (!placingTable_) return;
         tablePlaceStale_ = true;
         if (c != SceneChange::Whole) return;
-        placingTable_ = false;
+        tablePlaced();
         refresh();
     });
     connect(&tablePlace_, &QFutureWatcher<double>::finished, this, [this] {
         if (!placingTable_) return;
         if (tablePlaceStale_) return placeTableTop();
-        placingTable_ = false;
-        table_->setEnabled(true);
+        tablePlaced();
         if (doc_->scene().floor) return refresh();
         changeScene(doc_, floorField("floor"), std::optional<jl::FloorSpec>(jl::FloorSpec{tablePlace_.result()}),
                     tr("Add table top"));
@@ -182,8 +183,21 @@ void SimulationPanel::addTableTop() {
 void SimulationPanel::placeTableTop() {
     placingTable_ = true;
     tablePlaceStale_ = false;
+    // Disabled with the focus on it, the box would hand the keyboard to the
+    // next field (History memory), whose arrows then change it.
+    if (table_->hasFocus()) {
+        tableHadFocus_ = true;
+        table_->clearFocus();
+    }
     table_->setEnabled(false);
     tablePlace_.setFuture(QtConcurrent::run([scene = doc_->scene()] { return tableUnderTheLadder(scene); }));
+}
+
+void SimulationPanel::tablePlaced() {
+    placingTable_ = false;
+    table_->setEnabled(doc_->scene().ladder.has_value());
+    if (std::exchange(tableHadFocus_, false) && !QApplication::focusWidget() && table_->isEnabled())
+        table_->setFocus(Qt::OtherFocusReason);
 }
 
 void SimulationPanel::setHistoryMegabytes(int mb) {

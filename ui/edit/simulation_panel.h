@@ -35,6 +35,7 @@ private:
 
     void addTableTop();
     void placeTableTop();
+    void tablePlaced();
 
     Document* doc_;
     ValueForm* form_;
@@ -49,6 +50,9 @@ private:
     QFutureWatcher<double> tablePlace_;
     bool placingTable_ = false;
     bool tablePlaceStale_ = false;
+    // The box had the keyboard when it was clicked: it gets it back when it
+    // is enabled again, unless the user has put the focus somewhere since.
+    bool tableHadFocus_ = false;
     QSpinBox* history_;
 };
 
