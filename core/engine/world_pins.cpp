@@ -54,11 +54,11 @@ bool makesPin(const std::vector<Particle>& particles, const std::vector<Part>& p
 }  // namespace
 
 // Brings `pinning_` up to date for the parts regrouped since it last was:
-// only their particles can have begun or ceased to make a pin. A few are
-// looked up one by one; many (a still tail joined or woken) are merged into
-// the list in one pass; and where they are most of the world (a ladder
-// built hinge by hinge) every particle is looked at once, as the pins were
-// derived before the list was kept.
+// only their particles can have begun or ceased to make a pin. They are
+// merged into the list in one pass (as long as the pins that are derived
+// from it next); where they are most of the world (a ladder built hinge by
+// hinge) every particle is looked at once, as the pins were derived before
+// the list was kept.
 void World::updatePinning() const {
     std::vector<ParticleId> affected;
     for (PartId part : regrouped_)
@@ -73,16 +73,6 @@ void World::updatePinning() const {
     }
     std::sort(affected.begin(), affected.end());
     affected.erase(std::unique(affected.begin(), affected.end()), affected.end());
-    constexpr size_t kOneByOne = 16;
-    if (affected.size() * kOneByOne < pinning_.size()) {
-        for (ParticleId id : affected) {
-            const auto at = std::lower_bound(pinning_.begin(), pinning_.end(), id);
-            const bool listed = at != pinning_.end() && *at == id, now = pins(id);
-            if (now && !listed) pinning_.insert(at, id);
-            if (!now && listed) pinning_.erase(at);
-        }
-        return;
-    }
     std::vector<ParticleId> merged;
     merged.reserve(pinning_.size() + affected.size());
     size_t i = 0;
