@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <memory>
 #include <numbers>
 
 using namespace jl;
@@ -87,6 +88,14 @@ Eigen::VectorXd pushes(const Simulation& sim) {
     Dynamics d;
     d.evaluate(w, sim.time());
     return d.contactForces();
+}
+
+// The complete example of docs/scene-format.md with contact between blocks on.
+std::unique_ptr<Simulation> formatPageExampleWithContact() {
+    SceneLoad load = formatPageExample();
+    if (!load.scene) return nullptr;
+    load.scene->solver.blockContact = BlockContact::On;
+    return std::move(Simulation::build(*load.scene).simulation);
 }
 
 }  // namespace
@@ -322,10 +331,7 @@ private slots:
     // 2e-10 m/s, over and over: 234,578 events by 0.805 s, where the run
     // stopped with its books running away.
     void aCornerGrazingAFaceIsNoImpact() {
-        SceneLoad load = formatPageExample();
-        QVERIFY(load.scene);
-        load.scene->solver.blockContact = BlockContact::On;
-        auto sim = std::move(Simulation::build(*load.scene).simulation);
+        auto sim = formatPageExampleWithContact();
         QVERIFY(sim);
         int touches = 0;
         const Run r = runUntil(*sim, 1.0, [&](const Frame& f) {
@@ -335,6 +341,41 @@ private slots:
         QVERIFY2(r.failure.empty(), r.failure.c_str());
         QVERIFY(touches < 100);
         QVERIFY(r.worstBalance < 2e-4 * energyScale(*sim));
+    }
+
+    // The complete example of docs/scene-format.md with contact on, its
+    // whole 4 s. Blocks 0 to 3 wedge against the hand more than once, and
+    // corners reach faces where a push moves next to nothing (the pins hold
+    // them there). Two things lost its books there (5.4e-4 J, 2.7x the
+    // bound): at 1.7784 s a corner inside block 0 since the last step drew
+    // the narrowing to the step's start, the step was taken whole again,
+    // and block 0's corner 3 was met 2.1 um inside block 3 at its end; the
+    // contact pulled it out in the next step's projection, through pins
+    // that magnify the depth, and the step's interpolant read that jump as
+    // 4.5e-4 J of kinetic energy at the lock it located 1.5 us later.
+    // Still not right: near 0.804 s blocks 0 and 3 lie side by side with
+    // their ends flush, each bottom corner within a few um of the other's
+    // end plane, and the sides sink 0.36 mm into each other with no corner
+    // past a face it came through (docs/model.md section 17.7); printed,
+    // not asserted.
+    void theFormatPagesCompleteExampleKeepsItsBooksWithContact() {
+        auto sim = formatPageExampleWithContact();
+        QVERIFY(sim);
+        double deepest = 0, when = 0;
+        int events = 0, touches = 0;
+        const Run r = runUntil(*sim, sim->scene().duration, [&](const Frame& f) {
+            events += int(f.events.size());
+            for (const Event& e : f.events) touches += e.kind == EventKind::Touch;
+            const double d = deepestOverlap(*sim);
+            if (d > deepest) deepest = d, when = sim->time();
+        });
+        const double scale = energyScale(*sim);
+        qInfo("to %.1f s: %d events, %d strikes; deepest overlap %.3g mm at %.4f s; books %.3g J of %.3g J",
+              sim->time(), events, touches, deepest * 1e3, when, r.worstBalance, scale);
+        QVERIFY2(r.failure.empty(), r.failure.c_str());
+        QCOMPARE(sim->time(), sim->scene().duration);
+        QVERIFY(r.worstBalance < 2e-4 * scale);
+        QVERIFY(events < 1000);
     }
 
     // A scripted join pulls two corners together in an instant. Hinge 1

@@ -122,6 +122,8 @@ std::optional<std::string> BlockContacts::inside(const World& w, const Ladder& l
     return std::nullopt;
 }
 
+double BlockContacts::touchBand(const Ladder& ladder) { return kTouchBand * ladder.length(); }
+
 bool BlockContacts::resting(int block, int corner, int other) const {
     return std::any_of(touches_.begin(), touches_.end(),
                        [&](const Touch& t) { return t.block == block && t.corner == corner && t.other == other; });
@@ -309,7 +311,7 @@ Contact BlockContacts::contactAt(const World& w, const Ladder& ladder, int block
 
 void BlockContacts::part(World& w, size_t i, double t, bool byImpact) {
     const Touch& c = touches_[i];
-    const double gap = contactGap(w, w.contacts()[i]);
+    const double gap = contactGap(w, w.contacts()[i]) + c.sunk;
     std::erase_if(parted_,
                   [&](const Parted& p) { return p.block == c.block && p.corner == c.corner && p.other == c.other; });
     parted_.push_back({c.block, c.corner, c.other, gap, t, byImpact, c.rebound});
@@ -397,8 +399,18 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
         const bool into = rate < -parting || (gap < -band) ||
                           (rate <= still && rowTimes(row, w.a) + rowBias(w, row) < -ladder.forceTolerance());
         if (!into || heldAlready(w, candidate, row)) continue;
-        w.contacts().push_back(candidate);
+        // Met inside the face by more than the band (a corner the pins held
+        // there while its push could move nothing, or found at a step's
+        // end): the contact holds it where it is. Pulled out in one
+        // instant, the projection would move the blocks as far as the pins'
+        // near-singular share magnifies the depth, and the step's
+        // interpolant would read that jump as motion.
+        Contact kept = candidate;
+        const double sunk = std::min(0.0, contactGap(w, candidate));
+        if (sunk < -band) kept.offset += sunk;
+        w.contacts().push_back(kept);
         Touch made{c.block, c.corner, c.other, against(w, ladder, c.block, c.corner, c.other, c.through).face, t};
+        if (sunk < -band) made.sunk = sunk;
         for (const Parted& p : parted_)
             if (p.block == c.block && p.corner == c.corner && p.other == c.other && p.byImpact) {
                 made.rebound = t - p.at;

@@ -86,8 +86,31 @@ bool Simulation::locateEvent(double& taken, double fEnd, double forcesAtEnd) {
     crossed_ = contactsCrossed;
     const Ledger ledgerAtEnd = ledger_;
     interpolant_.setEnd(world_.q, world_.v, world_.a);
+    Eigen::VectorXd qEnd, vEnd;
+    if (hingesCrossed.empty()) qEnd = world_.q, vEnd = world_.v;
     restoreStepStart();
     eventFunctionsAtStart();
+    // A corner inside a face by more than the touch band at the step's
+    // start already (one the pins held there, too little of its push
+    // moving anything to be a contact) did not cross in this step: the
+    // narrowing would find the start, the instant there would settle
+    // nothing, and the step taken whole again would meet anything else that
+    // crossed in it only at its end, inside. The end settles such corners.
+    const double band = BlockContacts::touchBand(*ladder_);
+    std::erase_if(contactsCrossed, [&](int k) {
+        return ladder_->blockContacts().positional(k - hingeFunctions_) && eventValues_[size_t(k)] < -band;
+    });
+    crossed_ = contactsCrossed;
+    if (hingesCrossed.empty() && contactsCrossed.empty()) {
+        locating_ = false;
+        ladder_->blockContacts().setLocating(false);
+        world_.q = qEnd;
+        world_.v = vEnd;
+        world_.updateKinematics(t_ + taken);
+        smallestEventFunction(t_ + taken, nullptr);
+        ledger_ = ledgerAtEnd;
+        return true;
+    }
     const double hingesStart =
         hingeFunctions_ > 0 ? *std::min_element(eventValues_.begin(), eventValues_.begin() + hingeFunctions_) : 1.0;
     const double hingeForcesAtStart = hingeForces_;

@@ -120,6 +120,7 @@ public:
         // section 8.6, held contacts). It does not bounce, and an impact
         // elsewhere in the instant it became held does not part it.
         bool held = false;
+        double sunk = 0;  // m, <= 0: how far inside the face it was met and is held
         bool operator==(const Touch&) const = default;
     };
     const std::vector<Touch>& touches() const { return touches_; }
@@ -142,6 +143,9 @@ public:
     // nothing. The contacts meet corners only as they arrive at a face; a
     // scripted pull that puts one inside a block is refused with this.
     std::optional<std::string> inside(const World& w, const Ladder& ladder) const;
+
+    // m: how far inside a face a corner may be found and still be at it.
+    static double touchBand(const Ladder& ladder);
 
     static CornerAgainstBox cornerAgainst(const World& w, const Ladder& ladder, int block, int corner, int other,
                                           int through = -1);
