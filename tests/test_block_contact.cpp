@@ -346,13 +346,16 @@ private slots:
     // The complete example of docs/scene-format.md with contact on, its
     // whole 4 s. Blocks 0 to 3 wedge against the hand more than once, and
     // corners reach faces where a push moves next to nothing (the pins hold
-    // them there). Two things lost its books there (5.4e-4 J, 2.7x the
-    // bound): at 1.7784 s a corner inside block 0 since the last step drew
-    // the narrowing to the step's start, the step was taken whole again,
-    // and block 0's corner 3 was met 2.1 um inside block 3 at its end; the
-    // contact pulled it out in the next step's projection, through pins
-    // that magnify the depth, and the step's interpolant read that jump as
-    // 4.5e-4 J of kinetic energy at the lock it located 1.5 us later.
+    // them there). That lost its books (5.4e-4 J, 2.7x the bound): at
+    // 1.7784 s block 3's corner 2, resting 4e-11 m inside block 0 where the
+    // pins hold it, drew the narrowing to the step's start, the step was
+    // taken whole again, and block 0's corner 3 was met 2.1 um inside
+    // block 3 at its end; the contact pulled it out in the next step's
+    // projection, through pins that magnify the depth, and the step's
+    // interpolant read that jump as 4.5e-4 J of kinetic energy at the lock
+    // it located 1.5 us later. A contact met inside now holds its corner
+    // there, and a corner inside by more than the touch band at a step's
+    // start is not located in the step (docs/model.md 17.2, 17.4).
     // Still not right: near 0.804 s blocks 0 and 3 lie side by side with
     // their ends flush, each bottom corner within a few um of the other's
     // end plane, and the sides sink 0.36 mm into each other with no corner
