@@ -405,12 +405,13 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
         // instant, the projection would move the blocks as far as the pins'
         // near-singular share magnifies the depth, and the step's
         // interpolant would read that jump as motion.
+        const double met = contactGap(w, candidate);
+        const double sunk = met < -band ? met : 0.0;
         Contact kept = candidate;
-        const double sunk = std::min(0.0, contactGap(w, candidate));
-        if (sunk < -band) kept.offset += sunk;
+        kept.offset += sunk;
         w.contacts().push_back(kept);
         Touch made{c.block, c.corner, c.other, against(w, ladder, c.block, c.corner, c.other, c.through).face, t};
-        if (sunk < -band) made.sunk = sunk;
+        made.sunk = sunk;
         for (const Parted& p : parted_)
             if (p.block == c.block && p.corner == c.corner && p.other == c.other && p.byImpact) {
                 made.rebound = t - p.at;
