@@ -29,12 +29,15 @@ double Simulation::eventFunctionsNow(double* forces) {
     double f = ladder_->eventFunctions(world_, dynamics_, eventValues_);
     hingeForces_ = f;
     hingeFunctions_ = int(eventValues_.size());
-    double smallest = eventValues_.empty() ? 1.0 : *std::min_element(eventValues_.begin(), eventValues_.end());
+    double smallest = 1.0;
+    for (int k = 0; k < hingeFunctions_; ++k)
+        if (!passed(k)) smallest = std::min(smallest, eventValues_[size_t(k)]);
     const BlockContacts& contacts = ladder_->blockContacts();
     contacts.eventFunctions(world_, dynamics_, *ladder_, eventValues_);
     for (int k = hingeFunctions_; k < int(eventValues_.size()); ++k) {
         const double value = eventValues_[size_t(k)];
-        const bool counts = locating_ ? std::find(crossed_.begin(), crossed_.end(), k) != crossed_.end() : value < 0;
+        const bool counts =
+            locating_ ? std::find(crossed_.begin(), crossed_.end(), k) != crossed_.end() && !passed(k) : value < 0;
         if (!counts) continue;
         smallest = std::min(smallest, value);
         if (!contacts.positional(k - hingeFunctions_)) f = std::min(f, value);
@@ -61,7 +64,11 @@ double Simulation::eventFunctionsNow(double* forces) {
 // crosses back inside one step is not seen in any case (the step's ends
 // bracket the first crossing of the smallest function), so the others add
 // nothing, and the trial costs the same on a ladder of 10 or 10,000 blocks.
-bool Simulation::locateEvent(double& taken, double fEnd, double forcesAtEnd) {
+//
+// From an instant `from` into the step that settled nothing (settleEvents),
+// the narrowing starts there, and the functions past their event there are
+// left out: they were looked at and asked for nothing.
+bool Simulation::locateEvent(double& taken, double fEnd, double forcesAtEnd, double from) {
     (void)fEnd;
     (void)forcesAtEnd;
     // The functions already past their event at the end (eventValues_
@@ -87,7 +94,7 @@ bool Simulation::locateEvent(double& taken, double fEnd, double forcesAtEnd) {
     const Ledger ledgerAtEnd = ledger_;
     interpolant_.setEnd(world_.q, world_.v, world_.a);
     Eigen::VectorXd qEnd, vEnd;
-    if (hingesCrossed.empty()) qEnd = world_.q, vEnd = world_.v;
+    if (hingesCrossed.empty() || from > 0) qEnd = world_.q, vEnd = world_.v;
     restoreStepStart();
     eventFunctionsAtStart();
     // A corner inside a face by more than the touch band at the step's
@@ -101,7 +108,11 @@ bool Simulation::locateEvent(double& taken, double fEnd, double forcesAtEnd) {
         return ladder_->blockContacts().positional(k - hingeFunctions_) && eventValues_[size_t(k)] < -band;
     });
     crossed_ = contactsCrossed;
+    const Powers p0 = lastPowers_;
+    interpolant_.setStart(taken, stepStartQ_, stepStartV_, world_.a);
+    if (from > 0) passFrom(from, hingesCrossed, contactsCrossed);
     if (hingesCrossed.empty() && contactsCrossed.empty()) {
+        passed_.clear();
         locating_ = false;
         ladder_->blockContacts().setLocating(false);
         world_.q = qEnd;
@@ -111,8 +122,9 @@ bool Simulation::locateEvent(double& taken, double fEnd, double forcesAtEnd) {
         ledger_ = ledgerAtEnd;
         return true;
     }
-    const double hingesStart =
-        hingeFunctions_ > 0 ? *std::min_element(eventValues_.begin(), eventValues_.begin() + hingeFunctions_) : 1.0;
+    double hingesStart = 1.0;
+    for (int k = 0; k < hingeFunctions_; ++k)
+        if (!passed(k)) hingesStart = std::min(hingesStart, eventValues_[size_t(k)]);
     const double hingeForcesAtStart = hingeForces_;
     double contactsStart = 1.0;
     bool contactForces = false;
@@ -120,15 +132,15 @@ bool Simulation::locateEvent(double& taken, double fEnd, double forcesAtEnd) {
         contactsStart = std::min(contactsStart, eventValues_[size_t(k)]);
         contactForces = contactForces || !ladder_->blockContacts().positional(k - hingeFunctions_);
     }
-    const Powers p0 = lastPowers_;
-    interpolant_.setStart(taken, stepStartQ_, stepStartV_, world_.a);
 
-    EventBracket b{0, 0, taken, 0};
+    EventBracket b{from, 0, taken, 0};
     if (!hingesCrossed.empty())
         b = narrowAmong(hingesCrossed, hingeForcesAtStart >= 0 && hingeForcesAtEnd >= 0,
-                        EventBracket{0, hingesStart, taken, hingesEnd});
+                        EventBracket{from, hingesStart, taken, hingesEnd});
     if (!contactsCrossed.empty())
-        b = narrowContacts(contactsCrossed, !hingesCrossed.empty(), !contactForces, contactsStart, contactsEnd, b);
+        b = narrowContacts(contactsCrossed, !hingesCrossed.empty(), !contactForces, from, contactsStart, contactsEnd,
+                           b);
+    passed_.clear();
     locating_ = false;
     ladder_->blockContacts().setLocating(false);
     interpolant_.at(b.hi, world_.q, world_.v);
@@ -141,6 +153,23 @@ bool Simulation::locateEvent(double& taken, double fEnd, double forcesAtEnd) {
     ledger_ = ledgerBetween(stepStartLedger_, p0, ledgerAtEnd, p1, taken, b.hi / taken);
     taken = b.hi;
     return true;
+}
+
+// The functions at `from` into the step, read on the interpolant: those
+// past their event there are passed_ and dropped from the crossed ones; the
+// rest start the narrowing there, with their values at `from` (in
+// eventValues_, hingeForces_).
+void Simulation::passFrom(double from, std::vector<int>& hinges, std::vector<int>& contacts) {
+    interpolant_.at(from, world_.q, world_.v);
+    world_.updateKinematics(t_ + from);
+    passed_.clear();
+    crossed_.clear();
+    smallestEventFunction(t_ + from, nullptr);
+    for (size_t k = 0; k < eventValues_.size(); ++k)
+        if (eventValues_[k] < 0) passed_.push_back(int(k));
+    std::erase_if(hinges, [&](int k) { return passed(k); });
+    std::erase_if(contacts, [&](int k) { return passed(k); });
+    crossed_ = contacts;
 }
 
 // The event functions at the step's start as the step found it (the last
@@ -194,7 +223,7 @@ double Simulation::positionFunctions(double h) {
 // their first crossing if they crossed before the hinges' instant (when
 // `afterHinges`, b.hi), and the contacts marked as located.
 EventBracket Simulation::narrowContacts(const std::vector<int>& crossed, bool afterHinges, bool positionsOnly,
-                                        double atStart, double atEnd, EventBracket b) {
+                                        double from, double atStart, double atEnd, EventBracket b) {
     // The corners' functions where the hinges' event is (or the end).
     double atHi = atEnd;
     if (afterHinges) {
@@ -210,7 +239,7 @@ EventBracket Simulation::narrowContacts(const std::vector<int>& crossed, bool af
         atHi = 1.0;
         for (int k : crossed) atHi = std::min(atHi, eventValues_[size_t(k)]);
     }
-    if (atHi < 0) b = narrowAmong(crossed, positionsOnly, EventBracket{0, atStart, b.hi, atHi});
+    if (atHi < 0) b = narrowAmong(crossed, positionsOnly, EventBracket{from, atStart, b.hi, atHi});
     std::vector<int> located;
     for (int k : crossed) located.push_back(k - hingeFunctions_);
     ladder_->blockContacts().markLocated(located);

@@ -244,8 +244,27 @@ bool Simulation::settleEvents(MotionStep& m, double& taken, double fEnd, double 
     emitGridFrames(taken);
     keepBeforeChange();
     const double heldBefore = impactHeldWork_;
-    settleOrRetake(m, taken,
-                   [&] { return ladder_->settle(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_); });
+    auto settle = [&] { return ladder_->settle(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_); };
+    std::vector<Event> happened = settle();
+    // An instant that asked for nothing after all (a function within
+    // rounding of its threshold, a corner that grazes a face): the step is
+    // taken again, and, where a corner of a block is past a face at its
+    // end, what crosses after that instant is located in it. That corner
+    // would otherwise be met only at the step's end, inside. A few times
+    // over, then the whole step. Hinges alone are resolved at the step's
+    // end, as in the paper's model.
+    for (int again = 0; happened.empty() && taken < m.step.taken && again < kRelocations; ++again) {
+        const double grazed = taken;
+        retakeWhole(m, taken);
+        double forcesAtEnd = 0;
+        const double atEnd = eventFunctionsAtEnd(m, taken, &forcesAtEnd);
+        const bool corner =
+            std::any_of(eventValues_.begin() + hingeFunctions_, eventValues_.end(), [](double f) { return f < 0; });
+        if (atEnd < 0 && corner && !locateEvent(taken, atEnd, forcesAtEnd, grazed)) return false;
+        emitGridFrames(taken);
+        happened = settle();
+    }
+    settleOrRetake(m, taken, std::move(happened), settle);
     if (!stopOnLadderError(plan.start)) return false;
     if (const auto why = squeezedByTheHand(heldBefore)) return stopAt(plan.start, *why);
     if (!world_.q.allFinite() || !world_.v.allFinite()) {
@@ -258,22 +277,27 @@ bool Simulation::settleEvents(MotionStep& m, double& taken, double fEnd, double 
     return true;
 }
 
-// The events of the located instant settled (`settle`, at t_ + taken) and
-// recorded. When the instant asked for nothing after all (a function within
-// rounding of its threshold), the whole step is taken instead and its end
-// settled, so time can never stall on it.
-void Simulation::settleOrRetake(MotionStep& m, double& taken, const std::function<std::vector<Event>()>& settle) {
-    std::vector<Event> happened = settle();
+// The events of the located instant settled (`happened`, by `settle` at
+// t_ + taken) and recorded. When the instant asked for nothing after all (a
+// function within rounding of its threshold), the whole step is taken
+// instead and its end settled, so time can never stall on it.
+void Simulation::settleOrRetake(MotionStep& m, double& taken, std::vector<Event> happened,
+                                const std::function<std::vector<Event>()>& settle) {
     if (happened.empty() && taken < m.step.taken) {
-        restoreStepStart();
-        m = advanceAndProject(world_, dynamics_, stepper_, t_, m.step.taken, ledger_, scene_.solver.projectionTolerance,
-                              true);
-        taken = m.step.taken;
-        ++stats_.spuriousEvents;
+        retakeWhole(m, taken);
         emitGridFrames(taken);
         happened = settle();
     }
     for (Event& e : happened) record(e);
+}
+
+// The step taken again from its start, whole.
+void Simulation::retakeWhole(MotionStep& m, double& taken) {
+    restoreStepStart();
+    m = advanceAndProject(world_, dynamics_, stepper_, t_, m.step.taken, ledger_, scene_.solver.projectionTolerance,
+                          true);
+    taken = m.step.taken;
+    ++stats_.spuriousEvents;
 }
 
 // A free hinge swung past a limit and back within this (long, adaptive)

@@ -109,8 +109,8 @@ std::optional<bool> Simulation::stopsAtStepEnd(MotionStep& m, double& taken, con
     }
     emitGridFrames(taken);
     keepBeforeChange();
-    settleOrRetake(m, taken,
-                   [&] { return stops_->settle(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_); });
+    auto settle = [&] { return stops_->settle(world_, dynamics_, t_ + taken, &impactLoss_, &impactHeldWork_); };
+    settleOrRetake(m, taken, settle(), settle);
     if (!stops_->error().empty()) return stopAt(plan.start, stops_->error());
     if (!world_.q.allFinite() || !world_.v.allFinite()) {
         restoreStepStart();

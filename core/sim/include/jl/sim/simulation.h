@@ -163,7 +163,10 @@ private:
     std::optional<bool> ladderAtStepEnd(MotionStep& m, double& taken, const StepPlan& plan);
     bool settleEvents(MotionStep& m, double& taken, double fEnd, double forces, const StepPlan& plan);
     void retakeToDip(double dip);
-    void settleOrRetake(MotionStep& m, double& taken, const std::function<std::vector<Event>()>& settle);
+    void settleOrRetake(MotionStep& m, double& taken, std::vector<Event> happened,
+                        const std::function<std::vector<Event>()>& settle);
+    void retakeWhole(MotionStep& m, double& taken);
+    static constexpr int kRelocations = 4;  // located again after an instant that settled nothing
     // The pin stops at the step's end (simulation_stops.cpp), as the ladder's.
     std::optional<bool> stopsAtStepEnd(MotionStep& m, double& taken, const StepPlan& plan);
     void locateStop(double& taken);
@@ -176,12 +179,16 @@ private:
     // The ladder's events inside a step (simulation_events.cpp).
     double smallestEventFunction(double t, double* forces = nullptr);
     double eventFunctionsNow(double* forces);
-    bool locateEvent(double& taken, double fEnd, double forcesAtEnd);
+    bool locateEvent(double& taken, double fEnd, double forcesAtEnd, double from = 0);
     void eventFunctionsAtStart();
+    void passFrom(double from, std::vector<int>& hinges, std::vector<int>& contacts);
+    bool passed(int k) const {
+        return !passed_.empty() && std::find(passed_.begin(), passed_.end(), k) != passed_.end();
+    }
     EventBracket narrowAmong(const std::vector<int>& among, bool anglesOnly, EventBracket b);
     double positionFunctions(double h);
-    EventBracket narrowContacts(const std::vector<int>& crossed, bool afterHinges, bool positionsOnly, double atStart,
-                                double atEnd, EventBracket b);
+    EventBracket narrowContacts(const std::vector<int>& crossed, bool afterHinges, bool positionsOnly, double from,
+                                double atStart, double atEnd, EventBracket b);
     void restoreStepStart();
     void keepBeforeChange();
     bool stopOnLadderError(double stepStart);
@@ -245,6 +252,7 @@ private:
     bool locating_ = false;     // locateEvent: a block contact's function counts if it crossed at the step's end  //
                                 // eventValues_: the hinges' functions, then the block contacts'
     std::vector<int> crossed_;  // locateEvent: the event functions past their event at the step's end
+    std::vector<int> passed_;   // locateEvent from an instant that settled nothing: those past their event there
     StepInterpolant interpolant_;
     FrameGrid grid_;
     double gridDoneUpTo_ = 0;        // s, grid frames are emitted after this time
