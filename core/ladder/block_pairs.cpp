@@ -90,6 +90,26 @@ void BlockPairs::find(const World& w, const Ladder& ladder, std::vector<std::pai
             }
         }
     }
+    // A few blocks: every pair's circles compared directly, the same pairs
+    // as the grid finds (a cell is as wide as any two circles reach) at a
+    // fraction of its cost (the examples' ladders of 4 to 12 blocks).
+    if (members_.size() <= kDirect) {
+        for (int i = 0; i < moving; ++i) {
+            const int bodyI = w.part(ladder.block(i)).body;
+            const bool kinematicI = w.body(bodyI).kinematic;
+            const double ri = ladder.cornerLocal(i, 3).norm();
+            for (int j : members_) {
+                if (j <= i + 1) continue;
+                const int bodyJ = w.part(ladder.block(j)).body;
+                if (bodyJ == bodyI || (kinematicI && w.body(bodyJ).kinematic)) continue;
+                const double rj = ladder.cornerLocal(j, 3).norm();
+                if ((centre_[size_t(j)] - centre_[size_t(i)]).squaredNorm() < (ri + rj) * (ri + rj))
+                    out.emplace_back(i, j);
+            }
+        }
+        std::sort(out.begin(), out.end());
+        return;
+    }
     size_t buckets = 1;
     while (buckets < 2 * members_.size()) buckets *= 2;
     const size_t mask = buckets - 1;
