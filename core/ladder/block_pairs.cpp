@@ -4,6 +4,7 @@
 #include "jl/ladder/ladder.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace jl {
@@ -94,19 +95,25 @@ void BlockPairs::find(const World& w, const Ladder& ladder, std::vector<std::pai
     // as the grid finds (a cell is as wide as any two circles reach) at a
     // fraction of its cost (the examples' ladders of 4 to 12 blocks).
     if (members_.size() <= kDirect) {
-        for (int i = 0; i < moving; ++i) {
-            const int bodyI = w.part(ladder.block(i)).body;
-            const bool kinematicI = w.body(bodyI).kinematic;
-            const double ri = ladder.cornerLocal(i, 3).norm();
-            for (int j : members_) {
-                if (j <= i + 1) continue;
-                const int bodyJ = w.part(ladder.block(j)).body;
-                if (bodyJ == bodyI || (kinematicI && w.body(bodyJ).kinematic)) continue;
-                const double rj = ladder.cornerLocal(j, 3).norm();
-                if ((centre_[size_t(j)] - centre_[size_t(i)]).squaredNorm() < (ri + rj) * (ri + rj))
-                    out.emplace_back(i, j);
-            }
+        struct Near {
+            int block, body;
+            bool kinematic;
+            double radius;
+            Vec2 centre;
+        };
+        std::array<Near, kDirect> near;
+        size_t count = 0;
+        for (int i : members_) {
+            const int body = w.part(ladder.block(i)).body;
+            near[count++] = {i, body, w.body(body).kinematic, ladder.cornerLocal(i, 3).norm(), centre_[size_t(i)]};
         }
+        for (size_t a = 0; a < count && near[a].block < moving; ++a)
+            for (size_t b = 0; b < count; ++b) {
+                const Near &p = near[a], &q = near[b];
+                if (q.block <= p.block + 1 || q.body == p.body || (p.kinematic && q.kinematic)) continue;
+                const double reach = p.radius + q.radius;
+                if ((q.centre - p.centre).squaredNorm() < reach * reach) out.emplace_back(p.block, q.block);
+            }
         std::sort(out.begin(), out.end());
         return;
     }

@@ -34,6 +34,8 @@ struct CornerAgainstBox {
 // out.
 class BlockPairs {
 public:
+    // At most this many blocks in the search: every pair compared, no grid.
+    static constexpr size_t kDirect = 16;
     void find(const World& w, const Ladder& ladder, std::vector<std::pair<int, int>>& out);
 
 private:
@@ -42,7 +44,6 @@ private:
         Vec2 lo, hi;                       // m: the box of their centres in the body's frame
     };
     void listSegments(const World& w, const Ladder& ladder, int still);
-    static constexpr size_t kDirect = 16;  // at most this many blocks: every pair compared, no grid
     std::vector<int> head_, next_, members_;
     std::vector<long long> key_;
     std::vector<Vec2> centre_;
