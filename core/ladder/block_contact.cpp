@@ -63,11 +63,26 @@ Vec2 faceNormal(int face) {
 
 }  // namespace
 
-CornerAgainstBox BlockContacts::cornerAgainst(const World& w, const Ladder& ladder, int block, int corner, int other,
-                                              int through) {
-    const Pose box = w.partPose(ladder.block(other));
-    const Vec2 half = ladder.cornerLocal(other, 3).cwiseAbs();
-    const Vec2 local = rotate(-box.angle, ladder.cornerWorld(w, block, corner) - box.position);
+BlockContacts::Placed BlockContacts::placed(const World& w, const Ladder& ladder, int block, Need need) {
+    Placed out;
+    out.pose = w.partPose(ladder.block(block));
+    out.half = ladder.cornerLocal(block, 3).cwiseAbs();
+    // As rotate() and Pose::apply work them out, to the last bit.
+    if (need != Need::Box) {
+        const double c = std::cos(out.pose.angle), s = std::sin(out.pose.angle);
+        for (int k = 0; k < 4; ++k) {
+            const Vec2 l = ladder.cornerLocal(block, k);
+            out.corner[size_t(k)] = out.pose.position + Vec2(c * l.x() - s * l.y(), s * l.x() + c * l.y());
+        }
+    }
+    if (need != Need::Corners) out.backCos = std::cos(-out.pose.angle), out.backSin = std::sin(-out.pose.angle);
+    return out;
+}
+
+CornerAgainstBox BlockContacts::pointAgainst(const Vec2& p, const Placed& box, double flush, int through) {
+    const Vec2 r = p - box.pose.position;
+    const Vec2 local(box.backCos * r.x() - box.backSin * r.y(), box.backSin * r.x() + box.backCos * r.y());
+    const Vec2& half = box.half;
     const double d[4] = {-local.x() - half.x(), local.x() - half.x(), -local.y() - half.y(), local.y() - half.y()};
     if (through < 0) {
         CornerAgainstBox out{d[0], 0};
@@ -75,11 +90,19 @@ CornerAgainstBox BlockContacts::cornerAgainst(const World& w, const Ladder& ladd
             if (d[f] > out.gap) out = {d[f], f};
         return out;
     }
-    const double flush = kFlush * ladder.length();
     CornerAgainstBox out{d[through], through};
     for (int f = 0; f < 4; ++f)
         if (f != through && d[f] - flush > out.gap) out = {d[f] - flush, f};
     return out;
+}
+
+CornerAgainstBox BlockContacts::cornerAgainst(const World& w, const Ladder& ladder, int block, int corner, int other,
+                                              int through) {
+    Placed box;
+    box.pose = w.partPose(ladder.block(other));
+    box.half = ladder.cornerLocal(other, 3).cwiseAbs();
+    box.backCos = std::cos(-box.pose.angle), box.backSin = std::sin(-box.pose.angle);
+    return pointAgainst(ladder.cornerWorld(w, block, corner), box, kFlush * ladder.length(), through);
 }
 
 CornerAgainstBox BlockContacts::against(const World& w, const Ladder& ladder, int block, int corner, int other,
@@ -88,12 +111,13 @@ CornerAgainstBox BlockContacts::against(const World& w, const Ladder& ladder, in
     return {ladder.cornerWorld(w, block, corner).y() - *floor_, 3};
 }
 
-int BlockContacts::throughFace(const World& w, const Ladder& ladder, int block, int corner, int other) const {
-    if (other == kFloor) return 3;
-    const CornerAgainstBox plain = cornerAgainst(w, ladder, block, corner, other);
+int BlockContacts::throughFace(const Ladder& ladder, const CornerAgainstBox& plain, int block, int corner,
+                               int other) const {
     if (plain.gap > kFlush * ladder.length()) return plain.face;
-    const auto seen = through_.find({block, corner, other});
-    return seen != through_.end() ? seen->second : plain.face;
+    const std::array<int, 3> id{block, corner, other};
+    const auto seen = std::lower_bound(through_.begin(), through_.end(), std::pair{id, 0},
+                                       [](const auto& x, const auto& y) { return x.first < y.first; });
+    return seen != through_.end() && seen->first == id ? seen->second : plain.face;
 }
 
 std::optional<std::string> BlockContacts::inside(const World& w, const Ladder& ladder) const {
@@ -146,15 +170,26 @@ void BlockContacts::refresh(const World& w, const Ladder& ladder) {
     if (enabled_) {
         broad_.find(w, ladder, pairs_);
         pairCount_ = int(pairs_.size());
-        for (const auto& [i, j] : pairs_)
-            for (const auto& [a, b] : {std::pair{i, j}, std::pair{j, i}})
-                for (int k = 0; k < 4; ++k)
-                    if (!resting(a, k, b) && !atHingeOf(w, ladder, ladder.cornerWorld(w, a, k), b))
-                        watched_.push_back({a, k, b, gapZero(a, k, b), throughFace(w, ladder, a, k, b)});
+        const double flush = kFlush * length;
+        for (const auto& [i, j] : pairs_) {
+            // Each block's pose and corners worked out once for the pair.
+            const Placed blockI = placed(w, ladder, i), blockJ = placed(w, ladder, j);
+            for (const auto& [a, b] : {std::pair{i, j}, std::pair{j, i}}) {
+                const Placed& corners = a == i ? blockI : blockJ;
+                const Placed& box = b == i ? blockI : blockJ;
+                for (int k = 0; k < 4; ++k) {
+                    const Vec2& p = corners.corner[size_t(k)];
+                    if (resting(a, k, b) || atHingeOf(ladder, p, b, box)) continue;
+                    const int through = throughFace(ladder, pointAgainst(p, box, flush), a, k, b);
+                    watched_.push_back({a, k, b, gapZero(a, k, b), through});
+                }
+            }
+        }
     }
     if (floor_) watchFloor(w, ladder);
     through_.clear();
-    for (const Watch& c : watched_) through_[{c.block, c.corner, c.other}] = c.through;
+    for (const Watch& c : watched_) through_.push_back({{c.block, c.corner, c.other}, c.through});
+    std::sort(through_.begin(), through_.end());
 }
 
 // Each moving block whose bounding circle reaches the table top has its
@@ -181,7 +216,11 @@ void BlockContacts::markLocated(const std::vector<int>& functions) {
 }
 
 double BlockContacts::watchFunction(const World& w, const Ladder& ladder, const Watch& c) const {
-    const double gap = against(w, ladder, c.block, c.corner, c.other, c.through).gap - c.zero;
+    return watchValue(ladder, against(w, ladder, c.block, c.corner, c.other, c.through).gap, c);
+}
+
+double BlockContacts::watchValue(const Ladder& ladder, double against, const Watch& c) const {
+    const double gap = against - c.zero;
     return gap + (locating_ ? kRounding * ladder.length() : std::max(kRounding * ladder.length(), allowance_));
 }
 
@@ -194,8 +233,19 @@ double BlockContacts::eventFunctions(const World& w, const Dynamics& d, const La
                                      std::vector<double>& out) const {
     double smallestForce = std::numeric_limits<double>::infinity();
     if (!active()) return smallestForce;
+    // The watched corners come four by four for each ordered pair of
+    // blocks: each block placed once for its run.
+    const double flush = kFlush * ladder.length();
+    Placed corners, box;
+    int placedBlock = -1, placedBox = -1;
     for (const Watch& c : watched_) {
-        out.push_back(watchFunction(w, ladder, c));
+        if (c.other == kFloor) {
+            out.push_back(watchFunction(w, ladder, c));
+            continue;
+        }
+        if (c.block != placedBlock) corners = placed(w, ladder, c.block, Need::Corners), placedBlock = c.block;
+        if (c.other != placedBox) box = placed(w, ladder, c.other, Need::Box), placedBox = c.other;
+        out.push_back(watchValue(ladder, pointAgainst(corners.corner[size_t(c.corner)], box, flush, c.through).gap, c));
     }
     const Eigen::VectorXd& push = d.contactForces();
     for (size_t i = 0; i < touches_.size(); ++i) {
@@ -246,12 +296,11 @@ bool BlockContacts::onPin(const World& w, const Ladder& ladder, const Vec2& p, i
 // that hinge's corner, with gap zero to rounding, held there by the pins
 // (the classic cascade does this at every flip). A corner there is the
 // hinges' business, not a contact's.
-bool BlockContacts::atHingeOf(const World& w, const Ladder& ladder, const Vec2& p, int b) {
-    if (b == kFloor) return false;
+bool BlockContacts::atHingeOf(const Ladder& ladder, const Vec2& p, int b, const Placed& box) {
     const double near = kClear * ladder.length();
     for (int j : {b, b + 1})
         if (j >= 1 && j < ladder.blockCount() && ladder.hinge(j).mode != HingeMode::Cut &&
-            (ladder.cornerWorld(w, b, ladder.hinge(j).corner) - p).norm() <= near)
+            (box.corner[size_t(ladder.hinge(j).corner)] - p).norm() <= near)
             return true;
     return false;
 }

@@ -10,7 +10,6 @@
 
 #include <array>
 #include <limits>
-#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -164,10 +163,25 @@ private:
     };
     // The face each watched corner last stood clearly outside of, kept from
     // one refresh to the next.
-    int throughFace(const World& w, const Ladder& ladder, int block, int corner, int other) const;
+    // `plain`: where the corner stands against the box (cornerAgainst
+    // without a face it came through).
+    int throughFace(const Ladder& ladder, const CornerAgainstBox& plain, int block, int corner, int other) const;
+    // A block's pose, half size and corners, and the rotation back into its
+    // frame: worked out once for every corner tested against it.
+    struct Placed {
+        Pose pose;
+        Vec2 half;
+        std::array<Vec2, 4> corner;
+        double backCos = 1, backSin = 0;  // of -pose.angle
+    };
+    enum class Need { Both, Corners, Box };  // the corners, the rotation back, or both
+    static Placed placed(const World& w, const Ladder& ladder, int block, Need need = Need::Both);
+    // cornerAgainst for a point p (m, in the world) and a placed box.
+    static CornerAgainstBox pointAgainst(const Vec2& p, const Placed& box, double flush, int through = -1);
     // The watched corners' functions: the gap past its zero, less the
     // allowance (below).
     double watchFunction(const World& w, const Ladder& ladder, const Watch& c) const;
+    double watchValue(const Ladder& ladder, double against, const Watch& c) const;  // `against`: its gap (m)
     bool isSlide(int k) const {
         return k >= int(watched_.size()) + int(touches_.size()) && k < int(watched_.size()) + 2 * int(touches_.size());
     }
@@ -177,7 +191,7 @@ private:
     // The corners of moving blocks near the floor, watched against it.
     void watchFloor(const World& w, const Ladder& ladder);
     bool resting(int block, int corner, int other) const;
-    static bool atHingeOf(const World& w, const Ladder& ladder, const Vec2& p, int b);
+    static bool atHingeOf(const Ladder& ladder, const Vec2& p, int b, const Placed& box);
     static bool onPin(const World& w, const Ladder& ladder, const Vec2& p, int a, int b);
     double gapZero(int block, int corner, int other) const;
     // `byImpact`: it moves away after an impact (a rebound starts), not
@@ -189,8 +203,10 @@ private:
     bool locating_ = false;
     double allowance_ = 1e-10;  // m
     std::vector<Watch> watched_;
-    std::map<std::array<int, 3>, int> through_;  // (block, corner, other) -> face, for watched_
-    std::vector<Touch> touches_;                 // parallel to World::contacts()
+    // (block, corner, other) and its face, for watched_, sorted: kept from
+    // one refresh to the next without an allocation per corner.
+    std::vector<std::pair<std::array<int, 3>, int>> through_;
+    std::vector<Touch> touches_;  // parallel to World::contacts()
     // Parted at some instant, and the gap they parted at (the projection's
     // noise): their zero, until they are clear by kClear.
     struct Parted {
