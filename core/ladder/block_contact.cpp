@@ -111,6 +111,12 @@ CornerAgainstBox BlockContacts::against(const World& w, const Ladder& ladder, in
     return {ladder.cornerWorld(w, block, corner).y() - *floor_, 3};
 }
 
+void BlockContacts::keepThrough(const std::array<int, 3>& id, int face) {
+    const auto seen = std::lower_bound(through_.begin(), through_.end(), std::pair{id, 0},
+                                       [](const auto& x, const auto& y) { return x.first < y.first; });
+    if (seen != through_.end() && seen->first == id) seen->second = face;
+}
+
 int BlockContacts::throughFace(const Ladder& ladder, const CornerAgainstBox& plain, int block, int corner,
                                int other) const {
     if (plain.gap > kFlush * ladder.length()) return plain.face;
@@ -179,17 +185,22 @@ void BlockContacts::refresh(const World& w, const Ladder& ladder) {
                 const Placed& box = b == i ? blockI : blockJ;
                 for (int k = 0; k < 4; ++k) {
                     const Vec2& p = corners.corner[size_t(k)];
-                    if (resting(a, k, b) || atHingeOf(ladder, p, b, box)) continue;
                     const int through = throughFace(ladder, pointAgainst(p, box, flush), a, k, b);
+                    // A corner at a hinge, or resting, is not watched for
+                    // now but keeps the face it came through for when it is
+                    // again: a corner passing a hinge's corner on its way in
+                    // would otherwise be judged by the plane it is nearest.
+                    throughNext_.push_back({{a, k, b}, through});
+                    if (resting(a, k, b) || atHingeOf(ladder, p, b, box)) continue;
                     watched_.push_back({a, k, b, gapZero(a, k, b), through});
                 }
             }
         }
     }
     if (floor_) watchFloor(w, ladder);
-    through_.clear();
-    for (const Watch& c : watched_) through_.push_back({{c.block, c.corner, c.other}, c.through});
-    std::sort(through_.begin(), through_.end());
+    std::sort(throughNext_.begin(), throughNext_.end());
+    std::swap(through_, throughNext_);
+    throughNext_.clear();
 }
 
 // Each moving block whose bounding circle reaches the table top has its
@@ -331,11 +342,51 @@ bool BlockContacts::heldAlready(const World& w, const Contact& c, const ContactR
     return !(own > 1e-6 * free);
 }
 
-// Corner `corner` of `block` against the face of `other` it is crossing
-// (cornerAgainst, with the face it came through), or the table top: a
-// resting contact from now on.
-Contact BlockContacts::contactAt(const World& w, const Ladder& ladder, int block, int corner, int other,
-                                 int through) const {
+// The face corner `corner` of `block` goes into block `other` through.
+// It is the one cornerAgainst finds with the face the corner came through,
+// unless the two boxes overlap clearly less along the other axis of
+// block `other` and the corner lies within that overlap of the face across
+// it. Two blocks side by side with their ends flush, one turned a hair
+// about the corners that meet: the far corner of each slides along the
+// other's end plane into its side, never clearly past the end, and a
+// contact on the end (which the pins already hold) could not stop the
+// sides sinking into each other. The least overlap of the boxes, their
+// separating axis, is the face that does. A corner where a hinge joins
+// its block to a neighbour keeps the face it came through: in the
+// wrong-way turn's wedge against the hand, a push there, on a side, closes
+// a loop of pins that the hand drives (pushes of 1e10 N), and the books
+// miss 1.5e-4 J in the next step (docs/model.md section 17.7).
+int BlockContacts::entryFace(const World& w, const Ladder& ladder, int block, int corner, int other,
+                             int through) const {
+    if (other == kFloor) return 3;
+    const int first = cornerAgainst(w, ladder, block, corner, other, through).face;
+    for (int j : {block, block + 1})
+        if (j >= 1 && j < ladder.blockCount() && ladder.hinge(j).mode != HingeMode::Cut &&
+            ladder.hinge(j).corner == corner)
+            return first;
+    const Placed box = placed(w, ladder, other, Need::Box);
+    const Placed mine = placed(w, ladder, block, Need::Corners);
+    auto local = [&](const Vec2& p) {
+        const Vec2 r = p - box.pose.position;
+        return Vec2(box.backCos * r.x() - box.backSin * r.y(), box.backSin * r.x() + box.backCos * r.y());
+    };
+    const Vec2 at = local(mine.corner[size_t(corner)]);
+    const double d[4] = {-at.x() - box.half.x(), at.x() - box.half.x(), -at.y() - box.half.y(), at.y() - box.half.y()};
+    Vec2 lo = at, hi = at;
+    for (const Vec2& p : mine.corner) lo = lo.cwiseMin(local(p)), hi = hi.cwiseMax(local(p));
+    const Vec2 overlap = hi.cwiseMin(box.half) - lo.cwiseMax(-box.half);
+    const double band = kTouchBand * ladder.length();
+    int best = first;
+    for (int f = 0; f < 4; ++f) {
+        const double o = overlap[f < 2 ? 0 : 1];
+        if (o < overlap[best < 2 ? 0 : 1] - band && d[f] >= -(o + band) && d[f] <= band) best = f;
+    }
+    return best;
+}
+
+// Corner `corner` of `block` against face `face` of `other`, or the table
+// top: a resting contact from now on.
+Contact BlockContacts::contactAt(const Ladder& ladder, int block, int corner, int other, int face) const {
     if (other == kFloor) {
         Contact c;
         c.cornerPart = ladder.block(block);
@@ -346,7 +397,6 @@ Contact BlockContacts::contactAt(const World& w, const Ladder& ladder, int block
         c.halfLength = kTableHalfLength;
         return c;
     }
-    const int face = cornerAgainst(w, ladder, block, corner, other, through).face;
     const Vec2 half = ladder.cornerLocal(other, 3).cwiseAbs();
     Contact c;
     c.cornerPart = ladder.block(block);
@@ -425,8 +475,9 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
         const double gap = against(w, ladder, c.block, c.corner, c.other, c.through).gap - c.zero;
         if (gap > band) continue;
         const bool located = std::find(located_.begin(), located_.end(), id) != located_.end();
+        const int face = entryFace(w, ladder, c.block, c.corner, c.other, c.through);
         if (gap >= -allowance_ && !located) {
-            const Contact candidate = contactAt(w, ladder, c.block, c.corner, c.other, c.through);
+            const Contact candidate = contactAt(ladder, c.block, c.corner, c.other, face);
             if (!(rowTimes(contactRow(w, candidate), w.v) < -parting)) continue;
         }
         // At a corner against a corner each touches the other's face: the
@@ -437,7 +488,7 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
         if (onPin(w, ladder, p, c.block, c.other)) continue;
         // Tried without touching the world: a corner that does not close
         // leaves every cache of the engine as it was.
-        const Contact candidate = contactAt(w, ladder, c.block, c.corner, c.other, c.through);
+        const Contact candidate = contactAt(ladder, c.block, c.corner, c.other, face);
         const ContactRow row = contactRow(w, candidate);
         const double rate = rowTimes(row, w.v);
         // Closing slower than v_min L (the speed below which nothing
@@ -459,7 +510,8 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
         Contact kept = candidate;
         kept.offset += sunk;
         w.contacts().push_back(kept);
-        Touch made{c.block, c.corner, c.other, against(w, ladder, c.block, c.corner, c.other, c.through).face, t};
+        Touch made{c.block, c.corner, c.other, face, t};
+        if (face != c.through) keepThrough({c.block, c.corner, c.other}, face);
         made.sunk = sunk;
         for (const Parted& p : parted_)
             if (p.block == c.block && p.corner == c.corner && p.other == c.other && p.byImpact) {

@@ -187,7 +187,9 @@ private:
     }
     double slideRoom(const World& w, size_t i) const;
     static bool heldAlready(const World& w, const Contact& c, const ContactRow& row);
-    Contact contactAt(const World& w, const Ladder& ladder, int block, int corner, int other, int through) const;
+    int entryFace(const World& w, const Ladder& ladder, int block, int corner, int other, int through) const;
+    Contact contactAt(const Ladder& ladder, int block, int corner, int other, int face) const;
+    void keepThrough(const std::array<int, 3>& id, int face);
     // The corners of moving blocks near the floor, watched against it.
     void watchFloor(const World& w, const Ladder& ladder);
     bool resting(int block, int corner, int other) const;
@@ -203,9 +205,10 @@ private:
     bool locating_ = false;
     double allowance_ = 1e-10;  // m
     std::vector<Watch> watched_;
-    // (block, corner, other) and its face, for watched_, sorted: kept from
-    // one refresh to the next without an allocation per corner.
-    std::vector<std::pair<std::array<int, 3>, int>> through_;
+    // (block, corner, other) and the face it came through, for every corner
+    // of a near pair (watched or not), sorted; the next refresh's is built
+    // in throughNext_, both kept without an allocation per corner.
+    std::vector<std::pair<std::array<int, 3>, int>> through_, throughNext_;
     std::vector<Touch> touches_;  // parallel to World::contacts()
     // Parted at some instant, and the gap they parted at (the projection's
     // noise): their zero, until they are clear by kClear.
