@@ -354,7 +354,7 @@ bool BlockContacts::heldAlready(const World& w, const Contact& c, const ContactR
 // separating axis, is the face that does. A corner where a hinge joins
 // its block to a neighbour keeps the face it came through: in the
 // wrong-way turn's wedge against the hand, a push there, on a side, closes
-// a loop of pins that the hand drives (pushes of 1e10 N), and the books
+// a loop of pins that the hand drives (pushes of 4e10 N), and the books
 // miss 1.5e-4 J in the next step (docs/model.md section 17.7).
 int BlockContacts::entryFace(const World& w, const Ladder& ladder, int block, int corner, int other,
                              int through) const {
