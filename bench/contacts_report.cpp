@@ -84,7 +84,7 @@ std::string contactsSection(const ContactsStudy& s, bool quick, bool& ok) {
          {"quick_note", quick ? " **Quick run**: 1 s of simulated time, N up to 10,000, one repetition." : ""},
          {"min_time", quick ? "20 ms" : "0.2 s"},
          {"horizon", quick ? "1" : "3"},
-         {"repetitions", quick ? "one run" : "three runs"},
+         {"repetitions", quick ? "one run" : "at least three runs, taken until each side has run 0.5 s of CPU time"},
          {"broad", broadTable(s)},
          {"examples", examplesTable(s)}},
         ok);
