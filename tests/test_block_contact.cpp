@@ -366,7 +366,7 @@ private slots:
     // plane into its side, was made a contact on that end, which the pins
     // already hold, and the sides sank 0.051 mm into each other. A corner
     // now goes in through the face of the boxes' least overlap (their
-    // separating axis, docs/model.md 17.4): 0.0027 mm.
+    // separating axis, docs/model.md 17.1): 0.0027 mm.
     void theFormatPagesCompleteExampleKeepsItsBooksWithContact() {
         auto sim = formatPageExampleWithContact();
         QVERIFY(sim);

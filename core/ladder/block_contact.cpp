@@ -80,10 +80,7 @@ BlockContacts::Placed BlockContacts::placed(const World& w, const Ladder& ladder
 }
 
 CornerAgainstBox BlockContacts::pointAgainst(const Vec2& p, const Placed& box, double flush, int through) {
-    const Vec2 r = p - box.pose.position;
-    const Vec2 local(box.backCos * r.x() - box.backSin * r.y(), box.backSin * r.x() + box.backCos * r.y());
-    const Vec2& half = box.half;
-    const double d[4] = {-local.x() - half.x(), local.x() - half.x(), -local.y() - half.y(), local.y() - half.y()};
+    const std::array<double, 4> d = box.beyond(box.local(p));
     if (through < 0) {
         CornerAgainstBox out{d[0], 0};
         for (int f = 1; f < 4; ++f)
@@ -111,19 +108,21 @@ CornerAgainstBox BlockContacts::against(const World& w, const Ladder& ladder, in
     return {ladder.cornerWorld(w, block, corner).y() - *floor_, 3};
 }
 
-void BlockContacts::keepThrough(const std::array<int, 3>& id, int face) {
+std::ptrdiff_t BlockContacts::throughOf(const std::array<int, 3>& id) const {
     const auto seen = std::lower_bound(through_.begin(), through_.end(), std::pair{id, 0},
                                        [](const auto& x, const auto& y) { return x.first < y.first; });
-    if (seen != through_.end() && seen->first == id) seen->second = face;
+    return seen != through_.end() && seen->first == id ? seen - through_.begin() : -1;
+}
+
+void BlockContacts::keepThrough(const std::array<int, 3>& id, int face) {
+    if (const std::ptrdiff_t i = throughOf(id); i >= 0) through_[size_t(i)].second = face;
 }
 
 int BlockContacts::throughFace(const Ladder& ladder, const CornerAgainstBox& plain, int block, int corner,
                                int other) const {
     if (plain.gap > kFlush * ladder.length()) return plain.face;
-    const std::array<int, 3> id{block, corner, other};
-    const auto seen = std::lower_bound(through_.begin(), through_.end(), std::pair{id, 0},
-                                       [](const auto& x, const auto& y) { return x.first < y.first; });
-    return seen != through_.end() && seen->first == id ? seen->second : plain.face;
+    const std::ptrdiff_t i = throughOf({block, corner, other});
+    return i >= 0 ? through_[size_t(i)].second : plain.face;
 }
 
 std::optional<std::string> BlockContacts::inside(const World& w, const Ladder& ladder) const {
@@ -359,21 +358,18 @@ bool BlockContacts::heldAlready(const World& w, const Contact& c, const ContactR
 int BlockContacts::entryFace(const World& w, const Ladder& ladder, int block, int corner, int other,
                              int through) const {
     if (other == kFloor) return 3;
-    const int first = cornerAgainst(w, ladder, block, corner, other, through).face;
+    const Placed box = placed(w, ladder, other, Need::Box);
+    const Placed mine = placed(w, ladder, block, Need::Corners);
+    const Vec2& p = mine.corner[size_t(corner)];
+    const int first = pointAgainst(p, box, kFlush * ladder.length(), through).face;
     for (int j : {block, block + 1})
         if (j >= 1 && j < ladder.blockCount() && ladder.hinge(j).mode != HingeMode::Cut &&
             ladder.hinge(j).corner == corner)
             return first;
-    const Placed box = placed(w, ladder, other, Need::Box);
-    const Placed mine = placed(w, ladder, block, Need::Corners);
-    auto local = [&](const Vec2& p) {
-        const Vec2 r = p - box.pose.position;
-        return Vec2(box.backCos * r.x() - box.backSin * r.y(), box.backSin * r.x() + box.backCos * r.y());
-    };
-    const Vec2 at = local(mine.corner[size_t(corner)]);
-    const double d[4] = {-at.x() - box.half.x(), at.x() - box.half.x(), -at.y() - box.half.y(), at.y() - box.half.y()};
+    const Vec2 at = box.local(p);
+    const std::array<double, 4> d = box.beyond(at);
     Vec2 lo = at, hi = at;
-    for (const Vec2& p : mine.corner) lo = lo.cwiseMin(local(p)), hi = hi.cwiseMax(local(p));
+    for (const Vec2& q : mine.corner) lo = lo.cwiseMin(box.local(q)), hi = hi.cwiseMax(box.local(q));
     const Vec2 overlap = hi.cwiseMin(box.half) - lo.cwiseMax(-box.half);
     const double band = kTouchBand * ladder.length();
     int best = first;

@@ -9,6 +9,7 @@
 #include "jl/ladder/hinge_event.h"
 
 #include <array>
+#include <cstddef>
 #include <limits>
 #include <optional>
 #include <string>
@@ -173,6 +174,16 @@ private:
         Vec2 half;
         std::array<Vec2, 4> corner;
         double backCos = 1, backSin = 0;  // of -pose.angle
+        // Point p (m, in the world) in the block's frame.
+        Vec2 local(const Vec2& p) const {
+            const Vec2 r = p - pose.position;
+            return {backCos * r.x() - backSin * r.y(), backSin * r.x() + backCos * r.y()};
+        }
+        // Signed distances of a point in the block's frame to its faces'
+        // planes (faces 0 to 3), > 0 outside.
+        std::array<double, 4> beyond(const Vec2& l) const {
+            return {-l.x() - half.x(), l.x() - half.x(), -l.y() - half.y(), l.y() - half.y()};
+        }
     };
     enum class Need { Both, Corners, Box };  // the corners, the rotation back, or both
     static Placed placed(const World& w, const Ladder& ladder, int block, Need need = Need::Both);
@@ -190,6 +201,8 @@ private:
     int entryFace(const World& w, const Ladder& ladder, int block, int corner, int other, int through) const;
     Contact contactAt(const Ladder& ladder, int block, int corner, int other, int face) const;
     void keepThrough(const std::array<int, 3>& id, int face);
+    // Where through_ holds (block, corner, other), or -1.
+    std::ptrdiff_t throughOf(const std::array<int, 3>& id) const;
     // The corners of moving blocks near the floor, watched against it.
     void watchFloor(const World& w, const Ladder& ladder);
     bool resting(int block, int corner, int other) const;
