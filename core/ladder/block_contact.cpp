@@ -67,26 +67,29 @@ BlockContacts::Placed BlockContacts::placed(const World& w, const Ladder& ladder
     Placed out;
     out.pose = w.partPose(ladder.block(block));
     out.half = ladder.cornerLocal(block, 3).cwiseAbs();
-    // As rotate() and Pose::apply work them out, to the last bit.
-    if (need != Need::Box) {
-        const double c = std::cos(out.pose.angle), s = std::sin(out.pose.angle);
+    // As rotate() and Pose::apply work them out, to the last bit. The
+    // rotation back uses the same cosine and sine: cos and sin are even and
+    // odd to the last bit (as libm computes them from |angle|).
+    const double c = std::cos(out.pose.angle), s = std::sin(out.pose.angle);
+    if (need != Need::Box)
         for (int k = 0; k < 4; ++k) {
             const Vec2 l = ladder.cornerLocal(block, k);
             out.corner[size_t(k)] = out.pose.position + Vec2(c * l.x() - s * l.y(), s * l.x() + c * l.y());
         }
-    }
-    if (need != Need::Corners) out.backCos = std::cos(-out.pose.angle), out.backSin = std::sin(-out.pose.angle);
+    if (need != Need::Corners) out.backCos = c, out.backSin = -s;
+    return out;
+}
+
+CornerAgainstBox BlockContacts::nearestFace(const std::array<double, 4>& d) {
+    CornerAgainstBox out{d[0], 0};
+    for (int f = 1; f < 4; ++f)
+        if (d[f] > out.gap) out = {d[f], f};
     return out;
 }
 
 CornerAgainstBox BlockContacts::pointAgainst(const Vec2& p, const Placed& box, double flush, int through) {
     const std::array<double, 4> d = box.beyond(box.local(p));
-    if (through < 0) {
-        CornerAgainstBox out{d[0], 0};
-        for (int f = 1; f < 4; ++f)
-            if (d[f] > out.gap) out = {d[f], f};
-        return out;
-    }
+    if (through < 0) return nearestFace(d);
     CornerAgainstBox out{d[through], through};
     for (int f = 0; f < 4; ++f)
         if (f != through && d[f] - flush > out.gap) out = {d[f] - flush, f};
@@ -175,22 +178,34 @@ void BlockContacts::refresh(const World& w, const Ladder& ladder) {
     if (enabled_) {
         broad_.find(w, ladder, pairs_);
         pairCount_ = int(pairs_.size());
-        const double flush = kFlush * length;
         for (const auto& [i, j] : pairs_) {
-            // Each block's pose and corners worked out once for the pair.
+            // Each block's pose and corners worked out once for the pair,
+            // and each corner's distances to the other's face planes.
             const Placed blockI = placed(w, ladder, i), blockJ = placed(w, ladder, j);
+            BlockPairs::CornerDistances beyond;
+            for (int k = 0; k < 4; ++k) {
+                beyond[0][size_t(k)] = blockJ.beyond(blockJ.local(blockI.corner[size_t(k)]));
+                beyond[1][size_t(k)] = blockI.beyond(blockI.local(blockJ.corner[size_t(k)]));
+            }
+            // Boxes apart along one of their axes by more than the clear
+            // distance (most pairs whose circles overlap): every corner of
+            // each is outside the other by more than the touch band, so its
+            // function is positive and counts nowhere (one counts once it
+            // is negative), and none touches. Not watched, the same events
+            // at less cost; their faces are still kept.
+            const bool apart = BlockPairs::apart(beyond, kClear * length);
             for (const auto& [a, b] : {std::pair{i, j}, std::pair{j, i}}) {
                 const Placed& corners = a == i ? blockI : blockJ;
                 const Placed& box = b == i ? blockI : blockJ;
                 for (int k = 0; k < 4; ++k) {
                     const Vec2& p = corners.corner[size_t(k)];
-                    const int through = throughFace(ladder, pointAgainst(p, box, flush), a, k, b);
+                    const int through = throughFace(ladder, nearestFace(beyond[a == i ? 0 : 1][size_t(k)]), a, k, b);
                     // A corner at a hinge, or resting, is not watched for
                     // now but keeps the face it came through for when it is
                     // again: a corner passing a hinge's corner on its way in
                     // would otherwise be judged by the plane it is nearest.
                     throughNext_.push_back({{a, k, b}, through});
-                    if (resting(a, k, b) || atHingeOf(ladder, p, b, box)) continue;
+                    if (apart || resting(a, k, b) || atHingeOf(ladder, p, b, box)) continue;
                     watched_.push_back({a, k, b, gapZero(a, k, b), through});
                 }
             }

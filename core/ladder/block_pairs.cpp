@@ -58,8 +58,9 @@ void BlockPairs::find(const World& w, const Ladder& ladder, std::vector<std::pai
     const int n = ladder.blockCount();
     if (n < 3) return;
     if (reachFor_ != n) {  // the blocks' sizes are the ladder's, fixed for a run
-        reach_ = 0;
-        for (int i = 0; i < n; ++i) reach_ = std::max(reach_, ladder.cornerLocal(i, 3).norm());
+        radius_.resize(size_t(n));
+        for (int i = 0; i < n; ++i) radius_[size_t(i)] = ladder.cornerLocal(i, 3).norm();
+        reach_ = *std::max_element(radius_.begin(), radius_.end());
         reachFor_ = n;
     }
     const double cell = 2 * reach_;
@@ -93,28 +94,31 @@ void BlockPairs::find(const World& w, const Ladder& ladder, std::vector<std::pai
     }
     // A few blocks: every pair's circles compared directly, the same pairs
     // as the grid finds (a cell is as wide as any two circles reach) at a
-    // fraction of its cost (the examples' ladders of 4 to 12 blocks).
+    // fraction of its cost (the examples' ladders of 4 to 12 blocks). The
+    // members are in the order of their blocks, so the pairs come out
+    // sorted.
     if (members_.size() <= kDirect) {
         struct Near {
             int block, body;
             bool kinematic;
-            double radius;
-            Vec2 centre;
         };
         std::array<Near, kDirect> near;
-        size_t count = 0;
-        for (int i : members_) {
-            const int body = w.part(ladder.block(i)).body;
-            near[count++] = {i, body, w.body(body).kinematic, ladder.cornerLocal(i, 3).norm(), centre_[size_t(i)]};
+        const size_t count = members_.size();
+        for (size_t a = 0; a < count; ++a) {
+            const int body = w.part(ladder.block(members_[a])).body;
+            near[a] = {members_[a], body, w.body(body).kinematic};
         }
-        for (size_t a = 0; a < count && near[a].block < moving; ++a)
-            for (size_t b = 0; b < count; ++b) {
-                const Near &p = near[a], &q = near[b];
-                if (q.block <= p.block + 1 || q.body == p.body || (p.kinematic && q.kinematic)) continue;
-                const double reach = p.radius + q.radius;
-                if ((q.centre - p.centre).squaredNorm() < reach * reach) out.emplace_back(p.block, q.block);
+        for (size_t a = 0; a < count && near[a].block < moving; ++a) {
+            const Near& p = near[a];
+            const Vec2& c = centre_[size_t(p.block)];
+            const double r = radius_[size_t(p.block)];
+            for (size_t b = a + 1; b < count; ++b) {
+                const Near& q = near[b];
+                if (q.block == p.block + 1 || q.body == p.body || (p.kinematic && q.kinematic)) continue;
+                const double reach = r + radius_[size_t(q.block)];
+                if ((centre_[size_t(q.block)] - c).squaredNorm() < reach * reach) out.emplace_back(p.block, q.block);
             }
-        std::sort(out.begin(), out.end());
+        }
         return;
     }
     size_t buckets = 1;
@@ -136,7 +140,7 @@ void BlockPairs::find(const World& w, const Ladder& ladder, std::vector<std::pai
         const long long ix = std::llround(std::floor(c.x() / cell)), iy = std::llround(std::floor(c.y() / cell));
         const int bodyI = w.part(ladder.block(i)).body;
         const bool kinematicI = w.body(bodyI).kinematic;
-        const double ri = ladder.cornerLocal(i, 3).norm();
+        const double ri = radius_[size_t(i)];
         for (long long dx = -1; dx <= 1; ++dx)
             for (long long dy = -1; dy <= 1; ++dy) {
                 const long long key = cellKey(ix + dx, iy + dy);
@@ -145,12 +149,19 @@ void BlockPairs::find(const World& w, const Ladder& ladder, std::vector<std::pai
                         continue;  // each pair once; neighbours meet at their hinge
                     const int bodyJ = w.part(ladder.block(j)).body;
                     if (bodyJ == bodyI || (kinematicI && w.body(bodyJ).kinematic)) continue;
-                    const double rj = ladder.cornerLocal(j, 3).norm();
+                    const double rj = radius_[size_t(j)];
                     if ((centre_[size_t(j)] - c).squaredNorm() < (ri + rj) * (ri + rj)) out.emplace_back(i, j);
                 }
             }
     }
     std::sort(out.begin(), out.end());  // the same order whatever the hashing: the same events in the same order
+}
+
+bool BlockPairs::apart(const CornerDistances& beyond, double by) {
+    for (const auto& corners : beyond)
+        for (size_t f = 0; f < 4; ++f)
+            if (corners[0][f] > by && corners[1][f] > by && corners[2][f] > by && corners[3][f] > by) return true;
+    return false;
 }
 
 }  // namespace jl

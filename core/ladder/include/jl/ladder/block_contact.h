@@ -37,6 +37,12 @@ public:
     // At most this many blocks in the search: every pair compared, no grid.
     static constexpr size_t kDirect = 16;
     void find(const World& w, const Ladder& ladder, std::vector<std::pair<int, int>>& out);
+    // Whether two blocks of a pair are apart by more than `by` along one of
+    // their axes (a separating axis), from the distances of each one's four
+    // corners to the other's face planes: beyond[0][k][f], corner k of the
+    // first against face f of the second; beyond[1], the other way round.
+    using CornerDistances = std::array<std::array<std::array<double, 4>, 4>, 2>;
+    static bool apart(const CornerDistances& beyond, double by);
 
 private:
     struct Segment {
@@ -47,6 +53,7 @@ private:
     std::vector<int> head_, next_, members_;
     std::vector<long long> key_;
     std::vector<Vec2> centre_;
+    std::vector<double> radius_;  // m, each block's half diagonal
     std::vector<Segment> segments_;
     int segmentsFor_ = -1;  // the still tail's first block they were listed for
     double reach_ = 0;      // m, the largest half diagonal
@@ -189,6 +196,10 @@ private:
     static Placed placed(const World& w, const Ladder& ladder, int block, Need need = Need::Both);
     // cornerAgainst for a point p (m, in the world) and a placed box.
     static CornerAgainstBox pointAgainst(const Vec2& p, const Placed& box, double flush, int through = -1);
+    // The face whose plane a point is farthest beyond, from its distances
+    // to the four (Placed::beyond).
+    static CornerAgainstBox nearestFace(const std::array<double, 4>& d);
+
     // The watched corners' functions: the gap past its zero, less the
     // allowance (below).
     double watchFunction(const World& w, const Ladder& ladder, const Watch& c) const;
