@@ -74,6 +74,10 @@ EventsCompared compareEvents(const std::vector<Event>& a, const std::vector<Even
 // has run `minSeconds` of CPU time in all, each the least of its runs: most
 // examples run in about 10 ms, where one of three runs took whatever else
 // the machine did (heavy-middle read 0.99x, 1.09x and 1.11x minutes apart).
+// The ratio is the median of each turn's on / off: the two runs of a turn
+// meet the same machine, so a slow spell cancels in it. The ratio of the
+// least times moved by 0.13 between runs of this study a minute apart
+// (heavy-middle 1.07x and 1.20x, its instructions 1.066x).
 ContactExampleRow exampleRow(const std::string& name, const Scene& scene, double horizon, int repetitions,
                              double minSeconds) {
     ContactExampleRow row;
@@ -81,13 +85,21 @@ ContactExampleRow exampleRow(const std::string& name, const Scene& scene, double
     row.asked = std::min(horizon, scene.duration);
     Run off, on;
     double spentOff = 0, spentOn = 0;
+    std::vector<double> ratios;
     for (int k = 0; k < 1000 && (k < repetitions || std::min(spentOff, spentOn) < minSeconds); ++k) {
         Run a = runOnce(scene, BlockContact::Off, horizon), b = runOnce(scene, BlockContact::On, horizon);
         spentOff += a.cpu, spentOn += b.cpu;
+        if (a.cpu > 0) ratios.push_back(b.cpu / a.cpu);
         if (k == 0 || a.cpu < off.cpu) off = std::move(a);
         if (k == 0 || b.cpu < on.cpu) on = std::move(b);
     }
     row.cpuOff = off.cpu, row.cpuOn = on.cpu;
+    row.turns = int(ratios.size());
+    if (!ratios.empty()) {
+        std::sort(ratios.begin(), ratios.end());
+        const size_t m = ratios.size() / 2;
+        row.ratio = ratios.size() % 2 ? ratios[m] : (ratios[m - 1] + ratios[m]) / 2;
+    }
     row.stepsOff = off.steps, row.stepsOn = on.steps;
     row.eventsOff = int(off.events.size()), row.eventsOn = int(on.events.size());
     row.touches = int(

@@ -29,6 +29,8 @@ struct ContactExampleRow {
     std::string scene;
     double asked = 0;              // s
     double cpuOff = 0, cpuOn = 0;  // CPU s, the least of the repetitions
+    double ratio = 0;              // the median over the turns of on / off
+    int turns = 0;                 // off and on runs taken in turn
     long long stepsOff = 0, stepsOn = 0;
     int eventsOff = 0, eventsOn = 0;  // every event, contact events included
     int touches = 0;                  // "strikes" events with contact on

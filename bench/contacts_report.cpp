@@ -58,7 +58,7 @@ std::string examplesTable(const ContactsStudy& s) {
        << "|---|---:|---:|---:|---:|---:|---:|---|---:|---|\n";
     int quiet = 0, quietMet = 0;
     for (const ContactExampleRow& r : s.examples) {
-        const double ratio = r.cpuOff > 0 ? r.cpuOn / r.cpuOff : 0;
+        const double ratio = r.ratio;
         md << "| " << r.scene << " | " << sig(r.cpuOff, 3) << " | " << sig(r.cpuOn, 3) << " | " << sig(ratio, 3)
            << " | " << r.stepsOff << " / " << r.stepsOn << " | " << r.eventsOff << " / " << r.eventsOn << " | "
            << r.touches << " | "
@@ -100,8 +100,8 @@ bool writeContactsCsv(const ContactsStudy& s, const std::filesystem::path& dir) 
     examples << kContactExamplesColumns << '\n';
     CsvWriter e(examples, 6);
     for (const ContactExampleRow& r : s.examples)
-        e.row(r.scene, r.asked, r.cpuOff, r.cpuOn, r.stepsOff, r.stepsOn, r.eventsOff, r.eventsOn, r.touches,
-              r.sameSequence, r.largestShift, r.partAt, r.balanceOn, r.failureOff, r.failureOn);
+        e.row(r.scene, r.asked, r.cpuOff, r.cpuOn, r.ratio, r.turns, r.stepsOff, r.stepsOn, r.eventsOff, r.eventsOn,
+              r.touches, r.sameSequence, r.largestShift, r.partAt, r.balanceOn, r.failureOff, r.failureOn);
     return saveText(dir / "contacts_broad_phase.csv", broad.str()) &&
            saveText(dir / "contacts_examples.csv", examples.str());
 }
