@@ -10,6 +10,10 @@
 
 #include <QtTest>
 
+#include <array>
+#include <cmath>
+#include <numbers>
+
 using namespace jl;
 using namespace jl::test;
 
@@ -64,6 +68,26 @@ int compareAlong(const std::string& file, int blocks, double until, int every, b
     return sim->failure().empty() && (tails > 0 || !tail) ? compared : -1;
 }
 
+// The distances of a box's four corners to the face planes of another
+// (faces -x, +x, -y, +y of its frame, > 0 outside), as the refresh reads
+// them: boxes of half sizes `half`, centred at `a` and `b`, turned by
+// angles `ta` and `tb`.
+std::array<std::array<double, 4>, 4> cornersBeyond(const Vec2& a, double ta, const Vec2& b, double tb,
+                                                   const Vec2& half) {
+    std::array<std::array<double, 4>, 4> out;
+    const Vec2 signs[4] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    for (int k = 0; k < 4; ++k) {
+        const Vec2 corner = a + rotate(ta, Vec2(signs[k].cwiseProduct(half)));
+        const Vec2 l = rotate(-tb, Vec2(corner - b));
+        out[size_t(k)] = {-l.x() - half.x(), l.x() - half.x(), -l.y() - half.y(), l.y() - half.y()};
+    }
+    return out;
+}
+
+BlockPairs::CornerDistances both(const Vec2& a, double ta, const Vec2& b, double tb, const Vec2& half) {
+    return {cornersBeyond(a, ta, b, tb, half), cornersBeyond(b, tb, a, ta, half)};
+}
+
 }  // namespace
 
 class BlockPairsTest : public QObject {
@@ -89,6 +113,32 @@ private slots:
     // neither may the grid.
     void aThousandBlocksFindNoPairWhereNoneOverlap() {
         QCOMPARE(compareAlong("examples/classic.yaml", 1000, 3.0, 25), 0);
+    }
+
+    // A pair whose circles overlap has its corners watched unless the two
+    // boxes are apart along one of their four axes by more than a distance.
+    // Blocks 60 x 12 mm, worked by hand: side by side 0.5 mm apart; crossed
+    // in an X; one turned 45 deg with its long face 1 mm from the other's
+    // corner, apart only along the turned block's own axis (neither box
+    // lies beyond a face plane of the upright one).
+    void boxesApartAlongAnAxisAreToldFromOverlappingOnes() {
+        const Vec2 half(0.006, 0.03);
+        const auto sideBySide = both({0, 0}, 0, {0.0125, 0}, 0, half);
+        QVERIFY(BlockPairs::apart(sideBySide, 6e-8));
+        QVERIFY(BlockPairs::apart(sideBySide, 0.4999e-3));
+        QVERIFY(!BlockPairs::apart(sideBySide, 0.5001e-3));
+        QVERIFY(!BlockPairs::apart(both({0, 0}, 0, {0, 0}, std::numbers::pi / 2, half), 6e-8));
+        const double quarter = std::numbers::pi / 4;
+        const Vec2 u(std::cos(quarter), std::sin(quarter));
+        const Vec2 corner(0.006, 0.03);
+        const auto turned = both(corner + (0.006 + 0.001) * u, quarter, {0, 0}, 0, half);
+        for (size_t f = 0; f < 4; ++f) {  // the upright box's planes do not separate them
+            bool allBeyond = true;
+            for (size_t k = 0; k < 4; ++k) allBeyond = allBeyond && turned[0][k][f] > 0;
+            QVERIFY(!allBeyond);
+        }
+        QVERIFY(BlockPairs::apart(turned, 0.9999e-3));
+        QVERIFY(!BlockPairs::apart(turned, 1.0001e-3));
     }
 };
 
