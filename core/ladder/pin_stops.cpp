@@ -238,9 +238,8 @@ bool PinStops::wouldChatter(const World& w, double t, int i, const std::vector<T
     return speed < kMinReboundSpeed && accel < 0;
 }
 
-void PinStops::say(std::vector<Event>& events, double t, int i, EventKind kind, bool atSpeed) {
-    events.push_back(event(t, i, kind));
-    spoken_.push_back({i, atSpeed});
+void PinStops::say(std::vector<Said>& said, double t, int i, EventKind kind, bool atSpeed) {
+    said.push_back({event(t, i, kind), i, atSpeed});
 }
 
 // What instant t did to each stop, in words (`trials`, said by `say`, with
@@ -249,21 +248,21 @@ void PinStops::say(std::vector<Event>& events, double t, int i, EventKind kind, 
 // free before and after that was struck moving strikes and lets go (or
 // bounces); one that only touched its limit at rest, and one closed before
 // and after, have nothing to say.
-std::vector<Event> PinStops::net(const std::vector<Event>& trials, const std::vector<int>& closedBefore) const {
+std::vector<Event> PinStops::net(const std::vector<Said>& trials, const std::vector<int>& closedBefore) const {
     std::vector<Event> said;
     std::vector<bool> done(stops_.size(), false);
     for (size_t k = 0; k < trials.size(); ++k) {
-        const int i = spoken_[k].first;
+        const int i = trials[k].stop;
         if (done[size_t(i)]) continue;
         done[size_t(i)] = true;
         const bool before = closedBefore[size_t(i)] != 0, after = closed_[size_t(i)] != 0;
         if (before && after) continue;
         std::optional<Event> strike, last;
         for (size_t m = k; m < trials.size(); ++m)
-            if (spoken_[m].first == i) {
-                const bool struck = trials[m].kind == EventKind::Touch && (spoken_[m].second || after);
-                if (!strike && struck) strike = trials[m];
-                last = trials[m];
+            if (trials[m].stop == i) {
+                const bool struck = trials[m].event.kind == EventKind::Touch && (trials[m].atSpeed || after);
+                if (!strike && struck) strike = trials[m].event;
+                last = trials[m].event;
             }
         if (before) {
             said.push_back(event(last->time, i, EventKind::Part));
@@ -293,7 +292,7 @@ Event PinStops::event(double t, int i, EventKind kind) const {
 // bounce, since one law serves every contact of an impact (docs/model.md
 // section 18).
 double PinStops::bounceAt(World& w, double t, const std::vector<std::pair<int, int>>& hits,
-                          const std::vector<double>& approach, double rebound, std::vector<Event>& events) {
+                          const std::vector<double>& approach, double rebound, std::vector<Said>& events) {
     double e = 0;
     for (size_t k = 0; k < hits.size(); ++k) {
         const int i = hits[k].first;
@@ -314,9 +313,10 @@ double PinStops::bounceAt(World& w, double t, const std::vector<std::pair<int, i
 // made, and an impact that ends a shrinking sequence of rebounds leaves the
 // contacts held in it closed. Restitution then turns the plastic result
 // into a bounce (projection.h's bounce) at the stops struck.
-std::vector<Event> PinStops::impact(World& w, Dynamics& d, double t, const std::vector<std::pair<int, int>>& hits,
-                                    double* loss, double* heldWork) {
-    std::vector<Event> events;
+std::vector<PinStops::Said> PinStops::impact(World& w, Dynamics& d, double t,
+                                             const std::vector<std::pair<int, int>>& hits, double* loss,
+                                             double* heldWork) {
+    std::vector<Said> events;
     const std::vector<Twist> before = w.partVelocities();
     const double keBefore = energy(w).kinetic;
     // Every approach before any stop closes: a weld changes the rates next to it.
@@ -407,8 +407,7 @@ std::vector<Event> PinStops::impact(World& w, Dynamics& d, double t, const std::
 // speed). Until nothing changes; should that cycle (on rounding), the
 // second half of the passes keeps the stops released here free.
 std::vector<Event> PinStops::settle(World& w, Dynamics& d, double t, double* impactLoss, double* heldWork) {
-    std::vector<Event> events;
-    spoken_.clear();
+    std::vector<Said> events;
     const std::vector<int> closedBefore = closed_;
     std::vector<int> released;
     const int passes = 10 * count() + 10;
@@ -437,7 +436,7 @@ std::vector<Event> PinStops::settle(World& w, Dynamics& d, double t, double* imp
         }
         if (!hits.empty() || (!pull && resting)) {
             if (hits.empty()) hits.push_back(*resting);
-            for (Event& e : impact(w, d, t, hits, impactLoss, heldWork)) events.push_back(std::move(e));
+            for (Said& e : impact(w, d, t, hits, impactLoss, heldWork)) events.push_back(std::move(e));
             continue;
         }
         if (pull) {

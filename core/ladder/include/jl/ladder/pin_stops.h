@@ -109,14 +109,20 @@ private:
     bool noteClose(int i, double t);
     int weldOf(const World& w, int i) const;
     bool wouldChatter(const World& w, double t, int i, const std::vector<Twist>& before) const;
-    std::vector<Event> impact(World& w, Dynamics& d, double t, const std::vector<std::pair<int, int>>& hits,
-                              double* loss, double* heldWork);
+    // What an instant did to one stop, as it happened, before net() says
+    // what it amounts to.
+    struct Said {
+        Event event;
+        int stop = 0;
+        bool atSpeed = true;  // a strike moving into the limit (else one that only touched it at rest)
+    };
+    std::vector<Said> impact(World& w, Dynamics& d, double t, const std::vector<std::pair<int, int>>& hits,
+                             double* loss, double* heldWork);
     double bounceAt(World& w, double t, const std::vector<std::pair<int, int>>& hits,
-                    const std::vector<double>& approach, double rebound, std::vector<Event>& events);
+                    const std::vector<double>& approach, double rebound, std::vector<Said>& events);
     Event event(double t, int i, EventKind kind) const;
-    // `atSpeed`: a strike moving into the limit (else one that only touched it at rest).
-    void say(std::vector<Event>& events, double t, int i, EventKind kind, bool atSpeed = true);
-    std::vector<Event> net(const std::vector<Event>& trials, const std::vector<int>& closedBefore) const;
+    void say(std::vector<Said>& said, double t, int i, EventKind kind, bool atSpeed = true);
+    std::vector<Event> net(const std::vector<Said>& trials, const std::vector<int>& closedBefore) const;
 
     std::vector<PinStop> stops_;
     std::vector<int> closed_;
@@ -124,7 +130,6 @@ private:
     // The world's weld that closes each stop, as weldOf last found it (checked
     // before use): found again only after a change of structure.
     mutable std::vector<int> welds_;
-    std::vector<std::pair<int, bool>> spoken_;  // each event said in this instant: its stop, at speed
     // The particle pair that closes each stop at its least (0) and greatest (1) angle.
     std::vector<std::array<std::array<ParticleId, 2>, 2>> pairs_;
     double forceTolerance_ = 1e-9, impulseTolerance_ = 1e-9, restingRate_ = 1e-9;  // N m, N m s, rad/s
