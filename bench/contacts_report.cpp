@@ -67,7 +67,7 @@ std::string examplesTable(const ContactsStudy& s) {
            << " | " << sig(r.balanceOn, 3) << " | " << r.failureOn << " |\n";
         if (r.touches == 0) {
             ++quiet;
-            if (ratio <= 1.1 && r.sameSequence && r.largestShift <= 1e-9) ++quietMet;
+            if (r.turns > 0 && ratio <= 1.1 && r.sameSequence && r.largestShift <= 1e-9) ++quietMet;
         }
     }
     md << "\n- Where no block strikes another, at most 1.1x, and the same events at the same times to 1e-9 s: "

@@ -47,11 +47,8 @@ CornerAgainstBox BlockContacts::pointAgainst(const Vec2& p, const Placed& box, d
 
 CornerAgainstBox BlockContacts::cornerAgainst(const World& w, const Ladder& ladder, int block, int corner, int other,
                                               int through) {
-    Placed box;
-    box.pose = w.partPose(ladder.block(other));
-    box.half = ladder.cornerLocal(other, 3).cwiseAbs();
-    box.backCos = std::cos(-box.pose.angle), box.backSin = std::sin(-box.pose.angle);
-    return pointAgainst(ladder.cornerWorld(w, block, corner), box, kFlush * ladder.length(), through);
+    return pointAgainst(ladder.cornerWorld(w, block, corner), placed(w, ladder, other, Need::Box),
+                        kFlush * ladder.length(), through);
 }
 
 CornerAgainstBox BlockContacts::against(const World& w, const Ladder& ladder, int block, int corner, int other,
