@@ -40,8 +40,8 @@ inline constexpr const char* kStabilityColumns =
 inline constexpr const char* kBroadPhaseColumns =
     "blocks,still_from,pairs,calls,cpu_per_block_call [s],build_cpu [s],failure";
 inline constexpr const char* kContactExamplesColumns =
-    "scene,asked [s],cpu_off [s],cpu_on "
-    "[s],on_off_ratio,turns,steps_off,steps_on,events_off,events_on,strikes,same_sequence,"
+    "scene,asked [s],cpu_off [s],cpu_on [s],on_off_ratio,turns,"
+    "steps_off,steps_on,events_off,events_on,strikes,same_sequence,"
     "largest_shift [s],part_at [s],largest_balance_on [J],failure_off,failure_on";
 
 // The folding chain (bench/folding_study.cpp): every run of every engine,
