@@ -87,14 +87,22 @@ double BlockContacts::gapZero(int block, int corner, int other) const {
     return 0.0;
 }
 
+// A corner parted at some instant is back to the plain zero once clear
+// (the record stays, for the Zeno time, until the next parting). Judged
+// only on a state the run keeps: a step's end where an event is then
+// located inside the step is not one. A corner parted 22 um inside a
+// block (held where it was met) and clear of it at such an end lost its
+// zero, and at the located instant 1 ns in, inside again, it struck and
+// parted: 172,742 times in 0.17 ms, in a wrong-way turn of 7 blocks.
+void BlockContacts::forgetCleared(const World& w, const Ladder& ladder) {
+    for (Parted& p : parted_)
+        if (p.gap != 0 && against(w, ladder, p.block, p.corner, p.other).gap > kClear * ladder.length()) p.gap = 0;
+}
+
 void BlockContacts::refresh(const World& w, const Ladder& ladder) {
     watched_.clear();
     if (!active()) return;
     const double length = ladder.length();
-    // A corner parted at some instant is back to the plain zero once clear
-    // (the record stays, for the Zeno time, until the next parting).
-    for (Parted& p : parted_)
-        if (against(w, ladder, p.block, p.corner, p.other).gap > kClear * length) p.gap = 0;
     if (enabled_) {
         broad_.find(w, ladder, pairs_);
         pairCount_ = int(pairs_.size());
@@ -463,6 +471,7 @@ std::vector<BlockContactFrame> BlockContacts::frames(const World& w, const Dynam
 std::vector<Event> Ladder::settle(World& w, Dynamics& d, double t, double* impactLoss, double* heldWork) {
     std::vector<Event> events = resolve(w, d, t, impactLoss, heldWork);
     if (!blockContacts_.active()) return events;
+    blockContacts_.forgetCleared(w, *this);
     blockContacts_.newInstant();
     for (int guard = 0; guard < 8 * blockCount() + 8; ++guard) {
         std::vector<Event> more = blockContacts_.resolveOnce(w, d, *this, t, impactLoss, heldWork);

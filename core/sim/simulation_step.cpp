@@ -226,6 +226,7 @@ std::optional<bool> Simulation::ladderAtStepEnd(MotionStep& m, double& taken, co
         return true;
     } else {
         emitGridFrames(taken);
+        ladder_->blockContacts().forgetCleared(world_, *ladder_);
     }
     ladder_->updateAngles(world_);
     wakeTailIfReached(taken);

@@ -78,6 +78,10 @@ public:
     // watched against the other block, and the contacts that rest. The
     // event functions of the next location are these, at any state.
     void refresh(const World& w, const Ladder& ladder);
+    // At a state the run keeps (a step's end that settles nothing, a
+    // settled instant): the corners parted inside a face and clear of it
+    // now go back to the plain zero.
+    void forgetCleared(const World& w, const Ladder& ladder);
     // Appends the functions (>= 0 while nothing happens): each watched
     // corner's gap, and each resting contact's push and how far its corner
     // is from sliding off the face. Returns the smallest push (+inf if none).
