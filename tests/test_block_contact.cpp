@@ -9,6 +9,7 @@
 #include "jl/design/ripple_reach.h"
 #include "jl/engine/energy.h"
 #include "tests/example_claims.h"
+#include "tests/ladder_scenes.h"
 #include "tests/scene_run.h"
 
 #include <QtTest>
@@ -424,6 +425,40 @@ private slots:
                                         .norm());
         qInfo("block centres at 0.3 s at most %.3g m from the run without the join", apart);
         QVERIFY(apart < 1e-12);
+    }
+
+    // The ladder packs (docs/model.md section 17.3): in the wrong-way turn
+    // with contact on, block 3 comes to lie along block 0 as hinge 2 folds
+    // flat and hinge 3 locks straight, a dead point of the loop of blocks 0
+    // to 3. Block 3's corner 3 strikes block 0 at 0.8995 s, and hinges 2
+    // and 3 close at that same instant, in one impact; the pins are within
+    // their tolerance after every step, the located instant's included
+    // (1.6e-10 m when the strike stopped the hinges short of their limits).
+    void theLadderPacksAtTheDeadPoint() {
+        SceneLoad load = loadScene(std::string(JL_SOURCE_DIR) + "/examples/wrong-way.yaml");
+        QVERIFY(load.scene);
+        load.scene->solver.blockContact = BlockContact::On;
+        auto sim = std::move(Simulation::build(*load.scene).simulation);
+        QVERIFY(sim);
+        double strike = -1;
+        const Run r = runUntil(*sim, 0.95, [&](const Frame& f) {
+            for (const Event& e : f.events)
+                if (strike < 0 && e.kind == EventKind::Touch && e.time > 0.89 &&
+                    e.text == "block 3 strikes block 0 (corner 3)")
+                    strike = e.time;
+        });
+        QVERIFY2(r.failure.empty(), r.failure.c_str());
+        QVERIFY(strike > 0);
+        const Event* fold2 = firstEvent(r.events, 2, EventKind::Fold, 0.89);
+        const Event* lock3 = firstEvent(r.events, 3, EventKind::Lock, 0.89);
+        QVERIFY(fold2 && lock3);
+        qInfo("strike at %.9f s, hinge 2 folds at %.9f s, hinge 3 locks at %.9f s; pins within %.3g m", strike,
+              fold2->time, lock3->time, r.worstResidual);
+        QVERIFY(std::abs(strike - 0.8995) < 1e-4);
+        QCOMPARE(fold2->time, strike);
+        QCOMPARE(lock3->time, strike);
+        QVERIFY(r.worstResidual <= 1e-10);
+        QVERIFY(r.worstBalance < 2e-4 * energyScale(*sim));
     }
 
     // Every example: no two blocks that are not neighbours inside each

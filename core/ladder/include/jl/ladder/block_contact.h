@@ -119,6 +119,8 @@ public:
     // past the face. Forgotten once the instant is settled.
     void markLocated(const std::vector<int>& functions);
     void forgetLocated() { located_.clear(); }
+    // The corners (block, corner, other) whose crossing this instant located.
+    const std::vector<std::array<int, 3>>& located() const { return located_; }
 
     // Which blocks each of World::contacts() joins: the corner's block and
     // corner, the face's block and face.

@@ -238,6 +238,8 @@ private:
     bool touchingLimit(const World& w, int j, bool folded, bool resting) const;
     std::vector<Event> impact(World& w, Dynamics& d, double t, const std::vector<int>& hits, double* loss,
                               double* heldWork, std::vector<int>* releasedNow);
+    // The hinges a located strike packs against their limits (block_contact.cpp).
+    std::vector<int> packedBy(const World& w) const;
     std::optional<std::pair<int, EventKind>> pullingContact(const World& w, const Dynamics& d, const Impact* impact,
                                                             const std::vector<int>& keep = {},
                                                             bool spareHeld = false) const;
