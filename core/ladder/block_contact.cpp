@@ -268,21 +268,29 @@ bool BlockContacts::atHingeOf(const Ladder& ladder, const Vec2& p, int b, const 
 // the push would be the pins' indeterminate share, not a contact.
 bool BlockContacts::heldAlready(const World& w, const Contact& c, const ContactRow& row) {
     const Eigen::MatrixXd& matrix = contactMatrixWith(w, c);
+    return !(share(w, row, matrix, matrix.rows() - 1) > 1e-6);
+}
+
+// What a push at contact i of `matrix` (the Delassus matrix of the pins and
+// the contacts, 17.2) moves with the others held as well (the Schur
+// complement of the others), over what it would move the two bodies alone.
+double BlockContacts::share(const World& w, const ContactRow& row, const Eigen::MatrixXd& matrix, Eigen::Index i) {
     double free = 0;
     for (int b : {row.bodyA, row.bodyB}) {
         const Vec2 arm = b == row.bodyA ? row.armA : row.armB;
         free += w.invMassDiag[3 * b] + w.invMassDiag[3 * b + 2] * cross(arm, row.normal) * cross(arm, row.normal);
     }
-    // What a push at the new contact moves with the others held as well:
-    // the Schur complement of the contacts already resting.
-    const Eigen::Index n = matrix.rows() - 1;
-    double own = matrix(n, n);
-    if (n > 0) {
-        const Eigen::MatrixXd held = matrix.topLeftCorner(n, n);
-        const Eigen::VectorXd across = matrix.topRightCorner(n, 1);
+    const Eigen::Index n = matrix.rows();
+    double own = matrix(i, i);
+    if (n > 1) {
+        std::vector<Eigen::Index> others;
+        for (Eigen::Index j = 0; j < n; ++j)
+            if (j != i) others.push_back(j);
+        const Eigen::MatrixXd held = matrix(others, others);
+        const Eigen::VectorXd across = matrix(others, i);
         own -= across.dot(held.ldlt().solve(across));
     }
-    return !(own > 1e-6 * free);
+    return free > 0 ? own / free : 0.0;
 }
 
 // Corner `corner` of `block` against face `face` of `other`, or the table
@@ -335,6 +343,20 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
     // 1. Partings, one at a time: a corner that has slid off its face, or
     // that moves away (an impact elsewhere parted it); else the push that
     // would pull the most.
+    // A contact the pins now hold by themselves parts too: a flip or a lock
+    // at this instant put a pin on its normal line, its share (17.2) is the
+    // rounding's, and its push the solve's noise. In the wrong-way turn with
+    // a fixed step of 1 ms, block 2's flip at 2.3869 s left block 3's corner
+    // on block 0 with a share of -3e-34 and a push of 1.2e17 N, and the next
+    // step's projection failed.
+    const Eigen::MatrixXd& matrix = d.contactMatrix();
+    for (size_t i = 0; i < touches_.size() && matrix.rows() == Eigen::Index(touches_.size()); ++i) {
+        if (share(w, contactRow(w, w.contacts()[i]), matrix, Eigen::Index(i)) > kRedundant) continue;
+        const Touch c = touches_[i];
+        part(w, i, t, false);
+        events.push_back({t, EventKind::Part, -1, -1, words("leaves", c)});
+        return events;
+    }
     for (size_t i = 0; i < touches_.size(); ++i) {
         const ContactRow row = contactRow(w, w.contacts()[i]);
         const bool off = slideRoom(w, i) < -band;

@@ -19,6 +19,9 @@ constexpr double kFlush = kTouchBand;
 // Of a block length: a contact that parted reads its gap from where it
 // parted until it is this far clear.
 constexpr double kClear = 1e-6;
+// A resting contact's share (docs/model.md section 17.2) at or below this is
+// the rounding's: the pins hold its corner by themselves.
+constexpr double kRedundant = 1e-12;
 // m: the table top reaches this far either side of the ground's origin, so
 // a corner never slides off it.
 constexpr double kTableHalfLength = 1e6;

@@ -41,6 +41,9 @@ public:
     // one per World::contacts(), on the corner's part along the face's
     // normal), and each contact's row at that state.
     const Eigen::VectorXd& contactForces() const { return contactForces_; }
+    // Their Delassus matrix in that evaluation, K_ij = G_i u_j (docs/model.md
+    // section 17.2): what a unit push at contact j does to contact i's gap.
+    const Eigen::MatrixXd& contactMatrix() const { return contactResponse_.matrix; }
     // Applied (non-constraint) forces of the last evaluation, 3 per body.
     const Eigen::VectorXd& appliedForces() const { return force_; }
     // The pin solver the evaluations and the projections share (private to

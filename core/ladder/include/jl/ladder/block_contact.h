@@ -215,6 +215,7 @@ private:
     }
     double slideRoom(const World& w, size_t i) const;
     static bool heldAlready(const World& w, const Contact& c, const ContactRow& row);
+    static double share(const World& w, const ContactRow& row, const Eigen::MatrixXd& matrix, Eigen::Index i);
     int entryFace(const World& w, const Ladder& ladder, int block, int corner, int other, int through) const;
     Contact contactAt(const Ladder& ladder, int block, int corner, int other, int face) const;
     void keepThrough(const std::array<int, 3>& id, int face);
