@@ -503,9 +503,8 @@ std::vector<BlockContactFrame> BlockContacts::frames(const World& w, const Dynam
 std::vector<int> Ladder::packedBy(const World& w) const {
     std::vector<int> hinges;
     const double band = std::sqrt(gapTolerance_ / length());
-    for (const auto& [a, corner, b] : blockContacts_.located()) {
+    for (const auto& [a, corner, b] : blockContacts_.striking(w, *this)) {
         (void)corner;
-        if (b == BlockContacts::kFloor) continue;
         for (int j = std::min(a, b) + 1; j <= std::max(a, b) && j < liveEnd(); ++j) {
             if (hinge(j).mode != HingeMode::Free || std::find(hinges.begin(), hinges.end(), j) != hinges.end())
                 continue;
@@ -520,6 +519,26 @@ std::vector<int> Ladder::packedBy(const World& w) const {
         }
     }
     return hinges;
+}
+
+// As resolveOnce judges a strike: a corner at a hinge, or past the band,
+// does not pack anything (counted, one closed hinge 19 of a 76-block ladder
+// of 1 mm blocks 1.2 ns early where nothing struck).
+std::vector<std::array<int, 3>> BlockContacts::striking(const World& w, const Ladder& ladder) const {
+    std::vector<std::array<int, 3>> out;
+    const double parting = ladder.hingeOptions().minReboundSpeed * ladder.length();
+    for (const Watch& c : watched_) {
+        const std::array<int, 3> id{c.block, c.corner, c.other};
+        if (c.other == kFloor || std::find(located_.begin(), located_.end(), id) == located_.end()) continue;
+        if (against(w, ladder, c.block, c.corner, c.other, c.through).gap - c.zero > kTouchBand * ladder.length())
+            continue;
+        if (onPin(w, ladder, ladder.cornerWorld(w, c.block, c.corner), c.block, c.other)) continue;
+        const Contact candidate =
+            contactAt(ladder, c.block, c.corner, c.other, entryFace(w, ladder, c.block, c.corner, c.other, c.through));
+        const ContactRow row = contactRow(w, candidate);
+        if (rowTimes(row, w.v) < -parting && !heldAlready(w, candidate, row)) out.push_back(id);
+    }
+    return out;
 }
 
 // An instant settled with the contacts between blocks too: the hinges

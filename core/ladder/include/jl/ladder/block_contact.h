@@ -119,8 +119,11 @@ public:
     // past the face. Forgotten once the instant is settled.
     void markLocated(const std::vector<int>& functions);
     void forgetLocated() { located_.clear(); }
-    // The corners (block, corner, other) whose crossing this instant located.
-    const std::vector<std::array<int, 3>>& located() const { return located_; }
+    // The corners (block, corner, other) whose crossing of another block's
+    // face this instant located and that close on it faster than v_min L
+    // where the pins do not hold them already: they strike it (a graze, or
+    // a corner at a hinge, does not).
+    std::vector<std::array<int, 3>> striking(const World& w, const Ladder& ladder) const;
 
     // Which blocks each of World::contacts() joins: the corner's block and
     // corner, the face's block and face.
