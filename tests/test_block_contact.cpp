@@ -8,6 +8,7 @@
 // other).
 #include "jl/design/ripple_reach.h"
 #include "jl/engine/energy.h"
+#include "tests/block_overlap.h"
 #include "tests/example_claims.h"
 #include "tests/ladder_scenes.h"
 #include "tests/scene_run.h"
@@ -49,38 +50,6 @@ std::string dropScene(const std::string& extra, const std::string& solver = "",
     if (!solver.empty()) yaml.append("solver: ").append(solver).append("\n");
     yaml.append("script:\n  - {at: 0, cut: {hinge: 1}}\n").append(extra);
     return yaml;
-}
-
-// How deep two boxes overlap (m), by separating axes: the least overlap of
-// their projections on the four face normals, 0 if any axis separates them.
-double overlap(const std::array<Vec2, 4>& a, double angleA, const std::array<Vec2, 4>& b, double angleB) {
-    double least = std::numeric_limits<double>::infinity();
-    for (double angle : {angleA, angleA + std::numbers::pi / 2, angleB, angleB + std::numbers::pi / 2}) {
-        const Vec2 axis(std::cos(angle), std::sin(angle));
-        double loA = 1e300, hiA = -1e300, loB = 1e300, hiB = -1e300;
-        for (const Vec2& p : a) loA = std::min(loA, p.dot(axis)), hiA = std::max(hiA, p.dot(axis));
-        for (const Vec2& p : b) loB = std::min(loB, p.dot(axis)), hiB = std::max(hiB, p.dot(axis));
-        const double o = std::min(hiA, hiB) - std::max(loA, loB);
-        if (o <= 0) return 0;
-        least = std::min(least, o);
-    }
-    return least;
-}
-
-// The deepest overlap of two blocks that are not neighbours, from their corners.
-double deepestOverlap(const Simulation& sim) {
-    const Ladder& ladder = *sim.ladder();
-    const World& w = sim.world();
-    double deepest = 0;
-    for (int i = 0; i < ladder.blockCount(); ++i)
-        for (int j = i + 2; j < ladder.blockCount(); ++j) {
-            std::array<Vec2, 4> a, b;
-            for (int k = 0; k < 4; ++k)
-                a[size_t(k)] = ladder.cornerWorld(w, i, k), b[size_t(k)] = ladder.cornerWorld(w, j, k);
-            deepest =
-                std::max(deepest, overlap(a, w.partPose(ladder.block(i)).angle, b, w.partPose(ladder.block(j)).angle));
-        }
-    return deepest;
 }
 
 // The pushes of the resting contacts in the state the simulation holds.
@@ -506,8 +475,8 @@ private slots:
     }
     void noExampleHasBlocksInsideEachOther() {
         QFETCH(QString, file);
-        // Contact between blocks is the scene's choice, off by default while
-        // its open problems stand (docs/model.md section 17): on here.
+        // Contact between blocks is on by default; on here whatever an
+        // example may say.
         SceneLoad load = loadScene(std::string(JL_SOURCE_DIR) + "/examples/" + file.toStdString());
         QVERIFY(load.scene);
         load.scene->solver.blockContact = BlockContact::On;

@@ -26,6 +26,9 @@ Scene tightScene(const std::string& path) {
     SceneLoad load = loadScene(std::string(JL_SOURCE_DIR) + "/" + path);
     if (!load.scene) return {};
     Scene scene = *load.scene;
+    // The paper's model, the one the reference implements: blocks that are
+    // not neighbours pass through each other.
+    scene.solver.blockContact = BlockContact::Off;
     scene.solver.integrator = Integrator::DormandPrince45;
     scene.solver.tolerance = 1e-12;
     scene.solver.eventTolerance = 1e-12;

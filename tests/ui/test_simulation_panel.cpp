@@ -37,7 +37,7 @@ class SimulationPanelTest : public QObject {
 private slots:
     void initTestCase() { jl::test::isolateSettings(); }
 
-    void blockContactIsTurnedOnFromTheKeyboardAndUndone() {
+    void blockContactIsTurnedOffFromTheKeyboardAndUndone() {
         Document doc;
         const jl::SceneLoad load = jl::loadScene(JL_SOURCE_DIR "/examples/wrong-way.yaml");
         QVERIFY(load.scene);
@@ -47,19 +47,20 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&panel));
         auto* box = panel.findChild<QComboBox*>("block_contact");
         QVERIFY(box);
-        QCOMPARE(doc.scene().solver.blockContact, jl::BlockContact::Off);
-        QCOMPARE(box->currentData().toInt(), int(jl::BlockContact::Off));
-        // The user picks "on": the item above "off" in the box.
-        box->setFocus();
-        QTest::keyClick(box, Qt::Key_Up);
+        // Solid blocks are the default.
         QCOMPARE(doc.scene().solver.blockContact, jl::BlockContact::On);
+        QCOMPARE(box->currentData().toInt(), int(jl::BlockContact::On));
+        // The user picks "off" (the paper's model): the item below "on".
+        box->setFocus();
+        QTest::keyClick(box, Qt::Key_Down);
+        QCOMPARE(doc.scene().solver.blockContact, jl::BlockContact::Off);
         QCOMPARE(doc.undoStack()->undoText(), QString("Change block contact"));
         // Written to the file as the scene format says.
-        QVERIFY(jl::sceneToYaml(doc.scene()).find("block_contact: on") != std::string::npos);
+        QVERIFY(jl::sceneToYaml(doc.scene()).find("block_contact: off") != std::string::npos);
         doc.undoStack()->undo();
-        QCOMPARE(doc.scene().solver.blockContact, jl::BlockContact::Off);
+        QCOMPARE(doc.scene().solver.blockContact, jl::BlockContact::On);
         panel.refresh();  // as the main window does on every change of the scene
-        QCOMPARE(box->currentData().toInt(), int(jl::BlockContact::Off));
+        QCOMPARE(box->currentData().toInt(), int(jl::BlockContact::On));
     }
 
     // A click puts a table top just under the ladder as it starts; its

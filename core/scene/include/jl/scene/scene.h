@@ -196,7 +196,7 @@ struct SolverSpec {
     double frameInterval = 1.0 / 60.0;  // s, output frames
     RigidPairs rigidPairs = RigidPairs::Merge;
     StillTail stillTail = StillTail::Joined;
-    BlockContact blockContact = BlockContact::Off;  // docs/model.md section 17 (off until its open problems are solved)
+    BlockContact blockContact = BlockContact::On;  // docs/model.md section 17
     bool operator==(const SolverSpec&) const = default;
 };
 
