@@ -38,11 +38,22 @@ inline double overlapOf(const Simulation& sim, int i, int j) {
     return overlap(a, w.partPose(ladder.block(i)).angle, b, w.partPose(ladder.block(j)).angle);
 }
 
-// The deepest overlap of two blocks that are not neighbours, from their corners.
+// The deepest overlap of two blocks that are not neighbours, from their
+// corners. Only pairs whose centres are within the largest block's diagonal
+// can overlap: the others cost one distance each (a 100-block ladder has
+// 4,851 pairs at every step).
 inline double deepestOverlap(const Simulation& sim) {
+    const Ladder& ladder = *sim.ladder();
+    const World& w = sim.world();
+    double reach = 0;
+    for (int i = 0; i < ladder.blockCount(); ++i) reach = std::max(reach, 2 * ladder.cornerLocal(i, 3).norm());
     double deepest = 0;
-    for (int i = 0; i < sim.ladder()->blockCount(); ++i)
-        for (int j = i + 2; j < sim.ladder()->blockCount(); ++j) deepest = std::max(deepest, overlapOf(sim, i, j));
+    for (int i = 0; i < ladder.blockCount(); ++i) {
+        const Vec2 a = w.partPose(ladder.block(i)).position;
+        for (int j = i + 2; j < ladder.blockCount(); ++j)
+            if ((w.partPose(ladder.block(j)).position - a).squaredNorm() < reach * reach)
+                deepest = std::max(deepest, overlapOf(sim, i, j));
+    }
     return deepest;
 }
 

@@ -17,27 +17,6 @@
 using namespace jl;
 using namespace jl::test;
 
-namespace {
-
-// The deepest overlap of two blocks that are not neighbours, looking only
-// at pairs whose centres are within a block's diagonal of each other (the
-// others cannot overlap): O(N^2) cheap tests a step, a few exact ones.
-double deepestNearOverlap(const Simulation& sim) {
-    const Ladder& ladder = *sim.ladder();
-    const World& w = sim.world();
-    const double reach = 2 * ladder.cornerLocal(0, 3).norm();
-    double deepest = 0;
-    for (int i = 0; i < ladder.blockCount(); ++i) {
-        const Vec2 a = w.partPose(ladder.block(i)).position;
-        for (int j = i + 2; j < ladder.blockCount(); ++j)
-            if ((w.partPose(ladder.block(j)).position - a).squaredNorm() < reach * reach)
-                deepest = std::max(deepest, overlapOf(sim, i, j));
-    }
-    return deepest;
-}
-
-}  // namespace
-
 class MapOverlapTest : public QObject {
     Q_OBJECT
 private slots:
@@ -61,7 +40,7 @@ private slots:
         QVERIFY(sim);
         double deepest = 0, when = 0;
         const Run r = runUntil(*sim, rippleRunTime(s), [&](const Frame&) {
-            const double d = deepestNearOverlap(*sim);
+            const double d = deepestOverlap(*sim);
             if (d > deepest) deepest = d, when = sim->time();
         });
         qInfo("deepest overlap %.3g mm at %.3f s", deepest * 1e3, when);
