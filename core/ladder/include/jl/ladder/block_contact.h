@@ -29,7 +29,8 @@ struct CornerAgainstBox {
 };
 
 // Pairs of blocks whose bounding circles overlap, by a grid hashed on the
-// blocks' centres: O(moving blocks + segments of the still tail) per call.
+// blocks' centres: O(moving blocks + segments of the still tail) per search,
+// the pairs within a skin kept until a block has moved by half of it.
 // Neighbours, blocks of one body and blocks both in the still tail are left
 // out.
 class BlockPairs {
@@ -37,6 +38,9 @@ public:
     // At most this many blocks in the search: every pair compared, no grid.
     static constexpr size_t kDirect = 16;
     void find(const World& w, const Ladder& ladder, std::vector<std::pair<int, int>>& out);
+    // The next call searches again, as if nothing were kept (the benchmark
+    // times a search and a call that keeps its pairs apart).
+    void forget() { kept_ = false; }
     // Whether two blocks of a pair are apart by more than `by` along one of
     // their axes (a separating axis), from the distances of each one's four
     // corners to the other's face planes: beyond[0][k][f], corner k of the
@@ -48,12 +52,23 @@ private:
     struct Segment {
         int body = 0, first = 0, end = 0;  // blocks [first, end) of one body of the still tail
         Vec2 lo, hi;                       // m: the box of their centres in the body's frame
+        Pose foundAt;                      // the body's pose at the last search
+        bool searched = false;             // its blocks were members of that search
     };
+    // m: how far beyond touching the kept pairs reach (the largest half
+    // diagonal: 31 mm for the default block).
+    double skin() const { return reach_; }
     void listSegments(const World& w, const Ladder& ladder, int still);
+    bool stillNear(const World& w, const Ladder& ladder);
+    void search(const World& w, const Ladder& ladder, int moving);
+    void comparePairwise(const World& w, const Ladder& ladder, int moving, std::vector<std::pair<int, int>>& out) const;
     std::vector<int> head_, next_, members_;
     std::vector<long long> key_;
-    std::vector<Vec2> centre_;
-    std::vector<double> radius_;  // m, each block's half diagonal
+    std::vector<Vec2> centre_, foundAt_;     // m: the members' centres now, and at the last search
+    std::vector<std::pair<int, int>> near_;  // the pairs whose circles widened by the skin overlapped then
+    bool kept_ = false;                      // near_ holds the last search's pairs
+    int keptFor_ = -1;                       // the still tail's first block at that search
+    std::vector<double> radius_;             // m, each block's half diagonal
     std::vector<Segment> segments_;
     int segmentsFor_ = -1;  // the still tail's first block they were listed for
     double reach_ = 0;      // m, the largest half diagonal
