@@ -16,11 +16,12 @@ namespace jl::bench {
 // the rest of the ladder is its still tail.
 struct BroadPhaseRow {
     int blocks = 0;
-    int stillFrom = -1;   // first block of the still tail (-1: none)
-    int pairs = 0;        // pairs passed on to the corners
-    int calls = 0;        // repetitions timed
-    double perBlock = 0;  // CPU s per block per call
-    double buildCpu = 0;  // CPU s to build and run the half second (context)
+    int stillFrom = -1;       // first block of the still tail (-1: none)
+    int pairs = 0;            // pairs passed on to the corners
+    int calls = 0;            // repetitions timed
+    double perBlock = 0;      // CPU s per block per call that searches
+    double perBlockKept = 0;  // CPU s per block per call that keeps the pairs it found
+    double buildCpu = 0;      // CPU s to build and run the half second (context)
     std::string failure;
 };
 

@@ -38,7 +38,7 @@ inline constexpr const char* kStabilityColumns =
     "dopri_steps,dopri_rejected,dopri_mean_step [s],dopri_cost [s/s]";
 
 inline constexpr const char* kBroadPhaseColumns =
-    "blocks,still_from,pairs,calls,cpu_per_block_call [s],build_cpu [s],failure";
+    "blocks,still_from,pairs,calls,cpu_per_block_call [s],kept_cpu_per_block_call [s],build_cpu [s],failure";
 inline constexpr const char* kContactExamplesColumns =
     "scene,asked [s],cpu_off [s],cpu_on [s],on_off_ratio,turns,"
     "steps_off,steps_on,events_off,events_on,strikes,same_sequence,"
