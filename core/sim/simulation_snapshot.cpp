@@ -32,6 +32,8 @@ void Simulation::restore(const Snapshot& s) {
     dynamics_.forgetStructure();  // its caches belong to the structure it last saw
     dynamics_.evaluate(world_, t_);
     liveDrag_ = -1;
+    stiffenedRate_ = 0;
+    retakes_ = 0;
     pending_.clear();
     gridDoneUpTo_ = std::min(gridDoneUpTo_, t_);  // grid instants after the restored time come again
     failure_.clear();

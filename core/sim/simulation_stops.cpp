@@ -93,6 +93,7 @@ std::optional<bool> Simulation::stopsAtStepEnd(MotionStep& m, double& taken, con
             crossed = functionsAtEnd();
         }
     if (!crossed) {
+        if (retakeIfStiffened(plan, taken)) return true;
         emitGridFrames(taken);
         stops_->track(world_);
         return std::nullopt;

@@ -198,9 +198,11 @@ private:
     void record(const Event& e);
     bool booksDiverged() const;
     double booksImbalance(double total) const;
+    double fastestRate() const;
     double fixedStep();
     void noteStep(double h);
     bool retryWithSmallerStep();
+    bool retakeIfStiffened(const StepPlan& plan, double taken);
     // Where within the step just taken a free hinge dips past a limit (0: none).
     double limitDip(double taken);
     std::string blowUpAdvice(double h) const;
@@ -241,6 +243,10 @@ private:
     double lastResidual_ = 0;
     double stepScale_ = 1;      // automatic step: halved after each step that blew up
     double imbalanceBase_ = 0;  // J, the books' imbalance at the last halving (the check watches growth past it)
+    // While a step is taken again for its end (retakeIfStiffened), until it
+    // is kept: the rate that end had, and how many tries.
+    double stiffenedRate_ = 0;  // 1/s
+    int retakes_ = 0;
     // Kept from step to step so that stepping allocates nothing.
     Eigen::VectorXd stepStartQ_, stepStartV_;  // the state the step started from
     Eigen::VectorXd stepStartA_;               // and its accelerations (adaptive steps with limits)
