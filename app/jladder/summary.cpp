@@ -10,14 +10,19 @@ namespace {
 
 // What step the run took: the adaptive integrator's error control's (the
 // range of the steps it chose), the scene's, or the engine's choice (its
-// range, and how often a step that blew up made it halve the rest).
+// range, how many steps it took again, and how often a step that blew up
+// made it halve the rest).
 Json stepJson(const SolverFrame& f) {
     if (f.adaptiveStep)
-        return Json{{"chosen_by", "error control"}, {"smallest", f.smallestStep}, {"largest", f.largestStep}};
+        return Json{{"chosen_by", "error control"},
+                    {"smallest", f.smallestStep},
+                    {"largest", f.largestStep},
+                    {"rejected", f.rejected}};
     if (!f.automaticStep) return Json{{"chosen_by", "scene"}};
     return Json{{"chosen_by", "engine"},
                 {"smallest", f.smallestStep},
                 {"largest", f.largestStep},
+                {"rejected", f.rejected},
                 {"halvings", f.stepHalvings}};
 }
 
