@@ -48,4 +48,18 @@ std::vector<BenchRow> scalingStudy(const BenchPlan& plan);
 // A long ladder turned over with RK4 (real-time factor in the note).
 std::vector<BenchRow> longLadderStudy(const BenchPlan& plan);
 
+// The classic design with many blocks at the default settings, timed (no
+// reference: an accurate run of it takes minutes); the quick form runs none.
+struct LongClassicRun {
+    int blocks = 0;
+    double asked = 0, simulated = 0;  // s
+    double cpu = 0;                   // s, the fastest of `runs`
+    int runs = 0;
+    long long steps = 0, evaluations = 0, rejected = 0;
+    int halvings = 0;
+    double books = 0;  // J, the energy books' imbalance at the end
+    std::string failure;
+};
+LongClassicRun longClassicRun(const BenchPlan& plan);
+
 }  // namespace jl::bench

@@ -19,6 +19,7 @@ namespace jl::bench {
 struct BenchResults {
     bool quick = false;
     std::vector<BenchRow> pendulum, ladder, scaling, longLadder;
+    LongClassicRun longClassic;
     std::map<int, std::vector<BenchRow>> chains;  // by N; peers' rows included
     std::string peers;                            // versions, or why not measured
     StabilityStudy stability;
@@ -29,6 +30,10 @@ struct BenchResults {
 };
 
 bool writeReport(const BenchResults& r, const std::filesystem::path& plots, const std::filesystem::path& report);
+// The section "A long ladder turned over" and its targets alone (jladder
+// bench --only long_ladder); `plots` holds its chart.
+bool writeLongLadderReport(const std::vector<BenchRow>& rows, const LongClassicRun& classic, bool quick,
+                           const std::filesystem::path& plots, const std::filesystem::path& report);
 // The section "Stability limit of long ladders" alone (jladder bench --only stability).
 bool writeStabilityReport(const StabilityStudy& s, bool quick, const std::filesystem::path& report);
 // The section "Model only what a scene needs" alone (jladder bench --only models).

@@ -87,6 +87,19 @@ Chart workPrecision(const std::string& title, const std::string& errorLabel, con
     return c;
 }
 
+bool writeLongLadderChart(const std::vector<BenchRow>& rows, const std::filesystem::path& out) {
+    std::vector<BenchRow> shown;
+    for (const BenchRow& r : rows)
+        if (r.error > 0) {  // not the reference itself
+            shown.push_back(r);
+            shown.back().method += ", N = " + std::to_string(r.blocks);
+        }
+    return writeChart(
+        workPrecision("Long ladder turned over from t = 0, t = 0.5 s (reference: Dormand-Prince at 1e-10)",
+                      "largest block-centre error (m)", shown),
+        out, "long_ladder");
+}
+
 }  // namespace
 
 bool runBench(const BenchRequest& request) {
@@ -142,6 +155,13 @@ bool runBench(const BenchRequest& request) {
         starts("folding chain: stops, against the peers");
         return runFoldingStudy(plan, out, report);
     }
+    if (only == "long_ladder") {
+        starts("long ladder");
+        const std::vector<BenchRow> rows = longLadderStudy(plan);
+        const LongClassicRun classic = longClassicRun(plan);
+        return writeCsv(rows, out / "long_ladder.csv") && writeLongLadderChart(rows, out) &&
+               writeLongLadderReport(rows, classic, plan.quick, out, report);
+    }
     if (onlyContacts) {
         starts("block contacts");
         const ContactsStudy study = contactsStudy(plan, examplesDir);
@@ -168,6 +188,7 @@ bool runBench(const BenchRequest& request) {
     results.scaling = scalingStudy(plan);
     starts("long ladder");
     results.longLadder = longLadderStudy(plan);
+    results.longClassic = longClassicRun(plan);
     starts("stability limit");
     results.stability = stabilityStudy(plan);
     starts("rigid pairs: merged or welded");
@@ -204,16 +225,7 @@ bool runBench(const BenchRequest& request) {
              workPrecision("Ladder cascade, 6 blocks, t = 1.2 s", "largest block-centre error (m)", results.ladder),
              out, "ladder") &&
          ok;
-    std::vector<BenchRow> longLadder;
-    for (const BenchRow& r : results.longLadder)
-        if (r.error > 0) {  // not the reference itself
-            longLadder.push_back(r);
-            longLadder.back().method += ", N = " + std::to_string(r.blocks);
-        }
-    ok = writeChart(workPrecision("Long ladder turned over from t = 0, t = 0.5 s (reference: Dormand-Prince at 1e-10)",
-                                  "largest block-centre error (m)", longLadder),
-                    out, "long_ladder") &&
-         ok;
+    ok = writeLongLadderChart(results.longLadder, out) && ok;
     Chart scaling{"Cost per block-step, falling chain (dt = 1 ms; the Euler methods 0.1 ms)",
                   "blocks N",
                   "ns per block-step (CPU)",
