@@ -514,12 +514,14 @@ std::vector<BenchRow> longLadderRuns(int blocks, double duration) {
             for (size_t k = 0; k < exact.size(); ++k)
                 row.error = std::max(row.error, (f.poses[k].position - exact[k].position).norm());
         }
+        // A run that stopped has no error to give (no NaN in a file).
+        char error[64] = "no block-centre error (it stopped)";
+        if (std::isfinite(row.error)) std::snprintf(error, sizeof error, "block-centre error %.2e m", row.error);
         char note[400];
         std::snprintf(note, sizeof note,
-                      "simulated %.4f s in %.3f CPU s (%.3fx real time), %lld steps, %.0f ns per block-step, "
-                      "block-centre error %.2e m%s%s%s",
+                      "simulated %.4f s in %.3f CPU s (%.3fx real time), %lld steps, %.0f ns per block-step, %s%s%s%s",
                       f.time, cpu, f.time / cpu, f.solver.steps,
-                      1e9 * cpu / (double(blocks) * double(std::max<long long>(f.solver.steps, 1))), row.error,
+                      1e9 * cpu / (double(blocks) * double(std::max<long long>(f.solver.steps, 1))), error,
                       runs > 1 ? (" (fastest of " + std::to_string(runs) + " runs)").c_str() : "",
                       row.finished ? "" : "; stopped: ", f.failure.c_str());
         row.note = note;
