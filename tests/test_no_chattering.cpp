@@ -180,10 +180,14 @@ private slots:
     // apart, while a step's end that an event then cut short found it clear
     // and forgot its zero. No corner may strike one block more than three
     // times in a row with less than 1 ms between, and the books balance as
-    // the examples' do.
+    // the examples' do. The turn of 0.3 s missed that by 1.5e-4 J until a
+    // step whose end nears RK4's stability limit was taken again (a
+    // resting corner's push grows towards a dead point within the step,
+    // docs/model.md section 17.7): now 3e-6 J.
     void noCornerStrikesABlockOverAndOver_data() {
         QTest::addColumn<double>("turn");
-        for (double turn : {0.25, 0.32, 0.35}) QTest::newRow(qPrintable(QString("turn of %1 s").arg(turn))) << turn;
+        for (double turn : {0.25, 0.3, 0.32, 0.35})
+            QTest::newRow(qPrintable(QString("turn of %1 s").arg(turn))) << turn;
     }
     void noCornerStrikesABlockOverAndOver() {
         QFETCH(double, turn);
