@@ -41,8 +41,12 @@ void pinGaps(const World& w, Eigen::VectorXd& gap, std::vector<Eigen::Vector2d>&
 // The largest gap: a pin's two rows are one distance, a weld's row another.
 double largestGap(const World& w, const Eigen::VectorXd& x) {
     const Eigen::Index weldRows = 2 * Eigen::Index(w.pins().size());
-    double m = 0;
-    for (Eigen::Index i = 0; i + 1 < weldRows; i += 2) m = std::max(m, std::hypot(x[i], x[i + 1]));
+    // The largest square, then one root: std::hypot guards against an
+    // overflow that gaps of metres cannot reach, at some 20 ns a pin (5 %
+    // of the 10,000-block classic's run).
+    double squared = 0;
+    for (Eigen::Index i = 0; i + 1 < weldRows; i += 2) squared = std::max(squared, x[i] * x[i] + x[i + 1] * x[i + 1]);
+    double m = std::sqrt(squared);
     for (Eigen::Index i = weldRows; i < x.size(); ++i) m = std::max(m, std::abs(x[i]));
     return m;
 }
