@@ -448,8 +448,9 @@ private slots:
     }
 
     // Played on past its 2 s at the engine's step, the chain's whips cost
-    // RK4 at 1 ms 1e-3 of the energy by 2.6 s: the step is halved and the
-    // run goes on (it used to stop there blaming held blocks it has none of).
+    // RK4 at 1 ms 1e-3 of the largest energy that has flowed by 5.5 s: the
+    // step is halved and the run goes on (it used to stop there blaming
+    // held blocks it has none of).
     void fallingChainPlaysOnPastItsDuration() {
         auto sim = simulateFile("examples/falling-chain.yaml");
         QVERIFY(sim);

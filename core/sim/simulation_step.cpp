@@ -209,6 +209,7 @@ bool Simulation::takeStep(double limit) {
     t_ = (plan.lands && taken == plan.h) ? plan.scheduled : t_ + taken;
     stiffenedRate_ = 0;
     retakes_ = 0;
+    booksScale_ = std::max(booksScale_, energyFlowed(energy(world_)));
     ++stats_.steps;
     stats_.lastStep = taken;
     lastResidual_ = m.projection.residual;

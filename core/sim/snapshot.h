@@ -23,11 +23,13 @@ struct Snapshot {
     // the books' imbalance at the last halving: without them a restored run
     // would take the un-halved step again.
     double stepScale = 1, imbalanceBase = 0;
+    // The largest energy that has flowed (the books' scale, run_stops.cpp).
+    double booksScale = 0;
     // The fields, in the order of Simulation::stateOf.
     template <class Self>
     static auto stateOf(Self& s) {
         return std::tie(s.world, s.ladder, s.stops, s.stepper, s.ledger, s.t, s.impactLoss, s.impactHeldWork,
-                        s.nextAction, s.nextDragSample, s.stats, s.stepScale, s.imbalanceBase);
+                        s.nextAction, s.nextDragSample, s.stats, s.stepScale, s.imbalanceBase, s.booksScale);
     }
 };
 

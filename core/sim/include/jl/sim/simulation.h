@@ -31,6 +31,7 @@ namespace jl {
 
 // The full state at one instant, enough to carry on bit-identically.
 struct Snapshot;
+struct Energy;
 struct MotionStep;
 
 class Simulation {
@@ -197,6 +198,7 @@ private:
     void emitGridFrames(double taken);
     void record(const Event& e);
     bool booksDiverged() const;
+    double energyFlowed(const Energy& e) const;
     double booksImbalance(double total) const;
     double fastestRate() const;
     double fixedStep();
@@ -210,7 +212,7 @@ private:
     template <class Self>
     static auto stateOf(Self& s) {
         return std::tie(s.world_, s.ladder_, s.stops_, s.stepper_, s.ledger_, s.t_, s.impactLoss_, s.impactHeldWork_,
-                        s.nextAction_, s.nextDragSample_, s.stats_, s.stepScale_, s.imbalanceBase_);
+                        s.nextAction_, s.nextDragSample_, s.stats_, s.stepScale_, s.imbalanceBase_, s.booksScale_);
     }
     void fail(const std::string& why);
 
@@ -243,6 +245,7 @@ private:
     double lastResidual_ = 0;
     double stepScale_ = 1;      // automatic step: halved after each step that blew up
     double imbalanceBase_ = 0;  // J, the books' imbalance at the last halving (the check watches growth past it)
+    double booksScale_ = 0;     // J, the largest energyFlowed of the steps kept so far
     // While a step is taken again for its end (retakeIfStiffened), until it
     // is kept: the rate that end had, and how many tries.
     double stiffenedRate_ = 0;  // 1/s
