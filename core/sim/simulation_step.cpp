@@ -117,9 +117,9 @@ double Simulation::fixedStep() {
 // took (a fifth of a joule for the 10,000-block classic, docs/model.md
 // section 6.3). Such a step, one whose end asks for a rate near or past the
 // edge of the method's stability interval, is taken again at the step its
-// end allows. Only a step
-// with no event in it: past an event its end is not a state the run keeps
-// (a held contact pulls there, with a force of no meaning).
+// end allows. Only a step with no event in it: past an event its end is not
+// a state the run keeps (a held contact pulls there, with a force of no
+// meaning).
 bool Simulation::retakeIfStiffened(const StepPlan& plan, double taken) {
     constexpr int kMostRetakes = 8;  // in a row; then the books' check watches
     if (scene_.solver.step > 0 || plan.adaptive) return false;
