@@ -542,6 +542,10 @@ LongClassicRun longClassicRun(const BenchPlan& plan) {
     // speed drifts from one minute to the next).
     for (int run = 0; run < 2; ++run) {
         Simulation::Built built = Simulation::build(cascade(r.blocks, r.asked));
+        if (!built.simulation) {
+            r.failure = built.errors.empty() ? "not built" : built.errors.front();
+            break;
+        }
         const double start = threadSeconds();
         built.simulation->advanceExactlyTo(r.asked);
         const double cpu = threadSeconds() - start;

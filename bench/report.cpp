@@ -360,6 +360,8 @@ std::string longLadderTargets(const std::vector<BenchRow>& rows, const LongClass
     md << "- The classic design with 10,000 blocks, 3 s at the default settings in at most 3 CPU s: ";
     if (classic.runs == 0)
         md << "not run" << (quick ? " in --quick mode" : "") << ".\n";
+    else if (!(classic.cpu > 0))
+        md << "**missed**: not built: " << classic.failure << ".\n";
     else
         md << "**"
            << (classic.failure.empty() && classic.simulated >= classic.asked && classic.cpu <= 3.0 ? "met" : "missed")
@@ -372,6 +374,7 @@ std::string longLadderTargets(const std::vector<BenchRow>& rows, const LongClass
 std::string longClassicText(const LongClassicRun& c) {
     if (c.runs == 0) return "not run in the quick form.";
     std::ostringstream md;
+    if (!(c.cpu > 0)) return "not built: " + c.failure + ".";
     md << "simulated " << num(c.simulated) << " s of " << num(c.asked) << " in " << num(c.cpu) << " CPU s ("
        << num(c.simulated / c.cpu) << "x real time), " << c.steps << " steps and " << c.evaluations << " evaluations; "
        << c.rejected
