@@ -173,8 +173,10 @@ private slots:
     void cancelStopsTheRuns() {
         Document doc;
         DesignMap map(&doc);
-        // Ladders of 300 and 400 blocks: each run simulates a minute or more.
-        map.setAxes({P::Blocks, 300, 400, 100}, {P::Thickness, 0.003, 0.004, 0.001});
+        // Ladders of 1,500 and 2,000 blocks (the panel's largest): a cell
+        // stops once its answer is settled, and these take 5 to 8 CPU s each,
+        // far longer than the wait before the click.
+        map.setAxes({P::Blocks, 1500, 2000, 500}, {P::Thickness, 0.003, 0.004, 0.001});
         QSignalSpy done(&map, &DesignMap::mapFinished);
         map.compute();
         QCOMPARE(map.cellsToRun(), 4);
