@@ -461,6 +461,11 @@ std::vector<BenchRow> longLadderRuns(int blocks, double duration) {
     };
     const auto run = [&](const Config& c, Frame& f) {
         Simulation::Built built = Simulation::build(sceneOf(c));
+        if (!built.simulation) {  // a row that says why, as for the 10,000-block classic
+            f = Frame{};
+            f.failure = built.errors.empty() ? "not built" : built.errors.front();
+            return 0.0;
+        }
         const double start = threadSeconds();
         built.simulation->advanceExactlyTo(duration);
         const double cpu = threadSeconds() - start;
