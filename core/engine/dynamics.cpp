@@ -14,6 +14,7 @@ void Dynamics::setForceSparse(bool on) { solver_->setForceSparse(on); }
 
 Powers Dynamics::evaluate(World& w, double t, double within) {
     ++evaluations_;
+    ++forcesGeneration_;
     w.updateKinematics(t, within);
     Powers powers;
     // Gravity alone (no air damping, springs, loads or drags: a falling

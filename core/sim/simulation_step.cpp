@@ -84,7 +84,7 @@ constexpr double kLargestAutomaticStep = 1e-3;  // s
 
 // The fastest rate the automatic step must follow, in the world as it is and
 // with the pin forces of the dynamics' last evaluation.
-double Simulation::fastestRate() const {
+double Simulation::fastestRate() {
     // 16 x the fastest turn: a turn of at most 0.1 rad per RK4 step, where
     // RK4 loses (omega h)^6 / 72 = 1.4e-8 of a spin's energy per step
     // (docs/model.md section 6.3).
@@ -93,8 +93,10 @@ double Simulation::fastestRate() const {
     // the books' check stops the run and names the spring, section 12.4).
     const double springs = 16 * fastestSpringVibration(world_);
     const bool resolvable = automaticStep(scene_.solver.integrator, springs, kLargestAutomaticStep) >= 1e-6;
-    return std::max(
-        {fastestVibration(world_, dynamics_.pinForces()), 16 * fastestTurn(world_), resolvable ? springs : 0.0});
+    KeptVibration& kept = keptVibration_;
+    if (!kept.held || kept.forces != dynamics_.forcesGeneration() || kept.revision != world_.revision())
+        kept = {true, dynamics_.forcesGeneration(), world_.revision(), fastestVibration(world_, dynamics_.pinForces())};
+    return std::max({kept.omega, 16 * fastestTurn(world_), resolvable ? springs : 0.0});
 }
 
 double Simulation::fixedStep() {

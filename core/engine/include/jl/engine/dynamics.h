@@ -65,8 +65,12 @@ public:
         lambda_ = l.lambda;
         contactForces_ = l.contactForces;
         weightsRevision_ = 0;
+        ++forcesGeneration_;
     }
     long long evaluations() const { return evaluations_; }
+    // Changes whenever the forces held here may (an evaluation, restoreLast):
+    // what is computed from them holds while it and World::revision stay.
+    std::uint64_t forcesGeneration() const { return forcesGeneration_; }
 
 private:
     void addContacts(World& w, Powers& powers);
@@ -80,6 +84,7 @@ private:
     std::uint64_t weightsRevision_ = 0;
     Vec2 weightsGravity_ = Vec2::Zero();
     long long evaluations_ = 0;
+    std::uint64_t forcesGeneration_ = 0;
 };
 
 // Applied forces on every body (3 per body: fx, fy, torque about the body's

@@ -200,7 +200,7 @@ private:
     bool booksDiverged() const;
     double energyFlowed(const Energy& e) const;
     double booksImbalance(double total) const;
-    double fastestRate() const;
+    double fastestRate();
     double fixedStep();
     void noteStep(double h);
     bool retryWithSmallerStep();
@@ -250,6 +250,15 @@ private:
     // is kept: the rate that end had, and how many tries.
     double stiffenedRate_ = 0;  // 1/s
     int retakes_ = 0;
+    // fastestVibration of the last pin forces, with what it was computed
+    // from: a step's end (the retake's check) and the next step's plan read
+    // the same forces, and each reading is a pass over every pin.
+    struct KeptVibration {
+        bool held = false;
+        std::uint64_t forces = 0, revision = 0;  // Dynamics::forcesGeneration, World::revision
+        double omega = 0;                        // rad/s
+    };
+    KeptVibration keptVibration_;
     // Kept from step to step so that stepping allocates nothing.
     Eigen::VectorXd stepStartQ_, stepStartV_;  // the state the step started from
     Eigen::VectorXd stepStartA_;               // and its accelerations (adaptive steps with limits)
