@@ -1,6 +1,6 @@
 #include "bench/cases.h"
 
-#include "bench/clock.h"
+#include "jl/base/thread_clock.h"
 #include "jl/engine/motion.h"
 #include "jl/reference/elliptic.h"
 #include "jl/reference/falling_chain.h"

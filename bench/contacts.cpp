@@ -1,6 +1,6 @@
 #include "bench/contacts.h"
 
-#include "bench/clock.h"
+#include "jl/base/thread_clock.h"
 #include "jl/ladder/block_contact.h"
 #include "jl/ladder/ladder.h"
 #include "jl/scene/scene_io.h"

@@ -1,6 +1,6 @@
 #include "bench/events.h"
 
-#include "bench/clock.h"
+#include "jl/base/thread_clock.h"
 #include "jl/sim/simulation.h"
 
 #include <algorithm>

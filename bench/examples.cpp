@@ -1,6 +1,6 @@
 #include "bench/examples.h"
 
-#include "bench/clock.h"
+#include "jl/base/thread_clock.h"
 #include "jl/scene/scene_fields.h"
 #include "jl/scene/scene_io.h"
 #include "jl/sim/recording.h"

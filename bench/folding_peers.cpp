@@ -1,6 +1,6 @@
 #include "bench/folding_peers.h"
 
-#include "bench/clock.h"
+#include "jl/base/thread_clock.h"
 
 #include <cmath>
 #include <cstdio>

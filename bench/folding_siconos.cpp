@@ -1,6 +1,6 @@
 #include "bench/folding_siconos.h"
 
-#include "bench/clock.h"
+#include "jl/base/thread_clock.h"
 
 #include <algorithm>
 #include <cmath>

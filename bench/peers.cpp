@@ -1,6 +1,6 @@
 #include "bench/peers.h"
 
-#include "bench/clock.h"
+#include "jl/base/thread_clock.h"
 
 #include <algorithm>
 #include <cmath>

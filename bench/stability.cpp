@@ -1,6 +1,6 @@
 #include "bench/stability.h"
 
-#include "bench/clock.h"
+#include "jl/base/thread_clock.h"
 #include "jl/engine/projection.h"
 #include "jl/sim/simulation.h"
 

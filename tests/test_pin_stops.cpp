@@ -3,7 +3,9 @@
 // answers worked by hand: the instant a falling body reaches its stop (the
 // pendulum's time integral), the energy a plastic stop takes, momentum kept
 // through an impact between free bodies, a stop that lets go at once, and
-// the folding chain example, which never passes its stops.
+// the folding chain example, which never passes its stops; and the clocks
+// of what events cost, which the benchmark reads.
+#include "jl/base/thread_clock.h"
 #include "jl/engine/energy.h"
 #include "jl/scene/scene_io.h"
 #include "tests/scene_run.h"
@@ -273,6 +275,37 @@ private slots:
         QVERIFY2(worst < 1e-7, qPrintable(QString::number(worst, 'g', 3)));
         QVERIFY2(run.worstBalance < 1e-6, qPrintable(QString::number(run.worstBalance, 'g', 3)));
         QVERIFY(run.impactLossNeverFell);
+    }
+
+    // The CPU time spent on events and on locating them (what the
+    // benchmark's table of where the time goes reads): locating takes none
+    // in a run that settles its events at the ends of steps, some in one
+    // that locates them, and never more than the events, nor they more than
+    // the run.
+    void eventsAndTheirLocationAreTimedAlone() {
+        for (const EventPolicy policy : {EventPolicy::Located, EventPolicy::EndOfStep}) {
+            SceneLoad load = loadScene(std::string(JL_SOURCE_DIR) + "/examples/folding-chain.yaml");
+            QVERIFY(load.scene);
+            load.scene->solver.events = policy;
+            auto sim = std::move(Simulation::build(*load.scene).simulation);
+            QVERIFY(sim);
+            const double start = threadSeconds();
+            QVERIFY(sim->advanceTo(0.5));
+            const double run = threadSeconds() - start;
+            QVERIFY(sim->eventSeconds() > 0);
+            QVERIFY(sim->eventSeconds() < run);
+            if (policy == EventPolicy::Located) {
+                QVERIFY(sim->locatingSeconds() > 0);
+                QVERIFY(sim->locatingSeconds() < sim->eventSeconds());
+            } else {
+                QCOMPARE(sim->locatingSeconds(), 0.0);
+            }
+        }
+        // A ladder's events go through the same clocks.
+        auto ladder = simulateFile("examples/classic.yaml");
+        QVERIFY(ladder && ladder->advanceTo(1.0));
+        QVERIFY(ladder->locatingSeconds() > 0);
+        QVERIFY(ladder->locatingSeconds() < ladder->eventSeconds());
     }
 
     // The stops' state is part of a snapshot: a fresh simulation restored

@@ -2,6 +2,7 @@
 // the block contacts'), and the first instant one of them crosses, located
 // on the step's interpolant.
 #include "books_between.h"
+#include "jl/base/thread_clock.h"
 #include "jl/sim/event_bracket.h"
 #include "jl/sim/simulation.h"
 
@@ -71,6 +72,7 @@ double Simulation::eventFunctionsNow(double* forces) {
 bool Simulation::locateEvent(double& taken, double fEnd, double forcesAtEnd, double from) {
     (void)fEnd;
     (void)forcesAtEnd;
+    const ThreadSecondsInto clock(locatingSeconds_);
     // The functions already past their event at the end (eventValues_
     // holds the end's): a trial needs only these and their bodies' poses.
     // The hinges' first, exactly as without contact between blocks; then,

@@ -4,6 +4,7 @@
 // grid read off the step.
 #include "books_between.h"
 #include "jl/base/short_number.h"
+#include "jl/base/thread_clock.h"
 #include "jl/engine/energy.h"
 #include "jl/engine/motion.h"
 #include "jl/engine/stable_step.h"
@@ -288,6 +289,7 @@ std::optional<bool> Simulation::ladderAtStepEnd(MotionStep& m, double& taken, co
 // inside the step (when the scene asks), the frames of the grid up to it,
 // and the ladder's events settled there. False when the run stops.
 bool Simulation::settleEvents(MotionStep& m, double& taken, double fEnd, double forces, const StepPlan& plan) {
+    const ThreadSecondsInto clock(eventSeconds_);
     const SolverSpec& solver = scene_.solver;
     if (solver.events == EventPolicy::Located && taken > solver.eventTolerance) {
         if (!locateEvent(taken, fEnd, forces)) return false;

@@ -4,6 +4,7 @@
 // same flow as the ladder's (simulation_step.cpp, simulation_events.cpp),
 // on a handful of stops: no still tail, no block contacts.
 #include "books_between.h"
+#include "jl/base/thread_clock.h"
 #include "jl/engine/motion.h"
 #include "jl/sim/event_bracket.h"
 #include "jl/sim/simulation.h"
@@ -29,6 +30,7 @@ double Simulation::stopFunctionsAmong(double t, bool forces) {
 // Hermite interpolant (as Simulation::locateEvent); leaves the world there,
 // the books interpolated, and `taken` set to it.
 void Simulation::locateStop(double& taken) {
+    const ThreadSecondsInto clock(locatingSeconds_);
     crossed_.clear();
     bool forces = false;
     double fEnd = 1.0;
@@ -98,6 +100,7 @@ std::optional<bool> Simulation::stopsAtStepEnd(MotionStep& m, double& taken, con
         stops_->track(world_);
         return std::nullopt;
     }
+    const ThreadSecondsInto clock(eventSeconds_);
     const SolverSpec& solver = scene_.solver;
     if (solver.events == EventPolicy::Located && taken > solver.eventTolerance) {
         locateStop(taken);

@@ -50,6 +50,14 @@ public:
     const PinStops* stops() const { return stops_ ? &*stops_ : nullptr; }  // a general scene's pin stops
     int blockCount() const { return int(blocks_.size()); }
     PartId blockPart(int block) const { return blocks_[size_t(block)]; }
+    // This thread's CPU time spent so far on events (s): all of it, from the
+    // step's end past an event to the events settled (located first when the
+    // scene asks), and the part that located them inside their steps. The
+    // share of a run that events take, read within the run itself (the
+    // difference of two runs' times is lost in the machine's drift between
+    // them). A profile, as MuJoCo's timers are: not part of the state.
+    double eventSeconds() const { return eventSeconds_; }
+    double locatingSeconds() const { return locatingSeconds_; }
 
     // The current state as a frame; events since the previous call move into it.
     Frame frame();
@@ -242,6 +250,7 @@ private:
     std::vector<Event> pending_;
     std::string failure_;
     SolverFrame stats_;
+    double eventSeconds_ = 0, locatingSeconds_ = 0;
     double lastResidual_ = 0;
     double stepScale_ = 1;      // automatic step: halved after each step that blew up
     double imbalanceBase_ = 0;  // J, the books' imbalance at the last halving (the check watches growth past it)
