@@ -48,7 +48,12 @@ struct FoldingRun {
     std::string setting;    // "dt = 1e-4 s", "tolerance 1e-8", ...
     int blocks = 0;
     double cpuSeconds = 0;  // CPU s of one thread for the whole run to kDuration
-    bool finished = true;   // false: it blew up, produced NaN or failed; `why` says what
+    // This engine's runs: the parts of cpuSeconds spent on events and, of
+    // that, locating them (Simulation::eventSeconds, locatingSeconds); the
+    // steps taken and the events recorded.
+    double eventSeconds = 0, locatingSeconds = 0;
+    long long steps = 0, events = 0;
+    bool finished = true;  // false: it blew up, produced NaN or failed; `why` says what
     std::string why;
     // At each of folding::kSampleTimes: every block's centre (x right, y up, m)
     // and the energy dissipated so far (J): the kinetic plus gravitational
