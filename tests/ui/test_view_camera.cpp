@@ -2,7 +2,10 @@
 // The viewer's camera: framing a long ladder, orbiting about the target,
 // walking (eye and target together) and looking around from the eye; in the
 // window, a three-quarter view that frames the whole ladder on load, after
-// an edit that makes it longer and on F.
+// an edit that makes it longer and on F; the room's table below all that a
+// chain pinned to the world reaches.
+#include "jl/scene/scene_io.h"
+#include "jl/sim/simulation.h"
 #include "ui/view3d/block_shapes.h"
 #include "ui/view3d/scale_mark.h"
 #include "ui/view3d/view_camera.h"
@@ -95,6 +98,32 @@ private slots:
         const QVector3D eye = c.eye();
         QVERIFY(qAbs(eye.x()) < 1e-6f);
         QVERIFY(qFuzzyCompare(eye.y(), float(-0.15 + 0.8 * std::sin(10 * std::numbers::pi / 180))));
+    }
+
+    // The room's table stands below anything the scene can reach
+    // (Room::fitTo puts its top under ladderExtent): the falling chain,
+    // laid out level from its pin, swings down through where a table under
+    // its start would stand.
+    void aChainPinnedToTheWorldSwingsAboveTheTable() {
+        for (const char* name : {"falling-chain.yaml", "folding-chain.yaml"}) {
+            const jl::SceneLoad load = jl::loadScene(std::string(JL_SOURCE_DIR "/examples/") + name);
+            QVERIFY(load.scene);
+            const double extent = ladderExtent(*load.scene);
+            auto sim = std::move(jl::Simulation::build(*load.scene).simulation);
+            QVERIFY(sim);
+            const std::vector<BlockShape> shapes = blockShapes(*load.scene);
+            double lowest = 0;
+            for (double t = 0.01; t <= load.scene->duration + 1e-9; t += 0.01) {
+                QVERIFY(sim->advanceTo(t));
+                const jl::Frame f = sim->frame();
+                for (size_t i = 0; i < f.poses.size(); ++i)
+                    for (const float u : {-shapes[i].across / 2, shapes[i].across / 2})
+                        for (const float v : {-shapes[i].along / 2, shapes[i].along / 2})
+                            lowest = std::min(lowest, f.poses[i].apply(jl::Vec2(u, v)).y());
+            }
+            QVERIFY2(lowest > -extent,
+                     qPrintable(QString("%1: down to %2 m, the table at %3 m").arg(name).arg(lowest).arg(-extent)));
+        }
     }
 
     void aLongLadderIsFramedWhole() {

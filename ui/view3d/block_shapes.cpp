@@ -3,6 +3,7 @@
 #include "jl/scene/ladder_blocks.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace jl::ui {
 
@@ -29,6 +30,16 @@ double ladderExtent(const jl::Scene& scene) {
     if (scene.ladder) h = scene.ladder->blocks * scene.ladder->block.length;
     for (const jl::BodySpec& b : scene.bodies) h = std::max(h, std::abs(b.position[1]) + b.length);
     for (const jl::ParticleSpec& p : scene.particles) h = std::max(h, std::abs(p.position[1]));
+    // Bodies pinned to the world can hang from it as far as they reach end to
+    // end: the falling chain, laid out level, swings down 0.6 m through where
+    // a table under its start would stand.
+    const auto onWorld = [](const jl::PointRef& r) { return r.on == "world"; };
+    if (std::any_of(scene.pins.begin(), scene.pins.end(),
+                    [&](const jl::PinSpec& p) { return onWorld(p.a) || onWorld(p.b); })) {
+        double reach = 0;
+        for (const jl::BodySpec& b : scene.bodies) reach += std::hypot(b.length, b.thickness);
+        h = std::max(h, reach);
+    }
     return std::max(h, 0.1);
 }
 
