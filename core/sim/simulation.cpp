@@ -41,6 +41,8 @@ Frame Simulation::frame() {
         if (ribbonsInFrames_) f.ribbons = ladder_->ribbons(world_);
         f.blockContacts = ladder_->blockContacts().frames(world_, dynamics_);
     }
+    for (const Spring& s : world_.springs())
+        f.springs.emplace_back(world_.particlePosition(s.a), world_.particlePosition(s.b));
     const Energy e = energy(world_);
     f.energy.kinetic = e.kinetic;
     f.energy.potential = e.potential;

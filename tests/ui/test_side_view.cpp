@@ -1,7 +1,7 @@
 // labels: ui
 // The side view: each block drawn where the engine says it is, zoom, pan and
-// follow, the engine's corner numbers (at every size the view has), and a
-// legend that stays whole in a narrow view.
+// follow, the engine's corner numbers (at every size the view has), a
+// general scene's springs, and a legend that stays whole in a narrow view.
 #include "example_runs.h"
 #include "ui/teaching/side_view.h"
 #include "ui/view3d/round_length.h"
@@ -96,6 +96,33 @@ private slots:
             ++checked;
         }
         QVERIFY(checked >= 3);
+    }
+
+    // A general scene's springs reach from end to end: the frame carries
+    // each spring's ends where the engine has them (the fixed point, the
+    // particles), and the side view draws the straight lead at each end.
+    void aScenesSpringsAreDrawnBetweenTheirEnds() {
+        const jl::Scene scene = loadExample("particles-and-springs.yaml");
+        const Run run = runHeadless(scene, 0.5);
+        const jl::Frame& f = run.frames.back();
+        QCOMPARE(f.springs.size(), scene.springs.size());
+        // Poses: the box, then the particles p1, p2, p3.
+        QCOMPARE(f.springs[0].first, jl::Vec2(0, 0));
+        QCOMPARE(f.springs[0].second, f.poses[1].position);
+        QCOMPARE(f.springs[1].first, f.poses[1].position);
+        QCOMPARE(f.springs[2].second, f.poses[3].position);
+        QVERIFY((f.poses[2].position - run.frames.front().poses[2].position).norm() > 1e-3);  // it moved
+        SideView view;
+        view.setScene(scene);
+        view.showFrame(f);
+        const QSize size(600, 800);
+        const QImage image = view.render(size);
+        const QRectF target(QPointF(0, 0), QSizeF(size));
+        for (size_t k = 1; k < 3; ++k) {  // between particles: nothing else drawn there
+            const auto& [a, b] = f.springs[k];
+            const QColor c = image.pixelColor(view.pixelOf(a + 0.1 * (b - a), target).toPoint());
+            QVERIFY2(c.lightness() < 180, qPrintable(QString("spring %1 at its lead is %2").arg(k).arg(colorText(c))));
+        }
     }
 
     // The wheel zooms about the pointer, a drag pans, and the view then stays

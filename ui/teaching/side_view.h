@@ -103,6 +103,7 @@ private:
     void paintTable(const Sheet& s) const;
     void paintThread(const Sheet& s) const;
     void paintBlockFaces(const Sheet& s) const;
+    void paintSprings(const Sheet& s) const;
     void paintParticles(const Sheet& s) const;
     void paintRibbons(const Sheet& s) const;
     void paintOrientation(const Sheet& s) const;

@@ -8,6 +8,7 @@
 #include "ui/teaching/side_view_ink.h"
 #include "ui/teaching/side_view_sheet.h"
 #include "ui/view3d/round_length.h"
+#include "ui/view3d/spring_coil.h"
 
 #include <QPainter>
 #include <QPainterPath>
@@ -106,6 +107,7 @@ void SideView::paint(QPainter& p, const QRectF& target) const {
         paintThread(s);
     else
         paintBlockFaces(s);
+    paintSprings(s);
     paintParticles(s);
     if (options_.ribbons && !s.thread) paintRibbons(s);
     // Labels only where a block is big enough on screen to carry them.
@@ -185,6 +187,17 @@ void SideView::paintBlockFaces(const Sheet& s) const {
                         Qt::MiterJoin));
         s.p.setBrush(wood);
         s.p.drawPolygon(poly);
+    }
+}
+
+// A general scene's springs, zigzags as in the 3-D view (spring_coil.h).
+void SideView::paintSprings(const Sheet& s) const {
+    s.p.setPen(QPen(kSideInk, 1.2 * s.ui, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+    s.p.setBrush(Qt::NoBrush);
+    for (const auto& [a, b] : frame_->springs) {
+        QPolygonF line;
+        for (const jl::Vec2& point : springCoil(a, b)) line << s.map(point);
+        s.p.drawPolyline(line);
     }
 }
 

@@ -76,8 +76,10 @@ LadderView::LadderView() : Qt3DExtras::Qt3DWindow(nullptr, openGlLeavingACore())
     ribbons_ = new RibbonInstances(root_, false);
     centralRibbons_ = new RibbonInstances(root_, true);
     dragLine_ = new StripEntity(root_, true);
+    springs_ = new StripEntity(root_, true);
     scale_ = new ScaleMark(root_);
     dragLine_->setColor(QColor(225, 40, 40));
+    springs_->setColor(QColor(70, 70, 80));  // the particles' grey
     setRootEntity(root_);
     camera()->lens()->setPerspectiveProjection(40, 1.6f, 0.01f, 100);
     updateCamera();
@@ -167,6 +169,8 @@ void LadderView::showFrame(std::shared_ptr<const jl::Frame> shared) {
     shownFrame_ = shared;
     ribbonsStale_ = true;
     showRibbons();
+    // The scene's springs in the plane of the pins and particles they join.
+    buildSprings(*springs_, frame, 0.0f, float(std::max(0.0008, camera_.distance() * 0.0015)));
     // The spring is drawn in front of the blocks, on the face toward the viewer.
     buildDragLine(*dragLine_, frame, float(blockWidth_ / 2 + 0.002),
                   float(std::max(0.0015, camera_.distance() * 0.003)));

@@ -142,6 +142,7 @@ private:
     RibbonInstances* ribbons_;         // the outer pairs
     RibbonInstances* centralRibbons_;  // the middle ribbons (a colour of their own)
     StripEntity* dragLine_;
+    StripEntity* springs_;  // a general scene's springs
     Room* room_;
     ScaleMark* scale_;  // how long a length on screen is
     Qt3DRender::QRenderCapture* capture_;

@@ -1,6 +1,7 @@
 #include "ui/view3d/strip_entity.h"
 
 #include "ui/view3d/shader_material.h"
+#include "ui/view3d/spring_coil.h"
 
 #include <Qt3DCore/QAttribute>
 #include <Qt3DCore/QBuffer>
@@ -62,6 +63,23 @@ void buildDragLine(StripEntity& strip, const jl::Frame& frame, float z, float wi
             const double s = width * 2;
             strip.addQuad(v(c + jl::Vec2(-s, -s)), v(c + jl::Vec2(s, -s)), v(c + jl::Vec2(s, s)),
                           v(c + jl::Vec2(-s, s)), n);
+        }
+    }
+    strip.commit();
+}
+
+void buildSprings(StripEntity& strip, const jl::Frame& frame, float z, float width) {
+    strip.clear();
+    const QVector3D n(0, 0, 1);
+    auto v = [z](const jl::Vec2& p) { return QVector3D(float(p.x()), float(p.y()), z); };
+    for (const auto& [a, b] : frame.springs) {
+        const std::vector<jl::Vec2> points = springCoil(a, b);
+        for (size_t i = 0; i + 1 < points.size(); ++i) {
+            const jl::Vec2 d = points[i + 1] - points[i];
+            if (!(d.norm() > 0)) continue;
+            const jl::Vec2 side = jl::perp(d.normalized()) * (width / 2);
+            strip.addQuad(v(points[i] - side), v(points[i + 1] - side), v(points[i + 1] + side), v(points[i] + side),
+                          n);
         }
     }
     strip.commit();

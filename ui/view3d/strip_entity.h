@@ -1,5 +1,5 @@
 // Thin flat strips of one colour, rebuilt every frame: the line of the mouse
-// spring, the scale bar (the ribbons, many more, are instanced: ribbon_instances.h).
+// spring, the scene's springs, the scale bar (the ribbons, many more, are instanced: ribbon_instances.h).
 #pragma once
 
 #include "jl/sim/frame.h"
@@ -43,5 +43,9 @@ private:
 
 // The mouse spring from the grabbed point to the hand, as a bar facing the viewer.
 void buildDragLine(StripEntity& strip, const jl::Frame& frame, float z, float width);
+
+// The scene's springs (a general scene's), each a zigzag of bars `width`
+// wide in the plane z (spring_coil.h).
+void buildSprings(StripEntity& strip, const jl::Frame& frame, float z, float width);
 
 }  // namespace jl::ui

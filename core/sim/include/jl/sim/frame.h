@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace jl {
@@ -56,6 +57,7 @@ struct Frame {
     std::vector<HingeFrame> hinges;  // ladder: hinges[j-1] is hinge j
     std::vector<RibbonFrame> ribbons;
     std::vector<BlockContactFrame> blockContacts;  // ladder: corners resting on faces of other blocks
+    std::vector<std::pair<Vec2, Vec2>> springs;    // general scene: each spring's two ends (m), in scene order
     EnergyFrame energy;
     SolverFrame solver;
     std::vector<Event> events;  // since the previous frame
