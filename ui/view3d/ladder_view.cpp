@@ -114,6 +114,7 @@ void LadderView::setScene(const jl::Scene& scene, bool resetCamera) {
     ribbonsStale_ = true;
     restructure_.setScene(scene);
     if (resetCamera) {
+        hand_ = jl::Vec2::Zero();
         shownPoses_.clear();  // the old scene's blocks say nothing of the new one's
         resetView();
     } else if (resized && (wasWhole || !showsSomeOfLadder())) {
@@ -147,6 +148,8 @@ void LadderView::showFrame(std::shared_ptr<const jl::Frame> shared) {
     }
     shownPoses_.assign(frame.poses.begin(), frame.poses.end());
     shownTime_ = frame.time;
+    const auto held = std::find(frame.held.begin(), frame.held.end(), true);
+    hand_ = held != frame.held.end() ? frame.poses[size_t(held - frame.held.begin())].position : jl::Vec2::Zero();
     if (follow_ && !frame.poses.empty()) {
         jl::Vec2 centre = jl::Vec2::Zero();
         for (const jl::Pose& p : frame.poses) centre += p.position;
@@ -275,8 +278,10 @@ bool LadderView::showsSomeOfLadder() const {
 
 std::vector<QVector3D> LadderView::ladderCorners() const {
     std::vector<QVector3D> corners;
-    // As built: hanging straight down from the hand at the origin.
-    addBox(corners, {{0, -extent_ / 2}, 0}, float(blockLength_), float(extent_), float(blockWidth_));
+    // Where the blocks can hang: straight down from the hand (the held
+    // block's centre; the origin when nothing is held). One hinge's held
+    // block is the lower one, and the upper one flips to hang below it.
+    addBox(corners, {{hand_.x(), hand_.y() - extent_ / 2}, 0}, float(blockLength_), float(extent_), float(blockWidth_));
     const size_t n = std::min(shownPoses_.size(), shapes_.size());
     for (size_t i = 0; i < n; ++i) addCorners(corners, shownPoses_[i], shapes_[i]);
     return corners;

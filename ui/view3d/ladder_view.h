@@ -152,6 +152,7 @@ private:
     std::vector<jl::Pose> shownPoses_;
     double shownTime_ = 0;                // s, the frame drawn
     std::vector<jl::Pose> earlierPoses_;  // of the frame drawn before it (frameMotion)
+    jl::Vec2 hand_ = jl::Vec2::Zero();    // the first held block's centre in the frame shown (m)
     double earlierTime_ = 0;
     // The ladder is framed again on the first frame after a load or a change
     // of size: only a frame says where the blocks are.
