@@ -95,7 +95,7 @@ double Simulation::fastestRate() {
     const double springs = 16 * fastestSpringVibration(world_);
     const bool resolvable = automaticStep(scene_.solver.integrator, springs, kLargestAutomaticStep) >= 1e-6;
     KeptVibration& kept = keptVibration_;
-    if (!kept.held || kept.forces != dynamics_.forcesGeneration() || kept.revision != world_.revision())
+    if (!kept.known || kept.forces != dynamics_.forcesGeneration() || kept.revision != world_.revision())
         kept = {true, dynamics_.forcesGeneration(), world_.revision(), fastestVibration(world_, dynamics_.pinForces())};
     return std::max({kept.omega, 16 * fastestTurn(world_), resolvable ? springs : 0.0});
 }

@@ -263,7 +263,7 @@ private:
     // from: a step's end (the retake's check) and the next step's plan read
     // the same forces, and each reading is a pass over every pin.
     struct KeptVibration {
-        bool held = false;
+        bool known = false;
         std::uint64_t forces = 0, revision = 0;  // Dynamics::forcesGeneration, World::revision
         double omega = 0;                        // rad/s
     };
