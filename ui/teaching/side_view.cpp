@@ -215,6 +215,12 @@ QRectF SideView::extentOf(const jl::Frame& f) const {
         x0 = std::min(x0, c.x() - r), x1 = std::max(x1, c.x() + r);
         y0 = std::min(y0, c.y() - r), y1 = std::max(y1, c.y() + r);
     }
+    // A spring's fixed end is in the picture too (where the chain hangs from).
+    for (const auto& [a, b] : f.springs)
+        for (const jl::Vec2& e : {a, b}) {
+            x0 = std::min(x0, e.x()), x1 = std::max(x1, e.x());
+            y0 = std::min(y0, e.y()), y1 = std::max(y1, e.y());
+        }
     if (!(x0 <= x1)) return {};
     return QRectF(QPointF(x0, y0), QPointF(x1, y1));
 }
