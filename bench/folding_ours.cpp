@@ -86,6 +86,7 @@ FoldingRun runOnce(int n, const Setting& setting) {
     }
     Simulation& sim = *built.simulation;
     sim.setRibbonsInFrames(false);
+    sim.setTimingEvents(true);  // the table of where the time goes
     const double e0 = energy(sim.world()).total();
     for (size_t k = 0; k < folding::kSampleTimes.size(); ++k) {
         const double t = folding::kSampleTimes[k];

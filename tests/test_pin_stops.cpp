@@ -289,6 +289,7 @@ private slots:
             load.scene->solver.events = policy;
             auto sim = std::move(Simulation::build(*load.scene).simulation);
             QVERIFY(sim);
+            sim->setTimingEvents(true);
             const double start = threadSeconds();
             QVERIFY(sim->advanceTo(0.5));
             const double run = threadSeconds() - start;
@@ -301,11 +302,16 @@ private slots:
                 QCOMPARE(sim->locatingSeconds(), 0.0);
             }
         }
-        // A ladder's events go through the same clocks.
-        auto ladder = simulateFile("examples/classic.yaml");
-        QVERIFY(ladder && ladder->advanceTo(1.0));
+        // A ladder's events go through the same clocks, which stay at zero
+        // unless asked for.
+        auto ladder = simulateFile("examples/classic.yaml"), untimed = simulateFile("examples/classic.yaml");
+        QVERIFY(ladder && untimed);
+        ladder->setTimingEvents(true);
+        QVERIFY(ladder->advanceTo(1.0) && untimed->advanceTo(1.0));
         QVERIFY(ladder->locatingSeconds() > 0);
         QVERIFY(ladder->locatingSeconds() < ladder->eventSeconds());
+        QCOMPARE(untimed->eventSeconds(), 0.0);
+        QCOMPARE(untimed->stateHash(), ladder->stateHash());  // a profile: the run is the same
     }
 
     // The stops' state is part of a snapshot: a fresh simulation restored

@@ -72,7 +72,7 @@ double Simulation::eventFunctionsNow(double* forces) {
 bool Simulation::locateEvent(double& taken, double fEnd, double forcesAtEnd, double from) {
     (void)fEnd;
     (void)forcesAtEnd;
-    const ThreadSecondsInto clock(locatingSeconds_);
+    const ThreadSecondsInto clock(timingEvents_ ? &locatingSeconds_ : nullptr);
     // The functions already past their event at the end (eventValues_
     // holds the end's): a trial needs only these and their bodies' poses.
     // The hinges' first, exactly as without contact between blocks; then,

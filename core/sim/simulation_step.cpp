@@ -289,7 +289,7 @@ std::optional<bool> Simulation::ladderAtStepEnd(MotionStep& m, double& taken, co
 // inside the step (when the scene asks), the frames of the grid up to it,
 // and the ladder's events settled there. False when the run stops.
 bool Simulation::settleEvents(MotionStep& m, double& taken, double fEnd, double forces, const StepPlan& plan) {
-    const ThreadSecondsInto clock(eventSeconds_);
+    const ThreadSecondsInto clock(timingEvents_ ? &eventSeconds_ : nullptr);
     const SolverSpec& solver = scene_.solver;
     if (solver.events == EventPolicy::Located && taken > solver.eventTolerance) {
         if (!locateEvent(taken, fEnd, forces)) return false;

@@ -30,7 +30,7 @@ double Simulation::stopFunctionsAmong(double t, bool forces) {
 // Hermite interpolant (as Simulation::locateEvent); leaves the world there,
 // the books interpolated, and `taken` set to it.
 void Simulation::locateStop(double& taken) {
-    const ThreadSecondsInto clock(locatingSeconds_);
+    const ThreadSecondsInto clock(timingEvents_ ? &locatingSeconds_ : nullptr);
     crossed_.clear();
     bool forces = false;
     double fEnd = 1.0;
@@ -100,7 +100,7 @@ std::optional<bool> Simulation::stopsAtStepEnd(MotionStep& m, double& taken, con
         stops_->track(world_);
         return std::nullopt;
     }
-    const ThreadSecondsInto clock(eventSeconds_);
+    const ThreadSecondsInto clock(timingEvents_ ? &eventSeconds_ : nullptr);
     const SolverSpec& solver = scene_.solver;
     if (solver.events == EventPolicy::Located && taken > solver.eventTolerance) {
         locateStop(taken);

@@ -69,6 +69,8 @@ void buildDragLine(StripEntity& strip, const jl::Frame& frame, float z, float wi
 }
 
 void buildSprings(StripEntity& strip, const jl::Frame& frame, float z, float width) {
+    // A ladder has none: no upload of an empty strip at every frame.
+    if (frame.springs.empty() && strip.empty()) return;
     strip.clear();
     const QVector3D n(0, 0, 1);
     auto v = [z](const jl::Vec2& p) { return QVector3D(float(p.x()), float(p.y()), z); };

@@ -29,6 +29,7 @@ public:
 
     // Starts a new set of strips; then add quads and call commit().
     void clear() { data_.clear(); }
+    bool empty() const { return data_.empty(); }  // nothing added since clear()
     // A quad from four corners (in order round it) with one normal.
     void addQuad(const QVector3D& a, const QVector3D& b, const QVector3D& c, const QVector3D& d, const QVector3D& n);
     void commit();

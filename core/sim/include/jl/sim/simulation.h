@@ -55,7 +55,10 @@ public:
     // scene asks), and the part that located them inside their steps. The
     // share of a run that events take, read within the run itself (the
     // difference of two runs' times is lost in the machine's drift between
-    // them). A profile, as MuJoCo's timers are: not part of the state.
+    // them). A profile, as MuJoCo's timers are: not part of the state; kept
+    // only after setTimingEvents(true) (the benchmark's), since reading the
+    // clock costs a few per cent of an event on a short ladder.
+    void setTimingEvents(bool on) { timingEvents_ = on; }
     double eventSeconds() const { return eventSeconds_; }
     double locatingSeconds() const { return locatingSeconds_; }
 
@@ -250,6 +253,7 @@ private:
     std::vector<Event> pending_;
     std::string failure_;
     SolverFrame stats_;
+    bool timingEvents_ = false;
     double eventSeconds_ = 0, locatingSeconds_ = 0;
     double lastResidual_ = 0;
     double stepScale_ = 1;      // automatic step: halved after each step that blew up
