@@ -68,7 +68,7 @@ QString invalidity(const World& w) {
     for (ParticleId id = 0; id < w.particleCount(); ++id) {
         const Particle& p = w.particle(id);
         if (p.mergedInto >= 0 && !w.validParticle(p.mergedInto)) return QString("particle %1 dangles").arg(id);
-        for (const Attachment& a : p.at)
+        for (const Attachment& a : w.attachments(id))
             if (!w.validPart(a.part)) return QString("particle %1 on a missing part").arg(id);
     }
     for (const Pin& pin : w.pins())
@@ -79,9 +79,9 @@ QString invalidity(const World& w) {
     std::vector<std::pair<ParticleId, int>> derived;
     for (ParticleId id = 0; id < w.particleCount(); ++id) {
         const Particle& p = w.particle(id);
-        if (p.mergedInto >= 0 || p.at.empty()) continue;
-        std::vector<int> bodies{w.part(p.at.front().part).body};
-        for (const Attachment& a : p.at) {
+        if (p.mergedInto >= 0) continue;
+        std::vector<int> bodies{w.part(p.own.part).body};
+        for (const Attachment& a : w.attachments(id)) {
             const int b = w.part(a.part).body;
             if (std::find(bodies.begin(), bodies.end(), b) != bodies.end()) continue;
             bodies.push_back(b);

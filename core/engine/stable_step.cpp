@@ -45,8 +45,7 @@ double fastestSpringVibration(const World& w) {
         const double length = (xb - xa).norm();
         const double tension = std::abs(s.stiffness * (length - s.restLength));
         const double k = std::max(s.stiffness, length > 0 ? tension / length : 0.0);
-        const int body[2] = {w.part(w.particle(s.a).at.front().part).body,
-                             w.part(w.particle(s.b).at.front().part).body};
+        const int body[2] = {w.part(w.particle(s.a).own.part).body, w.part(w.particle(s.b).own.part).body};
         const Vec2 x[2] = {xa, xb};
         double u[2] = {0, 0}, arm[2] = {0, 0};
         for (int e = 0; e < 2; ++e) {

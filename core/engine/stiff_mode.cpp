@@ -15,8 +15,8 @@ namespace {
 // (the ground, a held block).
 int movingBody(const World& w, ParticleId p) {
     while (p >= 0 && w.particle(p).mergedInto >= 0) p = w.particle(p).mergedInto;
-    if (p < 0 || w.particle(p).at.empty()) return -1;
-    const int b = w.part(w.particle(p).at.front().part).body;
+    if (p < 0) return -1;
+    const int b = w.part(w.particle(p).own.part).body;
     return b >= 0 && w.body(b).alive && !w.body(b).kinematic ? b : -1;
 }
 

@@ -57,7 +57,7 @@ PartId World::addPoint(double mass, const Vec2& position, const Vec2& velocity) 
 ParticleId World::addParticle(PartId part, const Vec2& local) {
     touch();
     Particle p;
-    p.at.push_back({part, local});
+    p.own = {part, local};
     particles_.push_back(p);
     const ParticleId id = ParticleId(particles_.size()) - 1;
     particlesOfPart_[part].push_back(id);
@@ -103,23 +103,25 @@ std::optional<WorldError> World::checkCombine(ParticleId p, ParticleId q) const 
     if (auto e = checkParticle(p)) return e;
     if (auto e = checkParticle(q)) return e;
     if (p == q) return WorldError{"cannot combine a particle with itself"};
-    for (const Attachment& x : particles_[size_t(p)].at)
-        for (const Attachment& y : particles_[size_t(q)].at)
-            if (x.part == y.part)
-                return WorldError{"cannot combine two points of the same part " + std::to_string(x.part)};
+    std::optional<PartId> shared;
+    forEachAttachment(p, [&](const Attachment& x) {
+        forEachAttachment(q, [&](const Attachment& y) {
+            if (x.part == y.part && !shared) shared = x.part;
+        });
+    });
+    if (shared) return WorldError{"cannot combine two points of the same part " + std::to_string(*shared)};
     return std::nullopt;
 }
 
 void World::absorb(ParticleId p, ParticleId q, std::vector<int>& touched) {
-    for (const Attachment& x : particles_[size_t(p)].at) touched.push_back(parts_[size_t(x.part)].body);
-    for (const Attachment& y : particles_[size_t(q)].at) touched.push_back(parts_[size_t(y.part)].body);
-    Particle& pp = particles_[size_t(p)];
-    for (const Attachment& y : particles_[size_t(q)].at) {
-        pp.at.push_back(y);
+    const auto body = [&](const Attachment& x) { touched.push_back(parts_[size_t(x.part)].body); };
+    forEachAttachment(p, body);
+    forEachAttachment(q, body);
+    forEachAttachment(q, [&](const Attachment& y) {
         auto& list = particlesOfPart_[size_t(y.part)];
         if (std::find(list.begin(), list.end(), p) == list.end()) list.push_back(p);
-    }
-    pp.absorbed.push_back(q);
+    });
+    particles_[size_t(p)].absorbed.push_back(q);
     particles_[size_t(q)].mergedInto = p;
 }
 
@@ -158,11 +160,10 @@ std::optional<WorldError> World::checkSeparate(ParticleId p) const {
 }
 
 void World::unabsorb(ParticleId p, std::vector<int>& touched) {
+    forEachAttachment(p, [&](const Attachment& x) { touched.push_back(parts_[size_t(x.part)].body); });
     Particle& pp = particles_[size_t(p)];
-    for (const Attachment& x : pp.at) touched.push_back(parts_[size_t(x.part)].body);
     const ParticleId q = pp.absorbed.back();
     pp.absorbed.pop_back();
-    pp.at.resize(pp.at.size() - particles_[size_t(q)].at.size());  // combine appended q's last
     particles_[size_t(q)].mergedInto = -1;
 }
 
@@ -255,13 +256,19 @@ Vec2 World::pointVelocity(PartId p, const Vec2& local) const {
     return bv.linear + bv.angular * perp(pointPosition(p, local) - q.segment<2>(3 * b));
 }
 
+std::vector<Attachment> World::attachments(ParticleId p) const {
+    std::vector<Attachment> at;
+    forEachAttachment(p, [&](const Attachment& x) { at.push_back(x); });
+    return at;
+}
+
 Vec2 World::particlePosition(ParticleId p) const {
-    const Attachment& x = particles_[p].at.front();
+    const Attachment& x = particles_[p].own;
     return pointPosition(x.part, x.local);
 }
 
 Vec2 World::particleVelocity(ParticleId p) const {
-    const Attachment& x = particles_[p].at.front();
+    const Attachment& x = particles_[p].own;
     return pointVelocity(x.part, x.local);
 }
 

@@ -61,8 +61,9 @@ std::vector<std::vector<PartId>> World::rigidGroups(const std::vector<PartId>& p
     std::vector<int>& members = s.members;
     for (ParticleId id : seen) {
         members.clear();
-        for (const Attachment& x : particles_[size_t(id)].at)
+        forEachAttachment(id, [&](const Attachment& x) {
             if (const int i = indexOf(x.part); i >= 0) members.push_back(i);
+        });
         std::sort(members.begin(), members.end());
         members.erase(std::unique(members.begin(), members.end()), members.end());
         for (size_t i = 0; i < members.size(); ++i)

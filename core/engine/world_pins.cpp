@@ -18,18 +18,18 @@ void World::rebuildPins() const {
     // per particle was an allocation each, at every change of structure).
     std::vector<int>& done = scratch_->joined;
     for (ParticleId id : pinning_) {
-        const Particle& p = particles_[id];
-        const Attachment& first = p.at.front();
+        const Attachment& first = particles_[id].own;
         const int ba = parts_[first.part].body;
         done.assign(1, ba);
-        for (size_t i = 1; i < p.at.size(); ++i) {
-            const int bb = parts_[p.at[i].part].body;
-            if (std::find(done.begin(), done.end(), bb) != done.end()) continue;
+        const auto pinTo = [&](const Attachment& x) {
+            const int bb = parts_[x.part].body;
+            if (std::find(done.begin(), done.end(), bb) != done.end()) return;
             done.push_back(bb);
-            if (bodies_[ba].kinematic && bodies_[bb].kinematic) continue;
-            pins_.push_back({ba, bb, first.part, p.at[i].part, parts_[first.part].inBody.apply(first.local),
-                             parts_[p.at[i].part].inBody.apply(p.at[i].local), id});
-        }
+            if (bodies_[ba].kinematic && bodies_[bb].kinematic) return;
+            pins_.push_back({ba, bb, first.part, x.part, parts_[first.part].inBody.apply(first.local),
+                             parts_[x.part].inBody.apply(x.local), id});
+        };
+        for (ParticleId q : particles_[id].absorbed) forEachAttachment(q, pinTo);
     }
     welds_.clear();
     if (weldRigidPairs_) weldSharedPairs();
@@ -39,16 +39,17 @@ namespace {
 
 // Whether particle `id` makes a pin: it is live and lies on two bodies, not
 // both kinematic (what rebuildPins derives a pin from).
-bool makesPin(const std::vector<Particle>& particles, const std::vector<Part>& parts, const std::vector<Body>& bodies,
-              ParticleId id) {
-    const Particle& p = particles[size_t(id)];
-    if (p.mergedInto >= 0 || p.at.size() < 2) return false;
-    const int ba = parts[size_t(p.at.front().part)].body;
-    for (size_t i = 1; i < p.at.size(); ++i) {
-        const int bb = parts[size_t(p.at[i].part)].body;
-        if (bb != ba && !(bodies[size_t(ba)].kinematic && bodies[size_t(bb)].kinematic)) return true;
-    }
-    return false;
+bool makesPin(const World& w, const std::vector<Part>& parts, const std::vector<Body>& bodies, ParticleId id) {
+    const Particle& p = w.particle(id);
+    if (p.mergedInto >= 0 || p.absorbed.empty()) return false;
+    const int ba = parts[size_t(p.own.part)].body;
+    bool pin = false;
+    for (ParticleId q : p.absorbed)
+        w.forEachAttachment(q, [&](const Attachment& x) {
+            const int bb = parts[size_t(x.part)].body;
+            pin = pin || (bb != ba && !(bodies[size_t(ba)].kinematic && bodies[size_t(bb)].kinematic));
+        });
+    return pin;
 }
 
 }  // namespace
@@ -64,7 +65,7 @@ void World::updatePinning() const {
     for (PartId part : regrouped_)
         affected.insert(affected.end(), particlesOfPart_[size_t(part)].begin(), particlesOfPart_[size_t(part)].end());
     regrouped_.clear();
-    const auto pins = [this](ParticleId id) { return makesPin(particles_, parts_, bodies_, id); };
+    const auto pins = [this](ParticleId id) { return makesPin(*this, parts_, bodies_, id); };
     if (affected.size() * 4 > particles_.size()) {
         pinning_.clear();
         for (ParticleId id = 0; id < particleCount(); ++id)

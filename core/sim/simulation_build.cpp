@@ -30,7 +30,7 @@ std::optional<ParticleId> particleAt(World& w, const Names& named, const PointRe
     if (it == named.end()) return std::nullopt;
     if (w.part(it->second).isPoint) {
         for (ParticleId id = 0; id < w.particleCount(); ++id)
-            if (w.particle(id).at.front().part == it->second) return id;
+            if (w.particle(id).own.part == it->second) return id;
     }
     return w.addParticle(it->second, vec(r.local));
 }

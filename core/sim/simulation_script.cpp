@@ -20,7 +20,7 @@ bool shareAPoint(const World& w, PartId a, PartId b) {
     for (ParticleId id = 0; id < w.particleCount(); ++id) {
         if (!w.isLive(id)) continue;
         bool onA = false, onB = false;
-        for (const Attachment& x : w.particle(id).at) {
+        for (const Attachment& x : w.attachments(id)) {
             onA = onA || x.part == a;
             onB = onB || x.part == b;
         }
@@ -31,7 +31,7 @@ bool shareAPoint(const World& w, PartId a, PartId b) {
 
 // The largest distance between the points a particle joins (m).
 double particleSpread(const World& w, ParticleId id) {
-    const std::vector<Attachment>& at = w.particle(id).at;
+    const std::vector<Attachment> at = w.attachments(id);
     const Vec2 first = w.pointPosition(at.front().part, at.front().local);
     double spread = 0;
     for (const Attachment& x : at) spread = std::max(spread, (w.pointPosition(x.part, x.local) - first).norm());

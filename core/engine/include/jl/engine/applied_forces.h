@@ -82,7 +82,7 @@ void forEachAppliedForce(const World& w, unsigned sources, PartId only, Visit&& 
             Vec2 xa, xb, f;  // f on a
             double rate = 0;
             if (!springForce(w, s, xa, xb, f, rate)) continue;
-            const PartId pa = w.particle(s.a).at.front().part, pb = w.particle(s.b).at.front().part;
+            const PartId pa = w.particle(s.a).own.part, pb = w.particle(s.b).own.part;
             if (on(pa)) visit(F{F::Spring, pa, false, xa, f});
             F end{F::Spring, pb, false, xb, -f};
             end.dissipated = s.damping * rate * rate;
