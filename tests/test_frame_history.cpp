@@ -2,11 +2,18 @@
 // The recorded run: frames are evenly spaced, eviction keeps the budget but
 // never frame 0, the protected frame or a keyframe's snapshot, and an evicted
 // frame re-simulated from the keyframe before it is the frame first recorded.
+// A keyframe counts what its snapshot takes on the heap; keyframes that
+// outgrow the budget are thinned evenly, never the first or the newest.
 #include "jl/sim/frame_history.h"
 #include "tests/scene_run.h"
 
 #include <QtTest>
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
+#include <algorithm>
 #include <memory>
 
 using namespace jl;
@@ -23,6 +30,13 @@ script:
 )";
 
 constexpr double kInterval = 0.02;
+
+// What one keyframe of the test ladder takes.
+std::size_t keyframeBytes() {
+    auto sim = test::simulate(kLadder);
+    if (!sim) qFatal("the test scene does not build");
+    return snapshotBytes(*sim->snapshot());
+}
 
 // Records `frames` frames of the six-block ladder turned over, as the simulation thread does.
 std::unique_ptr<Simulation> record(FrameHistory& h, int frames, std::size_t budget, int protect = -1) {
@@ -64,7 +78,8 @@ private slots:
 
     void evictionKeepsTheBudgetAndWhatMustStay() {
         FrameHistory h;
-        const std::size_t budget = 40'000;
+        // Room for the five keyframes and a third of the frames.
+        const std::size_t budget = 5 * keyframeBytes() + 30'000;
         record(h, 120, budget, 70);
         QVERIFY(h.bytes() <= budget);
         QVERIFY(h.frame(0));         // the scene as built
@@ -101,6 +116,58 @@ private slots:
             QCOMPARE(a.poses[p].position.y(), b.poses[p].position.y());
             QCOMPARE(a.poses[p].angle, b.poses[p].angle);
         }
+    }
+
+    // What the history counts for a keyframe is what its snapshot took from
+    // the heap, read off glibc's books: a snapshot of a 1,000-block ladder is
+    // about 1.6 MB (14 particles a block), six times its frame.
+    void aKeyframeCountsWhatItsSnapshotTakes() {
+#if defined(__GLIBC__)
+        auto sim = test::simulate(R"(
+format: jacobs-ladder/1
+ladder: {blocks: 1000, held: [0]}
+script:
+  - {at: 0, turn: {block: 0, by: 180deg, duration: 0.3}}
+)");
+        QVERIFY(sim);
+        sim->advanceTo(0.3);  // blocks moving, the still tail hanging
+        const auto heap = [] {
+            const struct mallinfo2 m = mallinfo2();
+            return double(m.uordblks + m.hblkhd);
+        };
+        const double before = heap();
+        const auto key = sim->snapshot();
+        const double taken = heap() - before;
+        QVERIFY2(taken > 1e6, qPrintable(QString::number(taken)));
+        QVERIFY2(std::abs(double(snapshotBytes(*key)) - taken) < 0.02 * taken,
+                 qPrintable(QString("counted %1, taken %2").arg(snapshotBytes(*key)).arg(taken)));
+#else
+        QSKIP("glibc's malloc statistics are what this reads");
+#endif
+    }
+
+    // Twelve keyframes where four fit: the first and the newest stay, the
+    // others left are spread evenly, and memory stays within the budget.
+    void keyframesThinEvenlyPastTheBudget() {
+        FrameHistory h;
+        const std::size_t budget = 4 * keyframeBytes() + 5'000;
+        record(h, 12 * 25 + 1, budget);
+        QVERIFY2(h.bytes() <= budget, qPrintable(QString("%1 > %2").arg(h.bytes()).arg(budget)));
+        std::vector<int> kept;
+        for (int k = 0; k <= 12; ++k)
+            if (h.keyframeAtOrBefore(k * 25).first == k * 25) kept.push_back(k);
+        QVERIFY(kept.size() >= 3 && kept.size() <= 4);
+        QCOMPARE(kept.front(), 0);
+        QCOMPARE(kept.back(), 12);
+        int longest = 0;
+        for (size_t i = 1; i < kept.size(); ++i) longest = std::max(longest, kept[i] - kept[i - 1]);
+        QVERIFY2(longest <= 2 * 12 / int(kept.size() - 1), qPrintable(QString::number(longest)));
+        // Every frame can still be re-simulated from a keyframe before it.
+        for (int i = 0; i < h.count(); ++i) QVERIFY(h.keyframeAtOrBefore(i).second);
+        // A truncation gives back what the keyframes it drops took.
+        const std::size_t before = h.bytes();
+        h.truncateAfter(25 * 6);
+        QVERIFY(h.bytes() < before);
     }
 
     void truncateDropsTheFuture() {

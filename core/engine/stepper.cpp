@@ -1,5 +1,6 @@
 #include "jl/engine/stepper.h"
 
+#include "jl/base/heap_bytes.h"
 #include "jl/engine/world.h"
 #include "stage_sums.h"
 
@@ -306,6 +307,17 @@ StepOutcome Stepper::advance(World& w, Dynamics& d, double t, double h, Ledger& 
         out.finite = false;
     }
     return out;
+}
+
+std::size_t Stepper::heapBytes() const {
+    using jl::heapBytes;
+    std::size_t n = heapBytes(kv_) + heapBytes(kl_) + heapBytes(q0_) + heapBytes(v0_) + heapBytes(uq_) +
+                    heapBytes(uv_) + heapBytes(ul_) + heapBytes(rq_) + heapBytes(mask_) + heapBytes(keep_) +
+                    heapBytes(kept_) + heapBytes(rest_) + heapBytes(mu_) + heapBytes(jmu_) + heapBytes(stiffness_) +
+                    heapBytes(stiffInverse_);
+    for (const auto* stages : {&kv_, &uq_, &uv_})
+        for (const Eigen::VectorXd& x : *stages) n += heapBytes(x);
+    return n;
 }
 
 }  // namespace jl

@@ -1,5 +1,7 @@
 #include "jl/engine/world.h"
 
+#include "jl/base/heap_bytes.h"
+
 #include <algorithm>
 #include <atomic>
 
@@ -254,6 +256,21 @@ Vec2 World::pointVelocity(PartId p, const Vec2& local) const {
     const int b = parts_[p].body;
     const Twist bv = bodyVelocity(b);
     return bv.linear + bv.angular * perp(pointPosition(p, local) - q.segment<2>(3 * b));
+}
+
+std::size_t World::heapBytes() const {
+    using jl::heapBytes;
+    std::size_t n = heapBytes(parts_) + heapBytes(bodies_) + heapBytes(particles_) + heapBytes(particlesOfPart_) +
+                    heapBytes(pins_) + heapBytes(pinning_) + heapBytes(regrouped_) + heapBytes(welds_) +
+                    heapBytes(kinematicBodies_) + heapBytes(kinematicFlags_) + heapBytes(weights_) +
+                    heapBytes(coordinateParts_) + heapBytes(springs_) + heapBytes(dampers_) + heapBytes(drags_) +
+                    heapBytes(loads_) + heapBytes(contacts_) + heapBytes(freeBodies_) + heapBytes(dampedParts_) +
+                    heapBytes(q) + heapBytes(v) + heapBytes(a) + heapBytes(invMassDiag);
+    for (const Part& p : parts_)
+        if (p.drive) n += heapBytes(p.drive->moves());
+    for (const Body& b : bodies_) n += heapBytes(b.parts);
+    for (const Particle& p : particles_) n += heapBytes(p.absorbed);
+    return n;
 }
 
 std::vector<Attachment> World::attachments(ParticleId p) const {

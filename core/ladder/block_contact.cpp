@@ -4,6 +4,7 @@
 #include "jl/ladder/block_contact.h"
 
 #include "block_contact_lengths.h"
+#include "jl/base/heap_bytes.h"
 #include "jl/engine/energy.h"
 #include "jl/engine/projection.h"
 #include "jl/ladder/ladder.h"
@@ -571,6 +572,12 @@ std::vector<Event> Ladder::settle(World& w, Dynamics& d, double t, double* impac
     }
     if (error_.empty()) error_ = "the contacts between blocks at t = " + std::to_string(t) + " s could not be settled";
     return events;
+}
+
+std::size_t BlockContacts::heapBytes() const {
+    using jl::heapBytes;
+    return heapBytes(watched_) + heapBytes(through_) + heapBytes(throughNext_) + heapBytes(touches_) +
+           heapBytes(parted_) + heapBytes(partedNow_) + heapBytes(located_) + heapBytes(pairs_) + broad_.heapBytes();
 }
 
 }  // namespace jl

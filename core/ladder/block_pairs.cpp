@@ -1,5 +1,6 @@
 // The broad phase of contact between blocks: which pairs are near enough to
 // test corner by corner (docs/model.md section 17.5).
+#include "jl/base/heap_bytes.h"
 #include "jl/ladder/block_contact.h"
 #include "jl/ladder/ladder.h"
 
@@ -240,6 +241,12 @@ bool BlockPairs::apart(const CornerDistances& beyond, double by) {
         for (size_t f = 0; f < 4; ++f)
             if (corners[0][f] > by && corners[1][f] > by && corners[2][f] > by && corners[3][f] > by) return true;
     return false;
+}
+
+std::size_t BlockPairs::heapBytes() const {
+    using jl::heapBytes;
+    return heapBytes(head_) + heapBytes(next_) + heapBytes(members_) + heapBytes(key_) + heapBytes(centre_) +
+           heapBytes(foundAt_) + heapBytes(near_) + heapBytes(radius_) + heapBytes(segments_);
 }
 
 }  // namespace jl

@@ -1,5 +1,6 @@
 #include "jl/ladder/ladder.h"
 
+#include "jl/base/heap_bytes.h"
 #include "jl/engine/projection.h"
 #include "jl/ladder/block_corners.h"
 #include "jl/scene/ladder_blocks.h"
@@ -376,6 +377,15 @@ std::string Ladder::words(EventKind kind, int j) const {
         default:
             return {};
     }
+}
+
+std::size_t Ladder::heapBytes() const {
+    using jl::heapBytes;
+    const InitialState& initial = spec_.initial;
+    return heapBytes(spec_.overrides) + heapBytes(spec_.held) + heapBytes(initial.poses) +
+           heapBytes(initial.foldAngles) + heapBytes(blocks_) + heapBytes(thickness_) + heapBytes(corners_) +
+           heapBytes(hinges_) + heapBytes(dampers_) + heapBytes(foldLinear_) + heapBytes(stillPoints_) +
+           blockContacts_.heapBytes();
 }
 
 }  // namespace jl

@@ -2,6 +2,7 @@
 // impacts and releases settled as one active set (docs/model.md section 18).
 #include "jl/ladder/pin_stops.h"
 
+#include "jl/base/heap_bytes.h"
 #include "jl/engine/energy.h"
 #include "jl/engine/projection.h"
 #include "jl/ladder/quintic_dip.h"
@@ -496,6 +497,11 @@ double PinStops::limitDip(const World& w, const Eigen::VectorXd& q0, const Eigen
         }
     }
     return first;
+}
+
+std::size_t PinStops::heapBytes() const {
+    using jl::heapBytes;
+    return heapBytes(stops_) + heapBytes(closed_) + heapBytes(contacts_) + heapBytes(welds_) + heapBytes(pairs_);
 }
 
 }  // namespace jl

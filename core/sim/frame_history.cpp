@@ -13,7 +13,7 @@ void FrameHistory::reset(double interval, std::size_t budgetBytes) {
     oldestKept_ = 0;
     frames_.clear();
     keys_.clear();
-    snapshotBytes_ = 0;
+    keyBytes_.clear();
 }
 
 void FrameHistory::setBudget(std::size_t bytes) {
@@ -34,11 +34,10 @@ void FrameHistory::append(FramePtr frame, SnapshotPtr key, int protectIndex) {
     bytes_ += fb;
     frames_.push_back(std::move(frame));
     if (isKeyframeIndex(index)) {
-        // A snapshot holds about what a frame holds plus velocities and the
-        // solver's state; count it twice a frame so the budget stays honest.
-        snapshotBytes_ += 2 * fb;
-        bytes_ += 2 * fb;
+        const std::size_t kb = key ? snapshotBytes(*key) : 0;
+        bytes_ += kb;
         keys_.push_back(std::move(key));
+        keyBytes_.push_back(kb);
     }
     evict(protectIndex);
 }
@@ -58,7 +57,9 @@ void FrameHistory::truncateAfter(int index) {
     }
     const size_t keep = size_t(index / keyEvery_ + 1);
     while (keys_.size() > keep) {
+        bytes_ -= keyBytes_.back();
         keys_.pop_back();
+        keyBytes_.pop_back();
     }
     oldestKept_ = std::min(oldestKept_, count());
 }
@@ -72,6 +73,26 @@ void FrameHistory::evict(int protectIndex) {
         bytes_ -= frameBytes(*frames_[size_t(i)]);
         frames_[size_t(i)].reset();
     }
+    while (bytes_ > budget_ && thinKeyframes()) {
+    }
+}
+
+// Drops the keyframe whose neighbours lie closest together, so that the
+// longest stretch a seek re-simulates grows as little as it can; never the
+// first (the scene as built) nor the newest. False when none can go.
+bool FrameHistory::thinKeyframes() {
+    std::vector<int> kept;
+    for (int k = 0; k < int(keys_.size()); ++k)
+        if (keys_[size_t(k)]) kept.push_back(k);
+    if (kept.size() < 3) return false;
+    size_t drop = 1;
+    for (size_t i = 2; i + 1 < kept.size(); ++i)
+        if (kept[i + 1] - kept[i - 1] < kept[drop + 1] - kept[drop - 1]) drop = i;
+    const size_t k = size_t(kept[drop]);
+    bytes_ -= keyBytes_[k];
+    keyBytes_[k] = 0;
+    keys_[k].reset();
+    return true;
 }
 
 FrameHistory::FramePtr FrameHistory::frame(int index) const {

@@ -1,5 +1,6 @@
 // Simulation: the whole state of a run, copied out and put back (the
 // timeline's keyframes), and a hash of it that determinism checks compare.
+#include "jl/base/heap_bytes.h"
 #include "snapshot.h"
 
 #include <algorithm>
@@ -12,6 +13,11 @@ Simulation::~Simulation() = default;
 
 std::shared_ptr<const Snapshot> Simulation::snapshot() const {
     return std::make_shared<const Snapshot>(std::make_from_tuple<Snapshot>(stateOf(*this)));
+}
+
+std::size_t snapshotBytes(const Snapshot& s) {
+    return sizeof(Snapshot) + s.world.heapBytes() + (s.ladder ? s.ladder->heapBytes() : 0) +
+           (s.stops ? s.stops->heapBytes() : 0) + s.stepper.heapBytes() + heapBytes(s.nextDragSample);
 }
 
 // The state before the step's first change of structure, copied into the

@@ -66,6 +66,9 @@ public:
     const Eigen::VectorXd& startVelocities() const { return v0_; }
     void setNextStep(double h) { next_ = h; }
 
+    // What it holds on the heap (jl/base/heap_bytes.h): what a copy takes.
+    std::size_t heapBytes() const;
+
 private:
     struct Tableau {
         std::vector<double> c, b, e;         // e = b - b_embedded (adaptive only)

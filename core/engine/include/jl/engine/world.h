@@ -205,6 +205,9 @@ public:
     const Body& body(int b) const { return bodies_[b]; }
     const Part& part(PartId p) const { return parts_[p]; }
     const Particle& particle(ParticleId p) const { return particles_[p]; }
+    // What the world holds on the heap (jl/base/heap_bytes.h): what a copy
+    // of it takes, for the budgets that keep copies.
+    std::size_t heapBytes() const;
     // f(attachment) for each point particle p lies at: its own first. An
     // absorbed particle cannot change while it is absorbed (combine and
     // separate take live particles), so this is what combine appended.

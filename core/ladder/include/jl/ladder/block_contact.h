@@ -48,6 +48,9 @@ public:
     using CornerDistances = std::array<std::array<std::array<double, 4>, 4>, 2>;
     static bool apart(const CornerDistances& beyond, double by);
 
+    // What it holds on the heap (jl/base/heap_bytes.h): what a copy takes.
+    std::size_t heapBytes() const;
+
 private:
     struct Segment {
         int body = 0, first = 0, end = 0;  // blocks [first, end) of one body of the still tail
@@ -186,6 +189,9 @@ public:
     // the table top, face 3).
     CornerAgainstBox against(const World& w, const Ladder& ladder, int block, int corner, int other,
                              int through = -1) const;
+
+    // What it holds on the heap (jl/base/heap_bytes.h): what a copy takes.
+    std::size_t heapBytes() const;
 
 private:
     struct Watch {

@@ -208,6 +208,9 @@ public:
     std::vector<HingeFrame> hingeFrames(const World& w) const;
     std::vector<RibbonFrame> ribbons(const World& w) const;
 
+    // What it holds on the heap (jl/base/heap_bytes.h): what a copy takes.
+    std::size_t heapBytes() const;
+
 private:
     std::array<double, 2> limitFunctions(int j, double phi) const;  // phi - z, pi - phi - z
     struct Wrench {

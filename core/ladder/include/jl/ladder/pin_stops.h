@@ -88,6 +88,9 @@ public:
     double limitDip(const World& w, const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, const Eigen::VectorXd& a0,
                     double h) const;
 
+    // What it holds on the heap (jl/base/heap_bytes.h): what a copy takes.
+    std::size_t heapBytes() const;
+
 private:
     // What the rules of docs/model.md 8.6 keep of a stop's contact, as
     // the ladder's Hinge does: its last release, the rebound that launched
