@@ -66,6 +66,24 @@ private slots:
                 1e-12);
     }
 
+    // A particle has no angle: the blocks plotted at first are the scene's
+    // boxes, whether the plots learn that before the frames or after them.
+    void particlesAreNotPlottedForAngularSpeed() {
+        const jl::Scene scene = loadExample("particles-and-springs.yaml");
+        const Run run = runHeadless(scene, 0.5);
+        QCOMPARE(int(scene.bodies.size()), 1);
+        QVERIFY(run.frames.front().poses.size() > 1);  // the box, then the particles
+        RunPlots before;
+        before.setTurning(int(scene.bodies.size()));
+        before.setHistory(run.frames);
+        QCOMPARE(before.chosenBlocks(), std::vector<int>{0});
+        RunPlots after;
+        after.setHistory(run.frames);
+        QCOMPARE(int(after.chosenBlocks().size()), 3);
+        after.setTurning(int(scene.bodies.size()));
+        QCOMPARE(after.chosenBlocks(), std::vector<int>{0});
+    }
+
     void theEnergyBooksBalanceToAFlatLineInTheClassicCascade() {
         jl::Scene scene = loadExample("classic.yaml");
         QCOMPARE(scene.ladder->hinges.damping, 0.0);

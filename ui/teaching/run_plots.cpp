@@ -219,9 +219,22 @@ void RunPlots::append(const jl::Frame& frame) {
     // A ladder of another size: choose hinges and blocks that exist.
     if (traces_.hingeCount() != knownHinges_) {
         knownHinges_ = traces_.hingeCount();
-        setChosen(spreadOver(1, knownHinges_, kHingesPlotted), spreadOver(0, traces_.blockCount() - 1, kBlocksPlotted));
+        chooseFirst();
     }
     scheduleRefresh();
+}
+
+void RunPlots::setTurning(int count) {
+    if (count == turning_) return;
+    turning_ = count;
+    if (traces_.count() > 0) chooseFirst();
+}
+
+// What a scene shows at first: hinges and turning blocks spread over the
+// ladder.
+void RunPlots::chooseFirst() {
+    const int blocks = turning_ >= 0 ? std::min(turning_, traces_.blockCount()) : traces_.blockCount();
+    setChosen(spreadOver(1, knownHinges_, kHingesPlotted), spreadOver(0, blocks - 1, kBlocksPlotted));
 }
 
 void RunPlots::setHistory(const std::vector<jl::Frame>& frames) {

@@ -40,6 +40,10 @@ public:
 
     // Which hinges (1..N-1) and blocks (0..N-1) are plotted; "1-3, 5" in the fields.
     void setChosen(const std::vector<int>& hinges, const std::vector<int>& blocks);
+    // How many of a frame's poses turn: the blocks and boxes, before the
+    // scene's particles, whose angular speed is always 0. The blocks plotted
+    // at first are chosen among these.
+    void setTurning(int count);
     const std::vector<int>& chosenHinges() const { return hinges_; }
     const std::vector<int>& chosenBlocks() const { return blocks_; }
 
@@ -69,6 +73,7 @@ protected:
     void resizeEvent(QResizeEvent* e) override;
 
 private:
+    void chooseFirst();
     void rebuildChosenCurves();
     void alignCharts();
     // Lays the charts out now (Qt does it at the next turn of the event loop): before drawing into a file.
@@ -96,6 +101,7 @@ private:
     double energyScale_ = 1e3;
     std::uint64_t loadSerial_ = ~std::uint64_t(0);
     int knownHinges_ = -1;
+    int turning_ = -1;  // -1: every pose turns
     int alignPasses_ = 0;
 };
 

@@ -124,6 +124,7 @@ void TeachingDocks::onSceneChanged(SceneChange change) {
     const jl::Scene& scene = doc_->scene();
     sideView_->setScene(scene);
     plots_->setDuration(scene.duration);
+    plots_->setTurning((scene.ladder ? scene.ladder->blocks : 0) + int(scene.bodies.size()));
     // New words describe the scene as it is; a change to the design (not a
     // drag, not where the lesson ends) may leave the old ones wrong, unless
     // it was undone back to the file. Whether it was is known once the undo
