@@ -120,7 +120,7 @@ private slots:
 
     // What the history counts for a keyframe is what its snapshot took from
     // the heap, read off glibc's books: a snapshot of a 1,000-block ladder is
-    // about 1.6 MB (14 particles a block), six times its frame.
+    // about 1.3 MB (14 particles a block), five times its frame.
     void aKeyframeCountsWhatItsSnapshotTakes() {
 #if defined(__GLIBC__)
         auto sim = test::simulate(R"(

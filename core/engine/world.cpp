@@ -123,7 +123,8 @@ void World::absorb(ParticleId p, ParticleId q, std::vector<int>& touched) {
         auto& list = particlesOfPart_[size_t(y.part)];
         if (std::find(list.begin(), list.end(), p) == list.end()) list.push_back(p);
     });
-    particles_[size_t(p)].absorbed.push_back(q);
+    particles_[size_t(q)].absorbedBefore = particles_[size_t(p)].lastAbsorbed;
+    particles_[size_t(p)].lastAbsorbed = q;
     particles_[size_t(q)].mergedInto = p;
 }
 
@@ -156,7 +157,7 @@ std::optional<WorldError> World::combine(const std::vector<std::pair<ParticleId,
 
 std::optional<WorldError> World::checkSeparate(ParticleId p) const {
     if (auto e = checkParticle(p)) return e;
-    if (particles_[size_t(p)].absorbed.empty())
+    if (particles_[size_t(p)].lastAbsorbed < 0)
         return WorldError{"particle " + std::to_string(p) + " has nothing combined into it"};
     return std::nullopt;
 }
@@ -164,8 +165,9 @@ std::optional<WorldError> World::checkSeparate(ParticleId p) const {
 void World::unabsorb(ParticleId p, std::vector<int>& touched) {
     forEachAttachment(p, [&](const Attachment& x) { touched.push_back(parts_[size_t(x.part)].body); });
     Particle& pp = particles_[size_t(p)];
-    const ParticleId q = pp.absorbed.back();
-    pp.absorbed.pop_back();
+    const ParticleId q = pp.lastAbsorbed;
+    pp.lastAbsorbed = particles_[size_t(q)].absorbedBefore;
+    particles_[size_t(q)].absorbedBefore = -1;
     particles_[size_t(q)].mergedInto = -1;
 }
 
@@ -269,7 +271,6 @@ std::size_t World::heapBytes() const {
     for (const Part& p : parts_)
         if (p.drive) n += heapBytes(p.drive->moves());
     for (const Body& b : bodies_) n += heapBytes(b.parts);
-    for (const Particle& p : particles_) n += heapBytes(p.absorbed);
     return n;
 }
 

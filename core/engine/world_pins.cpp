@@ -29,7 +29,7 @@ void World::rebuildPins() const {
             pins_.push_back({ba, bb, first.part, x.part, parts_[first.part].inBody.apply(first.local),
                              parts_[x.part].inBody.apply(x.local), id});
         };
-        for (ParticleId q : particles_[id].absorbed) forEachAttachment(q, pinTo);
+        forEachAbsorbed(id, [&](ParticleId q) { forEachAttachment(q, pinTo); });
     }
     welds_.clear();
     if (weldRigidPairs_) weldSharedPairs();
@@ -41,14 +41,15 @@ namespace {
 // both kinematic (what rebuildPins derives a pin from).
 bool makesPin(const World& w, const std::vector<Part>& parts, const std::vector<Body>& bodies, ParticleId id) {
     const Particle& p = w.particle(id);
-    if (p.mergedInto >= 0 || p.absorbed.empty()) return false;
+    if (p.mergedInto >= 0 || p.lastAbsorbed < 0) return false;
     const int ba = parts[size_t(p.own.part)].body;
     bool pin = false;
-    for (ParticleId q : p.absorbed)
+    w.forEachAbsorbed(id, [&](ParticleId q) {
         w.forEachAttachment(q, [&](const Attachment& x) {
             const int bb = parts[size_t(x.part)].body;
             pin = pin || (bb != ba && !(bodies[size_t(ba)].kinematic && bodies[size_t(bb)].kinematic));
         });
+    });
     return pin;
 }
 

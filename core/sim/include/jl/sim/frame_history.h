@@ -15,7 +15,7 @@ namespace jl {
 // scene). Frames are evicted to stay within the budget, oldest first, and
 // any evicted frame can be re-simulated from a keyframe before it. The
 // budget counts each keyframe at what its snapshot takes (snapshotBytes:
-// 15 MB at 10,000 blocks); when the keyframes alone outgrow it, they are
+// 12 MB at 10,000 blocks); when the keyframes alone outgrow it, they are
 // thinned evenly (the first and the newest stay), so that a seek re-simulates
 // further but memory stays what the user set. A keyframe is the
 // simulation's state at the end of the step that gave its frame, so it may

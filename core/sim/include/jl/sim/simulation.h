@@ -33,7 +33,7 @@ namespace jl {
 struct Snapshot;
 // What a snapshot takes in memory: itself and what it holds on the heap.
 // Most of it grows with the ladder's particles, 14 a block, not with what
-// a frame shows: 15 MB for 10,000 blocks, six times a frame (2.6 MB).
+// a frame shows: 12 MB for 10,000 blocks, five times a frame (2.6 MB).
 std::size_t snapshotBytes(const Snapshot& s);
 struct Energy;
 struct MotionStep;
