@@ -50,6 +50,8 @@ void StripEntity::commit() {
 }
 
 void buildDragLine(StripEntity& strip, const jl::Frame& frame, float z, float width) {
+    // No drag and none drawn: no upload of an empty strip at every frame.
+    if (!frame.dragging && strip.empty()) return;
     strip.clear();
     if (frame.dragging) {
         const jl::Vec2 a = frame.dragFrom, b = frame.dragTo;
