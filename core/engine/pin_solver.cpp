@@ -8,6 +8,7 @@
 #include "turns.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace jl {
@@ -20,10 +21,8 @@ namespace jl {
 // again only then (at 100,000 blocks each copy streams two arrays).
 void PinSolver::updateBodies(const World& w, const std::vector<Eigen::Vector2d>* inverseMass) {
     const size_t n = size_t(w.bodyCount());
-    rotation_.resize(n);
-    angle_.resize(n);
-    for (size_t b = 0; b < n; ++b) angle_[b] = w.q[3 * Eigen::Index(b) + 2];
-    cosSinOf(angle_.data(), 1, angle_.size(), rotation_.data());
+    turns(w);
+    angle_ = rotated_;
     if (inverseMass) {
         inverse_ = *inverseMass;
         inverseRevision_ = 0;  // no world's
@@ -33,6 +32,20 @@ void PinSolver::updateBodies(const World& w, const std::vector<Eigen::Vector2d>*
             inverse_[b] = Eigen::Vector2d(w.invMassDiag[3 * Eigen::Index(b)], w.invMassDiag[3 * Eigen::Index(b) + 2]);
         inverseRevision_ = w.revision();
     }
+}
+
+const std::vector<Eigen::Vector2d>& PinSolver::turns(const World& w) {
+    const size_t n = size_t(w.bodyCount());
+    const auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };
+    bool same = rotated_.size() == n;
+    for (size_t b = 0; same && b < n; ++b) same = bits(rotated_[b]) == bits(w.q[3 * Eigen::Index(b) + 2]);
+    if (!same) {
+        rotated_.resize(n);
+        for (size_t b = 0; b < n; ++b) rotated_[b] = w.q[3 * Eigen::Index(b) + 2];
+        rotation_.resize(n);
+        cosSinOf(rotated_.data(), 1, n, rotation_.data());
+    }
+    return rotation_;
 }
 
 void PinSolver::assemble(const World& w) { assemble(w, nullptr); }

@@ -36,6 +36,11 @@ public:
     // whether the factorisation in hand is stale; if it is, factorAndSolve()
     // factorises and solves in one sweep, else solve() uses the one in hand.
     bool prepare(const World& w);
+    // (cos, sin) of every body's turn at the world's positions, worked out
+    // once for one set of turns, bit for bit, whoever asks first: the
+    // projection's gaps and then the factorisation at the same positions
+    // (a sine and a cosine per body is a sixth of a long ladder's run).
+    const std::vector<Eigen::Vector2d>& turns(const World& w);
     void factorAndSolve(const World& w, const Eigen::VectorXd& r, Eigen::VectorXd& x);
     // The one or the other, as prepare() said (`stale`).
     void solvePrepared(const World& w, bool stale, const Eigen::VectorXd& r, Eigen::VectorXd& x) {
@@ -90,7 +95,6 @@ public:
     // step allocates nothing once the sizes have settled.
     struct Scratch {
         Eigen::VectorXd gap, x, dq, q0, jv;
-        std::vector<Eigen::Vector2d> rotation;  // (cos, sin) of each body's angle
     };
     Scratch scratch;
 
@@ -140,6 +144,7 @@ private:
     std::vector<WeldRow> welds_;
     bool forceSparse_ = false;
     std::vector<Eigen::Vector2d> rotation_;  // (cos, sin) per body: one sincos per body, not per pin end
+    std::vector<double> rotated_;            // the turns rotation_ holds, bit for bit
     std::vector<Eigen::Vector2d> inverse_;   // (1/m, 1/I) per body, or the ones assemble was given
     std::uint64_t inverseRevision_ = 0;      // the world's whose own inverse_ holds; 0: none
     // Chain mode: pins in path order, path starts, and links between neighbours.

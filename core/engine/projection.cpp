@@ -14,11 +14,10 @@ namespace jl {
 
 namespace {
 
-// Gap of every pin (2 per pin): point on A minus point on B. One sincos
-// per body (kept in `rotation`) rather than two per pin.
-void pinGaps(const World& w, Eigen::VectorXd& gap, std::vector<Eigen::Vector2d>& rotation) {
-    rotation.resize(size_t(w.bodyCount()));
-    cosSinOf(w.q.data() + 2, 3, rotation.size(), rotation.data());
+// Gap of every pin (2 per pin): point on A minus point on B, with each
+// body's (cos, sin) in `rotation`: one sincos per body rather than two per
+// pin.
+void pinGaps(const World& w, Eigen::VectorXd& gap, const std::vector<Eigen::Vector2d>& rotation) {
     auto point = [&](int body, const Vec2& r) {
         const Eigen::Vector2d& cs = rotation[size_t(body)];
         return Vec2(w.q[3 * body] + cs[0] * r.x() - cs[1] * r.y(), w.q[3 * body + 1] + cs[1] * r.x() + cs[0] * r.y());
@@ -55,7 +54,8 @@ double largestGap(const World& w, const Eigen::VectorXd& x) {
 
 double pinResidual(const World& w) {
     Eigen::VectorXd gap;
-    std::vector<Eigen::Vector2d> rotation;
+    std::vector<Eigen::Vector2d> rotation(size_t(w.bodyCount()));
+    cosSinOf(w.q.data() + 2, 3, rotation.size(), rotation.data());
     pinGaps(w, gap, rotation);
     return largestGap(w, gap);
 }
@@ -74,7 +74,7 @@ ProjectionResult closePins(World& w, PinSolver& solver, double tolerance, int ma
     ProjectionResult r;
     PinSolver::Scratch& s = solver.scratch;
     Eigen::VectorXd &gap = s.gap, &x = s.x, &dq = s.dq, &q0 = s.q0;
-    pinGaps(w, gap, s.rotation);
+    pinGaps(w, gap, solver.turns(w));
     double size = gap.norm();
     r.residual = largestGap(w, gap);
     while (r.residual > tolerance) {
@@ -94,7 +94,7 @@ ProjectionResult closePins(World& w, PinSolver& solver, double tolerance, int ma
         double step = 1.0;
         for (int halving = 0;; ++halving) {
             w.q = q0 + step * dq;
-            pinGaps(w, gap, s.rotation);
+            pinGaps(w, gap, solver.turns(w));
             const double trial = gap.norm();
             if (trial < size || halving == 30) {
                 if (!(trial < size)) {
