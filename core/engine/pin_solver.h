@@ -39,7 +39,7 @@ public:
     // (cos, sin) of every body's turn at the world's positions, worked out
     // once for one set of turns, bit for bit, whoever asks first: the
     // projection's gaps and then the factorisation at the same positions
-    // (a sine and a cosine per body is a sixth of a long ladder's run).
+    // (a sine and a cosine per body were a sixth of a long ladder's run).
     const std::vector<Eigen::Vector2d>& turns(const World& w);
     void factorAndSolve(const World& w, const Eigen::VectorXd& r, Eigen::VectorXd& x);
     // The one or the other, as prepare() said (`stale`).

@@ -20,10 +20,10 @@ bool shareAPoint(const World& w, PartId a, PartId b) {
     for (ParticleId id = 0; id < w.particleCount(); ++id) {
         if (!w.isLive(id)) continue;
         bool onA = false, onB = false;
-        for (const Attachment& x : w.attachments(id)) {
+        w.forEachAttachment(id, [&](const Attachment& x) {
             onA = onA || x.part == a;
             onB = onB || x.part == b;
-        }
+        });
         if (onA && onB) return true;
     }
     return false;
