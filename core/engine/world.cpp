@@ -116,10 +116,9 @@ std::optional<WorldError> World::checkCombine(ParticleId p, ParticleId q) const 
 }
 
 void World::absorb(ParticleId p, ParticleId q, std::vector<int>& touched) {
-    const auto body = [&](const Attachment& x) { touched.push_back(parts_[size_t(x.part)].body); };
-    forEachAttachment(p, body);
-    forEachAttachment(q, body);
+    forEachAttachment(p, [&](const Attachment& x) { touched.push_back(parts_[size_t(x.part)].body); });
     forEachAttachment(q, [&](const Attachment& y) {
+        touched.push_back(parts_[size_t(y.part)].body);
         auto& list = particlesOfPart_[size_t(y.part)];
         if (std::find(list.begin(), list.end(), p) == list.end()) list.push_back(p);
     });
