@@ -161,8 +161,26 @@ private slots:
         }
         {
             World dragged = w;
-            (void)dragged.drags();  // a reference to change them through: the world may have changed
+            (void)dragged.editDrags();  // a reference to change them through: the world may have changed
             QVERIFY(kept.recall(dragged, d, t) == nullptr);
+        }
+        {
+            // Reading through a non-const world changes nothing: an
+            // evaluation, which reads the contacts, leaves the revision (and
+            // every cache keyed on it) as it was.
+            World read = w;
+            const std::uint64_t revision = read.revision();
+            (void)read.contacts(), (void)read.drags(), (void)read.loads();
+            (void)Dynamics().evaluate(read, t);
+            QCOMPARE(read.revision(), revision);
+        }
+        {
+            // Not with resting contacts: their matrix is not kept.
+            World resting = w;
+            resting.editContacts().push_back({});
+            KeptEvaluation withContacts;
+            withContacts.keep(resting, d, t, {});
+            QVERIFY(withContacts.recall(resting, d, t) == nullptr);
         }
         {
             World copy = w;  // a copy is the same world

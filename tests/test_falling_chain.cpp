@@ -148,7 +148,7 @@ private slots:
         World w;
         w.gravity = Vec2::Zero();
         const PartId box = w.addBox(0.02, Vec2(0.012, 0.06), 0.045, Pose{});
-        w.loads().push_back({box, Vec2::Zero(), Vec2(0.3, -0.1), 0.002});
+        w.editLoads().push_back({box, Vec2::Zero(), Vec2(0.3, -0.1), 0.002});
         Dynamics d;
         Stepper s(Integrator::RK4);
         Ledger ledger;

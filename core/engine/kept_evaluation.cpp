@@ -12,16 +12,17 @@ void KeptEvaluation::keep(const World& w, const Dynamics& d, double t, const Pow
     q_ = w.q;
     v_ = w.v;
     a_ = w.a;
-    forces_.force = d.appliedForces();
-    forces_.lambda = d.pinForces();
+    forces_ = d.last();
     powers_ = powers;
 }
 
 const Powers* KeptEvaluation::recall(World& w, Dynamics& d, double t) const {
     // Exact comparisons on purpose: only the very same inputs give the very
-    // same evaluation.
-    if (!kept_ || t != t_ || w.revision() != revision_ || w.gravity != gravity_ || w.q.size() != q_.size() ||
-        w.v.size() != v_.size() || w.q != q_ || w.v != v_)
+    // same evaluation. Not with resting contacts: their rows' matrix (what
+    // the contacts' release test reads) is not kept, and an evaluation of
+    // another state since may have replaced it.
+    if (!kept_ || !w.contacts().empty() || t != t_ || w.revision() != revision_ || w.gravity != gravity_ ||
+        w.q.size() != q_.size() || w.v.size() != v_.size() || w.q != q_ || w.v != v_)
         return nullptr;
     w.a = a_;
     d.restoreLast(forces_);

@@ -325,7 +325,7 @@ void BlockContacts::part(World& w, size_t i, double t, bool byImpact) {
                   [&](const Parted& p) { return p.block == c.block && p.corner == c.corner && p.other == c.other; });
     parted_.push_back({c.block, c.corner, c.other, gap, t, byImpact, c.rebound});
     partedNow_.push_back({c.block, c.corner, c.other});
-    w.contacts().erase(w.contacts().begin() + std::ptrdiff_t(i));
+    w.editContacts().erase(w.contacts().begin() + std::ptrdiff_t(i));
     touches_.erase(touches_.begin() + std::ptrdiff_t(i));
 }
 
@@ -433,7 +433,7 @@ std::vector<Event> BlockContacts::resolveOnce(World& w, Dynamics& d, const Ladde
         const double sunk = met < -band ? met : 0.0;
         Contact kept = candidate;
         kept.offset += sunk;
-        w.contacts().push_back(kept);
+        w.editContacts().push_back(kept);
         Touch made{c.block, c.corner, c.other, face, t};
         if (face != c.through) keepThrough({c.block, c.corner, c.other}, face);
         made.sunk = sunk;

@@ -32,12 +32,12 @@ void Simulation::applyDragSample(const DragRecord& d, const DragRecord::Sample& 
     UserDrag g{part,          vec(d.point),
                vec(s.target), m * omega * omega,
                2 * m * omega, kDragMaxAcceleration * m * std::max(world_.gravity.norm(), 9.81)};
-    for (UserDrag& live : world_.drags())
+    for (UserDrag& live : world_.editDrags())
         if (live.part == part && live.local == g.local) {
             live = g;
             return;
         }
-    world_.drags().push_back(g);
+    world_.editDrags().push_back(g);
 }
 
 void Simulation::beginDrag(int block, const Vec2& local, const Vec2& target) {
@@ -70,7 +70,7 @@ void Simulation::moveDrag(const Vec2& target) {
 void Simulation::removeMouseSpring(const DragRecord& d) {
     if (d.block < 0 || d.block >= blockCount()) return;
     const PartId part = blockPart(d.block);
-    auto& drags = world_.drags();
+    auto& drags = world_.editDrags();
     drags.erase(std::remove_if(drags.begin(), drags.end(),
                                [&](const UserDrag& g) { return g.part == part && g.local == vec(d.point); }),
                 drags.end());

@@ -145,7 +145,12 @@ public:
         touch();
         dampers_[size_t(id)].damping = damping;
     }
-    std::vector<AppliedLoad>& loads() {
+    // The editing accessors are named apart from the reading ones: each
+    // marks the world changed (a new revision), and a read through a
+    // non-const World that chose them would throw away every cache keyed
+    // on the revision (the pins' factorisation, the weights, the bound on
+    // the step) at every evaluation.
+    std::vector<AppliedLoad>& editLoads() {
         touch();
         return loads_;
     }
@@ -252,14 +257,14 @@ public:
     bool weldsRigidPairs() const { return weldRigidPairs_; }
     const std::vector<Spring>& springs() const { return springs_; }
     const std::vector<RotaryDamper>& rotaryDampers() const { return dampers_; }
-    std::vector<UserDrag>& drags() {
+    std::vector<UserDrag>& editDrags() {
         touch();
         return drags_;
     }
     const std::vector<UserDrag>& drags() const { return drags_; }
     // The resting contacts between non-neighbouring blocks (docs/model.md
     // section 17): unilateral rows solved on top of the pins.
-    std::vector<Contact>& contacts() {
+    std::vector<Contact>& editContacts() {
         touch();
         return contacts_;
     }
