@@ -87,6 +87,10 @@ bool PinSolver::prepare(const World& w, const std::vector<Eigen::Vector2d>* inve
     return true;
 }
 
+bool PinSolver::holdsFactorisationFor(const World& w) const {
+    return assembledPlain_ && version_ == w.structureVersion() && assembledRevision_ == w.revision();
+}
+
 // The matrix depends on the bodies' turns alone (and on what the revision
 // stands for): the same turns bit for bit, the same factorisation.
 bool PinSolver::sameTurns(const World& w) const {

@@ -42,6 +42,11 @@ public:
     // (a sine and a cosine per body were a sixth of a long ladder's run).
     const std::vector<Eigen::Vector2d>& turns(const World& w);
     void factorAndSolve(const World& w, const Eigen::VectorXd& r, Eigen::VectorXd& x);
+    // Whether the factorisation in hand (and the arms solve() and
+    // addJTranspose() use) is of this world's pins and masses, at whatever
+    // turns it was assembled: the last stage of a step, for the projection
+    // that follows it (projection.cpp).
+    bool holdsFactorisationFor(const World& w) const;
     // The one or the other, as prepare() said (`stale`).
     void solvePrepared(const World& w, bool stale, const Eigen::VectorXd& r, Eigen::VectorXd& x) {
         if (stale)

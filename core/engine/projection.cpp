@@ -70,26 +70,54 @@ double pinVelocityResidual(const World& w) {
 
 namespace {
 
+// Newton's method on the gaps, each step dq = W J^T x with (J W J^T) x = -C.
+// The first steps take J from the factorisation in hand when it is of these
+// pins (after a step of the integrator: its last stage, a few micrometres
+// away): a gap of 1e-9 m shrinks by the ratio of that move to a block's
+// length, some 1e-4, so one step closes it as a fresh factorisation would,
+// and the step's end then factorises once, for the velocities, instead of
+// twice. A step that does not shrink the gaps tenfold is taken again with J
+// at the current positions, and so is every step after it.
 ProjectionResult closePins(World& w, PinSolver& solver, double tolerance, int maxIterations) {
+    constexpr double kHeldRate = 0.1;  // the least shrinking a step with the held J must give
     ProjectionResult r;
     PinSolver::Scratch& s = solver.scratch;
     Eigen::VectorXd &gap = s.gap, &x = s.x, &dq = s.dq, &q0 = s.q0;
     pinGaps(w, gap, solver.turns(w));
     double size = gap.norm();
     r.residual = largestGap(w, gap);
+    bool held = solver.holdsFactorisationFor(w);
     while (r.residual > tolerance) {
         if (r.iterations == maxIterations) {
             r.converged = false;
             return r;
         }
         ++r.iterations;
-        // Newton step: J dq = -C with dq = W J^T x.
         gap = -gap;
-        solver.solvePrepared(w, solver.prepare(w), gap, x);
+        if (held)
+            solver.solve(gap, x);
+        else
+            solver.solvePrepared(w, solver.prepare(w), gap, x);
         dq.setZero(w.q.size());
         solver.addJTranspose(x, dq);
         dq.array() *= w.invMassDiag.array();
         q0 = w.q;
+        if (held) {
+            w.q = q0 + dq;
+            pinGaps(w, gap, solver.turns(w));
+            const double trial = gap.norm();
+            if (trial < kHeldRate * size) {
+                size = trial;
+                r.residual = largestGap(w, gap);
+                continue;
+            }
+            // Too far from where J was taken: this step again, with J here.
+            held = false;
+            --r.iterations;
+            w.q = q0;
+            pinGaps(w, gap, solver.turns(w));
+            continue;
+        }
         // Backtrack until the gap shrinks; the full step nearly always does.
         double step = 1.0;
         for (int halving = 0;; ++halving) {
