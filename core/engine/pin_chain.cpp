@@ -160,6 +160,41 @@ void PinSolver::accelerations(World& w, const Eigen::VectorXd& force, Eigen::Vec
         [&](int body, const Eigen::Vector3d& f) { a.segment<3>(3 * body) = im.segment<3>(3 * body).cwiseProduct(f); });
 }
 
+void PinSolver::removeVelocityDrift(World& w, Eigen::VectorXd& impulses) {
+    const bool stale = prepare(w);
+    Eigen::VectorXd& v = w.v;
+    const Eigen::VectorXd& im = w.invMassDiag;
+    if (!chain_) {
+        multiplyJ(v, jv_);
+        jv_ = -jv_;
+        solvePrepared(w, stale, jv_, impulses);
+        rhs_.setZero(v.size());
+        addJTranspose(impulses, rhs_);
+        v.array() += rhs_.array() * im.array();
+        return;
+    }
+    // -J v, pin by pin, as multiplyJ forms it.
+    const auto drift = [&](int pin) -> Vec2 {
+        const PinRow& p = pins_[size_t(pin)];
+        const Vec2 ua = v.segment<2>(3 * p.bodyA) + v[3 * p.bodyA + 2] * perp(p.rA);
+        const Vec2 ub = v.segment<2>(3 * p.bodyB) + v[3 * p.bodyB + 2] * perp(p.rB);
+        return -(ua - ub);
+    };
+    impulses.resize(rowCount());
+    if (stale) {
+        factorChain(drift, &impulses);
+        assembledPlain_ = true;
+        assembledRevision_ = w.revision();
+    } else {
+        forwardSubstitute(drift, impulses);
+    }
+    // A body's correction from zero, its pins' impulses added in the order
+    // of their index (as addJTranspose adds them), then scaled by W.
+    backSubstituteApplying(
+        impulses, w.kinematicFlags(), [](int) -> Eigen::Vector3d { return Eigen::Vector3d::Zero(); },
+        [&](int body, const Eigen::Vector3d& f) { v.segment<3>(3 * body) += f.cwiseProduct(im.segment<3>(3 * body)); });
+}
+
 // Along chains, the back substitution of x (the forward one done), calling
 // apply(b, f) for every dynamic body b once, with f = start(b) plus the
 // forces J^T x of its pins added in the order of their index: a link's body

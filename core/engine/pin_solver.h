@@ -60,6 +60,12 @@ public:
     // forces, 3 per body; a kinematic body keeps its prescribed a. Along
     // chains with a fresh factorisation, in the solve's two sweeps.
     void accelerations(World& w, const Eigen::VectorXd& force, Eigen::VectorXd& lambda);
+    // The velocity projection (docs/model.md section 5.2): P with
+    // (J W J^T) P = -J v, and every dynamic body's v += W J^T P, assembling
+    // at the world's positions if it must. Along chains J v is formed as the
+    // elimination reaches each pin and each body's velocity as the back
+    // substitution has both of its pins' impulses, as in accelerations().
+    void removeVelocityDrift(World& w, Eigen::VectorXd& impulses);
     // Solves (J W J^T) x = r; r and x hold 2 entries per pin, in w.pins()
     // order, then 1 per weld (w.welds()).
     void solve(const Eigen::VectorXd& r, Eigen::VectorXd& x) const;
@@ -99,7 +105,7 @@ public:
     // Work vectors of the projection (projection.cpp), kept here so that a
     // step allocates nothing once the sizes have settled.
     struct Scratch {
-        Eigen::VectorXd gap, x, dq, q0, jv;
+        Eigen::VectorXd gap, x, dq, q0;
     };
     Scratch scratch;
 

@@ -173,15 +173,8 @@ ProjectionResult projectPositions(World& w, PinSolver& solver, double tolerance,
 }
 
 void projectVelocities(World& w, PinSolver& solver, Eigen::VectorXd* impulses, ContactRule rule) {
-    PinSolver::Scratch& s = solver.scratch;
-    Eigen::VectorXd &jv = s.jv, &x = s.x, &dv = s.dq;
-    const bool stale = solver.prepare(w);
-    solver.multiplyJ(w.v, jv);
-    jv = -jv;
-    solver.solvePrepared(w, stale, jv, x);
-    dv.setZero(w.v.size());
-    solver.addJTranspose(x, dv);
-    w.v.array() += dv.array() * w.invMassDiag.array();
+    Eigen::VectorXd& x = solver.scratch.x;
+    solver.removeVelocityDrift(w, x);
     if (w.contacts().empty()) {
         if (impulses) *impulses = x;
         return;
