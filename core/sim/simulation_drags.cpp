@@ -22,7 +22,7 @@ void Simulation::applyDragSample(const DragRecord& d, const DragRecord::Sample& 
     if (d.block < 0 || d.block >= blockCount()) return;
     wakeThrough(d.block);
     const PartId part = blockPart(d.block);
-    if (Drive* drive = world_.drive(part)) {
+    if (Drive* drive = world_.editDrive(part)) {
         const Pose final = drive->at(kOpenEnd).pose;
         drive->add({t_, 4 * kDragTimeConstant, vec(s.target) - final.apply(vec(d.point)), 0.0});
         return;

@@ -101,7 +101,7 @@ void Simulation::applyScriptAction(const ScriptAction& a) {
             if (!world_.isHeld(part)) released = grab(part);
             const double turn = a.kind == K::Turn ? a.angle : 0.0;
             const Vec2 offset = a.kind == K::Move ? vec(a.offset) : Vec2::Zero();
-            world_.drive(part)->add({a.at, a.duration, offset, turn});
+            world_.editDrive(part)->add({a.at, a.duration, offset, turn});
             e.text =
                 "the hand " + std::string(a.kind == K::Turn ? "turns" : "moves") + " block " + std::to_string(a.block);
             break;

@@ -200,7 +200,8 @@ public:
     // move of the hand starts or stops in (a, b].
     bool pathsOnOnePiece(double a, double b) const;
     bool isHeld(PartId part) const { return parts_[part].drive.has_value(); }
-    Drive* drive(PartId part) {
+    // A held part's path, to add moves to (a new revision, as editLoads()).
+    Drive* editDrive(PartId part) {
         touch();
         return parts_[part].drive ? &*parts_[part].drive : nullptr;
     }
